@@ -1,0 +1,3 @@
+from physc.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,1 @@
+"""Compiler IRs and passes, and the stage table behind `physc compile --emit`."""

@@ -1,0 +1,156 @@
+"""The vocabulary a domain brings to the `.phys` language.
+
+The grammar knows no domain words. A domain declares:
+
+* its **object terms** (`rollableBlock`, abbreviation `rBlock`, …) and the
+  **concrete objects** each may become (`circle`, `circleSmall`, …), some of
+  them static (platforms);
+* its **term signatures**: interaction and restriction terms with typed
+  parameters and the causal role of each parameter (acts, is set in motion, is
+  destroyed), so the static checks of the language stay domain-agnostic;
+* its **directions**, with aliases such as `any`;
+* which object term the player sets in motion (the shot) and which objects are
+  goals (every goal must be destroyed).
+"""
+
+from __future__ import annotations
+
+import re
+
+import attrs
+
+OBJECT = "object"
+DIRECTION = "direction"
+INTERACTION = "interaction"
+RESTRICTION = "restriction"
+
+
+@attrs.frozen
+class ConcreteObject:
+    """A game object that an object term may become (`circle`, `flatPlatform`)."""
+
+    name: str
+    static: bool = False
+    description: str = ""
+
+
+@attrs.frozen
+class ObjectTerm:
+    """A term of the object grammar, e.g. `rollableBlock` (abbreviation `rBlock`)."""
+
+    name: str
+    concrete: tuple[str, ...]
+    abbreviation: str | None = None
+    noun: str = ""  # how a message names it: "a rollable object"
+
+    @property
+    def spellings(self) -> tuple[str, ...]:
+        return (self.name,) if self.abbreviation is None else (self.name, self.abbreviation)
+
+
+@attrs.frozen
+class Parameter:
+    """One parameter of a term.
+
+    An object parameter may require its object to fit an object term (`fits`:
+    every concrete object the argument may become is one the term allows) and/or
+    to be dynamic. A direction parameter lists its allowed directions; with a
+    `default` it is optional. At most one direction parameter per term.
+    """
+
+    name: str
+    kind: str  # OBJECT | DIRECTION
+    fits: str | None = None
+    dynamic: bool = False
+    directions: tuple[str, ...] = ()
+    default: tuple[str, ...] | None = None
+    acts: bool = False  # the object acts: it must already be in motion
+    moves: bool = False  # the interaction sets the object in motion
+    destroys: bool = False  # the interaction destroys the object
+
+
+@attrs.frozen
+class TermSignature:
+    name: str
+    kind: str  # INTERACTION | RESTRICTION
+    parameters: tuple[Parameter, ...]
+    description: str = ""
+    requires: str | None = None  # an earlier interaction with the same objects is required
+    narrows: str | None = None  # restriction: narrows the directions of this interaction
+    forbids: str | None = None  # restriction: forbids this interaction of its first object
+
+    @property
+    def required_count(self) -> int:
+        return sum(1 for p in self.parameters if p.default is None)
+
+    @property
+    def direction_parameter(self) -> Parameter | None:
+        return next((p for p in self.parameters if p.kind == DIRECTION), None)
+
+    @property
+    def object_parameters(self) -> tuple[Parameter, ...]:
+        return tuple(p for p in self.parameters if p.kind == OBJECT)
+
+    def usage(self) -> str:
+        parts = []
+        for p in self.parameters:
+            text = p.name if p.kind == OBJECT else f"{p.name} ⊆ {{{', '.join(p.directions)}}}"
+            parts.append(f"[{text}]" if p.default is not None else text)
+        return f"{self.name}({', '.join(parts)})"
+
+
+@attrs.frozen(slots=False, eq=False)
+class Vocabulary:
+    object_terms: tuple[ObjectTerm, ...]
+    concrete_objects: tuple[ConcreteObject, ...]
+    terms: tuple[TermSignature, ...]
+    direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
+    player: str = ""  # object term of what the player sets in motion
+    goal: str = ""  # object term of the objects that must all be destroyed
+
+    def __attrs_post_init__(self):
+        by_spelling = {s: t for t in self.object_terms for s in t.spellings}
+        object.__setattr__(self, "_by_spelling", by_spelling)
+        object.__setattr__(self, "_terms", {t.name: t for t in self.terms})
+        object.__setattr__(self, "_concrete", {c.name: c for c in self.concrete_objects})
+        pattern = "|".join(sorted(map(re.escape, by_spelling), key=len, reverse=True))
+        object.__setattr__(self, "_typed_name", re.compile(rf"({pattern})[0-9]*"))
+
+    def object_term(self, spelling: str) -> ObjectTerm | None:
+        """The object term with this name or abbreviation."""
+        return self._by_spelling.get(spelling)
+
+    def term_of_name(self, name: str) -> ObjectTerm | None:
+        """The object term an undeclared object name implies (`rBlock2` → rollableBlock)."""
+        match = self._typed_name.fullmatch(name)
+        return self._by_spelling[match.group(1)] if match else None
+
+    def term(self, name: str) -> TermSignature | None:
+        return self._terms.get(name)
+
+    def concrete(self, name: str) -> ConcreteObject | None:
+        return self._concrete.get(name)
+
+    @property
+    def directions(self) -> tuple[str, ...]:
+        """Every direction word, aliases included, in first-seen order."""
+        words: dict[str, None] = {}
+        for term in self.terms:
+            for parameter in term.parameters:
+                words.update(dict.fromkeys(parameter.directions))
+        words.update(dict.fromkeys(self.direction_aliases))
+        return tuple(words)
+
+    def expand(self, direction: str) -> tuple[str, ...]:
+        return self.direction_aliases.get(direction, (direction,))
+
+    @property
+    def spellings(self) -> tuple[str, ...]:
+        return tuple(self._by_spelling)
+
+    def is_static(self, concrete: tuple[str, ...]) -> bool:
+        return all(self._concrete[c].static for c in concrete)
+
+    def fits(self, concrete: tuple[str, ...], term_name: str) -> bool:
+        allowed = self._by_spelling[term_name].concrete
+        return all(c in allowed for c in concrete)

@@ -1,0 +1,37 @@
+"""The front end as one call: read, parse and check a `.phys` file."""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.diagnostics import Diagnostic, SourceText, sort_key
+from physc.dsl import ast
+from physc.dsl.check import check_file
+from physc.dsl.parser import parse_source, read_source
+from physc.dsl.scenario import ScenarioIR
+
+
+@attrs.frozen
+class Analysis:
+    path: str
+    source: SourceText | None
+    file: ast.File | None
+    scenarios: tuple[ScenarioIR, ...]
+    syntax: tuple[Diagnostic, ...]  # reading and parsing
+    semantic: tuple[Diagnostic, ...]  # static checks
+
+    @property
+    def diagnostics(self) -> tuple[Diagnostic, ...]:
+        return tuple(sorted(self.syntax + self.semantic, key=sort_key))
+
+
+def analyze(path: str, check: bool = True) -> Analysis:
+    """Read and parse `path` ('-' for standard input); with `check`, run the static checks."""
+    read = read_source(path)
+    if read.source is None or read.diagnostics:
+        return Analysis(path, read.source, None, (), read.diagnostics, ())
+    parsed = parse_source(read.source)
+    if not check:
+        return Analysis(path, parsed.source, parsed.file, (), parsed.diagnostics, ())
+    checked = check_file(parsed.file, path)
+    return Analysis(path, parsed.source, parsed.file, checked.scenarios, parsed.diagnostics, checked.diagnostics)

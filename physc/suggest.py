@@ -1,0 +1,24 @@
+"""'Did you mean …?' suggestions for misspelled names."""
+
+from __future__ import annotations
+
+import difflib
+from typing import Iterable
+
+
+def closest(word: str, candidates: Iterable[str], limit: int = 3) -> list[str]:
+    """The candidates closest to `word`; a case-insensitive exact match comes first."""
+    pool = list(dict.fromkeys(candidates))
+    same_case = [c for c in pool if c.lower() == word.lower() and c != word]
+    close = difflib.get_close_matches(word, pool, n=limit, cutoff=0.6)
+    lowered = {c.lower(): c for c in pool}
+    close += [lowered[c] for c in difflib.get_close_matches(word.lower(), list(lowered), n=limit, cutoff=0.6)]
+    return list(dict.fromkeys(same_case + [c for c in close if c != word]))[:limit]
+
+
+def did_you_mean(word: str, candidates: Iterable[str]) -> str | None:
+    """A help sentence such as "did you mean 'rBlock'?", or None."""
+    found = closest(word, candidates)
+    if not found:
+        return None
+    return "did you mean " + " or ".join(f"'{c}'" for c in found) + "?"
