@@ -21,4 +21,6 @@ def did_you_mean(word: str, candidates: Iterable[str]) -> str | None:
     found = closest(word, candidates)
     if not found:
         return None
-    return "did you mean " + " or ".join(f"'{c}'" for c in found) + "?"
+    quoted = [f"'{c}'" for c in found]
+    listed = quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]
+    return f"did you mean {listed}?"

@@ -67,6 +67,7 @@ class Parameter:
     acts: bool = False  # the object acts: it must already be in motion
     moves: bool = False  # the interaction sets the object in motion
     destroys: bool = False  # the interaction destroys the object
+    redirects: bool = False  # the interaction changes the object's course (a bounce)
 
 
 @attrs.frozen

@@ -97,6 +97,8 @@ class _ScenarioChecker:
     def declare(self, declaration: ast.Declaration) -> None:
         name = declaration.name
         vocabulary = self.vocabulary
+        # Until the declaration proves good, later uses of the name stay silent.
+        self.unknown.add(name.text)
         if name.text in self.objects:
             self.error(
                 "E0304",
@@ -142,26 +144,26 @@ class _ScenarioChecker:
         self.objects[name.text] = _Object(
             name.text, term.name, concrete, vocabulary.is_static(concrete), True, name.span
         )
+        self.unknown.discard(name.text)
 
     def resolve_object(self, name: ast.Name) -> _Object | None:
         found = self.objects.get(name.text)
         if found is not None:
             found.used = True
             return found
+        if name.text in self.unknown:  # already reported
+            return None
         term = self.vocabulary.term_of_name(name.text)
         if term is None:
-            if name.text not in self.unknown:
-                self.unknown.add(name.text)
-                suggestion = did_you_mean(
-                    name.text, [*self.vocabulary.spellings, *self.objects]
-                )
-                how = f"declare it in `objects {{ {name.text}: <term> }}`"
-                self.error(
-                    "E0301",
-                    f"unknown object '{name.text}': its type cannot be inferred from its name",
-                    name.span,
-                    help=f"{suggestion[:-1]}, or {how}?" if suggestion else how,
-                )
+            self.unknown.add(name.text)
+            suggestion = did_you_mean(name.text, [*self.vocabulary.spellings, *self.objects])
+            how = f"declare it in `objects {{ {name.text}: <term> }}`"
+            self.error(
+                "E0301",
+                f"unknown object '{name.text}': its type cannot be inferred from its name",
+                name.span,
+                help=f"{suggestion[:-1]}, or {how}" if suggestion else how,
+            )
             return None
         found = _Object(
             name.text, term.name, term.concrete, self.vocabulary.is_static(term.concrete), False, name.span, True
@@ -322,8 +324,12 @@ class _ScenarioChecker:
         in_motion = set(players)
         destroyed: dict[str, Span] = {}
         seen: set[tuple[str, tuple[str, ...]]] = set()
+        # Once an interaction fails to resolve, what it would have set in motion,
+        # hit or destroyed is unknown: later causal errors would be guesses.
+        complete = True
         for index, resolved in enumerate(interactions):
             if resolved is None:
+                complete = False
                 continue
             signature = resolved.signature
             for obj, span in zip(resolved.objects, resolved.object_spans):
@@ -337,6 +343,10 @@ class _ScenarioChecker:
             for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
                 if not parameter.acts:
                     continue
+                if obj not in in_motion:
+                    in_motion.add(obj)  # report each object once
+                else:
+                    continue
                 if index == 0 and obj not in players:
                     self.error(
                         "E0401",
@@ -346,14 +356,14 @@ class _ScenarioChecker:
                         help=f"start the sequence with the {vocabulary.player}, "
                         f"e.g. hit({vocabulary.player}, {obj}, left)",
                     )
-                elif obj not in in_motion:
+                elif complete:
                     self.error(
                         "E0402",
                         f"'{obj}' acts in '{signature.name}' before anything set it in motion",
                         span,
                         help=f"add an earlier interaction that sets it in motion, e.g. hit(x, {obj}, left)",
                     )
-            if signature.requires and (signature.requires, resolved.objects) not in seen:
+            if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
                 pair = ", ".join(resolved.objects)
                 self.error(
                     "E0403",
@@ -368,7 +378,7 @@ class _ScenarioChecker:
                     destroyed.setdefault(obj, resolved.node.span)
             seen.add((signature.name, resolved.objects[:2]))
         goal = vocabulary.goal
-        for obj in self.objects.values():
+        for obj in self.objects.values() if complete else ():
             if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in destroyed:
                 continue
             if not obj.used:
@@ -383,6 +393,17 @@ class _ScenarioChecker:
     def apply_restrictions(self, interactions, restrictions) -> dict[int, tuple[str, ...]]:
         """Narrow interaction directions; report restrictions that contradict the sequence."""
         narrowed = {i: r.directions for i, r in enumerate(interactions) if r is not None}
+        # A restriction on how a reaches b constrains a's direct approach: the
+        # interactions a performs before anything redirects it (e.g. a bounce).
+        redirected: set[str] = set()
+        direct: dict[int, bool] = {}
+        for index, interaction in enumerate(interactions):
+            if interaction is None:
+                continue
+            direct[index] = interaction.objects[0] not in redirected
+            for parameter, obj in zip(interaction.signature.object_parameters, interaction.objects):
+                if parameter.redirects:
+                    redirected.add(obj)
         for restriction in restrictions:
             if restriction is None:
                 continue
@@ -391,7 +412,8 @@ class _ScenarioChecker:
                 if interaction is None:
                     continue
                 name = interaction.signature.name
-                if signature.narrows == name and interaction.objects[:2] == restriction.objects[:2]:
+                same_pair = interaction.objects[:2] == restriction.objects[:2]
+                if signature.narrows == name and same_pair and direct[index]:
                     left = tuple(d for d in narrowed[index] if d not in restriction.directions)
                     if not left:
                         self.error(

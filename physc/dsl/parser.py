@@ -53,6 +53,14 @@ KEYWORDS = {"SCENARIO", "DOMAIN", "OBJECTS", "INTERACTIONS", "RESTRICTIONS", "AN
 _SYNONYMS = [("PIPE", {"VEE", "OR"}), ("COMMA", {"AMP", "WEDGE", "AND"})]
 _ORDER = list(TOKEN_NAMES)
 _OPENERS = {"LBRACE": "RBRACE", "LPAR": "RPAR", "LSQB": "RSQB"}
+_CHARACTER_HELP = {
+    ";": "separate arguments with ',' and interactions with '>'",
+    "'": 'strings are written in double quotes: "like this"',
+    "→": "interactions are separated by '>'",
+    "⋀": "write '∧' (U+2227), '&' or 'and'",
+    "⋁": "write '∨' (U+2228), '|' or 'or'",
+    "\u00a0": "a no-break space: replace it with an ordinary space",
+}
 
 # Finds the `scenario` keywords that start chunks, skipping strings and comments.
 _CHUNK_SCAN = re.compile(r'"(?:[^"\\\n]|\\.)*"?|#[^\n]*|//[^\n]*|\bscenario\b')
@@ -316,7 +324,7 @@ def _syntax_diagnostic(error: UnexpectedInput, chunk: _Chunk, parser: Lark, foll
             "E0101",
             f"unexpected character '{shown}'{code_point}",
             chunk.span(position, position + 1),
-            help=f"expected {_expected(error.allowed)}" if error.allowed else None,
+            help=_CHARACTER_HELP.get(char),
         )
     assert isinstance(error, UnexpectedToken)
     token = error.token

@@ -81,7 +81,11 @@ TERMS = (
     TermSignature(
         "bounce",
         INTERACTION,
-        (_actor(), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=SIDES)),
+        (
+            Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True),
+            Parameter("b", OBJECT, fits="surface"),
+            Parameter("d", DIRECTION, directions=SIDES),
+        ),
         "a bounces off b towards d",
     ),
     TermSignature(
