@@ -140,7 +140,8 @@ def format_file(file: ast.File, source: SourceText | None = None) -> str:
                 text += "  " + " ".join(c.text for c in line.trailing)
             out.append(text)
     if tail:
-        if out:
+        last = file.scenarios[-1].span.end_line if file.scenarios and file.scenarios[-1].span else None
+        if out and (last is None or source is None or _gap(source, last, tail[0].span.line)):
             out.append("")
         _render_comments(out, tail, "", source, None, keep_gaps=True)
     while out and out[-1] == "":
