@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import bisect
 import enum
+import re
 from typing import Iterable
 
 import attrs
@@ -21,22 +22,57 @@ import attrs
 from physc import error_codes
 
 
-@attrs.frozen
 class Span:
-    """A region of source text. Lines and columns are 1-based; offsets 0-based."""
+    """A region of source text: 0-based offsets [start, end).
 
-    start: int
-    end: int
-    line: int
-    column: int
-    end_line: int
-    end_column: int
+    Lines and columns (1-based; `end_column` is the column just after the
+    span) are looked up in the source's line index when asked for, so making
+    a span costs almost nothing. Spans compare by their offsets.
+    """
+
+    __slots__ = ("start", "end", "_line_starts")
+
+    def __init__(self, start: int, end: int, line_starts: list[int]):
+        self.start = start
+        self.end = end
+        self._line_starts = line_starts
+
+    def _position(self, offset: int) -> tuple[int, int]:
+        index = bisect.bisect_right(self._line_starts, offset) - 1
+        return index + 1, offset - self._line_starts[index] + 1
+
+    @property
+    def line(self) -> int:
+        return self._position(self.start)[0]
+
+    @property
+    def column(self) -> int:
+        return self._position(self.start)[1]
+
+    @property
+    def end_line(self) -> int:
+        return self._position(self.end)[0]
+
+    @property
+    def end_column(self) -> int:
+        return self._position(self.end)[1]
 
     def join(self, other: Span) -> Span:
         """The smallest span covering both."""
-        first = self if self.start <= other.start else other
-        last = self if self.end >= other.end else other
-        return Span(first.start, last.end, first.line, first.column, last.end_line, last.end_column)
+        return Span(min(self.start, other.start), max(self.end, other.end), self._line_starts)
+
+    def last(self, width: int = 1) -> Span:
+        """The last `width` characters of the span."""
+        return Span(max(self.end - width, self.start), self.end, self._line_starts)
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, Span) and (self.start, self.end) == (other.start, other.end)
+
+    def __hash__(self) -> int:
+        return hash((self.start, self.end))
+
+    def __repr__(self) -> str:
+        return f"Span({self.start}, {self.end}, {self.line}:{self.column})"
 
     def __str__(self) -> str:
         return f"{self.line}:{self.column}"
@@ -73,15 +109,12 @@ class Diagnostic:
 
 
 class SourceText:
-    """The text of one input, with fast offset → line/column mapping."""
+    """The text of one input, with its line index."""
 
     def __init__(self, path: str, text: str):
         self.path = path
         self.text = text
-        self._line_starts = [0]
-        for index, char in enumerate(text):
-            if char == "\n":
-                self._line_starts.append(index + 1)
+        self._line_starts = [0] + [m.end() for m in re.finditer("\n", text)]
 
     @property
     def line_count(self) -> int:
@@ -92,20 +125,8 @@ class SourceText:
         end = self.text.find("\n", start)
         return self.text[start:] if end < 0 else self.text[start:end]
 
-    def position(self, offset: int) -> tuple[int, int]:
-        """1-based (line, column) of a 0-based offset."""
-        index = bisect.bisect_right(self._line_starts, offset) - 1
-        return index + 1, offset - self._line_starts[index] + 1
-
     def span(self, start: int, end: int) -> Span:
-        line, column = self.position(start)
-        end_line, end_column = self.position(end)
-        return Span(start, end, line, column, end_line, end_column)
-
-    def end_span(self) -> Span:
-        """An empty span at the end of the text (for 'unexpected end of file')."""
-        end = len(self.text.rstrip("\n\r\t "))
-        return self.span(end, end)
+        return Span(start, end, self._line_starts)
 
 
 _ANSI = {

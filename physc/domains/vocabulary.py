@@ -108,6 +108,8 @@ class Vocabulary:
     direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
     player: str = ""  # object term of what the player sets in motion
     goal: str = ""  # object term of the objects that must all be destroyed
+    # Derived in __attrs_post_init__: every direction word, aliases included.
+    directions: tuple[str, ...] = attrs.field(init=False, default=())
 
     def __attrs_post_init__(self):
         by_spelling = {s: t for t in self.object_terms for s in t.spellings}
@@ -116,6 +118,12 @@ class Vocabulary:
         object.__setattr__(self, "_concrete", {c.name: c for c in self.concrete_objects})
         pattern = "|".join(sorted(map(re.escape, by_spelling), key=len, reverse=True))
         object.__setattr__(self, "_typed_name", re.compile(rf"({pattern})[0-9]*"))
+        words: dict[str, None] = {}
+        for term in self.terms:
+            for parameter in term.parameters:
+                words.update(dict.fromkeys(parameter.directions))
+        words.update(dict.fromkeys(self.direction_aliases))
+        object.__setattr__(self, "directions", tuple(words))
 
     def object_term(self, spelling: str) -> ObjectTerm | None:
         """The object term with this name or abbreviation."""
@@ -131,16 +139,6 @@ class Vocabulary:
 
     def concrete(self, name: str) -> ConcreteObject | None:
         return self._concrete.get(name)
-
-    @property
-    def directions(self) -> tuple[str, ...]:
-        """Every direction word, aliases included, in first-seen order."""
-        words: dict[str, None] = {}
-        for term in self.terms:
-            for parameter in term.parameters:
-                words.update(dict.fromkeys(parameter.directions))
-        words.update(dict.fromkeys(self.direction_aliases))
-        return tuple(words)
 
     def expand(self, direction: str) -> tuple[str, ...]:
         return self.direction_aliases.get(direction, (direction,))

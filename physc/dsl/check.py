@@ -17,6 +17,7 @@ from physc.domains import DEFAULT_DOMAIN, DomainError, load_domain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, RESTRICTION, TermSignature, Vocabulary
 from physc.dsl import ast
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
+from physc.gc_pause import gc_paused
 from physc.suggest import did_you_mean
 
 
@@ -27,6 +28,11 @@ class CheckResult:
 
 
 def check_file(file: ast.File, path: str = "", domain_loader: Callable = load_domain) -> CheckResult:
+    with gc_paused():
+        return _check_file(file, path, domain_loader)
+
+
+def _check_file(file: ast.File, path: str, domain_loader: Callable) -> CheckResult:
     diagnostics: list[Diagnostic] = []
     scenarios: list[ScenarioIR] = []
     first_by_name: dict[str, ast.Scenario] = {}

@@ -52,9 +52,7 @@ class _Line:
 
 
 def _closing_brace(span: Span | None) -> Span | None:
-    if span is None:
-        return None
-    return Span(span.end - 1, span.end, span.end_line, span.end_column - 1, span.end_line, span.end_column)
+    return None if span is None else span.last()
 
 
 def _scenario_lines(scenario: ast.Scenario) -> list[_Line]:

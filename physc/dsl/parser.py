@@ -19,7 +19,9 @@ from lark import Lark, Token, Transformer
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken, VisitError
 
 from physc.diagnostics import Diagnostic, Label, SourceText, Span
+from physc.gc_pause import gc_paused
 from physc.dsl import ast
+from physc.dsl.lexer import FastLexer
 
 # What a terminal is called in a message.
 TOKEN_NAMES = {
@@ -78,7 +80,7 @@ class ParseResult:
 def _lark() -> tuple[Lark, "_Builder"]:
     grammar = resources.files("physc.dsl").joinpath("phys.lark").read_text(encoding="utf-8")
     builder = _Builder()
-    parser = Lark(grammar, parser="lalr", lexer="basic", transformer=builder, maybe_placeholders=False)
+    parser = Lark(grammar, parser="lalr", lexer=FastLexer, transformer=builder, maybe_placeholders=False)
     return parser, builder
 
 
@@ -94,27 +96,36 @@ class _Builder(Transformer):
     """Builds AST nodes while lark reduces (an inline transformer)."""
 
     source: SourceText
+    line_starts: list[int]
     offset: int
 
     def _span(self, first: Token, last: Token | None = None) -> Span:
         last = first if last is None else last
-        return self.source.span(first.start_pos + self.offset, last.end_pos + self.offset)
+        return Span(first.start_pos + self.offset, last.end_pos + self.offset, self.line_starts)
 
     def _name(self, token: Token) -> ast.Name:
-        return ast.Name(str(token), self._span(token))
+        offset = self.offset
+        return ast.Name(str(token), Span(token.start_pos + offset, token.end_pos + offset, self.line_starts))
 
     # ---- terms -------------------------------------------------------------
-    def argument(self, children):
-        names = [self._name(t) for t in children if t.type == "NAME"]
-        return ast.Argument(tuple(names), names[0].span.join(names[-1].span))
-
     def group(self, children):
-        return children  # [LPAR, argument, COMMA, argument, ..., RPAR]
+        """[LPAR, NAME, sep, NAME, …, RPAR] → ([Argument, …], RPAR)."""
+        arguments = []
+        names = []
+        for token in children[1:-1]:
+            if token.type == "NAME":
+                names.append(self._name(token))
+            elif token.type == "COMMA":
+                arguments.append(ast.Argument(tuple(names), names[0].span.join(names[-1].span)))
+                names = []
+        if names:
+            arguments.append(ast.Argument(tuple(names), names[0].span.join(names[-1].span)))
+        return arguments, children[-1]
 
     def call(self, children):
         name = self._name(children[0])
-        arguments = [a for group in children[1:] for a in group if isinstance(a, ast.Argument)]
-        closing = children[-1][-1]
+        arguments = [a for group, _ in children[1:] for a in group]
+        closing = children[-1][1]
         return ast.Term(name, tuple(arguments), name.span.join(self._span(closing)))
 
     def bracketed(self, children):
@@ -295,7 +306,7 @@ def _unclosed(chunk: _Chunk, parser: Lark) -> Token | None:
     """The innermost bracket that is still open at the end of a chunk."""
     stack: list[Token] = []
     try:
-        for token in parser.lex(chunk.text):
+        for token in FastLexer(parser.lexer_conf).lex(chunk.text):
             if token.type in _OPENERS:
                 stack.append(token)
             elif stack and token.type == _OPENERS[stack[-1].type]:
@@ -380,11 +391,17 @@ def _chunks(source: SourceText) -> tuple[list[_Chunk], list[ast.Comment], bool]:
 
 def parse_source(source: SourceText) -> ParseResult:
     """Parse a whole file; every syntax error is a diagnostic, never an exception."""
+    with gc_paused():
+        return _parse_source(source)
+
+
+def _parse_source(source: SourceText) -> ParseResult:
     parser, builder = _lark()
     diagnostics: list[Diagnostic] = []
     scenarios: list[ast.Scenario] = []
     chunks, comments, any_scenario = _chunks(source)
     builder.source = source
+    builder.line_starts = source._line_starts
     for index, chunk in enumerate(chunks):
         builder.offset = chunk.start
         builder.problems = []
