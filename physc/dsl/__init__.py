@@ -1,0 +1,1 @@
+"""The `.phys` front end: grammar, lexer, parser, syntax tree, static checks, formatter."""
