@@ -12,6 +12,7 @@ Groups:
     E05xx  restrictions
     E06xx  structure of a file and of a scenario
     E07xx  domains (plugins)
+    E08xx  generation: well-formed scenarios that yield no task (exit status 3)
 """
 
 from __future__ import annotations
@@ -63,6 +64,8 @@ _CODES = [
     ErrorCode("E0603", "error", "a scenario without an interactions section"),
     ErrorCode("E0701", "error", "a domain that is not installed"),
     ErrorCode("E0702", "error", "a domain plugin that fails to load", exit_status=2),
+    ErrorCode("E0801", "error", "the layout constraints of a scenario cannot hold together", exit_status=3),
+    ErrorCode("E0802", "error", "the search budget ran out before a layout was found", exit_status=3),
 ]
 
 CODES: dict[str, ErrorCode] = {entry.code: entry for entry in _CODES}

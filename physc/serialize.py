@@ -25,6 +25,9 @@ def to_data(value: Any) -> Any:
         for field in attrs.fields(type(value)):
             if field.metadata.get("dump", True):
                 data[field.name] = to_data(getattr(value, field.name))
+        extra = getattr(value, "__extra_dump__", None)
+        if extra is not None:
+            data.update(to_data(extra()))
         return data
     if isinstance(value, enum.Enum):
         return value.value

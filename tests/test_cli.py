@@ -101,7 +101,7 @@ def test_compile_unknown_stage(physc):
     assert run.status == 2 and "did you mean 'scenario'" in run.stderr
 
 
-@pytest.mark.parametrize("stage", ["layout-graph", "qsr", "dimension-graphs", "layout", "level"])
+@pytest.mark.parametrize("stage", ["level"])
 def test_compile_stage_not_available_yet(physc, stage):
     run = physc("compile", SF, "--emit", stage)
     assert run.status == 2

@@ -23,12 +23,18 @@ def test_every_code_is_documented_once_with_its_summary():
 
 @pytest.mark.parametrize("code", [c for c in error_codes.CODES if "```phys" in SECTIONS[c]])
 def test_documented_example_prints_what_the_doc_says(code, tmp_path, monkeypatch):
+    """A ```text block is what `physc check` prints; a ```console block names its command."""
     section = SECTIONS[code]
     source = re.search(r"```phys\n(.*?)```", section, re.S).group(1)
-    expected = re.search(r"```text\n(.*?)```", section, re.S).group(1)
     (tmp_path / "example.phys").write_text(source, encoding="utf-8")
     monkeypatch.chdir(tmp_path)
-    run = run_physc("check", "-q", "--color", "never", "example.phys")
+    console = re.search(r"```console\n\$ physc (.*?)\n(.*?)```", section, re.S)
+    if console:
+        command, expected = console.group(1).split() + ["--color", "never"], console.group(2)
+    else:
+        command = ["check", "-q", "--color", "never", "example.phys"]
+        expected = re.search(r"```text\n(.*?)```", section, re.S).group(1)
+    run = run_physc(*command)
     assert run.stderr == expected
     assert f"[{code}]" in run.stderr.splitlines()[0]
 

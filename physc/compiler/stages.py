@@ -26,16 +26,27 @@ class Unit:
 class Stage:
     name: str
     description: str
-    run: Callable[[Unit], Any] | None = None
+    run: Callable[[Unit, Any], Any] | None = None  # (unit, pipeline) → IR
+    formats: tuple[str, ...] = ("json",)
 
 
 STAGES: tuple[Stage, ...] = (
-    Stage("ast", "the syntax tree of the scenario (source positions included)", lambda unit: unit.ast),
-    Stage("scenario", "the checked scenario: typed objects, narrowed directions", lambda unit: unit.scenario),
-    Stage("layout-graph", "objects and layout constraints with provenance (infer-layout)"),
-    Stage("qsr", "the disjunction of qualitative spatial relations (to-qsr)"),
-    Stage("dimension-graphs", "the X and Y constraint graphs of a consistent conjunction"),
-    Stage("layout", "the concrete layout: objects, materials, poses (place)"),
+    Stage("ast", "the syntax tree of the scenario (source positions included)", lambda unit, _: unit.ast),
+    Stage("scenario", "the checked scenario: typed objects, narrowed directions", lambda unit, _: unit.scenario),
+    Stage(
+        "layout-graph",
+        "objects and layout constraints with provenance (infer-layout)",
+        lambda _, pipeline: pipeline.layout_graph,
+        ("json", "dot"),
+    ),
+    Stage("qsr", "the disjunction of qualitative spatial relations (to-qsr)", lambda _, pipeline: pipeline.qsr),
+    Stage(
+        "dimension-graphs",
+        "the X and Y constraint graphs of the chosen conjunction (to-dimension-graphs)",
+        lambda _, pipeline: pipeline.placed.graphs,
+        ("json", "dot"),
+    ),
+    Stage("layout", "the concrete layout: objects, materials, poses (place)", lambda _, pipeline: pipeline.placed.layout),
     Stage("level", "the generated task as a Science Birds level"),
 )
 BY_NAME = {stage.name: stage for stage in STAGES}

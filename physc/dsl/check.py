@@ -16,6 +16,7 @@ from physc.diagnostics import Diagnostic, Label, Span
 from physc.domains import DEFAULT_DOMAIN, DomainError, load_domain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, RESTRICTION, TermSignature, Vocabulary
 from physc.dsl import ast
+from physc.dsl.fmt import format_term
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
 from physc.gc_pause import gc_paused
 from physc.suggest import did_you_mean
@@ -485,5 +486,6 @@ class _ScenarioChecker:
             objects=resolved.objects,
             directions=directions,
             written=resolved.directions,
+            text=format_term(resolved.node),
             span=resolved.node.span,
         )

@@ -36,6 +36,7 @@ class TermIR:
     objects: tuple[str, ...]
     directions: tuple[str, ...] = ()
     written: tuple[str, ...] = ()
+    text: str = ""  # the term as written, in canonical form: "hit(bird, pig, left | above)"
     span: Span | None = attrs.field(eq=False, default=None)
 
 

@@ -1,5 +1,8 @@
 """The angrybirds domain: Science Birds levels (the paper's demonstration domain)."""
 
+from physc.compiler.dimension_graphs import LayoutParameters
+from physc.domains.angrybirds import layout_rules, world
+from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 
 
@@ -7,6 +10,29 @@ class AngryBirds:
     name = "angrybirds"
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY
+    layout_rules = layout_rules
+    layout_parameters = LayoutParameters(
+        clearance=0.1,
+        far=1.5,
+        left=world.PLACEMENT_AREA.left,
+        right=world.PLACEMENT_AREA.right,
+        bottom=world.PLACEMENT_AREA.bottom,
+        top=world.PLACEMENT_AREA.top,
+    )
+
+    @staticmethod
+    def concretize(graph, scenario, rng):
+        return concretize(graph, scenario, rng)
+
+    @staticmethod
+    def reach_targets(scenario) -> list[str]:
+        """The objects the bird must hit directly: the first interaction's target."""
+        first = scenario.interactions[0]
+        return [first.objects[1]] if first.name == "hit" else []
+
+    @staticmethod
+    def reachable(x: float, y: float) -> bool:
+        return world.reachable(x, y)
 
 
 DOMAIN = AngryBirds()

@@ -1,0 +1,158 @@
+"""The to-dimension-graphs pass: QSR DNF → consistent X and Y dimension graphs.
+
+Shapes come first: the domain picks concrete objects, materials, platform lengths
+and inclinations (seeded), so every QSR becomes difference constraints. The
+conjunctions are then visited in the DNF's seeded order by a depth-first search
+that adds one clause's constraints at a time and abandons a prefix as soon as it
+closes a negative cycle; all conjunctions below an abandoned prefix count as
+rejected, exactly. The pass yields consistent dimension graphs lazily: when a
+later stage cannot use one, the search goes on to the next.
+
+When no conjunction is consistent, a deletion-based search finds a minimal set of
+layout edges that cannot hold together, which is reported with its source terms.
+"""
+
+from __future__ import annotations
+
+import random
+from typing import Iterator
+
+from physc.compiler.concrete_layout import Body, ChosenRelation
+from physc.compiler.difference import DifferenceSystem, Inconsistent
+from physc.compiler.dimension_graphs import (
+    Constraint,
+    DimensionGraphs,
+    LayoutParameters,
+    base_constraints,
+    new_systems,
+    relation_constraints,
+)
+from physc.compiler.infeasible import Infeasible
+from physc.compiler.qsr_dnf import QsrClause, QsrDnf
+
+DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
+SHAPE_DRAWS = 4  # how many times shapes are drawn anew before giving up
+
+
+class _BudgetSpent(Exception):
+    pass
+
+
+def _apply(systems: dict[str, DifferenceSystem], constraints: list[Constraint]) -> dict[str, DifferenceSystem]:
+    copies = {axis: system.copy() for axis, system in systems.items()}
+    for c in constraints:
+        copies[c.axis].add(c.u, c.v, c.weight)
+    return copies
+
+
+def clause_constraints(clause: QsrClause, relation: str, bodies: dict[str, Body], parameters: LayoutParameters):
+    return relation_constraints(relation, bodies[clause.a], bodies[clause.b], parameters, clause.edge.text())
+
+
+class ToDimensionGraphs:
+    name = "to-dimension-graphs"
+
+    def __init__(self, domain, node_budget: int = DEFAULT_NODE_BUDGET):
+        self.domain = domain
+        self.node_budget = node_budget
+
+    def base(self, bodies: dict[str, Body]):
+        parameters = self.domain.layout_parameters
+        constraints = base_constraints(bodies, parameters)
+        systems = new_systems(bodies)
+        for c in constraints:
+            systems[c.axis].add(c.u, c.v, c.weight)
+        return systems, constraints
+
+    def run(self, dnf: QsrDnf, graph, scenario, rng: random.Random) -> Iterator[DimensionGraphs]:
+        parameters = self.domain.layout_parameters
+        tried = rejected = 0
+        for draw in range(SHAPE_DRAWS):
+            bodies = self.domain.concretize(graph, scenario, rng)
+            systems, base = self.base(bodies)
+            nodes = 0
+
+            # Depth-first, in the DNF's order.
+            def walk(depth, current, chosen):
+                nonlocal nodes, tried, rejected
+                if depth == len(dnf.clauses):
+                    tried += 1
+                    yield current, chosen
+                    return
+                clause = dnf.clauses[depth]
+                for relation in clause.relations:
+                    nodes += 1
+                    if nodes > self.node_budget:
+                        raise _BudgetSpent()
+                    constraints = clause_constraints(clause, relation, bodies, parameters)
+                    try:
+                        following = _apply(current, constraints)
+                    except Inconsistent:
+                        rejected += dnf.remaining(depth + 1)
+                        tried += dnf.remaining(depth + 1)
+                        continue
+                    yield from walk(depth + 1, following, chosen + ((clause, relation, tuple(constraints)),))
+
+            try:
+                for found, chosen in walk(0, systems, ()):
+                    yield DimensionGraphs(
+                        scenario=dnf.scenario,
+                        seed=dnf.seed,
+                        bodies=tuple(bodies.values()),
+                        conjunction=tuple(ChosenRelation(r, c.a, c.b, c.edge.text()) for c, r, _ in chosen),
+                        constraints=tuple(base) + tuple(k for _, _, cs in chosen for k in cs),
+                        conjunctions_tried=tried,
+                        conjunctions_rejected=rejected,
+                        dnf_size=dnf.size,
+                        shape_draws=draw + 1,
+                        systems=found,
+                    )
+                    rejected += 1  # the caller came back: it could not use this one
+            except _BudgetSpent:
+                raise Infeasible(
+                    self.name,
+                    f"the search budget ran out after {tried} of {dnf.size} conjunctions",
+                    tried=tried,
+                    budget=True,
+                ) from None
+        conflicts = self.explain(dnf, bodies)
+        raise Infeasible(
+            self.name,
+            f"no conjunction of the {dnf.size} is consistent (shapes drawn {SHAPE_DRAWS} times)",
+            conflicts=conflicts,
+            tried=tried,
+        )
+
+    def explain(self, dnf: QsrDnf, bodies: dict[str, Body]):
+        """A minimal set of layout edges whose QSRs cannot all hold (deletion-based)."""
+        parameters = self.domain.layout_parameters
+        systems, _ = self.base(bodies)
+        budget = [self.node_budget]
+
+        def feasible(clauses: list[QsrClause]) -> bool:
+            def walk(depth, current):
+                if depth == len(clauses):
+                    return True
+                for relation in clauses[depth].relations:
+                    budget[0] -= 1
+                    if budget[0] < 0:
+                        raise _BudgetSpent()
+                    try:
+                        following = _apply(current, clause_constraints(clauses[depth], relation, bodies, parameters))
+                    except Inconsistent:
+                        continue
+                    if walk(depth + 1, following):
+                        return True
+                return False
+
+            return walk(0, systems)
+
+        active = list(dnf.clauses)
+        try:
+            for clause in list(active):
+                trial = [c for c in active if c is not clause]
+                if not feasible(trial):
+                    active = trial
+        except _BudgetSpent:
+            pass  # not minimal, but still a conflicting set
+        return tuple(c.edge for c in active)

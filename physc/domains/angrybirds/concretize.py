@@ -1,0 +1,71 @@
+"""Choosing concrete game objects, materials and shapes for a layout graph.
+
+Every choice is drawn from the seeded generator handed in, so the same seed gives
+the same level. Platforms get lengths by role: a surface that something rolls or
+slides on is long enough to gain speed on; a support is short. An inclined
+surface that something rolls or slides on declines towards the motion (10° to
+25°); any other inclined surface (for a bounce) tilts 15° to 40° either way.
+"""
+
+from __future__ import annotations
+
+import random
+
+from physc.compiler.concrete_layout import Body
+from physc.compiler.geometry import Geometry
+from physc.compiler.layout_graph import ON_LOCATION, LayoutGraph
+from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
+from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT
+from physc.dsl.scenario import ScenarioIR
+
+PATH_SURFACE_LENGTH = (2.5, 5.0)
+SUPPORT_LENGTH = (1.2, 2.5)
+PLATFORM_LENGTH = (1.0, 3.0)
+INCLINED_LENGTH = (2.0, 4.0)
+
+
+def _length(rng: random.Random, bounds: tuple[float, float]) -> float:
+    return round(rng.uniform(*bounds), 2)
+
+
+def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random) -> dict[str, Body]:
+    headings = {}
+    for term in scenario.interactions:
+        if term.name in ("roll", "slide"):
+            headings.setdefault(term.objects[1], term.directions[0])
+    carried: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        if edge.term == ON_LOCATION:
+            carried.setdefault(edge.b, []).append(edge.a)
+    concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
+    bodies = {}
+    # Objects first: a platform's length depends on what it carries.
+    for node in sorted(graph.nodes, key=lambda n: shape(concrete[n.name]).kind == "platform"):
+        name = node.name
+        chosen = concrete[name]
+        if chosen == "ground":
+            width = LEVEL_RIGHT - LEVEL_LEFT
+            bodies[name] = Body(name, node.role, chosen, Geometry(width, 1.0), fixed=(0.0, GROUND_TOP - 0.5))
+            continue
+        catalogue = shape(chosen)
+        if catalogue.kind != "platform":
+            material = rng.choice(catalogue.materials) if catalogue.materials else None
+            fixed = BIRD_REST if catalogue.kind == "bird" else None
+            bodies[name] = Body(name, node.role, chosen, Geometry(catalogue.width, catalogue.height), material, fixed)
+            continue
+        if chosen == "inclinedPlatform":
+            length = _length(rng, INCLINED_LENGTH)
+            if name in headings:
+                angle = rng.uniform(10, 25) * (-1 if headings[name] == "right" else 1)
+            else:
+                angle = rng.uniform(15, 40) * rng.choice((-1, 1))
+            bodies[name] = Body(name, node.role, chosen, Geometry(length, PLATFORM_THICKNESS, round(angle, 2)))
+            continue
+        low, high = PATH_SURFACE_LENGTH if name in headings else SUPPORT_LENGTH if name in carried else PLATFORM_LENGTH
+        # An object resting in a third of its support, clear of the next platform,
+        # needs the support at least three of its widths (and a little) long.
+        widest = max((bodies[o].geometry.width for o in carried.get(name, ())), default=0.0)
+        low = max(low, 3 * widest + 0.4)
+        high = max(high, low + 1.0)
+        bodies[name] = Body(name, node.role, chosen, Geometry(_length(rng, (low, high)), PLATFORM_THICKNESS))
+    return {node.name: bodies[node.name] for node in graph.nodes}

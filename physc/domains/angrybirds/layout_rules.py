@@ -1,0 +1,202 @@
+"""Layout inference rules of the angrybirds domain.
+
+The paper's table "Inferred layout constraints":
+
+    hit(a, b, d)      → liesOnPath(b, a) ∧ inDirection(b, a, -d)
+    roll(a, b, d)     → inDirection(a, b, -d)
+    fall(a, b, d)     → locatedFar(a, b, d)
+    slide(a, b, d)    → inDirection(a, b, -d)
+    bounce(a, b, d)   → inDirection(a, b, d)
+    cannotHit(a,b,d)  → pathObstructed(a, b, d)
+    cannotFall(a)     → a chain of touching surfaces that a moves on
+
+and the layout optimisation that makes the task stand under gravity. Our precise
+reading (docs/qsr.md, "From scenario to layout"):
+
+* Every dynamic object except the player's bird rests on a support:
+  - an object hit sideways by an object that moves along surfaces rests on the
+    last surface of that mover's path, on the side the mover comes towards
+    (the target lies on the path);
+  - otherwise an object that rolls or slides rests on a support platform of its
+    own, which its path continues from (`roll(a, s, right)` puts `a` left of `s`);
+  - otherwise a new support: a platform, or the ground, at any location; for an
+    object that will fall, a platform it can be pushed off.
+* The path of an object that rolls or slides: its support, then its surfaces in
+  order, then the support of an object it hits sideways if that one has a path
+  of its own. `cannotFall(a)` links consecutive platforms of a's path with
+  `touching(p, q, upperLeft)` (p's upper-right point is q's upper-left: one
+  continuous top edge); for a path towards the left the arguments swap.
+* A surface that a dynamic object rests on is horizontal (an inclined one would
+  not hold it still): such surfaces are narrowed to flatPlatform.
+"""
+
+from __future__ import annotations
+
+from physc.compiler.layout_graph import (
+    IN_DIRECTION,
+    LIES_ON_PATH,
+    LOCATED_FAR,
+    OBJECT,
+    ON_LOCATION,
+    PATH_OBSTRUCTED,
+    PLAYER,
+    SUPPORT,
+    TOUCHING,
+    LayoutEdge,
+    LayoutGraph,
+    LayoutNode,
+    Provenance,
+)
+from physc.dsl.scenario import ScenarioIR, TermIR
+
+OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
+SIDES = ("left", "right", "above", "below")
+FLAT = "flatPlatform"
+GROUND = "ground"
+
+
+def opposite(directions) -> tuple[str, ...]:
+    return tuple(OPPOSITE[d] for d in directions)
+
+
+class _Builder:
+    def __init__(self, scenario: ScenarioIR):
+        self.scenario = scenario
+        self.nodes: dict[str, LayoutNode] = {}
+        self.edges: list[LayoutEdge] = []
+        for obj in scenario.objects:
+            role = PLAYER if obj.term == "bird" else OBJECT
+            self.nodes[obj.name] = LayoutNode(obj.name, obj.term, obj.concrete, obj.static, role)
+
+    def edge(self, term, a, b, values, provenance: Provenance):
+        self.edges.append(LayoutEdge(term, a, b, tuple(values), (provenance,)))
+
+    def support_node(self, owner: str, concrete: tuple[str, ...]) -> str:
+        name = f"support_{owner}"
+        while name in self.nodes:
+            name += "_"
+        self.nodes[name] = LayoutNode(name, "support", concrete, True, SUPPORT)
+        return name
+
+    def narrow_to_flat(self, name: str) -> None:
+        """A scenario surface that something rests on must be horizontal."""
+        node = self.nodes[name]
+        if node.role != SUPPORT and FLAT in node.concrete and node.concrete != (FLAT,):
+            self.nodes[name] = LayoutNode(node.name, node.term, (FLAT,), node.static, node.role)
+
+
+def _interaction_provenance(term: TermIR) -> Provenance:
+    return Provenance("interaction", term.text, term.span)
+
+
+def infer(scenario: ScenarioIR) -> LayoutGraph:
+    b = _Builder(scenario)
+    dynamic = {o.name for o in scenario.objects if not o.static and o.term != "bird"}
+
+    # 1. The paper's table.
+    for term in scenario.interactions:
+        why = _interaction_provenance(term)
+        if term.name == "hit":
+            actor, target = term.objects
+            b.edge(LIES_ON_PATH, target, actor, (), why)
+            b.edge(IN_DIRECTION, target, actor, opposite(term.directions), why)
+        elif term.name in ("roll", "slide"):
+            b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
+        elif term.name == "fall":
+            b.edge(LOCATED_FAR, term.objects[0], term.objects[1], term.directions, why)
+        elif term.name == "bounce":
+            b.edge(IN_DIRECTION, term.objects[0], term.objects[1], term.directions, why)
+    for term in scenario.restrictions:
+        if term.name == "cannotHit":
+            values = ("all",) if set(term.directions) == set(SIDES) else term.directions
+            b.edge(PATH_OBSTRUCTED, term.objects[0], term.objects[1], values, Provenance("restriction", term.text, term.span))
+
+    # 2. Motion along surfaces: who rolls or slides on what, towards where.
+    surfaces: dict[str, list[str]] = {}
+    heading: dict[str, str] = {}
+    moved_on: dict[str, TermIR] = {}
+    for term in scenario.interactions:
+        if term.name in ("roll", "slide"):
+            mover, surface = term.objects
+            surfaces.setdefault(mover, [])
+            if surface not in surfaces[mover]:
+                surfaces[mover].append(surface)
+            heading.setdefault(mover, term.directions[0])
+            moved_on.setdefault(mover, term)
+
+    # 3. Supports and paths, in the order of the sequence.
+    support: dict[str, str] = {}
+    paths: dict[str, list[str]] = {}
+    falls = {t.objects[0] for t in scenario.interactions if t.name == "fall"}
+
+    def path_of(mover: str) -> list[str]:
+        return paths.get(mover, [])
+
+    for term in scenario.interactions:
+        if term.name != "hit":
+            continue
+        actor, target = term.objects
+        if target not in dynamic or target in support:
+            continue
+        sideways = [d for d in term.directions if d in ("left", "right")]
+        why = _interaction_provenance(term)
+        if path_of(actor) and sideways:
+            rest = path_of(actor)[-1]
+            towards = heading[actor]
+            b.edge(ON_LOCATION, target, rest, (towards,), Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
+            support[target] = rest
+        elif target in surfaces:
+            first = moved_on[target]
+            own = b.support_node(target, (FLAT,))
+            toward = heading[target]
+            b.edge(ON_LOCATION, target, own, (toward,), Provenance("support", f"{target} starts beside the surface it moves on: {first.text}", first.span))
+            support[target] = own
+        else:
+            own = b.support_node(target, (FLAT,) if target in falls else (FLAT, GROUND))
+            if target in falls:
+                locations = tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
+                text = f"{target} rests where it can be pushed off to fall: {term.text}"
+            else:
+                locations = ("left", "centre", "right")
+                text = f"{target} rests on a support"
+            b.edge(ON_LOCATION, target, own, locations, Provenance("support", text, term.span))
+            support[target] = own
+        if target in surfaces:
+            paths[target] = [support[target]] + [s for s in surfaces[target] if s != support[target]]
+        # A mover that hits a target with a path of its own continues onto it.
+        if path_of(actor) and sideways and target in paths and paths[target][0] != path_of(actor)[-1]:
+            paths[actor].append(paths[target][0])
+
+    # Dynamic objects that nothing hits (they never move) still need a support.
+    for name in dynamic:
+        if name not in support:
+            own = b.support_node(name, (FLAT, GROUND))
+            b.edge(ON_LOCATION, name, own, ("left", "centre", "right"), Provenance("support", f"{name} rests on a support", None))
+            support[name] = own
+    # Objects at rest on a surface: that surface is horizontal.
+    for rest in support.values():
+        b.narrow_to_flat(rest)
+
+    # 4. cannotFall: consecutive platforms of the path touch.
+    for term in scenario.restrictions:
+        if term.name != "cannotFall":
+            continue
+        mover = term.objects[0]
+        path = path_of(mover)
+        why = Provenance("restriction", term.text, term.span)
+        for first, second in zip(path, path[1:]):
+            if heading.get(mover, "right") == "right":
+                b.edge(TOUCHING, first, second, ("upperLeft",), why)
+            else:
+                b.edge(TOUCHING, second, first, ("upperLeft",), why)
+
+    return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
+
+
+def _push_off(direction: str) -> tuple[str, ...]:
+    """Where on its support an object should rest to fall when hit from `direction`."""
+    if direction == "left":
+        return ("right",)
+    if direction == "right":
+        return ("left",)
+    return ("left", "right")

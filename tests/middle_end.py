@@ -1,0 +1,34 @@
+"""Helpers for the middle-end tests: the paper's scenarios through the pipeline."""
+
+from __future__ import annotations
+
+import functools
+
+from conftest import EXAMPLES
+from physc.compiler.pipeline import Pipeline
+from physc.domains import load_domain
+from physc.dsl.frontend import analyze
+
+DOMAIN = load_domain("angrybirds")
+
+
+@functools.cache
+def paper_scenarios():
+    analysis = analyze(str(EXAMPLES / "paper" / "all.paper.phys"))
+    return {s.name: s for s in analysis.scenarios}
+
+
+def pipeline(name: str, seed: int = 0) -> Pipeline:
+    return Pipeline(DOMAIN, paper_scenarios()[name], seed)
+
+
+def scenario_from_text(text: str):
+    import tempfile
+    from pathlib import Path
+
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "x.phys"
+        path.write_text(text)
+        analysis = analyze(str(path))
+    assert not [d for d in analysis.diagnostics if d.is_error], analysis.diagnostics
+    return analysis.scenarios[0]

@@ -1,0 +1,66 @@
+"""infer-layout: the layout graphs of the paper's scenarios."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import GOLDEN, check_golden
+from middle_end import pipeline
+from physc.serialize import dumps
+
+
+@pytest.mark.parametrize("name, number", [("S", 6), ("RS", 9)])
+def test_golden_layout_graphs_of_the_papers_figure(name, number):
+    graph = pipeline(name).layout_graph
+    check_golden(GOLDEN / "layout_graph" / f"{number:02d}_{name}.json", dumps(graph))
+    check_golden(GOLDEN / "layout_graph" / f"{number:02d}_{name}.dot", graph.to_dot())
+
+
+def edges(name):
+    return {e.text() for e in pipeline(name).layout_graph.edges}
+
+
+def test_sliding_scenario_structure():
+    graph = pipeline("S").layout_graph
+    assert [n.name for n in graph.nodes if n.role == "support"] == ["support_sBlock"]
+    assert {
+        "inDirection(sBlock, bird, right)",
+        "inDirection(sBlock, hSurface, left)",
+        "inDirection(pig, sBlock, right)",
+        "pathObstructed(bird, pig, all)",
+        "onLocation(sBlock, support_sBlock, right)",
+        "onLocation(pig, hSurface, right)",
+        "touching(support_sBlock, hSurface, upperLeft)",
+    } <= edges("S")
+
+
+def test_provenance_points_at_the_source():
+    graph = pipeline("RS").layout_graph
+    roll = next(e for e in graph.edges if e.text() == "inDirection(rBlock, surface, left)")
+    (why,) = roll.provenance
+    assert why.rule == "interaction" and why.text == "roll(rBlock, surface, right)"
+    assert why.span.line == 19  # all.paper.phys, scenario RS
+    chain = next(e for e in graph.edges if e.text() == "touching(surface, hSurface, upperLeft)")
+    assert chain.provenance[0].text == "cannotFall(sBlock)"
+
+
+def test_every_dynamic_object_gets_a_support():
+    for name in ("SF", "R", "F", "RRR", "SFR", "BF"):
+        graph = pipeline(name).layout_graph
+        supported = {e.a for e in graph.edges if e.term == "onLocation"}
+        dynamic = {n.name for n in graph.nodes if not n.static and n.role == "object"}
+        assert dynamic <= supported, name
+
+
+def test_surfaces_things_rest_on_become_flat():
+    graph = pipeline("R").layout_graph
+    assert graph.node("surface").concrete == ("flatPlatform",)
+    assert pipeline("B").layout_graph.node("iSurface").concrete == ("inclinedPlatform",)
+
+
+def test_redundant_edges_are_merged():
+    graph = pipeline("BF").layout_graph
+    bird_surface = [e for e in graph.edges if {e.a, e.b} == {"bird", "iSurface"} and e.term == "inDirection"]
+    assert len(bird_surface) == 1
+    assert bird_surface[0].values == ("below",)
+    assert [p.text for p in bird_surface[0].provenance] == ["bounce(bird, iSurface, below)", "hit(bird, iSurface, any)"]
