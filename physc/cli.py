@@ -207,7 +207,7 @@ def cmd_compile(args) -> int:
         write_atomic(args.png, render(outputs[0], fmt))
     if args.output:
         write_atomic(args.output, text)
-    elif not args.png:
+    else:
         sys.stdout.write(text)
     return EXIT_OK
 
