@@ -15,7 +15,7 @@ from physc.serialize import dumps
 
 NAMES = list(paper_scenarios())
 PARAMETERS = DOMAIN.layout_parameters
-SEEDS = range(12)
+SEEDS = range(25)
 
 
 def check_layout(layout):

@@ -113,7 +113,7 @@ def _directional(horizontal, vertical, gap):
     return tuple(parts)
 
 
-_TILES = {
+TILES = {  # relation → (state in x, state in y)
     "N": ("overlap", "after"),
     "NE": ("after", "after"),
     "E": ("after", "overlap"),
@@ -125,7 +125,7 @@ _TILES = {
 }
 
 RELATIONS: dict[str, tuple[Atom, ...]] = {}
-for _name, (_h, _v) in _TILES.items():
+for _name, (_h, _v) in TILES.items():
     RELATIONS[_name] = _directional(_h, _v, "clearance")
     RELATIONS["Far" + _name] = _directional(_h, _v, "far")
 

@@ -1,9 +1,10 @@
 """Deciding whether a QSR holds between two placed objects, from coordinates.
 
 This is the reference reading of the definitions in `physc.compiler.qsr` and
-docs/qsr.md, written independently of the constraint machinery: it computes the
-five points of each object from its pose (with complex-number rotation, not the
-solver's offsets) and tests each relation's formula directly. The tests use it
+docs/qsr.md, written independently of the constraint machinery (it shares only
+the table naming each tile's state per axis): it computes the five points of each
+object from its pose (with complex-number rotation, not the solver's offsets) and
+tests each relation's formula directly. The tests use it
 to check every placed layout; validation can use it on any layout.
 """
 
@@ -11,6 +12,8 @@ from __future__ import annotations
 
 import cmath
 import math
+
+from physc.compiler.qsr import TILES
 
 TOLERANCE = 1e-5
 
@@ -56,26 +59,14 @@ def _axis_is(state: str, a_low, a_high, b_low, b_high, gap: float) -> bool:
     return _le(a_low, b_high) and _le(b_low, a_high)
 
 
-_TILES = {
-    "N": ("overlap", "after"),
-    "NE": ("after", "after"),
-    "E": ("after", "overlap"),
-    "SE": ("after", "before"),
-    "S": ("overlap", "before"),
-    "SW": ("before", "before"),
-    "W": ("before", "overlap"),
-    "NW": ("before", "after"),
-}
-
-
 def holds(relation: str, first, second, clearance: float, far: float) -> bool:
     """Whether `relation(first, second)` holds; the objects have x, y, width, height, rotation."""
     a, b = _Object(first), _Object(second)
     far_relation = relation.startswith("Far")
     tile = relation[3:] if far_relation else relation
-    if tile in _TILES:
+    if tile in TILES:
         gap = far if far_relation else clearance
-        horizontal, vertical = _TILES[tile]
+        horizontal, vertical = TILES[tile]
         return _axis_is(horizontal, a.left, a.right, b.left, b.right, gap) and _axis_is(
             vertical, a.bottom, a.top, b.bottom, b.top, gap
         )
