@@ -1,14 +1,16 @@
 """Pictures of angrybirds layouts (PNG or SVG), drawn with matplotlib.
 
-The picture shows the level as Science Birds lays it out: the ground, the
-slingshot, platforms (grey; supports added by the compiler lighter), blocks
-coloured by material, pigs green, the bird red, each labelled with its name.
-Optional arrows show paths of moving objects (used by `physc render`).
+The picture shows a level as Science Birds lays it out: the ground, the
+slingshot, platforms (dark grey; supports the compiler added light grey), blocks
+coloured by material (wood, stone, ice), pigs green, the bird red, each labelled
+with its name. Optional dashed arrows show the paths of moving objects, like the
+paper's figure of its 16 generated tasks (`physc render --shot …`).
 """
 
 from __future__ import annotations
 
 import io
+import math
 
 import matplotlib
 
@@ -17,59 +19,83 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
 
 from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
-from physc.compiler.geometry import polygon  # noqa: E402
-from physc.domains.angrybirds.catalogue import shape  # noqa: E402
-from physc.domains.angrybirds.world import GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT, SLINGSHOT  # noqa: E402
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab  # noqa: E402
+from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
+from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
+from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT  # noqa: E402
 
-MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0", None: "#c8914b"}
-KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b"}
+MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
+KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}
 
 
-def draw_layout(layout: ConcreteLayout, title: str | None = None, paths=None):
-    """A matplotlib figure of the layout; `paths` maps names to [(x, y), …] to draw as arrows."""
+def _outline(obj: LevelObject):
+    """The patch of a level object, from its catalogue shape."""
+    catalogue = by_prefab(obj.type)
+    angle = math.radians(obj.rotation or 0.0)
+    cos, sin = math.cos(angle), math.sin(angle)
+    if catalogue.kind == "platform":
+        w = PLATFORM_BASE * (obj.scale_x if obj.scale_x is not None else 1.0) / 2
+        h = PLATFORM_BASE * (obj.scale_y if obj.scale_y is not None else 1.0) / 2
+        points = ((-w, -h), (w, -h), (w, h), (-w, h))
+    elif catalogue.round:
+        return patches.Circle((obj.x, obj.y), catalogue.width / 2)
+    else:
+        points = catalogue.outline_points()
+    return patches.Polygon([(obj.x + px * cos - py * sin, obj.y + px * sin + py * cos) for px, py in points])
+
+
+def draw_level(level: Level, title: str = "", paths=None, supports=frozenset(), bird=True):
+    """A matplotlib figure of a level; `paths` maps names to [(x, y), …], drawn as arrows."""
     figure, axes = plt.subplots(figsize=(12, 5.2), dpi=100)
+    tops = [o.y + 1.0 for o in level.objects] + [6.0]
     axes.set_xlim(LEVEL_LEFT - 0.5, LEVEL_RIGHT + 0.5)
-    top = max([o.y + o.height for o in layout.objects] + [6.0])
-    axes.set_ylim(GROUND_TOP - 1.2, top + 0.8)
+    axes.set_ylim(GROUND_TOP - 1.2, max(tops) + 0.5)
     axes.set_aspect("equal")
     axes.add_patch(patches.Rectangle((LEVEL_LEFT, GROUND_TOP - 1.2), LEVEL_RIGHT - LEVEL_LEFT, 1.2, color="#8fbf5a", zorder=0))
-    axes.add_patch(patches.Rectangle((SLINGSHOT[0] - 0.12, GROUND_TOP), 0.24, SLINGSHOT[1] + 0.9 - GROUND_TOP, color="#6b4226", zorder=1))
-    for obj in layout.objects:
-        if obj.concrete == "ground":
-            continue
-        kind = shape(obj.concrete).kind
+    sling_x, sling_y = level.slingshot
+    axes.add_patch(patches.Rectangle((sling_x - 0.12, GROUND_TOP), 0.24, sling_y + 0.9 - GROUND_TOP, color="#6b4226", zorder=1))
+    if bird:
+        axes.add_patch(patches.Circle(BIRD_REST, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
+    for obj in level.objects:
+        kind = by_prefab(obj.type).kind
         if kind == "platform":
-            colour = "#b5b5b5" if obj.role == "support" else KIND_COLOURS["platform"]
+            colour = "#b5b5b5" if obj.name in supports else KIND_COLOURS["platform"]
+        elif kind == "block":
+            colour = MATERIAL_COLOURS.get(obj.material, "#c8914b")
         else:
-            colour = KIND_COLOURS.get(kind, MATERIAL_COLOURS.get(obj.material, "#c8914b"))
-        if shape(obj.concrete).round:
-            artist = patches.Circle((obj.x, obj.y), obj.width / 2, facecolor=colour, edgecolor="black", linewidth=0.8)
-        elif obj.concrete == "triangleHole":
-            w, h = obj.width / 2, obj.height / 2
-            artist = patches.Polygon([(obj.x - w, obj.y - h), (obj.x + w, obj.y - h), (obj.x, obj.y + h)], facecolor=colour, edgecolor="black", linewidth=0.8)
-        else:
-            artist = patches.Polygon(polygon(obj.points()), facecolor=colour, edgecolor="black", linewidth=0.8)
+            colour = KIND_COLOURS[kind]
+        artist = _outline(obj)
+        artist.set_facecolor(colour)
+        artist.set_edgecolor("black")
+        artist.set_linewidth(0.8)
         artist.set_zorder(3)
         axes.add_patch(artist)
-        label_y = obj.y + obj.height / 2 + 0.12 if kind != "platform" else obj.y - obj.height / 2 - 0.32
-        axes.annotate(obj.name, (obj.x, label_y), ha="center", fontsize=7, zorder=5)
+        if obj.name:
+            axes.annotate(obj.name, (obj.x, obj.y), ha="center", va="center", fontsize=6, zorder=6,
+                          bbox={"boxstyle": "round,pad=0.1", "fc": "white", "alpha": 0.6, "lw": 0})
     for name, points in (paths or {}).items():
+        if len(points) < 2:
+            continue
         xs, ys = zip(*points)
         axes.plot(xs, ys, linestyle="--", linewidth=1.0, color="#333333", zorder=4)
-        if len(points) > 1:
-            (x0, y0), (x1, y1) = points[-2], points[-1]
-            axes.annotate("", (x1, y1), (x0, y0), arrowprops={"arrowstyle": "->", "color": "#333333"}, zorder=4)
-    axes.set_title(title or f"{layout.scenario} (seed {layout.seed})", fontsize=10)
+        axes.annotate("", points[-1], points[-2], arrowprops={"arrowstyle": "->", "color": "#333333", "lw": 1.2}, zorder=4)
+    axes.set_title(title, fontsize=10)
     axes.tick_params(labelsize=7)
     figure.tight_layout()
     return figure
 
 
-def render(layout: ConcreteLayout, fmt: str = "png", title: str | None = None, paths=None) -> bytes:
-    """The picture as PNG or SVG bytes (deterministic for the same layout)."""
-    figure = draw_layout(layout, title, paths)
+def save(figure, fmt: str = "png") -> bytes:
+    """The figure as PNG or SVG bytes, without timestamps (same figure, same bytes)."""
     buffer = io.BytesIO()
     metadata = {"Software": None} if fmt == "png" else {"Date": None, "Creator": None}
     figure.savefig(buffer, format=fmt, metadata=metadata)
     plt.close(figure)
     return buffer.getvalue()
+
+
+def render(layout: ConcreteLayout, fmt: str = "png", title: str | None = None, paths=None) -> bytes:
+    """A picture of a concrete layout: as the Science Birds level it becomes."""
+    supports = frozenset(o.name for o in layout.objects if o.role == "support")
+    figure = draw_level(level_from_layout(layout), title or f"{layout.scenario} (seed {layout.seed})", paths, supports)
+    return save(figure, fmt)

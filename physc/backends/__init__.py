@@ -1,0 +1,102 @@
+"""Physics backends are plugins (entry-point group `physc.backends`), the built-in
+pymunk one included.
+
+A backend is thin (docs/plugins.md): it turns bodies into an engine world and
+offers primitives — add and remove bodies, step, read poses and velocities, set a
+velocity, and report the contacts that began or ended. Game rules and the
+recognition of interactions are domain code over the backend-neutral values
+defined here, so every engine is judged by the same rules.
+"""
+
+from __future__ import annotations
+
+import functools
+from importlib.metadata import EntryPoint, entry_points
+from typing import Protocol
+
+import attrs
+
+from physc.suggest import did_you_mean
+
+ENTRY_POINT_GROUP = "physc.backends"
+DEFAULT_BACKEND = "pymunk"
+
+
+@attrs.frozen
+class Circle:
+    radius: float
+
+
+@attrs.frozen
+class Polygon:
+    points: tuple[tuple[float, float], ...]  # convex, counter-clockwise, about the centre
+
+
+@attrs.frozen
+class BodySpec:
+    name: str
+    shape: Circle | Polygon
+    x: float
+    y: float
+    angle: float = 0.0  # radians, counter-clockwise
+    static: bool = False
+    mass: float | None = None  # None: density × area
+    density: float = 1.0
+    friction: float = 0.5  # as the game states it; the backend combines pairs like Box2D
+    bounciness: float = 0.0
+    gravity_scale: float = 1.0  # relative to the world's gravity
+    angular_damping: float = 0.0  # Box2D-style: ω ← ω / (1 + dt · damping) each step
+
+
+@attrs.frozen
+class ContactEvent:
+    """Two bodies began touching. `normal` points from `a` to `b`; `relative_velocity`
+    is a's velocity minus b's at the contact point, before the collision is resolved."""
+
+    a: str
+    b: str
+    point: tuple[float, float]
+    normal: tuple[float, float]
+    relative_velocity: tuple[float, float]
+    velocity_a: tuple[float, float]
+    velocity_b: tuple[float, float]
+
+
+class World(Protocol):
+    names: list[str]
+
+    def add(self, spec: BodySpec) -> None: ...
+    def remove(self, name: str) -> None: ...
+    def step(self, dt: float) -> None: ...
+    def state(self, name: str) -> tuple[float, float, float, float, float, float]: ...
+    def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None: ...
+    def begun(self) -> list[ContactEvent]: ...
+    def ended(self) -> list[tuple[str, str]]: ...
+    def touching(self, name: str) -> set[str]: ...
+
+
+class Backend(Protocol):
+    name: str
+    description: str
+
+    def create_world(self, gravity: float) -> World: ...
+
+
+class BackendError(Exception):
+    pass
+
+
+def installed_backends() -> dict[str, EntryPoint]:
+    return dict(sorted((ep.name, ep) for ep in entry_points(group=ENTRY_POINT_GROUP)))
+
+
+@functools.cache
+def load_backend(name: str = DEFAULT_BACKEND) -> Backend:
+    installed = installed_backends()
+    if name not in installed:
+        hint = did_you_mean(name, installed) or "installed backends: " + (", ".join(installed) or "none")
+        raise BackendError(f"the physics backend '{name}' is not installed; {hint}")
+    try:
+        return installed[name].load()
+    except Exception as error:  # a broken third-party plugin must not crash physc
+        raise BackendError(f"the plugin of backend '{name}' ({installed[name].value}) fails to load: {error}") from error

@@ -1,0 +1,163 @@
+"""A pymunk world behind physc's backend interface.
+
+Box2D (the engine of Science Birds) and Chipmunk combine contact properties
+differently: Box2D takes the geometric mean of two frictions and the larger of
+two restitutions; Chipmunk multiplies. Each shape therefore gets the square root
+of its friction (the product is then the geometric mean, exactly) and the pair's
+restitution is set to the larger of the two in a pre-solve callback. Contacts
+are reported from pymunk 7's `Space.on_collision` begin and separate callbacks.
+Collision slop, the skin around polygons and the solver's iterations follow
+Box2D's defaults for metre-sized objects (levels saved from the game keep
+stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). The world is deterministic: same bodies, same steps, same
+result.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pymunk
+
+from physc.backends import BodySpec, Circle, ContactEvent
+
+ITERATIONS = 10
+SLOP = 0.005  # Box2D's linear slop
+SKIN = 0.01  # Box2D's polygon radius (2 × linear slop): polygons keep this far apart
+SLEEP_AFTER = 0.5  # seconds at rest before a body sleeps (as Box2D's time to sleep)
+IDLE_SPEED = 0.05
+
+
+def _velocity_function(scale: float, angular_damping: float):
+    def update(body, gravity, damping, dt):
+        pymunk.Body.update_velocity(body, (gravity[0] * scale, gravity[1] * scale), damping, dt)
+        if angular_damping:
+            body.angular_velocity = body.angular_velocity / (1.0 + dt * angular_damping)
+
+    return update
+
+
+class PymunkWorld:
+    def __init__(self, gravity: float):
+        self.space = pymunk.Space()
+        self.space.gravity = (0.0, -gravity)
+        self.space.iterations = ITERATIONS
+        self.space.collision_slop = SLOP
+        self.space.sleep_time_threshold = SLEEP_AFTER
+        self.space.idle_speed_threshold = IDLE_SPEED
+        self.gravity = gravity
+        self.names: list[str] = []
+        self.bodies: dict[str, pymunk.Body] = {}
+        self.shapes: dict[str, pymunk.Shape] = {}
+        self._name_of: dict[int, str] = {}
+        self._bounciness: dict[int, float] = {}
+        self._begun: list[ContactEvent] = []
+        self._ended: list[tuple[str, str]] = []
+        self._touching: dict[str, set[str]] = {}
+        self.space.on_collision(begin=self._on_begin, pre_solve=self._on_pre_solve, separate=self._on_separate)
+
+    # ---- building --------------------------------------------------------------
+    def add(self, spec: BodySpec) -> None:
+        if spec.static:
+            body = pymunk.Body(body_type=pymunk.Body.STATIC)
+        else:
+            body = pymunk.Body()
+        body.position = (spec.x, spec.y)
+        body.angle = spec.angle
+        if isinstance(spec.shape, Circle):
+            shape = pymunk.Circle(body, spec.shape.radius)
+        else:
+            shape = pymunk.Poly(body, spec.shape.points, radius=SKIN)
+        if not spec.static:
+            if spec.mass is not None:
+                shape.mass = spec.mass
+            else:
+                shape.density = spec.density
+        shape.friction = math.sqrt(max(spec.friction, 0.0))
+        shape.elasticity = spec.bounciness
+        self.space.add(body, shape)
+        if not spec.static and (spec.gravity_scale != 1.0 or spec.angular_damping):
+            body.velocity_func = _velocity_function(spec.gravity_scale, spec.angular_damping)
+        self.names.append(spec.name)
+        self.bodies[spec.name] = body
+        self.shapes[spec.name] = shape
+        self._name_of[id(shape)] = spec.name
+        self._bounciness[id(shape)] = spec.bounciness
+        self._touching[spec.name] = set()
+
+    def remove(self, name: str) -> None:
+        body, shape = self.bodies.pop(name), self.shapes.pop(name)
+        self.space.remove(body, shape)
+        self.names.remove(name)
+        for other in self._touching.pop(name, ()):
+            self._touching.get(other, set()).discard(name)
+
+    # ---- running -----------------------------------------------------------------
+    def step(self, dt: float) -> None:
+        self.space.step(dt)
+
+    def state(self, name: str):
+        body = self.bodies[name]
+        return (body.position.x, body.position.y, body.angle, body.velocity.x, body.velocity.y, body.angular_velocity)
+
+    def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
+        body = self.bodies[name]
+        body.velocity = (vx, vy)
+        body.angular_velocity = angular
+        body.activate() if body.body_type == pymunk.Body.DYNAMIC else None
+
+    def mass(self, name: str) -> float:
+        return self.bodies[name].mass
+
+    def begun(self) -> list[ContactEvent]:
+        events, self._begun = self._begun, []
+        return events
+
+    def ended(self) -> list[tuple[str, str]]:
+        events, self._ended = self._ended, []
+        return events
+
+    def touching(self, name: str) -> set[str]:
+        return set(self._touching.get(name, ()))
+
+    # ---- collision callbacks -------------------------------------------------------
+    def _pair(self, arbiter):
+        first, second = arbiter.shapes
+        return self._name_of.get(id(first)), self._name_of.get(id(second))
+
+    def _on_begin(self, arbiter, space, data):
+        a, b = self._pair(arbiter)
+        if a is None or b is None:
+            return
+        points = arbiter.contact_point_set.points
+        point = points[0].point_a if points else arbiter.bodies[0].position
+        body_a, body_b = arbiter.bodies
+        va = body_a.velocity_at_world_point(point)
+        vb = body_b.velocity_at_world_point(point)
+        normal = arbiter.normal
+        self._begun.append(
+            ContactEvent(
+                a,
+                b,
+                (point.x, point.y),
+                (normal.x, normal.y),
+                (va.x - vb.x, va.y - vb.y),
+                (va.x, va.y),
+                (vb.x, vb.y),
+            )
+        )
+        self._touching[a].add(b)
+        self._touching[b].add(a)
+
+    def _on_pre_solve(self, arbiter, space, data):
+        first, second = arbiter.shapes
+        arbiter.restitution = max(self._bounciness.get(id(first), 0.0), self._bounciness.get(id(second), 0.0))
+
+    def _on_separate(self, arbiter, space, data):
+        a, b = self._pair(arbiter)
+        if a is None or b is None:
+            return
+        self._ended.append((a, b))
+        if a in self._touching:
+            self._touching[a].discard(b)
+        if b in self._touching:
+            self._touching[b].discard(a)

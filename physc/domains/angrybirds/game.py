@@ -1,0 +1,204 @@
+"""Playing a Science Birds level: bodies, the shot, the rules, the trace.
+
+The game turns a level into backend bodies (catalogue shapes, materials), fires
+the bird, and after every physics step applies the rules of Science Birds to the
+contacts the backend reports: damage from the attacker's mass and the relative
+velocity, destruction at life <= 0, removal of objects leaving the level and of
+birds that have come to rest, success when every pig is destroyed. It records
+everything in a Trace; recognising interactions is `recognise.py`'s job.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physc.backends import BodySpec, Circle, Polygon, load_backend
+from physc.domains.angrybirds.catalogue import BY_PREFAB, MATERIAL, PHYQ_CIRCLES, PLATFORM_BASE, shape
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.rules import RULES, Rules
+from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
+from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, SeparationRecord, Trace
+
+BIRD = "bird"
+GROUND = "ground"
+STILL_SPEED = 0.02  # below this (units/s and rad/s) a body counts as at rest
+
+
+def _material(obj: LevelObject) -> str:
+    return obj.material if obj.material in MATERIAL else "wood"
+
+
+class Game:
+    def __init__(self, level: Level, backend=None, rules: Rules = RULES):
+        self.level = level
+        self.backend = backend or load_backend()
+        self.rules = rules
+
+    # ---- building the world ---------------------------------------------------------
+    def _spec(self, obj: LevelObject) -> tuple[BodySpec, str, float, float]:
+        """The body of a level object, its kind, life and defence."""
+        catalogue = BY_PREFAB[obj.type]
+        rules = self.rules
+        angle = math.radians(obj.rotation or 0.0)
+        if catalogue.kind == "platform":
+            w = PLATFORM_BASE * (obj.scale_x if obj.scale_x is not None else 1.0) / 2
+            h = PLATFORM_BASE * (obj.scale_y if obj.scale_y is not None else 1.0) / 2
+            outline = Polygon(((-w, -h), (w, -h), (w, h), (-w, h)))
+            spec = BodySpec(obj.name, outline, obj.x, obj.y, angle, static=True, friction=rules.platform_friction)
+            return spec, "platform", math.inf, 0.0
+        if catalogue.round and rules.circles == "phyq" and catalogue.name in PHYQ_CIRCLES:
+            outline = Polygon(catalogue.phyq_circle_points())
+        elif catalogue.round:
+            outline = Circle(catalogue.width / 2)
+        else:
+            outline = Polygon(catalogue.outline_points())
+        common = dict(angle=angle, angular_damping=rules.angular_drag)
+        if catalogue.kind == "pig":
+            spec = BodySpec(obj.name, outline, obj.x, obj.y, density=rules.pig_density, friction=rules.pig_friction, bounciness=rules.pig_bounciness, **common)
+            return spec, "pig", float(catalogue.life[""]), rules.pig_defence
+        if catalogue.kind == "tnt":
+            spec = BodySpec(obj.name, outline, obj.x, obj.y, density=1.0, friction=0.5, gravity_scale=rules.tnt_gravity_scale, **common)
+            return spec, "tnt", float(catalogue.life[""]), 0.0
+        material = MATERIAL[_material(obj)]
+        spec = BodySpec(obj.name, outline, obj.x, obj.y, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
+        return spec, "block", float(catalogue.life[material.name]), material.defence
+
+    def build(self):
+        world = self.backend.create_world(self.rules.gravity)
+        ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, GROUND_TOP - 0.5, static=True, friction=self.rules.ground_friction)
+        world.add(ground)
+        self.kinds = {GROUND: "ground"}
+        self.life, self.defence, self.material = {}, {}, {}
+        for obj in self.level.objects:
+            spec, kind, life, defence = self._spec(obj)
+            world.add(spec)
+            self.kinds[obj.name] = kind
+            self.life[obj.name] = life
+            self.defence[obj.name] = defence
+            self.material[obj.name] = _material(obj) if kind == "block" else ""
+        return world
+
+    # ---- playing ----------------------------------------------------------------------
+    def simulate(self, shot: Shot | None = None, seconds: float = 10.0, stop_at_rest: bool = True, invulnerable: float | None = None) -> Trace:
+        """Run the level for `seconds`, with a shot at t = 0 or none.
+
+        Damage counts from the shot on (the player shoots after the level's first
+        2 s of invulnerability); with no shot, the first 2 s are invulnerable, as
+        when the level loads. With `stop_at_rest` the run ends once everything has
+        come to rest (and the bird is gone or still)."""
+        rules = self.rules
+        world = self.build()
+        if invulnerable is None:
+            invulnerable = 0.0 if shot is not None else rules.invulnerable_seconds
+        dynamic = [o.name for o in self.level.objects if self.kinds[o.name] != "platform"]
+        if shot is not None:
+            bird = BodySpec(BIRD, Circle(shape("redBird").width / 2), *BIRD_REST, mass=rules.bird_mass, friction=rules.bird_friction, bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag)
+            world.add(bird)
+            world.set_velocity(BIRD, *shot.velocity())
+            self.kinds[BIRD] = "bird"
+            dynamic = [BIRD] + dynamic
+        index = {name: i for i, name in enumerate(dynamic)}
+        steps = int(round(seconds / rules.dt))
+        states = np.full((steps, len(dynamic), 6), np.nan)
+        contacts, separations, damage, destructions = [], [], [], []
+        alive = set(dynamic)
+        pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
+        resting_since = None
+        for step in range(steps):
+            world.step(rules.dt)
+            time = (step + 1) * rules.dt
+            for event in world.begun():
+                record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
+                contacts.append(record)
+                if time > invulnerable:
+                    self._damage(world, record, damage, time)
+            for a, b in world.ended():
+                separations.append(SeparationRecord(time, a, b))
+            # Destruction: by damage, by leaving the level; birds at rest or too old go.
+            for name in list(alive):
+                x, y, angle, vx, vy, w = world.state(name)
+                gone = None
+                if self.life.get(name, math.inf) <= 0:
+                    gone = ("damage", self._last_attacker(damage, name))
+                elif not rules.world_left <= x <= rules.world_right:
+                    gone = ("out of world", None)
+                elif name == BIRD and (time >= rules.bird_lifetime or (time >= rules.bird_still_after and math.hypot(vx, vy) < rules.bird_still_speed)):
+                    gone = ("removed", None)
+                if gone:
+                    if self.kinds[name] == "tnt" and gone[0] == "damage":
+                        self._explode(world, name, alive, damage, time)
+                    destructions.append(DestructionRecord(time, name, gone[0], gone[1]))
+                    world.remove(name)
+                    alive.discard(name)
+                else:
+                    states[step, index[name]] = (x, y, angle, vx, vy, w)
+            if stop_at_rest:
+                moving = any(
+                    abs(states[step, index[n], 3]) + abs(states[step, index[n], 4]) + abs(states[step, index[n], 5]) > STILL_SPEED
+                    for n in alive
+                )
+                if moving or BIRD in alive:
+                    resting_since = None
+                elif resting_since is None:
+                    resting_since = time
+                elif time - resting_since >= 0.3:
+                    states = states[: step + 1]
+                    break
+        return Trace(rules.dt, tuple(dynamic), dict(self.kinds), states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions), pigs)
+
+    # ---- rules ----------------------------------------------------------------------------
+    def _damage(self, world, contact: ContactRecord, out: list, time: float) -> None:
+        rules = self.rules
+        speed = contact.speed
+        if speed <= 0:
+            return
+        rv = contact.relative_velocity
+        kind_a, kind_b = self.kinds.get(contact.a), self.kinds.get(contact.b)
+        static_a = kind_a in ("platform", "ground")
+        static_b = kind_b in ("platform", "ground")
+        # The attacker: the body whose velocity projects more onto the approach.
+        if static_a:
+            attacker = contact.b
+        elif static_b:
+            attacker = contact.a
+        else:
+            push_a = contact.velocity_a[0] * rv[0] + contact.velocity_a[1] * rv[1]
+            push_b = -(contact.velocity_b[0] * rv[0] + contact.velocity_b[1] * rv[1])
+            attacker = contact.a if push_a >= push_b else contact.b
+        mass = world.mass(attacker)
+        for target in (contact.a, contact.b):
+            if target not in self.life or self.life[target] <= 0:
+                continue
+            if attacker == BIRD:
+                amount = speed * mass * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
+            else:
+                amount = speed * mass * rules.damage_factor * rules.block_damage_share
+            amount -= self.defence[target]
+            if amount <= 0:
+                continue
+            self.life[target] -= amount
+            other = contact.b if target == contact.a else contact.a
+            out.append(DamageRecord(time, target, amount, self.life[target], other))
+
+    @staticmethod
+    def _last_attacker(damage: list, name: str) -> str | None:
+        return next((d.by for d in reversed(damage) if d.target == name), None)
+
+    def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
+        rules = self.rules
+        cx, cy = world.state(name)[:2]
+        for other in list(alive):
+            if other == name:
+                continue
+            x, y, _, vx, vy, w = world.state(other)
+            distance = math.hypot(x - cx, y - cy)
+            if distance > rules.tnt_radius or distance == 0:
+                continue
+            push = rules.tnt_impulse / max(world.mass(other), 1e-6)
+            world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
+            if other in self.life:
+                self.life[other] -= rules.tnt_damage
+                damage.append(DamageRecord(time, other, rules.tnt_damage, self.life[other], name))

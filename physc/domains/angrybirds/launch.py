@@ -1,0 +1,53 @@
+"""The launch model: a full-stretch shot from the bird's rest point.
+
+velocity = direction · 10 · min(stretch, 1); to pass through a target point
+(dx, dy) from the launch point, tan θ = (v² ± √(v⁴ − g(g dx² + 2 dy v²))) / (g dx):
+the minus root is the low trajectory, the plus root the high one; no real root
+means the point is out of reach.
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.domains.angrybirds.world import BIRD_REST, GRAVITY, LAUNCH_SPEED
+
+
+class Unreachable(ValueError):
+    pass
+
+
+@attrs.frozen
+class Shot:
+    """A shot: at a target point on the low or high trajectory, or at a release angle."""
+
+    target: tuple[float, float] | None = None
+    trajectory: str = "low"  # "low" | "high"
+    angle: float | None = None  # degrees above the horizontal, counter-clockwise
+
+    def release_angle(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> float:
+        """The release angle in degrees."""
+        if self.angle is not None:
+            return self.angle
+        x, y = self.target
+        dx, dy = x - BIRD_REST[0], y - BIRD_REST[1]
+        disc = speed**4 - gravity * (gravity * dx * dx + 2 * dy * speed * speed)
+        if disc < 0:
+            raise Unreachable(f"({x:g}, {y:g}) is out of reach of a full-stretch shot")
+        if dx == 0:
+            return 90.0
+        root = math.sqrt(disc)
+        tangent = (speed**2 - root) / (gravity * dx) if self.trajectory == "low" else (speed**2 + root) / (gravity * dx)
+        angle = math.degrees(math.atan(tangent))
+        return angle if dx > 0 else angle + 180.0
+
+    def velocity(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
+        angle = math.radians(self.release_angle(speed, gravity))
+        return speed * math.cos(angle), speed * math.sin(angle)
+
+    def text(self) -> str:
+        if self.angle is not None:
+            return f"angle {self.angle:g}°"
+        return f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"

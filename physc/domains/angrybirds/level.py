@@ -1,0 +1,43 @@
+"""A Science Birds level, as its XML file says it (shared/design/sciencebirds-facts.md §1).
+
+The model keeps what a file says and nothing else: an attribute that is absent
+stays `None` (so `material=""` and no material at all are told apart), and
+numbers are floats. Import → emit → import gives an equal model.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+ELEMENTS = ("Block", "Pig", "TNT", "Platform")
+
+
+@attrs.frozen
+class LevelObject:
+    element: str  # Block | Pig | TNT | Platform
+    type: str  # the prefab name: Circle, BasicSmall, Platform, TNT, …
+    x: float
+    y: float
+    rotation: float | None = None  # degrees, counter-clockwise
+    material: str | None = None
+    scale_x: float | None = None
+    scale_y: float | None = None
+    name: str = attrs.field(default="", eq=False)  # how physc refers to it (pig1, circle2, …)
+
+
+@attrs.frozen
+class Camera:
+    x: float = 0.0
+    y: float = -1.0
+    min_width: float = 25.0
+    max_width: float = 35.0
+
+
+@attrs.frozen
+class Level:
+    width: float = 2.0
+    camera: Camera = Camera()
+    high_score: float | None = 0.0
+    birds: tuple[str, ...] = ("BirdRed",)
+    slingshot: tuple[float, float] = (-12.0, -2.5)
+    objects: tuple[LevelObject, ...] = ()

@@ -1,0 +1,1 @@
+"""Simulation results that every domain and backend shares: traces."""

@@ -1,0 +1,114 @@
+"""Simulation traces: what happened in a run, as backend-neutral data.
+
+A trace holds the poses and velocities of every dynamic body at every step, the
+contacts that began and ended (with relative velocity), damage, destructions,
+and the interactions a domain recognised from all that, printable in `.phys`
+syntax. Traces are values: domain rules and recognisers read them; they never
+reach into an engine.
+"""
+
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+
+@attrs.frozen
+class ContactRecord:
+    time: float
+    a: str
+    b: str
+    point: tuple[float, float]
+    normal: tuple[float, float]  # from a to b
+    relative_velocity: tuple[float, float]  # a's minus b's, before the collision
+    velocity_a: tuple[float, float]
+    velocity_b: tuple[float, float]
+
+    @property
+    def speed(self) -> float:
+        return float(np.hypot(*self.relative_velocity))
+
+
+@attrs.frozen
+class SeparationRecord:
+    time: float
+    a: str
+    b: str
+
+
+@attrs.frozen
+class DamageRecord:
+    time: float
+    target: str
+    amount: float
+    life: float  # left after the damage
+    by: str
+
+
+@attrs.frozen
+class DestructionRecord:
+    time: float
+    name: str
+    cause: str  # "damage" | "out of world" | "removed"
+    by: str | None = None
+
+
+@attrs.frozen
+class Interaction:
+    """A recognised interaction, as a term of the `.phys` language."""
+
+    name: str
+    objects: tuple[str, ...]
+    direction: str | None
+    time: float
+
+    def text(self) -> str:
+        arguments = list(self.objects) + ([self.direction] if self.direction else [])
+        return f"{self.name}({', '.join(arguments)})"
+
+
+@attrs.frozen
+class Violation:
+    restriction: str
+    interaction: Interaction
+
+    def text(self) -> str:
+        return f"{self.restriction} violated at t = {self.interaction.time:.2f} s by {self.interaction.text()}"
+
+
+@attrs.frozen
+class Trace:
+    dt: float
+    names: tuple[str, ...]  # the dynamic bodies, in the order of the state arrays
+    kinds: dict = attrs.field(eq=False)  # name → kind (bird, pig, block, platform, tnt)
+    states: np.ndarray = attrs.field(eq=False, repr=False, metadata={"dump": False})  # (steps, bodies, 6): x y angle vx vy w; NaN once gone
+    contacts: tuple[ContactRecord, ...] = ()
+    separations: tuple[SeparationRecord, ...] = ()
+    damage: tuple[DamageRecord, ...] = ()
+    destructions: tuple[DestructionRecord, ...] = ()
+    pigs: tuple[str, ...] = ()
+    interactions: tuple[Interaction, ...] = ()
+    violations: tuple[Violation, ...] = ()
+
+    @property
+    def steps(self) -> int:
+        return self.states.shape[0]
+
+    @property
+    def duration(self) -> float:
+        return self.steps * self.dt
+
+    @property
+    def destroyed(self) -> set[str]:
+        return {d.name for d in self.destructions}
+
+    @property
+    def solved(self) -> bool:
+        return bool(self.pigs) and set(self.pigs) <= self.destroyed
+
+    def index(self, name: str) -> int:
+        return self.names.index(name)
+
+    def sequence(self) -> str:
+        """The recognised interactions in `.phys` syntax: `hit(bird, pig, left) > destroy(bird, pig)`."""
+        return " > ".join(i.text() for i in self.interactions)
