@@ -9,259 +9,18 @@ traceback for developers.
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 from typing import Sequence
 
-from physc import __version__, diagnostics
-from physc.compiler.stages import STAGES, StageError, Unit, stage
-from physc.diagnostics import Diagnostic
-from physc.files import write_atomic
-from physc.suggest import did_you_mean
-
-EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
-
-
-class UsageError(Exception):
-    pass
-
-
-class _Parser(argparse.ArgumentParser):
-    def error(self, message):  # argparse's own errors: usage, exit 2
-        self.print_usage(sys.stderr)
-        print(f"{self.prog}: error: {message}", file=sys.stderr)
-        raise SystemExit(EXIT_USAGE)
-
-
-def _reporter(args):
-    def use_color() -> bool:
-        if args.color == "always":
-            return True
-        if args.color == "never" or os.environ.get("NO_COLOR"):
-            return False
-        return sys.stderr.isatty()
-
-    color = use_color()
-
-    def report(analysis_path: str, source, found: Sequence[Diagnostic]) -> None:
-        for diagnostic in found:
-            print(diagnostics.render(diagnostic, source, analysis_path, color=color), file=sys.stderr)
-
-    return report
-
-
-def _summary(errors: int, warnings: int, files: int) -> str:
-    def plural(n, word):
-        return f"{n} {word}{'' if n == 1 else 's'}"
-
-    return f"{plural(errors, 'error')}, {plural(warnings, 'warning')} in {plural(files, 'file')}"
-
-
-# ---- physc check ---------------------------------------------------------------
-def cmd_check(args) -> int:
-    from physc.dsl.frontend import analyze
-
-    status = EXIT_OK
-    errors = warnings = 0
-    as_json = []
-    report = _reporter(args)
-    for path in args.files:
-        analysis = analyze(path)
-        found = analysis.diagnostics
-        status = max(status, diagnostics.exit_status(found))
-        errors += sum(d.is_error for d in found)
-        warnings += sum(not d.is_error for d in found)
-        if args.format == "json":
-            as_json += [diagnostics.to_json(d, path) for d in found]
-        else:
-            report(path, analysis.source, found)
-    if args.format == "json":
-        print(json.dumps(as_json, indent=2, ensure_ascii=False))
-    elif not args.quiet:
-        print(_summary(errors, warnings, len(args.files)), file=sys.stderr)
-    return status
-
-
-# ---- physc fmt -----------------------------------------------------------------
-def cmd_fmt(args) -> int:
-    from physc.dsl.fmt import format_file
-    from physc.dsl.frontend import analyze
-
-    if args.write and "-" in args.files:
-        raise UsageError("--write cannot rewrite standard input")
-    status = EXIT_OK
-    report = _reporter(args)
-    changed = []
-    for path in args.files:
-        analysis = analyze(path, check=False)
-        if analysis.file is None or any(d.is_error for d in analysis.syntax):
-            report(path, analysis.source, analysis.diagnostics)
-            status = max(status, diagnostics.exit_status(analysis.diagnostics))
-            continue
-        formatted = format_file(analysis.file, analysis.source)
-        if args.check:
-            if formatted != analysis.source.text:
-                changed.append(path)
-                print(f"would reformat {path}", file=sys.stderr)
-        elif args.write:
-            if formatted != analysis.source.text:
-                write_atomic(path, formatted)
-                changed.append(path)
-                print(f"reformatted {path}", file=sys.stderr)
-        else:
-            sys.stdout.write(formatted)
-    if args.check and changed:
-        status = max(status, EXIT_INPUT)
-    return status
-
-
-# ---- physc compile ----------------------------------------------------------------
-def _infeasible(error, scenario) -> Diagnostic:
-    """An Infeasible answer as a diagnostic that points back at the source."""
-    from physc.diagnostics import Label
-
-    notes = []
-    for edge in error.conflicts:
-        for why in edge.provenance:
-            if why.span is not None:
-                notes.append(Label(why.span, f"{edge.text()} comes from {why.rule} `{why.text}`"))
-            else:
-                notes.append(Label(scenario.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
-    code = "E0802" if error.budget else "E0801"
-    tried = f"; {error.tried} conjunctions tried" if error.tried else ""
-    help_text = (
-        "these layout constraints cannot all hold: change or remove one of the terms they come from"
-        if error.conflicts
-        else "try another --seed or a larger --budget, or simplify the scenario"
-    )
-    return Diagnostic(
-        code,
-        f"no task for scenario '{scenario.name.text}': {error.message} (stage {error.stage}{tried})",
-        scenario.name.span,
-        help=help_text,
-        notes=tuple(notes),
-    )
-
-
-def cmd_compile(args) -> int:
-    from physc.compiler.infeasible import Infeasible
-    from physc.compiler.pipeline import Pipeline
-    from physc.domains import load_domain
-    from physc.dsl.frontend import analyze
-    from physc.serialize import to_data
-
-    try:
-        chosen = stage(args.emit)
-    except StageError as error:
-        raise UsageError(str(error)) from None
-    if args.format not in chosen.formats:
-        raise UsageError(f"the stage '{chosen.name}' can be printed as {' or '.join(chosen.formats)}, not {args.format}")
-    if args.png and chosen.name != "layout":
-        raise UsageError("--png draws a layout: use it with --emit layout")
-    report = _reporter(args)
-    analysis = analyze(args.file)
-    if analysis.file is None or any(d.is_error for d in analysis.syntax):
-        report(args.file, analysis.source, analysis.diagnostics)
-        return diagnostics.exit_status(analysis.diagnostics)
-    available = [s.name.text for s in analysis.file.scenarios]
-    names = args.scenario or available
-    for name in names:
-        if name not in available:
-            hint = did_you_mean(name, available) or "scenarios: " + ", ".join(available)
-            raise UsageError(f"{args.file} has no scenario named '{name}'; {hint}")
-    selected = [s for s in analysis.file.scenarios if s.name.text in names]
-    if args.png and len(selected) != 1:
-        raise UsageError("--png draws one scenario: name it with -s NAME")
-    spans = [s.span for s in selected]
-
-    def concerns_selection(d: Diagnostic) -> bool:
-        return d.span is None or any(s.start <= d.span.start < s.end for s in spans)
-
-    relevant = [d for d in analysis.diagnostics if concerns_selection(d)]
-    report(args.file, analysis.source, relevant)
-    status = diagnostics.exit_status(relevant)
-    if status:
-        return status
-    checked = {s.name: s for s in analysis.scenarios}
-    outputs, failures = [], []
-    for scenario in selected:
-        ir = checked[scenario.name.text]
-        pipeline = Pipeline(load_domain(ir.domain), ir, args.seed, args.budget)
-        try:
-            outputs.append(chosen.run(Unit(scenario, ir), pipeline))
-        except Infeasible as error:
-            failures.append(_infeasible(error, scenario))
-    if failures:
-        report(args.file, analysis.source, failures)
-        return EXIT_INFEASIBLE
-    if args.format == "dot":
-        text = "".join(value.to_dot() for value in outputs)
-    else:
-        data = [to_data(value) for value in outputs]
-        text = json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False) + "\n"
-    if args.png:
-        from physc.domains.angrybirds.picture import render
-
-        fmt = "svg" if args.png.lower().endswith(".svg") else "png"
-        write_atomic(args.png, render(outputs[0], fmt))
-    if args.output:
-        write_atomic(args.output, text)
-    else:
-        sys.stdout.write(text)
-    return EXIT_OK
-
-
-# ---- physc domains -----------------------------------------------------------------
-def cmd_domains(args) -> int:
-    from physc.domains import DomainError, installed_domains, load_domain
-
-    names = list(installed_domains())
-    if args.name:
-        unknown = [n for n in args.name if n not in names]
-        if unknown:
-            hint = did_you_mean(unknown[0], names) or "installed domains: " + (", ".join(names) or "none")
-            raise UsageError(f"the domain '{unknown[0]}' is not installed; {hint}")
-        names = args.name
-    loaded = []
-    for name in names:
-        try:
-            loaded.append(load_domain(name))
-        except DomainError as error:
-            print(f"physc: error[{error.code}]: {error.message}", file=sys.stderr)
-            return EXIT_USAGE
-    if args.json:
-        from physc.serialize import to_data
-
-        data = [{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded]
-        print(json.dumps(data, indent=2, ensure_ascii=False))
-        return EXIT_OK
-    if not loaded:
-        print("no domains installed (physc.domains entry points)")
-    for index, domain in enumerate(loaded):
-        if index:
-            print()
-        print(_describe_domain(domain))
-    return EXIT_OK
-
-
-def _describe_domain(domain) -> str:
-    vocabulary = domain.vocabulary
-    lines = [f"{domain.name}: {domain.description}", "  object terms:"]
-    for term in vocabulary.object_terms:
-        label = term.name + (f" ({term.abbreviation})" if term.abbreviation else "")
-        lines.append(f"    {label:<34} {' | '.join(term.concrete)}")
-    for kind in ("interaction", "restriction"):
-        lines.append(f"  {kind} terms:")
-        for term in vocabulary.terms:
-            if term.kind == kind:
-                lines.append(f"    {term.usage():<58} {term.description}")
-    statics = [c.name for c in vocabulary.concrete_objects if c.static]
-    lines.append(f"  static objects: {', '.join(statics)}")
-    aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
-    lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))
-    lines.append(f"  the player moves: {vocabulary.player}; goals (all must be destroyed): {vocabulary.goal}")
-    return "\n".join(lines)
+from physc import __version__
+from physc.commands.check import cmd_check
+from physc.commands.common import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, Parser, UsageError
+from physc.commands.compile import cmd_compile
+from physc.commands.domains import cmd_domains
+from physc.commands.fmt import cmd_fmt
+from physc.commands.play import add_commands as add_play_commands
+from physc.compiler.stages import STAGES
 
 
 # ---- the parser -----------------------------------------------------------------------
@@ -270,14 +29,14 @@ def build_parser() -> argparse.ArgumentParser:
     common.add_argument("--color", choices=("auto", "always", "never"), default="auto", help="colour diagnostics")
     common.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
 
-    parser = _Parser(
+    parser = Parser(
         prog="physc",
         description="Compile physical scenarios (.phys) into physics tasks.",
         epilog="exit status: 0 ok, 1 input errors, 2 usage or unreadable file, 3 no task could be generated",
         parents=[common],
     )
     parser.add_argument("--version", action="version", version=f"physc {__version__}")
-    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
 
     check = commands.add_parser("check", parents=[common], help="check .phys files and report every problem")
     check.add_argument("files", nargs="+", metavar="FILE", help="files to check ('-' reads standard input)")
@@ -307,6 +66,8 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--format", choices=("json", "dot"), default="json", help="dot: Graphviz, for graph stages")
     compile_.add_argument("--png", metavar="PATH", help="with --emit layout: draw the layout (.png or .svg)")
     compile_.set_defaults(run=cmd_compile)
+
+    add_play_commands(commands, common)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")

@@ -13,6 +13,7 @@ Groups:
     E06xx  structure of a file and of a scenario
     E07xx  domains (plugins)
     E08xx  generation: well-formed scenarios that yield no task (exit status 3)
+    E09xx  Science Birds level files
 """
 
 from __future__ import annotations
@@ -64,6 +65,9 @@ _CODES = [
     ErrorCode("E0603", "error", "a scenario without an interactions section"),
     ErrorCode("E0701", "error", "a domain that is not installed"),
     ErrorCode("E0702", "error", "a domain plugin that fails to load", exit_status=2),
+    ErrorCode("E0901", "error", "a level file that is not a Science Birds level"),
+    ErrorCode("E0902", "error", "a level object with a missing or malformed attribute"),
+    ErrorCode("E0903", "error", "a level object or bird of an unknown type"),
     ErrorCode("E0801", "error", "the layout constraints of a scenario cannot hold together", exit_status=3),
     ErrorCode("E0802", "error", "the search budget ran out before a layout was found", exit_status=3),
 ]

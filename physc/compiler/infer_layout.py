@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.layout_graph import IN_DIRECTION, LOCATED_FAR, LayoutEdge, LayoutGraph
+from physc.compiler.layout_graph import IN_DIRECTION, LayoutEdge, LayoutGraph
 from physc.dsl.scenario import ScenarioIR
 
 _MIRROR = {"left": "right", "right": "left", "above": "below", "below": "above"}

@@ -3,8 +3,10 @@
 Box2D (the engine of Science Birds) and Chipmunk combine contact properties
 differently: Box2D takes the geometric mean of two frictions and the larger of
 two restitutions; Chipmunk multiplies. Each shape therefore gets the square root
-of its friction (the product is then the geometric mean, exactly) and the pair's
-restitution is set to the larger of the two in a pre-solve callback. Contacts
+of its friction (the product is then the geometric mean, exactly), and the
+pair's restitution is set to the larger of the two when the contact begins,
+which is when an impact's bounce is computed. Box2D's angular damping is a
+damped rotary spring of no stiffness to the static body (C, not Python). Contacts
 are reported from pymunk 7's `Space.on_collision` begin and separate callbacks.
 Collision slop, the skin around polygons and the solver's iterations follow
 Box2D's defaults for metre-sized objects (levels saved from the game keep
@@ -27,11 +29,9 @@ SLEEP_AFTER = 0.5  # seconds at rest before a body sleeps (as Box2D's time to sl
 IDLE_SPEED = 0.05
 
 
-def _velocity_function(scale: float, angular_damping: float):
+def _velocity_function(scale: float):
     def update(body, gravity, damping, dt):
         pymunk.Body.update_velocity(body, (gravity[0] * scale, gravity[1] * scale), damping, dt)
-        if angular_damping:
-            body.angular_velocity = body.angular_velocity / (1.0 + dt * angular_damping)
 
     return update
 
@@ -53,7 +53,9 @@ class PymunkWorld:
         self._begun: list[ContactEvent] = []
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
-        self.space.on_collision(begin=self._on_begin, pre_solve=self._on_pre_solve, separate=self._on_separate)
+        self._drags: dict[str, pymunk.Constraint] = {}
+        self._cache: dict[str, tuple] = {}  # the last state of each body, for sleeping ones
+        self.space.on_collision(begin=self._on_begin, separate=self._on_separate)
 
     # ---- building --------------------------------------------------------------
     def add(self, spec: BodySpec) -> None:
@@ -75,8 +77,14 @@ class PymunkWorld:
         shape.friction = math.sqrt(max(spec.friction, 0.0))
         shape.elasticity = spec.bounciness
         self.space.add(body, shape)
-        if not spec.static and (spec.gravity_scale != 1.0 or spec.angular_damping):
-            body.velocity_func = _velocity_function(spec.gravity_scale, spec.angular_damping)
+        if not spec.static and spec.gravity_scale != 1.0:
+            body.velocity_func = _velocity_function(spec.gravity_scale)
+        if not spec.static and spec.angular_damping:
+            # Box2D's angular damping, dω/dt = −c·ω, is the torque −c·I·ω: a rotary
+            # spring of no stiffness to the static body applies it, in C.
+            drag = pymunk.DampedRotarySpring(body, self.space.static_body, 0.0, 0.0, spec.angular_damping * body.moment)
+            self.space.add(drag)
+            self._drags[spec.name] = drag
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self.shapes[spec.name] = shape
@@ -86,7 +94,10 @@ class PymunkWorld:
 
     def remove(self, name: str) -> None:
         body, shape = self.bodies.pop(name), self.shapes.pop(name)
+        if name in self._drags:
+            self.space.remove(self._drags.pop(name))
         self.space.remove(body, shape)
+        self._cache.pop(name, None)
         self.names.remove(name)
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
@@ -97,7 +108,12 @@ class PymunkWorld:
 
     def state(self, name: str):
         body = self.bodies[name]
-        return (body.position.x, body.position.y, body.angle, body.velocity.x, body.velocity.y, body.angular_velocity)
+        if body.is_sleeping and name in self._cache:
+            return self._cache[name]
+        (x, y), (vx, vy) = body.position, body.velocity
+        state = (x, y, body.angle, vx, vy, body.angular_velocity)
+        self._cache[name] = state
+        return state
 
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
         body = self.bodies[name]
@@ -147,10 +163,10 @@ class PymunkWorld:
         )
         self._touching[a].add(b)
         self._touching[b].add(a)
-
-    def _on_pre_solve(self, arbiter, space, data):
-        first, second = arbiter.shapes
-        arbiter.restitution = max(self._bounciness.get(id(first), 0.0), self._bounciness.get(id(second), 0.0))
+        # Box2D's restitution of a pair is the larger one. Chipmunk takes the
+        # product every step, but the bounce of an impact is computed in the step
+        # the contact begins, right after this callback: set it here.
+        arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])])
 
     def _on_separate(self, arbiter, space, data):
         a, b = self._pair(arbiter)

@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import math
 
+import attrs
 import numpy as np
 
 from physc.backends import BodySpec, Circle, Polygon, load_backend
 from physc.domains.angrybirds.catalogue import BY_PREFAB, MATERIAL, PHYQ_CIRCLES, PLATFORM_BASE, shape
 from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.recognise import recognise, violations
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.rules import RULES, Rules
 from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
@@ -148,6 +150,21 @@ class Game:
                     states = states[: step + 1]
                     break
         return Trace(rules.dt, tuple(dynamic), dict(self.kinds), states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions), pigs)
+
+    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), **options) -> Trace:
+        """Simulate, then recognise the interactions and check the restrictions."""
+        trace = self.simulate(shot, seconds, **options)
+        interactions = recognise(trace, self.radii())
+        return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions))
+
+    def radii(self) -> dict[str, float]:
+        """The rolling radius of every body that can roll: circles, pigs, the bird."""
+        out = {BIRD: shape("redBird").width / 2}
+        for obj in self.level.objects:
+            catalogue = BY_PREFAB[obj.type]
+            if catalogue.round or catalogue.kind == "pig":
+                out[obj.name] = min(catalogue.width, catalogue.height) / 2
+        return out
 
     # ---- rules ----------------------------------------------------------------------------
     def _damage(self, world, contact: ContactRecord, out: list, time: float) -> None:

@@ -67,7 +67,8 @@ def parse_level(text: str) -> Level:
     except ElementTree.ParseError as error:
         line, column = error.position
         offset = text.count("\n", 0, len(text) - len(body))  # the removed declaration's lines
-        raise LevelError("E0901", f"the level file is not well-formed XML: {error.msg}", line + offset, column + 1) from None
+        reason = re.sub(r": line \d+, column \d+$", "", error.msg)
+        raise LevelError("E0901", f"the level file is not well-formed XML: {reason}", line + offset, column + 1) from None
     if root.tag != "Level":
         raise LevelError("E0901", f"the root element is <{root.tag}>, not <Level>")
     camera_element = root.find("Camera")

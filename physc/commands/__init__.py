@@ -1,0 +1,1 @@
+"""The commands of `physc`, one module each; `physc.cli` parses the command line."""

@@ -1,0 +1,48 @@
+"""What every command shares: exit statuses, usage errors, diagnostic output."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from typing import Sequence
+
+from physc import diagnostics
+from physc.diagnostics import Diagnostic
+
+EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
+
+
+class UsageError(Exception):
+    pass
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # argparse's own errors: usage, exit 2
+        self.print_usage(sys.stderr)
+        print(f"{self.prog}: error: {message}", file=sys.stderr)
+        raise SystemExit(EXIT_USAGE)
+
+
+def reporter(args):
+    def use_color() -> bool:
+        if args.color == "always":
+            return True
+        if args.color == "never" or os.environ.get("NO_COLOR"):
+            return False
+        return sys.stderr.isatty()
+
+    color = use_color()
+
+    def report(analysis_path: str, source, found: Sequence[Diagnostic]) -> None:
+        for diagnostic in found:
+            print(diagnostics.render(diagnostic, source, analysis_path, color=color), file=sys.stderr)
+
+    return report
+
+
+def summary(errors: int, warnings: int, files: int) -> str:
+    def plural(n, word):
+        return f"{n} {word}{'' if n == 1 else 's'}"
+
+    return f"{plural(errors, 'error')}, {plural(warnings, 'warning')} in {plural(files, 'file')}"

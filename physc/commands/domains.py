@@ -1,0 +1,64 @@
+"""`physc domains`: the installed domains and their vocabulary."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from physc.commands.common import (
+    EXIT_OK,
+    EXIT_USAGE,
+    UsageError,
+)
+from physc.suggest import did_you_mean
+
+
+def cmd_domains(args) -> int:
+    from physc.domains import DomainError, installed_domains, load_domain
+
+    names = list(installed_domains())
+    if args.name:
+        unknown = [n for n in args.name if n not in names]
+        if unknown:
+            hint = did_you_mean(unknown[0], names) or "installed domains: " + (", ".join(names) or "none")
+            raise UsageError(f"the domain '{unknown[0]}' is not installed; {hint}")
+        names = args.name
+    loaded = []
+    for name in names:
+        try:
+            loaded.append(load_domain(name))
+        except DomainError as error:
+            print(f"physc: error[{error.code}]: {error.message}", file=sys.stderr)
+            return EXIT_USAGE
+    if args.json:
+        from physc.serialize import to_data
+
+        data = [{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded]
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+        return EXIT_OK
+    if not loaded:
+        print("no domains installed (physc.domains entry points)")
+    for index, domain in enumerate(loaded):
+        if index:
+            print()
+        print(_describe_domain(domain))
+    return EXIT_OK
+
+
+def _describe_domain(domain) -> str:
+    vocabulary = domain.vocabulary
+    lines = [f"{domain.name}: {domain.description}", "  object terms:"]
+    for term in vocabulary.object_terms:
+        label = term.name + (f" ({term.abbreviation})" if term.abbreviation else "")
+        lines.append(f"    {label:<34} {' | '.join(term.concrete)}")
+    for kind in ("interaction", "restriction"):
+        lines.append(f"  {kind} terms:")
+        for term in vocabulary.terms:
+            if term.kind == kind:
+                lines.append(f"    {term.usage():<58} {term.description}")
+    statics = [c.name for c in vocabulary.concrete_objects if c.static]
+    lines.append(f"  static objects: {', '.join(statics)}")
+    aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
+    lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))
+    lines.append(f"  the player moves: {vocabulary.player}; goals (all must be destroyed): {vocabulary.goal}")
+    return "\n".join(lines)

@@ -1,0 +1,46 @@
+"""`physc fmt`: print or rewrite .phys files in the canonical block form."""
+
+from __future__ import annotations
+
+import sys
+
+from physc import diagnostics
+from physc.commands.common import (
+    EXIT_INPUT,
+    EXIT_OK,
+    UsageError,
+    reporter,
+)
+from physc.files import write_atomic
+
+
+def cmd_fmt(args) -> int:
+    from physc.dsl.fmt import format_file
+    from physc.dsl.frontend import analyze
+
+    if args.write and "-" in args.files:
+        raise UsageError("--write cannot rewrite standard input")
+    status = EXIT_OK
+    report = reporter(args)
+    changed = []
+    for path in args.files:
+        analysis = analyze(path, check=False)
+        if analysis.file is None or any(d.is_error for d in analysis.syntax):
+            report(path, analysis.source, analysis.diagnostics)
+            status = max(status, diagnostics.exit_status(analysis.diagnostics))
+            continue
+        formatted = format_file(analysis.file, analysis.source)
+        if args.check:
+            if formatted != analysis.source.text:
+                changed.append(path)
+                print(f"would reformat {path}", file=sys.stderr)
+        elif args.write:
+            if formatted != analysis.source.text:
+                write_atomic(path, formatted)
+                changed.append(path)
+                print(f"reformatted {path}", file=sys.stderr)
+        else:
+            sys.stdout.write(formatted)
+    if args.check and changed:
+        status = max(status, EXIT_INPUT)
+    return status

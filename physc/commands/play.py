@@ -1,0 +1,197 @@
+"""`physc simulate`, `physc trace`, `physc render`: playing Science Birds levels.
+
+Each reads a level file (real files as they are: declared utf-16, actually
+ASCII), optionally fires one full-stretch shot, and reports what happened: the
+outcome, the recognised interactions in `.phys` syntax, or a picture with the
+paths of the objects that moved.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import numpy as np
+
+from physc.commands.common import EXIT_OK, UsageError, reporter
+from physc.diagnostics import Diagnostic, SourceText
+from physc.files import write_atomic
+
+
+def parse_shot(text: str | None, angle: float | None):
+    from physc.domains.angrybirds.launch import Shot
+
+    if text is None:
+        return None if angle is None else Shot(angle=angle)
+    parts = [p.strip() for p in text.split(",")]
+    trajectory = parts[2] if len(parts) == 3 else "low"
+    if len(parts) not in (2, 3) or trajectory not in ("low", "high"):
+        raise UsageError(f"--shot takes X,Y or X,Y,low or X,Y,high, not '{text}'")
+    try:
+        return Shot(target=(float(parts[0]), float(parts[1])), trajectory=trajectory)
+    except ValueError:
+        raise UsageError(f"--shot takes numbers: X,Y[,low|high], not '{text}'") from None
+
+
+def load_level(args):
+    """The level of args.level, or None after reporting why not (the exit status is returned too)."""
+    from physc.domains.angrybirds.level_xml import LevelError, read_level
+
+    try:
+        data = sys.stdin.buffer.read() if args.level == "-" else open(args.level, "rb").read()
+    except IsADirectoryError:
+        return None, _fail(args, Diagnostic("E0001", "cannot read the level: it is a directory"))
+    except FileNotFoundError:
+        return None, _fail(args, Diagnostic("E0001", "cannot read the level: no such file"))
+    except OSError as error:
+        return None, _fail(args, Diagnostic("E0001", f"cannot read the level: {error.strerror or error}"))
+    try:
+        return read_level(data), 0
+    except LevelError as error:
+        text = data.decode("utf-8", "replace")
+        source = SourceText(args.level, text)
+        span = None
+        if error.line is not None and error.line <= source.line_count:
+            start = source._line_starts[error.line - 1] + max((error.column or 1) - 1, 0)
+            span = source.span(start, start + 1)
+        return None, _fail(args, Diagnostic(error.code, error.message, span, help=error.help), source)
+
+
+def _fail(args, diagnostic: Diagnostic, source=None) -> int:
+    from physc import diagnostics
+
+    reporter(args)(args.level, source, [diagnostic])
+    return diagnostics.exit_status([diagnostic])
+
+
+def _game(args, level):
+    from physc.backends import BackendError, load_backend
+    from physc.domains.angrybirds.game import Game
+    from physc.domains.angrybirds.rules import Rules
+
+    try:
+        backend = load_backend(args.backend)
+    except BackendError as error:
+        raise UsageError(str(error)) from None
+    return Game(level, backend, Rules(circles=args.circles))
+
+
+def _play(args):
+    from physc.domains.angrybirds.launch import Unreachable
+
+    level, status = load_level(args)
+    if level is None:
+        return None, None, status
+    shot = parse_shot(args.shot, args.angle)
+    try:
+        trace = _game(args, level).play(shot, args.seconds)
+    except Unreachable as error:
+        raise UsageError(str(error)) from None
+    return level, shot, trace
+
+
+def cmd_simulate(args) -> int:
+    level, shot, trace = _play(args)
+    if level is None:
+        return trace
+    pigs = list(trace.pigs)
+    destroyed = [d for d in trace.destructions if d.name in pigs]
+    if args.json:
+        print(
+            json.dumps(
+                {
+                    "level": args.level,
+                    "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(), 4)},
+                    "seconds": round(trace.duration, 4),
+                    "pigs": pigs,
+                    "pigs_destroyed": [d.name for d in destroyed],
+                    "solved": trace.solved,
+                    "destroyed": [
+                        {"name": d.name, "cause": d.cause, "by": d.by, "time": round(d.time, 4)} for d in trace.destructions
+                    ],
+                },
+                indent=2,
+            )
+        )
+        return EXIT_OK
+    what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
+    print(f"{args.level}: {len(level.objects)} objects, {len(pigs)} pigs; {what}")
+    verdict = "solved" if trace.solved else "not solved"
+    print(f"after {trace.duration:.2f} s: {len(destroyed)} of {len(pigs)} pigs destroyed: {verdict}")
+    for d in trace.destructions:
+        by = f", by {d.by}" if d.by else ""
+        print(f"  destroyed {d.name} ({d.cause}{by}) at t = {d.time:.2f} s")
+    return EXIT_OK
+
+
+def cmd_trace(args) -> int:
+    level, shot, trace = _play(args)
+    if level is None:
+        return trace
+    if args.json:
+        print(json.dumps([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions], indent=2))
+        return EXIT_OK
+    print(f"# {args.level}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
+    for index, interaction in enumerate(trace.interactions):
+        prefix = "> " if index else ""
+        print(f"{prefix}{interaction.text():<40} # t = {interaction.time:.2f} s")
+    return EXIT_OK
+
+
+def moved_paths(trace, threshold: float = 0.1, every: float = 0.1) -> dict[str, list[tuple[float, float]]]:
+    """The sampled paths of the bodies that moved more than `threshold`."""
+    stride = max(int(round(every / trace.dt)), 1)
+    paths = {}
+    for index, name in enumerate(trace.names):
+        points = trace.states[:, index, :2]
+        points = points[~np.isnan(points[:, 0])]
+        if len(points) and np.max(np.hypot(*(points - points[0]).T)) > threshold:
+            paths[name] = [tuple(p) for p in points[::stride]] + [tuple(points[-1])]
+    return paths
+
+
+def cmd_render(args) -> int:
+    from physc.domains.angrybirds.picture import draw_level, save
+
+    if not args.output.lower().endswith((".png", ".svg")):
+        raise UsageError("-o must name a .png or .svg file")
+    if args.shot is None and args.angle is None:
+        level, status = load_level(args)
+        if level is None:
+            return status
+        paths = {}
+    else:
+        level, _, trace = _play(args)
+        if level is None:
+            return trace
+        paths = moved_paths(trace)
+    figure = draw_level(level, args.title or args.level, paths)
+    write_atomic(args.output, save(figure, "svg" if args.output.lower().endswith(".svg") else "png"))
+    return EXIT_OK
+
+
+def add_commands(commands, common) -> None:
+    def level_arguments(parser):
+        parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
+        shot = parser.add_mutually_exclusive_group()
+        shot.add_argument("--shot", metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory")
+        shot.add_argument("--angle", type=float, metavar="DEG", help="shoot at a release angle (degrees)")
+        parser.add_argument("--seconds", type=float, default=10.0, metavar="S", help="simulated time at most (default 10)")
+        parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")
+        parser.add_argument("--backend", default="pymunk", help="the physics backend (default pymunk)")
+
+    simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
+    level_arguments(simulate)
+    simulate.add_argument("--json", action="store_true", help="machine-readable output")
+    simulate.set_defaults(run=cmd_simulate)
+
+    trace = commands.add_parser("trace", parents=[common], help="the interactions a shot causes, in .phys syntax")
+    level_arguments(trace)
+    trace.add_argument("--json", action="store_true", help="machine-readable output")
+    trace.set_defaults(run=cmd_trace)
+
+    render = commands.add_parser("render", parents=[common], help="draw a level, with the paths a shot causes")
+    level_arguments(render)
+    render.add_argument("-o", "--output", required=True, metavar="PATH", help="the picture (.png or .svg)")
+    render.add_argument("--title", help="the picture's title (default: the file name)")
+    render.set_defaults(run=cmd_render)

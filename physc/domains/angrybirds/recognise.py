@@ -1,0 +1,244 @@
+"""Recognising the interactions of the `.phys` language in a simulation trace.
+
+Backend-neutral: this reads a Trace (poses, velocities, contacts, destructions)
+and names what happened, in the order it happened:
+
+* hit(a, b, d): a contact begins at a relative speed of at least HIT_SPEED; a is
+  the body whose velocity carries it into b (for a static b, the moving one); d
+  is the side of b that was struck (the larger component of the direction from
+  b's contact towards a). Chatter of one pair within REHIT seconds is one hit.
+* roll(a, s, d): a touches a surface s (a platform or the ground) while moving at
+  least MOVING and turning so that |ω|·r is within ROLL_SLIP of its speed, for at
+  least MOTION_TIME in all; d is the way it moved.
+* slide(a, s, d): the same, but translating while turning at most SLIDE_SPIN.
+* fall(a, b): a touches nothing for at least FALL_TIME while dropping at least
+  FALL_HEIGHT; b is the first thing it touches after. The bird is thrown, not
+  falling: its flight is not a fall.
+* bounce(a, s, d): a moving object touches a surface s for less than BOUNCE_TIME
+  and leaves it; d is where its velocity points as it leaves.
+* destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
+
+An interaction equal to the one just before it (one roll over two contact
+intervals, a double hit) is reported once.
+
+cannotHit(a, b, D) is violated by a hit(a, b, d) with d in D on a's direct
+approach (before anything redirects it, as in the language's static checks);
+cannotFall(a) by any fall(a, …).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from physc.simulation.trace import Interaction, Trace, Violation
+
+HIT_SPEED = 0.3
+REHIT = 0.1
+MOVING = 0.15
+ROLL_SLIP = 0.3  # | |ω|·r − |v| | <= ROLL_SLIP · |v|
+SLIDE_SPIN = 0.3  # rad/s
+MOTION_TIME = 0.2
+FALL_TIME = 0.2
+FALL_HEIGHT = 0.4
+BOUNCE_TIME = 0.2
+BOUNCE_SPEED = 1.0
+STATIC = ("platform", "ground")
+ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4}
+
+
+def side(dx: float, dy: float) -> str:
+    """The side (of a target) that a direction from its contact towards the actor points to."""
+    if abs(dx) >= abs(dy):
+        return "right" if dx > 0 else "left"
+    return "above" if dy > 0 else "below"
+
+
+def _intervals(trace: Trace) -> dict[frozenset, list[list[float]]]:
+    """Contact intervals per pair: [begin, end] (end = separation, destruction or the end)."""
+    ends = {d.name: d.time for d in trace.destructions}
+    open_: dict[frozenset, list[float]] = {}
+    out: dict[frozenset, list[list[float]]] = {}
+    events = [(c.time, 0, c.a, c.b) for c in trace.contacts] + [(s.time, 1, s.a, s.b) for s in trace.separations]
+    for time, kind, a, b in sorted(events, key=lambda e: (e[0], e[1])):
+        pair = frozenset((a, b))
+        if kind == 0 and pair not in open_:
+            open_[pair] = [time, math.inf]
+            out.setdefault(pair, []).append(open_[pair])
+        elif kind == 1 and pair in open_:
+            open_.pop(pair)[1] = time
+    for pair, interval in open_.items():
+        interval[1] = min([trace.duration] + [ends[n] for n in pair if n in ends])
+    return out
+
+
+def recognise(trace: Trace, radius: dict[str, float]) -> tuple[Interaction, ...]:
+    """The interactions of a trace; `radius` gives the rolling radius of each round body."""
+    found: list[Interaction] = []
+    found += _hits(trace)
+    intervals = _intervals(trace)
+    found += _motion(trace, intervals, radius)
+    found += _falls(trace, intervals)
+    found += _bounces(trace, intervals)
+    found += [
+        Interaction("destroy", (d.by, d.name), None, d.time)
+        for d in trace.destructions
+        if d.cause == "damage" and d.by is not None
+    ]
+    ordered = sorted(found, key=lambda i: (round(i.time, 6), ORDER[i.name]))
+    # One roll over two contact intervals, or a double hit, is one interaction.
+    out = []
+    for interaction in ordered:
+        if out and (out[-1].name, out[-1].objects, out[-1].direction) == (interaction.name, interaction.objects, interaction.direction):
+            continue
+        out.append(interaction)
+    return tuple(out)
+
+
+def _hits(trace: Trace) -> list[Interaction]:
+    kinds = trace.kinds
+    last: dict[tuple[str, str], float] = {}
+    out = []
+    for c in trace.contacts:
+        if c.speed < HIT_SPEED:
+            continue
+        static_a, static_b = kinds.get(c.a) in STATIC, kinds.get(c.b) in STATIC
+        if static_a and static_b:
+            continue
+        rv = c.relative_velocity
+        if static_a:
+            actor, target = c.b, c.a
+        elif static_b:
+            actor, target = c.a, c.b
+        else:
+            push_a = c.velocity_a[0] * rv[0] + c.velocity_a[1] * rv[1]
+            push_b = -(c.velocity_b[0] * rv[0] + c.velocity_b[1] * rv[1])
+            actor, target = (c.a, c.b) if push_a >= push_b else (c.b, c.a)
+        if kinds.get(target) == "ground":
+            continue
+        key = (actor, target)
+        if key in last and c.time - last[key] <= REHIT:
+            last[key] = c.time
+            continue
+        last[key] = c.time
+        # The normal points from a to b; towards the actor from the target it is:
+        nx, ny = c.normal if actor == c.a else (-c.normal[0], -c.normal[1])
+        out.append(Interaction("hit", (actor, target), side(-nx, -ny), c.time))
+    return out
+
+
+def _motion(trace: Trace, intervals, radius) -> list[Interaction]:
+    out = []
+    dt = trace.dt
+    for pair, spans in intervals.items():
+        names = sorted(pair)
+        surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
+        movers = [n for n in names if n in trace.names]
+        if len(surfaces) != 1 or len(movers) != 1:
+            continue
+        surface, mover = surfaces[0], movers[0]
+        index = trace.index(mover)
+        for begin, end in spans:
+            # State row k holds the time (k + 1) · dt.
+            rows = trace.states[int(round(begin / dt)) - 1 : int(round(min(end, trace.duration) / dt)) - 1, index]
+            rows = rows[~np.isnan(rows[:, 0])]
+            if not len(rows):
+                continue
+            speed = np.hypot(rows[:, 3], rows[:, 4])
+            spin = np.abs(rows[:, 5])
+            moving = speed >= MOVING
+            r = radius.get(mover)
+            if r:
+                rolling = moving & (np.abs(spin * r - speed) <= ROLL_SLIP * speed)
+            else:
+                rolling = np.zeros(len(rows), dtype=bool)
+            sliding = moving & (spin <= SLIDE_SPIN) & ~rolling
+            for name, frames in (("roll", rolling), ("slide", sliding)):
+                if frames.sum() * dt >= MOTION_TIME:
+                    first = int(np.argmax(frames))
+                    direction = "right" if rows[frames, 3].sum() > 0 else "left"
+                    out.append(Interaction(name, (mover, surface), direction, begin + first * dt))
+    return out
+
+
+def _touching(trace: Trace, intervals) -> np.ndarray:
+    """(steps, bodies): whether each dynamic body touches anything at each step."""
+    touching = np.zeros((trace.steps, len(trace.names)), dtype=bool)
+    index = {name: i for i, name in enumerate(trace.names)}
+    for pair, spans in intervals.items():
+        for name in pair:
+            if name in index:
+                for begin, end in spans:
+                    first = max(int(round(begin / trace.dt)) - 1, 0)
+                    last = min(int(math.ceil(end / trace.dt)) - 1, trace.steps)
+                    touching[first:last, index[name]] = True
+    return touching
+
+
+def _falls(trace: Trace, intervals) -> list[Interaction]:
+    out = []
+    dt = trace.dt
+    touching = _touching(trace, intervals)
+    airborne_all = ~touching & ~np.isnan(trace.states[:, :, 0])
+    for index, name in enumerate(trace.names):
+        if trace.kinds.get(name) == "bird":
+            continue
+        airborne = np.concatenate([airborne_all[:, index], [False]])
+        edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne]).astype(int)))
+        for start, stop in zip(edges[::2], edges[1::2]):
+            duration = (stop - start) * dt
+            drop = trace.states[start, index, 1] - trace.states[stop - 1, index, 1]
+            if duration < FALL_TIME or drop < FALL_HEIGHT:
+                continue
+            landed = (stop + 1) * dt
+            landing = next(
+                (c.b if c.a == name else c.a for c in trace.contacts if name in (c.a, c.b) and c.time >= landed - dt * 1.5),
+                None,
+            )
+            if landing is not None:
+                out.append(Interaction("fall", (name, landing), None, (start + 1) * dt))
+    return out
+
+
+def _bounces(trace: Trace, intervals) -> list[Interaction]:
+    out = []
+    dt = trace.dt
+    for pair, spans in intervals.items():
+        names = sorted(pair)
+        surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
+        movers = [n for n in names if n in trace.names]
+        if len(surfaces) != 1 or len(movers) != 1:
+            continue
+        surface, mover = surfaces[0], movers[0]
+        index = trace.index(mover)
+        for begin, end in spans:
+            if end - begin >= BOUNCE_TIME or end >= trace.duration:
+                continue
+            incoming = next((c for c in trace.contacts if c.time == begin and {c.a, c.b} == pair), None)
+            after = int(round(end / dt))
+            if incoming is None or incoming.speed < BOUNCE_SPEED or after >= trace.steps:
+                continue
+            vx, vy = trace.states[after, index, 3:5]
+            if np.isnan(vx):
+                continue
+            out.append(Interaction("bounce", (mover, surface), side(vx, vy), end))
+    return out
+
+
+def violations(interactions, restrictions) -> tuple[Violation, ...]:
+    """Restrictions (TermIR-like: name, objects, directions) broken by the interactions."""
+    out = []
+    redirected_at: dict[str, float] = {}
+    for i in interactions:
+        if i.name == "bounce":
+            redirected_at.setdefault(i.objects[0], i.time)
+    for restriction in restrictions:
+        for i in interactions:
+            if restriction.name == "cannotHit" and i.name == "hit" and i.objects == tuple(restriction.objects[:2]):
+                direct = i.time < redirected_at.get(i.objects[0], math.inf)
+                if direct and i.direction in restriction.directions:
+                    out.append(Violation(restriction.text or f"cannotHit({', '.join(restriction.objects)})", i))
+            elif restriction.name == "cannotFall" and i.name == "fall" and i.objects[0] == restriction.objects[0]:
+                out.append(Violation(restriction.text or f"cannotFall({restriction.objects[0]})", i))
+    return tuple(sorted(out, key=lambda v: v.interaction.time))

@@ -1,0 +1,109 @@
+"""The angrybirds game in pymunk: hand-made cases with known outcomes, rules, determinism."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from physc.backends import installed_backends, load_backend
+from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.launch import Shot, Unreachable
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.rules import RULES
+from physc.domains.angrybirds.world import BIRD_REST, GRAVITY, reachable
+
+PIG_ON_GROUND = LevelObject("Pig", "BasicSmall", 0.0, -3.5 + 0.236, 0.0, name="pig")
+
+
+def play(objects, shot, seconds=8.0, **options):
+    return Game(Level(objects=tuple(objects))).play(shot, seconds, **options)
+
+
+def test_bird_destroys_a_small_pig_on_the_ground():
+    trace = play([PIG_ON_GROUND], Shot(target=(0.0, -3.27)))
+    assert trace.solved
+    assert trace.sequence().startswith("hit(bird, pig, left) > destroy(bird, pig)")
+
+
+def test_circle_hit_from_the_left_rolls_right():
+    platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
+    circle = LevelObject("Block", "Circle", -1.5, -1.0 + 0.16 + 0.385, 0.0, "wood", name="circle")
+    trace = play([platform, circle], Shot(target=(-1.5, -0.46)))
+    texts = [i.text() for i in trace.interactions]
+    assert texts[:2] == ["hit(bird, circle, left)", "roll(circle, platform, right)"]
+    x = trace.states[:, trace.index("circle"), 0]
+    assert np.nanmax(x) > -1.5 + 2.0  # it rolled well to the right
+
+
+def test_block_dropped_on_a_pig_kills_it():
+    block = LevelObject("Block", "SquareHole", 0.0, 3.0, 0.0, "stone", name="block")
+    trace = play([PIG_ON_GROUND, block], None)
+    assert trace.solved
+    texts = [i.text() for i in trace.interactions]
+    assert texts[0] == "fall(block, pig)" and "hit(block, pig, above)" in texts and "destroy(block, pig)" in texts
+    (destroyed,) = trace.destructions
+    assert destroyed.name == "pig" and destroyed.by == "block" and destroyed.cause == "damage"
+
+
+def test_a_platform_in_the_way_blocks_the_shot():
+    wall = LevelObject("Platform", "Platform", -4.0, -1.5, 90.0, scale_x=8 / 0.64, scale_y=0.5, name="wall")
+    trace = play([PIG_ON_GROUND, wall], Shot(target=(0.0, -3.27)))
+    assert not trace.solved
+    assert trace.interactions[0].text() == "hit(bird, wall, left)"
+    assert not any(i.name == "hit" and i.objects == ("bird", "pig") for i in trace.interactions)
+
+
+def test_same_level_same_trace():
+    objects = [PIG_ON_GROUND, LevelObject("Block", "Circle", -2.0, -3.5 + 0.385, 0.0, "ice", name="circle")]
+    first = play(objects, Shot(target=(-2.0, -3.0), trajectory="high"))
+    second = play(objects, Shot(target=(-2.0, -3.0), trajectory="high"))
+    assert np.array_equal(first.states, second.states, equal_nan=True)
+    assert first.interactions == second.interactions
+
+
+def test_objects_leaving_the_level_are_destroyed():
+    ramp = LevelObject("Platform", "Platform", 15.5, -2.0, -15.0, scale_x=6 / 0.64, scale_y=0.5, name="ramp")
+    circle = LevelObject("Block", "Circle", 13.2, -0.6, 0.0, "wood", name="circle")
+    trace = Game(Level(objects=(ramp, circle))).simulate(None, seconds=8.0)
+    (gone,) = trace.destructions
+    assert (gone.name, gone.cause) == ("circle", "out of world")
+    assert not trace.solved  # no pigs: nothing to solve
+
+
+def test_damage_formula_and_invulnerability():
+    game = Game(Level(objects=(PIG_ON_GROUND,)))
+    world = game.build()
+    from physc.simulation.trace import ContactRecord
+
+    contact = ContactRecord(1.0, "pig", "ground", (0, -3.5), (0, -1), (0.0, -2.0), (0.0, -2.0), (0.0, 0.0))
+    out = []
+    game._damage(world, contact, out, 1.0)
+    mass = world.mass("pig")
+    (record,) = out
+    assert record.amount == pytest.approx(2.0 * mass * 11.22 * 0.5 - 1.0)
+    assert record.by == "ground"
+    # The level's first 2 s are invulnerable when nothing is shot.
+    block = LevelObject("Block", "SquareHole", 0.0, 3.0, 0.0, "stone", name="block")
+    early = Game(Level(objects=(PIG_ON_GROUND, LevelObject("Block", "SquareHole", 0.0, -2.0, 0.0, "stone", name="block")))).simulate(None, 3.0)
+    assert not early.destructions
+    del block
+
+
+def test_launch_model():
+    shot = Shot(target=(0.0, -3.0))
+    low, high = shot.release_angle(), Shot(target=(0.0, -3.0), trajectory="high").release_angle()
+    assert 0 < low < 45 < high < 90
+    vx, vy = shot.velocity()
+    assert np.hypot(vx, vy) == pytest.approx(10.0)
+    # The flight passes through the target (no air drag, g = 4.7088).
+    t = (0.0 - BIRD_REST[0]) / vx
+    assert BIRD_REST[1] + vy * t - GRAVITY * t * t / 2 == pytest.approx(-3.0, abs=1e-9)
+    assert not reachable(15.0, 5.0)
+    with pytest.raises(Unreachable):
+        Shot(target=(15.0, 5.0)).release_angle()
+    assert RULES.gravity == pytest.approx(9.81 * 0.48)
+
+
+def test_backend_is_a_plugin():
+    assert "pymunk" in installed_backends()
+    assert load_backend("pymunk").name == "pymunk"

@@ -1,0 +1,101 @@
+"""Science Birds level files: the 75 real templates, round trips, the exact format."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+
+from conftest import SHARED, run_physc
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.level_xml import LevelError, emit_level, parse_level, read_level
+
+TEMPLATES = sorted((SHARED / "data" / "sciencebirds" / "phyq-templates").glob("*.xml"))
+
+
+def test_there_are_75_templates():
+    if not TEMPLATES:
+        pytest.skip("shared/data is not beside the repository")
+    assert len(TEMPLATES) == 75
+
+
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_import_emit_import_is_lossless(path):
+    data = path.read_bytes()
+    assert data.startswith(b'<?xml version="1.0" encoding="utf-16"?>')  # declared utf-16, actually ASCII
+    level = read_level(data)
+    assert len(level.objects) == data.count(b"<Block") + data.count(b"<Pig") + data.count(b"<Platform") + data.count(b"<TNT")
+    again = parse_level(emit_level(level))
+    assert again == level
+    assert emit_level(again) == emit_level(level)
+
+
+def test_real_utf16_files_are_read_too():
+    text = emit_level(Level(objects=(LevelObject("Pig", "BasicSmall", 1.5, -3.26, 0.0),)))
+    assert read_level(text.encode("utf-16")) == parse_level(text)
+
+
+def test_emitted_format():
+    level = Level(
+        objects=(
+            LevelObject("Block", "Circle", -3.9246, 4.3121, 0.1114, "wood"),
+            LevelObject("Pig", "BasicSmall", -7.692, 2.5967, 1.1086, ""),
+            LevelObject("Platform", "Platform", -7.782, 2.1181, 0.0, "", 3.2197, 0.758),
+            LevelObject("TNT", "TNT", 1.566, 0.03508, 0.0),
+        )
+    )
+    assert emit_level(level) == (
+        '<?xml version="1.0" encoding="utf-16"?>\n'
+        '<Level width="2">\n'
+        '  <Camera x="0" y="-1" minWidth="25" maxWidth="35" />\n'
+        '  <Score highScore="0" />\n'
+        "  <Birds>\n"
+        '    <Bird type="BirdRed" />\n'
+        "  </Birds>\n"
+        '  <Slingshot x="-12" y="-2.5" />\n'
+        "  <GameObjects>\n"
+        '    <Block type="Circle" material="wood" x="-3.9246" y="4.3121" rotation="0.1114" />\n'
+        '    <Pig type="BasicSmall" material="" x="-7.692" y="2.5967" rotation="1.1086" />\n'
+        '    <Platform type="Platform" material="" x="-7.782" y="2.1181" rotation="0" scaleX="3.2197" scaleY="0.758" />\n'
+        '    <TNT type="TNT" x="1.566" y="0.03508" rotation="0" />\n'
+        "  </GameObjects>\n"
+        "</Level>\n"
+    )
+
+
+def test_one_element_per_line_and_no_comments():
+    for path in TEMPLATES[:10]:
+        text = emit_level(read_level(path.read_bytes()))
+        assert "<!--" not in text
+        assert all(line.count("<") == 1 for line in text.splitlines())
+        assert not re.search(r"\d[eE][-+]?\d", text)
+
+
+@pytest.mark.parametrize(
+    "text, code",
+    [
+        ("<Level><GameObjects><Block type='Circel' x='1' y='2'/></GameObjects></Level>", "E0903"),
+        ("<Level><GameObjects><Block type='Circle' x='1'/></GameObjects></Level>", "E0902"),
+        ("<Level><GameObjects><Block type='Circle' x='one' y='2'/></GameObjects></Level>", "E0902"),
+        ("<Level><GameObjects><Block type='Circle' x='1' y=2/></GameObjects></Level>", "E0901"),
+        ("<Scene/>", "E0901"),
+        ("<Level><Birds><Bird type='BirdPink'/></Birds></Level>", "E0903"),
+        ("<Level><GameObjects><Rock type='Circle' x='1' y='2'/></GameObjects></Level>", "E0903"),
+    ],
+)
+def test_bad_levels_are_level_errors(text, code):
+    with pytest.raises(LevelError) as caught:
+        parse_level(text)
+    assert caught.value.code == code
+
+
+def test_bad_level_on_the_command_line(tmp_path):
+    path = tmp_path / "bad.xml"
+    path.write_text("<Level><GameObjects><Block type='Circel' x='1' y='2'/></GameObjects></Level>")
+    run = run_physc("simulate", path, "--color", "never")
+    assert run.status == 1
+    assert f"{path}: error[E0903]: unknown object type 'Circel'" in run.stderr and "did you mean 'Circle'?" in run.stderr
+    assert run_physc("simulate", tmp_path / "none.xml").status == 2
+    binary = tmp_path / "binary.xml"
+    binary.write_bytes(bytes(range(256)))
+    assert run_physc("simulate", binary).status == 1

@@ -1,0 +1,43 @@
+"""physc simulate, trace and render on level files."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import SHARED, run_physc
+
+ONE_PIG = SHARED / "data" / "sciencebirds" / "phyq-templates" / "1_1_1_1.xml"
+
+
+def test_simulate(tmp_path):
+    run = run_physc("simulate", ONE_PIG, "--shot", "0,-3.27")
+    assert run.status == 0
+    assert "1 of 1 pigs destroyed: solved" in run.stdout
+    data = json.loads(run_physc("simulate", ONE_PIG, "--shot", "0,-3.27", "--json").stdout)
+    assert data["solved"] and data["pigs"] == ["pigSmall1"]
+    missed = json.loads(run_physc("simulate", ONE_PIG, "--angle", "70", "--json").stdout)
+    assert not missed["solved"]
+
+
+def test_trace_prints_phys_syntax():
+    run = run_physc("trace", ONE_PIG, "--shot", "0,-3.27")
+    lines = run.stdout.splitlines()
+    assert lines[1].startswith("hit(bird, pigSmall1, left)") and lines[2].startswith("> destroy(bird, pigSmall1)")
+    assert "# t = " in lines[1]
+
+
+def test_render(tmp_path):
+    out = tmp_path / "level.png"
+    assert run_physc("render", ONE_PIG, "-o", out, "--shot", "0,-3.27").status == 0
+    assert out.read_bytes().startswith(b"\x89PNG")
+    svg = tmp_path / "level.svg"
+    assert run_physc("render", ONE_PIG, "-o", svg).status == 0
+    assert run_physc("render", ONE_PIG, "-o", tmp_path / "level.gif").status == 2
+
+
+def test_bad_shots_are_usage_errors():
+    assert run_physc("simulate", ONE_PIG, "--shot", "0").status == 2
+    assert run_physc("simulate", ONE_PIG, "--shot", "a,b").status == 2
+    run = run_physc("simulate", ONE_PIG, "--shot", "30,9")
+    assert run.status == 2 and "out of reach" in run.stderr
+    assert run_physc("simulate", ONE_PIG, "--backend", "bulet").status == 2

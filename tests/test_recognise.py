@@ -1,0 +1,55 @@
+"""Recognising interactions and checking restrictions in traces."""
+
+from __future__ import annotations
+
+from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.recognise import side, violations
+from physc.dsl.scenario import TermIR
+from physc.simulation.trace import Interaction
+
+
+def test_side_of_the_target():
+    assert side(-1.0, 0.2) == "left" and side(1.0, -0.3) == "right"
+    assert side(0.1, 1.0) == "above" and side(0.2, -1.0) == "below"
+
+
+def test_slide_is_recognised():
+    platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
+    block = LevelObject("Block", "SquareHole", -1.5, -1.0 + 0.16 + 0.3918 + 0.01, 0.0, "ice", name="block")
+    trace = Game(Level(objects=(platform, block))).play(Shot(target=(-1.9, -0.45)), 6.0)
+    names = [i.text() for i in trace.interactions]
+    assert names[0] == "hit(bird, block, left)"
+    assert "slide(block, platform, right)" in names
+
+
+def test_bounce_is_recognised():
+    ramp = LevelObject("Platform", "Platform", -6.0, 0.5, -30.0, scale_x=4 / 0.64, scale_y=0.5, name="ramp")
+    trace = Game(Level(objects=(ramp,))).play(Shot(target=(-6.0, 0.6), trajectory="high"), 5.0)
+    texts = [i.text() for i in trace.interactions]
+    assert texts[0].startswith("hit(bird, ramp, ")
+    assert any(t.startswith("bounce(bird, ramp, ") for t in texts)
+
+
+def test_violations_with_times():
+    hit = Interaction("hit", ("bird", "pig"), "left", 1.5)
+    fall = Interaction("fall", ("rBlock", "pig"), None, 2.5)
+    restrictions = (
+        TermIR("cannotHit", ("bird", "pig"), ("left", "above"), text="cannotHit(bird, pig, left | above)"),
+        TermIR("cannotFall", ("rBlock",), (), text="cannotFall(rBlock)"),
+        TermIR("cannotHit", ("bird", "pig"), ("below",), text="cannotHit(bird, pig, below)"),
+    )
+    found = violations((hit, fall), restrictions)
+    assert [v.text() for v in found] == [
+        "cannotHit(bird, pig, left | above) violated at t = 1.50 s by hit(bird, pig, left)",
+        "cannotFall(rBlock) violated at t = 2.50 s by fall(rBlock, pig)",
+    ]
+
+
+def test_a_hit_after_a_bounce_is_not_the_direct_approach():
+    bounce = Interaction("bounce", ("bird", "iSurface"), "below", 1.0)
+    hit = Interaction("hit", ("bird", "pig"), "above", 1.5)
+    restriction = TermIR("cannotHit", ("bird", "pig"), ("left", "right", "above", "below"), text="cannotHit(bird, pig, any)")
+    assert violations((bounce, hit), (restriction,)) == ()
+    assert len(violations((hit,), (restriction,))) == 1
