@@ -174,7 +174,7 @@ def add_commands(commands, common) -> None:
     def level_arguments(parser):
         parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
         shot = parser.add_mutually_exclusive_group()
-        shot.add_argument("--shot", metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory")
+        shot.add_argument("--shot", metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory; write --shot=-9,0.5 for a negative X")
         shot.add_argument("--angle", type=float, metavar="DEG", help="shoot at a release angle (degrees)")
         parser.add_argument("--seconds", type=float, default=10.0, metavar="S", help="simulated time at most (default 10)")
         parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")

@@ -1,0 +1,50 @@
+"""Stability of real levels: the 75 Phy-Q templates standing for 10 s with no shot.
+
+    python benchmarks/stability.py [--circles phyq|round] [--seconds 10] [--limit 0.1]
+
+A template is stable when no object moves more than `--limit` units and nothing is
+destroyed. Prints each unstable template with the object that moved most.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+import numpy as np
+
+from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.level_xml import read_level
+from physc.domains.angrybirds.rules import Rules
+
+TEMPLATES = Path(__file__).resolve().parents[2] / "shared" / "data" / "sciencebirds" / "phyq-templates"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--circles", choices=("phyq", "round"), default="phyq")
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--limit", type=float, default=0.1)
+    parser.add_argument("--templates", type=Path, default=TEMPLATES)
+    args = parser.parse_args()
+    paths = sorted(args.templates.glob("*.xml"))
+    start = time.perf_counter()
+    unstable = []
+    for path in paths:
+        level = read_level(path.read_bytes())
+        trace = Game(level, rules=Rules(circles=args.circles)).simulate(None, args.seconds, stop_at_rest=False)
+        states = trace.states
+        shift = np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1]) if states.shape[1] else np.zeros((1, 1))
+        worst = float(np.nanmax(shift))
+        if worst > args.limit or trace.destructions:
+            name = trace.names[int(np.nanargmax(np.nanmax(shift, axis=0)))]
+            unstable.append((path.stem, name, worst, [d.name for d in trace.destructions]))
+    stable = len(paths) - len(unstable)
+    print(f"circles={args.circles}: {stable} of {len(paths)} stable ({stable / len(paths):.1%}) in {time.perf_counter() - start:.1f} s")
+    for stem, name, worst, destroyed in unstable:
+        print(f"  {stem}: {name} moved {worst:.3f}" + (f"; destroyed {', '.join(destroyed)}" if destroyed else ""))
+
+
+if __name__ == "__main__":
+    main()
