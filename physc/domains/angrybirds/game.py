@@ -120,7 +120,8 @@ class Game:
             for a, b in world.ended():
                 separations.append(SeparationRecord(time, a, b))
             # Destruction: by damage, by leaving the level; birds at rest or too old go.
-            for name in list(alive):
+            # In `dynamic` order: the order of removals must not depend on string hashing.
+            for name in [n for n in dynamic if n in alive]:
                 x, y, angle, vx, vy, w = world.state(name)
                 gone = None
                 if self.life.get(name, math.inf) <= 0:
@@ -207,7 +208,7 @@ class Game:
     def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
         rules = self.rules
         cx, cy = world.state(name)[:2]
-        for other in list(alive):
+        for other in sorted(alive):
             if other == name:
                 continue
             x, y, _, vx, vy, w = world.state(other)

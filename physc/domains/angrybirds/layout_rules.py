@@ -91,7 +91,8 @@ def _interaction_provenance(term: TermIR) -> Provenance:
 
 def infer(scenario: ScenarioIR) -> LayoutGraph:
     b = _Builder(scenario)
-    dynamic = {o.name for o in scenario.objects if not o.static and o.term != "bird"}
+    # A list, not a set: iteration order must not depend on string hashing.
+    dynamic = [o.name for o in scenario.objects if not o.static and o.term != "bird"]
 
     # 1. The paper's table.
     for term in scenario.interactions:
