@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import functools
 import random
+import time
 
 import attrs
 
@@ -20,11 +21,14 @@ from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
+from physc.compiler.task import Task
 from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.dsl.scenario import ScenarioIR
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
+LAYOUT_BUDGET = 40  # placed layouts that simulation-based satisfaction may try
+TIME_BUDGET = 120.0  # seconds for generating one task
 
 
 @attrs.frozen
@@ -34,11 +38,25 @@ class Placed:
 
 
 class Pipeline:
-    def __init__(self, domain, scenario: ScenarioIR, seed: int = 0, budget: int = DEFAULT_NODE_BUDGET):
+    def __init__(
+        self,
+        domain,
+        scenario: ScenarioIR,
+        seed: int = 0,
+        budget: int = DEFAULT_NODE_BUDGET,
+        validate: bool = True,
+        layout_budget: int = LAYOUT_BUDGET,
+        time_budget: float = TIME_BUDGET,
+        source: str = "",
+    ):
         self.domain = domain
         self.scenario = scenario
         self.seed = seed
         self.budget = budget  # clause choices the search may try per shape draw
+        self.validate = validate
+        self.layout_budget = layout_budget  # layouts that simulation may try
+        self.time_budget = time_budget  # seconds for the whole generation
+        self.source = source
         self.rng = random.Random(seed)
 
     @functools.cached_property
@@ -51,6 +69,10 @@ class Pipeline:
 
     @functools.cached_property
     def placed(self) -> Placed:
+        return next(self.placements())
+
+    def placements(self):
+        """Placed layouts, one after the other, from the next consistent conjunctions."""
         dnf = self.qsr
         search = ToDimensionGraphs(self.domain, self.budget).run(dnf, self.layout_graph, self.scenario, self.rng)
         place = Place(self.domain)
@@ -60,7 +82,7 @@ class Pipeline:
                 consistent += 1
                 layout = place.run(graphs, self.scenario, dnf.deferred, self.rng)
                 if layout is not None:
-                    return Placed(graphs, layout)
+                    yield Placed(graphs, layout)
                 if consistent >= PLACEMENT_BUDGET:
                     raise Infeasible(
                         Place.name,
@@ -79,3 +101,62 @@ class Pipeline:
                 ) from None
             raise
         raise AssertionError("the search ends by raising Infeasible")
+
+    @functools.cached_property
+    def task(self) -> Task:
+        """Generate the task: layouts one after another until simulation-based
+        satisfaction succeeds, within the budgets of layouts and time."""
+        started = time.perf_counter()
+        seconds = {"layout": 0.0, "satisfy": 0.0}
+        layouts = simulations = 0
+        clock = time.perf_counter()
+        placements = self.placements()
+        while True:
+            try:
+                placed = next(placements)
+            except Infeasible as error:
+                if layouts:
+                    raise Infeasible(
+                        "satisfy",
+                        f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
+                        tried=error.tried,
+                        budget=error.budget,
+                    ) from None
+                raise
+            layouts += 1
+            seconds["layout"] += time.perf_counter() - clock
+            clock = time.perf_counter()
+            result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
+            seconds["satisfy"] += time.perf_counter() - clock
+            simulations += result.simulations
+            if result.satisfied:
+                break
+            if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
+                raise Infeasible(
+                    "satisfy",
+                    f"no layout realised the sequence in simulation within the budget "
+                    f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
+                    tried=placed.layout.conjunctions_tried,
+                    budget=True,
+                )
+            clock = time.perf_counter()
+        seconds["total"] = time.perf_counter() - started
+        parts = result.parts
+        return Task(
+            scenario=self.scenario.name,
+            domain=self.domain.name,
+            seed=self.seed,
+            source=self.source,
+            level=parts.level,
+            solution=parts.solution,
+            trace=parts.trace,
+            validated=parts.validated,
+            robustness=parts.robustness,
+            repairs=parts.repairs,
+            obstacles=parts.obstacles,
+            distractors=parts.distractors,
+            layouts_tried=layouts,
+            conjunctions_tried=placed.layout.conjunctions_tried,
+            simulations=simulations,
+            seconds={k: round(v, 4) for k, v in seconds.items()},
+        )

@@ -34,5 +34,11 @@ class AngryBirds:
     def reachable(x: float, y: float) -> bool:
         return world.reachable(x, y)
 
+    def satisfy(self, scenario, layout, rng, validate: bool = True):
+        """Simulation-based satisfaction, distractions and validation of one layout."""
+        from physc.domains.angrybirds.generate import satisfy
+
+        return satisfy(self, scenario, layout, rng, validate)
+
 
 DOMAIN = AngryBirds()

@@ -84,13 +84,21 @@ class Game:
         return world
 
     # ---- playing ----------------------------------------------------------------------
-    def simulate(self, shot: Shot | None = None, seconds: float = 10.0, stop_at_rest: bool = True, invulnerable: float | None = None) -> Trace:
+    def simulate(
+        self,
+        shot: Shot | None = None,
+        seconds: float = 10.0,
+        stop_at_rest: bool = True,
+        invulnerable: float | None = None,
+        settle_after_solved: float | None = None,
+    ) -> Trace:
         """Run the level for `seconds`, with a shot at t = 0 or none.
 
         Damage counts from the shot on (the player shoots after the level's first
         2 s of invulnerability); with no shot, the first 2 s are invulnerable, as
         when the level loads. With `stop_at_rest` the run ends once everything has
-        come to rest (and the bird is gone or still)."""
+        come to rest (and the bird is gone or still); with `settle_after_solved`, that
+        many seconds after the last pig is destroyed."""
         rules = self.rules
         world = self.build()
         if invulnerable is None:
@@ -109,6 +117,7 @@ class Game:
         alive = set(dynamic)
         pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
         resting_since = None
+        solved_at = None
         for step in range(steps):
             world.step(rules.dt)
             time = (step + 1) * rules.dt
@@ -138,6 +147,12 @@ class Game:
                     alive.discard(name)
                 else:
                     states[step, index[name]] = (x, y, angle, vx, vy, w)
+            if settle_after_solved is not None and pigs:
+                if solved_at is None and not any(p in alive for p in pigs):
+                    solved_at = time
+                if solved_at is not None and time - solved_at >= settle_after_solved:
+                    states = states[: step + 1]
+                    break
             if stop_at_rest:
                 moving = any(
                     abs(states[step, index[n], 3]) + abs(states[step, index[n], 4]) + abs(states[step, index[n], 5]) > STILL_SPEED

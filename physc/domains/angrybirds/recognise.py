@@ -101,7 +101,9 @@ def _hits(trace: Trace) -> list[Interaction]:
     last: dict[tuple[str, str], float] = {}
     out = []
     for c in trace.contacts:
-        if c.speed < HIT_SPEED:
+        # An impact: the approach along the contact normal, not sliding across a
+        # flush junction onto the next platform.
+        if abs(c.relative_velocity[0] * c.normal[0] + c.relative_velocity[1] * c.normal[1]) < HIT_SPEED:
             continue
         static_a, static_b = kinds.get(c.a) in STATIC, kinds.get(c.b) in STATIC
         if static_a and static_b:

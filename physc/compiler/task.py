@@ -1,0 +1,35 @@
+"""The Task IR: a generated task, its solution, and how it was made."""
+
+from __future__ import annotations
+
+import attrs
+
+
+@attrs.frozen
+class Solution:
+    """The intended solution: a full-stretch shot."""
+
+    aimed_at: str  # the point of interest, e.g. "rBlock.left, low"
+    target: tuple[float, float]
+    trajectory: str  # "low" | "high"
+    release_angle: float  # degrees
+
+
+@attrs.frozen
+class Task:
+    scenario: str
+    domain: str
+    seed: int
+    source: str  # the scenario as written, in block form
+    level: object  # the domain's level (angrybirds: a Science Birds Level)
+    solution: Solution
+    trace: str  # the interactions the solution realises, in .phys syntax
+    validated: bool | None  # None when validation was skipped
+    robustness: tuple[int, int]  # perturbed replays passed, run
+    repairs: tuple[str, ...]  # what simulation-based satisfaction changed
+    obstacles: tuple[str, ...]
+    distractors: tuple[str, ...]
+    layouts_tried: int
+    conjunctions_tried: int
+    simulations: int
+    seconds: dict  # stage → time spent

@@ -1,0 +1,43 @@
+"""Candidate actions: the paper's discretised solution space.
+
+The player's one action is the shot. Following the paper, it is aimed at points
+of interest on the object that starts the sequence (its five points and the
+middle of each side), at full stretch, on the low and the high trajectory: at
+most 18 shots, of which the unreachable ones are dropped.
+"""
+
+from __future__ import annotations
+
+from physc.compiler.qsr_evaluate import five_points
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import LevelObject
+from physc.domains.angrybirds.world import reachable
+
+POINTS = ("ll", "ul", "ur", "lr", "c")
+
+
+def extent(obj: LevelObject) -> tuple[float, float]:
+    catalogue = by_prefab(obj.type)
+    if catalogue.kind == "platform":
+        return PLATFORM_BASE * (obj.scale_x or 1.0), PLATFORM_BASE * (obj.scale_y or 1.0)
+    return catalogue.width, catalogue.height
+
+
+def points_of_interest(obj: LevelObject) -> dict[str, tuple[float, float]]:
+    width, height = extent(obj)
+    points = {k: (v.real, v.imag) for k, v in five_points(obj.x, obj.y, width, height, obj.rotation or 0.0).items()}
+    for name, (a, b) in {"left": ("ll", "ul"), "top": ("ul", "ur"), "right": ("ur", "lr")}.items():
+        points[name] = ((points[a][0] + points[b][0]) / 2, (points[a][1] + points[b][1]) / 2)
+    return points
+
+
+def candidate_shots(target: LevelObject) -> list[tuple[str, Shot]]:
+    """(label, shot) for every reachable point of interest and trajectory."""
+    out = []
+    for label, (x, y) in points_of_interest(target).items():
+        if not reachable(x, y):
+            continue
+        for trajectory in ("low", "high"):
+            out.append((f"{target.name}.{label}, {trajectory}", Shot(target=(round(x, 5), round(y, 5)), trajectory=trajectory)))
+    return out

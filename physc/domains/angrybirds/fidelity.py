@@ -1,0 +1,62 @@
+"""Sequence fidelity: does a simulated trace realise the declared sequence?
+
+The declared interactions must occur in the recognised trace in their order (a
+subsequence: other interactions may happen in between, e.g. the bird bouncing on
+the ground after its work is done). An occurrence matches when the term and its
+objects are the same and its direction is one the scenario allows after
+narrowing by the restrictions (`fall` also accepts any direction, since the
+recognised fall names where it landed, not where it came from). The trace must
+also break no restriction, and leave every pig destroyed.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.dsl.scenario import ScenarioIR, TermIR
+from physc.simulation.trace import Interaction, Trace
+
+
+@attrs.frozen
+class Fidelity:
+    matched: int  # how many declared interactions, from the first, occur in order
+    total: int
+    violations: tuple[str, ...]
+    solved: bool
+    times: tuple[float, ...]  # when each matched interaction happened
+
+    @property
+    def complete(self) -> bool:
+        return self.matched == self.total
+
+    @property
+    def valid(self) -> bool:
+        return self.complete and not self.violations and self.solved
+
+    @property
+    def score(self) -> tuple:
+        """Higher is better: more of the sequence, then solved, then no violations."""
+        return (self.matched, self.solved, -len(self.violations))
+
+
+def matches(declared: TermIR, found: Interaction) -> bool:
+    if declared.name != found.name or tuple(declared.objects) != found.objects[: len(declared.objects)]:
+        return False
+    if declared.name in ("destroy", "fall"):
+        return True
+    return found.direction in declared.directions
+
+
+def fidelity(scenario: ScenarioIR, trace: Trace) -> Fidelity:
+    matched, times = 0, []
+    for found in trace.interactions:
+        if matched < len(scenario.interactions) and matches(scenario.interactions[matched], found):
+            times.append(found.time)
+            matched += 1
+    return Fidelity(
+        matched,
+        len(scenario.interactions),
+        tuple(v.text() for v in trace.violations),
+        trace.solved,
+        tuple(times),
+    )

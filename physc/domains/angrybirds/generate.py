@@ -1,0 +1,61 @@
+"""The angrybirds steps after placement: satisfy, distract, validate (the paper's 4–6)."""
+
+from __future__ import annotations
+
+import random
+
+import attrs
+
+from physc.compiler.concrete_layout import ConcreteLayout
+from physc.compiler.task import Solution
+from physc.domains.angrybirds.distract import distract
+from physc.domains.angrybirds.satisfy import Satisfier
+from physc.dsl.scenario import ScenarioIR
+
+
+@attrs.frozen
+class Parts:
+    level: object
+    solution: Solution
+    trace: str
+    validated: bool | None
+    robustness: tuple[int, int]
+    repairs: tuple[str, ...]
+    obstacles: tuple[str, ...]
+    distractors: tuple[str, ...]
+
+
+@attrs.frozen
+class Outcome:
+    satisfied: bool
+    simulations: int
+    parts: Parts | None = None
+
+
+def satisfy(domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool) -> Outcome:
+    satisfier = Satisfier(domain, scenario, layout, rng)
+    found = satisfier.run()
+    if found is None:
+        return Outcome(False, satisfier.simulations)
+    attempt = found.attempt
+    distractors = distract(satisfier, attempt, rng, verify=validate)
+    validated = None
+    trace = attempt.trace
+    if validate:
+        final = satisfier.simulate(attempt.shot)
+        if not final.fidelity.valid:
+            return Outcome(False, satisfier.simulations)
+        validated, trace = True, final.trace
+    shot = attempt.shot
+    solution = Solution(attempt.label, shot.target, shot.trajectory, round(shot.release_angle(), 5))
+    parts = Parts(
+        level=satisfier.level,
+        solution=solution,
+        trace=trace.sequence(),
+        validated=validated,
+        robustness=found.robustness,
+        repairs=found.repairs,
+        obstacles=found.obstacles,
+        distractors=tuple(distractors),
+    )
+    return Outcome(True, satisfier.simulations, parts)

@@ -1,0 +1,389 @@
+"""Satisfying constraints through simulation (the paper's step 4), for angrybirds.
+
+Given a placed layout, the satisfier simulates the candidate actions and
+measures how much of the declared sequence each realises (`fidelity`). At the
+first declared interaction that no candidate reaches, it repairs the layout:
+
+* `liesOnPath(b, a)` (from `hit(a, b, d)` and `fall(a, b)`): b is moved to where
+  the simulated paths of a pass most often, placed so that a arrives from an
+  allowed side, with its own support if it has one; every QSR of the chosen
+  conjunction is re-checked there (the paper: "on failure the next best place");
+* `destroy(a, b)`: the attacker is made stronger or the target weaker, within
+  the concrete objects and materials the scenario allows (a smaller pig, a
+  stone block, a larger circle), or a falling attacker starts higher;
+* `slide`: the slider becomes ice (less friction), a square if it may;
+* `bounce`: the surface is turned a little.
+
+Once a candidate realises the whole sequence, `pathObstructed(a, b, d)` (from
+`cannotHit`) adds platforms across the paths of shots that would hit b from a
+forbidden side, each verified by simulation not to disturb the solution. The
+solution kept is the candidate that survives the most perturbed replays.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections import Counter
+
+import attrs
+
+from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
+from physc.compiler.geometry import overlap_depth
+from physc.compiler.qsr_evaluate import five_points, holds
+from physc.domains.angrybirds.actions import candidate_shots, extent
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab, shape
+from physc.domains.angrybirds.fidelity import Fidelity, fidelity
+from physc.domains.angrybirds.game import BIRD, Game
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.recognise import side
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.to_level import level_from_layout
+from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
+from physc.dsl.scenario import ScenarioIR
+from physc.simulation.trace import Trace
+
+SECONDS = 9.0  # simulated time per attempt at most
+REPAIR_ROUNDS = 6
+PLACES = 14  # places tried per liesOnPath repair
+CELL = 0.25  # grid of path counting
+OBSTACLES = 6
+OBSTACLE_LENGTH = 1.4
+PERTURBED = (0.1, -0.1, 0.05, -0.05)  # release angle offsets (degrees) of robustness replays
+RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
+
+
+@attrs.frozen
+class Attempt:
+    label: str
+    shot: Shot
+    trace: Trace
+    fidelity: Fidelity
+
+
+@attrs.frozen
+class Satisfied:
+    level: Level
+    attempt: Attempt
+    robustness: tuple[int, int]  # replays passed, replays run
+    repairs: tuple[str, ...]
+    obstacles: tuple[str, ...]
+    simulations: int
+
+
+def _placed(obj: LevelObject, role: str, material=None) -> PlacedObject:
+    width, height = extent(obj)
+    return PlacedObject(obj.name, role, by_prefab(obj.type).name, material, obj.x, obj.y, obj.rotation or 0.0, width, height)
+
+
+class Satisfier:
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random):
+        self.domain = domain
+        self.scenario = scenario
+        self.rng = rng
+        self.level = level_from_layout(layout)
+        self.roles = {o.name: o.role for o in layout.objects}
+        self.allowed = {o.name: o.concrete for o in scenario.objects}
+        self.relations = tuple(layout.conjunction) + tuple(layout.separations)
+        self.support_of = {r.a: r.b for r in layout.conjunction if r.relation in ("MeetN", "MeetDuringW", "MeetDuringE")}
+        carried = Counter(self.support_of.values())
+        self.own_support = {a: s for a, s in self.support_of.items() if self.roles.get(s) == "support" and carried[s] == 1}
+        self.on_ground = {a for a, s in self.support_of.items() if s not in self.objects}
+        self.parameters = domain.layout_parameters
+        self.repairs: list[str] = []
+        self.obstacles: list[str] = []
+        self.simulations = 0
+
+    # ---- the level ---------------------------------------------------------------------
+    @property
+    def objects(self) -> dict[str, LevelObject]:
+        return {o.name: o for o in self.level.objects}
+
+    def replace(self, changed: dict[str, LevelObject]) -> None:
+        self.level = attrs.evolve(self.level, objects=tuple(changed.get(o.name, o) for o in self.level.objects))
+
+    def add(self, obj: LevelObject) -> None:
+        self.level = attrs.evolve(self.level, objects=self.level.objects + (obj,))
+
+    # ---- simulation ---------------------------------------------------------------------
+    def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
+        self.simulations += 1
+        trace = Game(level or self.level).play(shot, SECONDS, restrictions=self.scenario.restrictions, settle_after_solved=0.3)
+        return Attempt("", shot, trace, fidelity(self.scenario, trace))
+
+    def first_target(self) -> LevelObject | None:
+        first = self.scenario.interactions[0]
+        return self.objects.get(first.objects[1]) if first.name == "hit" else None
+
+    def attempts(self) -> list[Attempt]:
+        target = self.first_target()
+        if target is None:
+            return []
+        out = []
+        for label, shot in candidate_shots(target):
+            out.append(attrs.evolve(self.simulate(shot), label=label))
+        return out
+
+    # ---- constraint checks ------------------------------------------------------------------
+    def consistent(self, level: Level, moved: frozenset = frozenset()) -> bool:
+        """Every QSR of the chosen conjunction holds, nothing overlaps, all inside the area.
+
+        An object that liesOnPath moved along its support may rest anywhere on it: for
+        it, resting on the left, middle or right part of its support all count."""
+        placed = {o.name: _placed(o, self.roles.get(o.name, "object")) for o in level.objects}
+        for relation in self.relations:
+            if relation.a in placed and relation.b in placed:
+                names = (relation.relation,)
+                if relation.a in moved and relation.relation in RESTING:
+                    names = RESTING
+                a, b = placed[relation.a], placed[relation.b]
+                if not any(holds(name, a, b, self.parameters.clearance, self.parameters.far) for name in names):
+                    return False
+        area = PLACEMENT_AREA
+        corners = {}
+        for name, p in placed.items():
+            points = five_points(p.x, p.y, p.width, p.height, p.rotation)
+            corners[name] = [(points[k].real, points[k].imag) for k in ("ll", "lr", "ur", "ul")]
+            xs = [c[0] for c in corners[name]]
+            ys = [c[1] for c in corners[name]]
+            if min(xs) < area.left - 1e-6 or max(xs) > area.right + 1e-6 or min(ys) < area.bottom - 1e-6 or max(ys) > area.top + 1e-6:
+                return False
+        names = list(placed)
+        for i, first in enumerate(names):
+            for second in names[i + 1 :]:
+                if overlap_depth(corners[first], corners[second]) > 1e-4:
+                    return False
+        return True
+
+    # ---- repairs -----------------------------------------------------------------------------
+    def repair(self, attempts: list[Attempt]) -> bool:
+        best = max(attempts, key=lambda a: a.fidelity.score)
+        index = best.fidelity.matched
+        if index >= len(self.scenario.interactions):
+            return False
+        declared = self.scenario.interactions[index]
+        previous = [a for a in attempts if a.fidelity.matched >= index]
+        if declared.name in ("hit", "fall") and index > 0:
+            return self.lie_on_path(declared, previous, index)
+        if declared.name == "destroy":
+            return self.strengthen(declared)
+        if declared.name == "slide":
+            return self.make_slippery(declared.objects[0])
+        if declared.name == "bounce":
+            return self.turn(declared.objects[1])
+        return False
+
+    def lie_on_path(self, declared, attempts: list[Attempt], index: int) -> bool:
+        actor, target = declared.objects
+        objects = self.objects
+        if target not in objects or actor not in (BIRD, *objects):
+            return False
+        counts: Counter = Counter()
+        for attempt in attempts:
+            trace = attempt.trace
+            if actor not in trace.names:
+                continue
+            since = attempt.fidelity.times[index - 1] if index else 0.0
+            rows = trace.states[int(since / trace.dt) :, trace.index(actor), :2]
+            cells = {(round(x / CELL), round(y / CELL)) for x, y in rows if not math.isnan(x)}
+            counts.update(cells)
+        if not counts:
+            return False
+        sides = declared.directions if declared.name == "hit" else ("above",)
+        obj = objects[target]
+        width, height = extent(obj)
+        tried = 0
+        for (cx, cy), _ in sorted(counts.items(), key=lambda item: (-item[1], item[0])):
+            px, py = cx * CELL, cy * CELL
+            for approach in sides:
+                offsets = {"left": (width / 2, 0.0), "right": (-width / 2, 0.0), "above": (0.0, -height / 2), "below": (0.0, height / 2)}
+                dx, dy = offsets.get(approach, (0.0, 0.0))
+                moved = self.move(target, px + dx, py + dy)
+                if moved is None:
+                    continue
+                tried += 1
+                candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
+                if self.consistent(candidate, frozenset(moved)):
+                    self.level = candidate
+                    self.repairs.append(f"liesOnPath({target}, {actor}): moved {target} to ({obj.x:.2f}, {obj.y:.2f}) → ({moved[target].x:.2f}, {moved[target].y:.2f})")
+                    return True
+                if tried >= PLACES:
+                    return False
+        return False
+
+    def move(self, name: str, x: float, y: float) -> dict[str, LevelObject] | None:
+        """The objects changed by putting `name`'s centre at (x, y): with its own support;
+        on the ground or a shared surface only sideways; a static object alone."""
+        objects = self.objects
+        obj = objects[name]
+        if name in self.on_ground or (name in self.support_of and name not in self.own_support):
+            y = obj.y  # it rests on the ground or on a surface others use: slide it along
+        dx, dy = x - obj.x, y - obj.y
+        changed = {name: attrs.evolve(obj, x=round(x, 5), y=round(y, 5))}
+        support = self.own_support.get(name)
+        if support is not None and support in objects:
+            s = objects[support]
+            changed[support] = attrs.evolve(s, x=round(s.x + dx, 5), y=round(s.y + dy, 5))
+        if support is not None and support in objects and objects[support].y + dy < GROUND_TOP:
+            return None
+        return changed
+
+    def strengthen(self, declared) -> bool:
+        attacker, target = declared.objects
+        objects = self.objects
+        pig = objects.get(target)
+        if pig is not None and by_prefab(pig.type).name == "pigMedium" and "pigSmall" in self.allowed.get(target, ()):
+            return self._swap(target, "pigSmall", f"destroy({attacker}, {target}): a small pig")
+        block = objects.get(attacker)
+        if block is not None and block.element == "Block" and block.material != "stone":
+            self.replace({attacker: attrs.evolve(block, material="stone")})
+            self.repairs.append(f"destroy({attacker}, {target}): {attacker} made of stone")
+            return True
+        if block is not None and by_prefab(block.type).name == "circleSmall" and "circle" in self.allowed.get(attacker, ()):
+            return self._swap(attacker, "circle", f"destroy({attacker}, {target}): a larger circle")
+        falls = [t for t in self.scenario.interactions if t.name == "fall" and t.objects[0] == attacker]
+        if block is not None and falls:
+            moved = self.move(attacker, block.x, block.y + 1.0)
+            if moved:
+                candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
+                if self.consistent(candidate):
+                    self.level = candidate
+                    self.repairs.append(f"destroy({attacker}, {target}): {attacker} falls from higher")
+                    return True
+        return False
+
+    def _swap(self, name: str, concrete: str, why: str) -> bool:
+        obj = self.objects[name]
+        old = extent(obj)
+        new_shape = shape(concrete)
+        y = obj.y - old[1] / 2 + new_shape.height / 2  # keep the bottom where it rests
+        candidate_obj = attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5))
+        candidate = attrs.evolve(self.level, objects=tuple(candidate_obj if o.name == name else o for o in self.level.objects))
+        if not self.consistent(candidate):
+            return False
+        self.level = candidate
+        self.repairs.append(why)
+        return True
+
+    def make_slippery(self, name: str) -> bool:
+        obj = self.objects.get(name)
+        if obj is None or obj.element != "Block":
+            return False
+        if by_prefab(obj.type).name != "squareHole" and "squareHole" in self.allowed.get(name, ()):
+            if self._swap(name, "squareHole", f"slide({name}): a square slides, a triangle tips"):
+                return True
+        if obj.material != "ice":
+            self.replace({name: attrs.evolve(self.objects[name], material="ice")})
+            self.repairs.append(f"slide({name}): made of ice")
+            return True
+        return False
+
+    def turn(self, name: str) -> bool:
+        obj = self.objects.get(name)
+        if obj is None or obj.element != "Platform":
+            return False
+        for _ in range(4):
+            angle = (obj.rotation or 0.0) + self.rng.choice((-1, 1)) * self.rng.uniform(5, 12)
+            if not 5 <= abs(angle) <= 60:
+                continue
+            candidate = attrs.evolve(self.level, objects=tuple(attrs.evolve(o, rotation=round(angle, 3)) if o.name == name else o for o in self.level.objects))
+            if self.consistent(candidate):
+                self.level = candidate
+                self.repairs.append(f"bounce: {name} turned to {angle:.1f}°")
+                return True
+        return False
+
+    # ---- obstruction ---------------------------------------------------------------------------
+    def obstruct(self, solution: Attempt) -> bool:
+        """Block the shots that would hit a restricted object from a forbidden side."""
+        for restriction in self.scenario.restrictions:
+            if restriction.name != "cannotHit" or restriction.objects[0] != BIRD:
+                continue
+            target = restriction.objects[1]
+            for _ in range(OBSTACLES):
+                offending = self.offending_shot(target, restriction.directions)
+                if offending is None:
+                    break
+                if not self.block(offending, target, solution):
+                    return False
+            if self.offending_shot(target, restriction.directions) is not None:
+                return False
+        return True
+
+    def offending_shot(self, target: str, directions) -> Attempt | None:
+        obj = self.objects.get(target)
+        if obj is None:
+            return None
+        for label, shot in candidate_shots(obj):
+            trace = Game(self.level).simulate(shot, 4.0, settle_after_solved=0.0)
+            self.simulations += 1
+            for contact in trace.contacts:
+                if {contact.a, contact.b} == {BIRD, target}:
+                    nx, ny = contact.normal if contact.a == BIRD else (-contact.normal[0], -contact.normal[1])
+                    if side(-nx, -ny) in directions:
+                        return Attempt(label, shot, trace, None)
+                    break
+        return None
+
+    def block(self, offending: Attempt, target: str, solution: Attempt) -> bool:
+        """Put a platform across the offending flight, a little before it reaches the target."""
+        trace = offending.trace
+        bird = trace.states[:, trace.index(BIRD), :]
+        hit_time = next(c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target})
+        hit_step = min(int(round(hit_time / trace.dt)) - 1, len(bird) - 1)
+        for back in (0.9, 1.3, 1.8, 2.4, 3.0):
+            # walk back along the flight by about `back` units
+            step, travelled = hit_step, 0.0
+            while step > 1 and travelled < back:
+                travelled += math.hypot(*(bird[step, :2] - bird[step - 1, :2]))
+                step -= 1
+            x, y, _, vx, vy, _ = bird[step]
+            if math.isnan(x):
+                continue
+            angle = math.degrees(math.atan2(vy, vx)) + 90.0  # across the flight
+            angle = (angle + 90) % 180 - 90
+            name = f"obstacle{len(self.obstacles) + 1}"
+            platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(OBSTACLE_LENGTH / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
+            candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
+            if not self.consistent(candidate):
+                continue
+            check = self.simulate(solution.shot, candidate)
+            if not check.fidelity.valid:
+                continue
+            self.level = candidate
+            self.roles[name] = "obstacle"
+            self.obstacles.append(name)
+            return True
+        return False
+
+    # ---- robustness ------------------------------------------------------------------------------
+    def robustness(self, attempt: Attempt) -> tuple[int, int]:
+        angle = attempt.shot.release_angle()
+        passed = 0
+        for offset in PERTURBED:
+            if self.simulate(Shot(angle=angle + offset)).fidelity.valid:
+                passed += 1
+        return passed, len(PERTURBED)
+
+    # ---- the whole step ------------------------------------------------------------------------
+    def run(self) -> Satisfied | None:
+        for _round in range(REPAIR_ROUNDS):
+            attempts = self.attempts()
+            if not attempts:
+                return None
+            working = [a for a in attempts if a.fidelity.complete and a.fidelity.solved and not a.fidelity.violations]
+            if working:
+                break
+            if not self.repair(attempts):
+                return None
+        else:
+            return None
+        # The most robust of the working candidates (at most three are replayed).
+        scored = [(self.robustness(a), -i, a) for i, a in enumerate(working[:3])]
+        (passed, total), _, chosen = max(scored, key=lambda item: (item[0][0], item[1]))
+        if not self.obstruct(chosen):
+            return None
+        final = self.simulate(chosen.shot)
+        if not final.fidelity.valid:
+            return None
+        return Satisfied(self.level, attrs.evolve(final, label=chosen.label), (passed, total), tuple(self.repairs), tuple(self.obstacles), self.simulations)
