@@ -18,7 +18,7 @@ from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
 from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT
 from physc.dsl.scenario import ScenarioIR
 
-PATH_SURFACE_LENGTH = (2.5, 5.0)
+PATH_SURFACE_LENGTH = (1.5, 3.0)  # short: a rolling circle loses speed to angular drag
 SUPPORT_LENGTH = (1.2, 2.5)
 PLATFORM_LENGTH = (1.0, 3.0)
 INCLINED_LENGTH = (2.0, 4.0)

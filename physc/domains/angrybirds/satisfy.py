@@ -44,13 +44,14 @@ from physc.dsl.scenario import ScenarioIR
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
-REPAIR_ROUNDS = 6
+REPAIR_ROUNDS = 10
 PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
 OBSTACLE_LENGTH = 1.4
 PERTURBED = (0.1, -0.1, 0.05, -0.05)  # release angle offsets (degrees) of robustness replays
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
+SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
 @attrs.frozen
@@ -163,12 +164,16 @@ class Satisfier:
             return False
         declared = self.scenario.interactions[index]
         previous = [a for a in attempts if a.fidelity.matched >= index]
+        if declared.name == "fall" and not any(
+            i.name == "fall" and i.objects[0] == declared.objects[0] for i in best.trace.interactions
+        ):
+            return self.push_off(declared, index)
         if declared.name in ("hit", "fall") and index > 0:
             return self.lie_on_path(declared, previous, index)
         if declared.name == "destroy":
             return self.strengthen(declared)
-        if declared.name == "slide":
-            return self.make_slippery(declared.objects[0])
+        if declared.name in ("roll", "slide"):
+            return self.set_moving(declared, index)
         if declared.name == "bounce":
             return self.turn(declared.objects[1])
         return False
@@ -184,6 +189,8 @@ class Satisfier:
             if actor not in trace.names:
                 continue
             since = attempt.fidelity.times[index - 1] if index else 0.0
+            if self.scenario.interactions[index - 1].name in ("roll", "slide", "fall"):
+                since += SETTLE_MOTION  # let the motion before it be recognisable
             rows = trace.states[int(since / trace.dt) :, trace.index(actor), :2]
             cells = {(round(x / CELL), round(y / CELL)) for x, y in rows if not math.isnan(x)}
             counts.update(cells)
@@ -265,6 +272,89 @@ class Satisfier:
         self.repairs.append(why)
         return True
 
+    def hitter_of(self, name: str, index: int) -> str | None:
+        """The actor of the latest declared hit on `name` before interaction `index`."""
+        hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == name]
+        return hits[-1].objects[0] if hits else None
+
+    def set_moving(self, declared, index: int) -> bool:
+        """roll/slide(a, s, d) did not happen: give a more speed, then bring it closer to s."""
+        mover, surface = declared.objects
+        objects = self.objects
+        if declared.name == "slide" and self.make_slippery(mover):
+            return True
+        block = objects.get(mover)
+        if block is not None and block.element == "Block" and block.material != "ice":
+            self.replace({mover: attrs.evolve(block, material="ice")})
+            self.repairs.append(f"{declared.name}({mover}): made of ice, lighter, to gain speed when hit")
+            return True
+        hitter = self.hitter_of(mover, index)
+        source = objects.get(hitter) if hitter else None
+        if source is not None and source.element == "Block" and source.material != "stone":
+            self.replace({hitter: attrs.evolve(source, material="stone")})
+            self.repairs.append(f"{declared.name}({mover}): its hitter {hitter} made of stone, heavier")
+            return True
+        if source is not None and by_prefab(source.type).name == "circleSmall" and "circle" in self.allowed.get(hitter, ()):
+            if self._swap(hitter, "circle", f"{declared.name}({mover}): its hitter {hitter} a larger circle"):
+                return True
+        return self.bring_closer(mover, surface, declared.directions[0])
+
+    def push_off(self, declared, index: int) -> bool:
+        """fall(a, b) did not happen: a lighter faller, a heavier hitter, then a at the edge."""
+        faller = declared.objects[0]
+        objects = self.objects
+        block = objects.get(faller)
+        if block is not None and block.element == "Block" and block.material != "ice":
+            self.replace({faller: attrs.evolve(block, material="ice")})
+            self.repairs.append(f"fall({faller}): made of ice, lighter, to be pushed off")
+            return True
+        hitter = self.hitter_of(faller, index)
+        source = objects.get(hitter) if hitter else None
+        if source is not None and source.element == "Block" and source.material != "stone":
+            self.replace({hitter: attrs.evolve(source, material="stone")})
+            self.repairs.append(f"fall({faller}): its hitter {hitter} made of stone, heavier")
+            return True
+        support = self.support_of.get(faller)
+        hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == faller]
+        if block is None or support not in objects or not hits:
+            return False
+        pushed = "right" if "left" in hits[-1].directions else "left" if "right" in hits[-1].directions else None
+        if pushed is None:
+            return False
+        corners = [p.real for k, p in five_points(objects[support].x, objects[support].y, *extent(objects[support]), objects[support].rotation or 0.0).items() if k != "c"]
+        width = extent(block)[0]
+        x = max(corners) - width / 2 - 0.02 if pushed == "right" else min(corners) + width / 2 + 0.02
+        if abs(x - block.x) < 0.05:
+            return False
+        candidate = attrs.evolve(self.level, objects=tuple(attrs.evolve(o, x=round(x, 5)) if o.name == faller else o for o in self.level.objects))
+        if not self.consistent(candidate, frozenset({faller})):
+            return False
+        self.level = candidate
+        self.repairs.append(f"fall({faller}): brought to the {pushed} edge of {support}")
+        return True
+
+    def bring_closer(self, mover: str, surface: str, heading: str) -> bool:
+        """Move `mover` along its support to just before the start of `surface`."""
+        objects = self.objects
+        if mover not in objects or surface not in objects:
+            return False
+        obj, target = objects[mover], objects[surface]
+        width = extent(obj)[0]
+        corners = [p.real for k, p in five_points(target.x, target.y, *extent(target), target.rotation or 0.0).items() if k != "c"]
+        gap = self.parameters.clearance + 0.02
+        x = min(corners) - width / 2 - gap if heading == "right" else max(corners) + width / 2 + gap
+        if abs(x - obj.x) < 0.05:
+            return False
+        moved = self.move(mover, x, obj.y)
+        if moved is None:
+            return False
+        candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
+        if not self.consistent(candidate, frozenset(moved)):
+            return False
+        self.level = candidate
+        self.repairs.append(f"{mover} brought next to {surface}")
+        return True
+
     def make_slippery(self, name: str) -> bool:
         obj = self.objects.get(name)
         if obj is None or obj.element != "Block":
@@ -272,10 +362,6 @@ class Satisfier:
         if by_prefab(obj.type).name != "squareHole" and "squareHole" in self.allowed.get(name, ()):
             if self._swap(name, "squareHole", f"slide({name}): a square slides, a triangle tips"):
                 return True
-        if obj.material != "ice":
-            self.replace({name: attrs.evolve(self.objects[name], material="ice")})
-            self.repairs.append(f"slide({name}): made of ice")
-            return True
         return False
 
     def turn(self, name: str) -> bool:
@@ -376,6 +462,8 @@ class Satisfier:
                 break
             if not self.repair(attempts):
                 return None
+            if len(set(self.repairs)) < len(self.repairs):
+                return None  # a repair came round again: the repairs undo each other
         else:
             return None
         # The most robust of the working candidates (at most three are replayed).
