@@ -57,14 +57,19 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument(
         "-s", "--scenario", action="append", metavar="NAME", help="a scenario of the file (repeatable; default all)"
     )
-    compile_.add_argument("--emit", metavar="STAGE", default="level", help=f"the stage to print: {stage_names}")
-    compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout")
+    compile_.add_argument("--emit", metavar="STAGE", default="level", help=f"the stage to print (default level): {stage_names}")
+    compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout (a folder for several scenarios)")
+    compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
+    compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
+    compile_.add_argument("--layouts", type=int, default=40, metavar="N", help="layouts simulation may try per task (default 40)")
+    compile_.add_argument("--time-budget", type=float, default=120.0, metavar="S", help="seconds per task at most (default 120)")
+    compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=int, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
         "--budget", type=int, default=50_000, metavar="N", help="clause choices the layout search may try (default 50000)"
     )
-    compile_.add_argument("--format", choices=("json", "dot"), default="json", help="dot: Graphviz, for graph stages")
-    compile_.add_argument("--png", metavar="PATH", help="with --emit layout: draw the layout (.png or .svg)")
+    compile_.add_argument("--format", choices=("json", "dot", "xml"), help="json (default), dot (Graphviz, for graph stages), xml (levels)")
+    compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")
     compile_.set_defaults(run=cmd_compile)
 
     add_play_commands(commands, common)

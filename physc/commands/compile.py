@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import sys
+from pathlib import Path
 
 from physc import diagnostics
 from physc.commands.common import (
@@ -45,10 +46,23 @@ def _infeasible(error, scenario) -> Diagnostic:
     )
 
 
+def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | None:
+    """A file path; with several scenarios, `path` is a folder and the file is NAME.suffix."""
+    if path is None:
+        return None
+    if not many:
+        return path
+    folder = Path(path)
+    folder.mkdir(parents=True, exist_ok=True)
+    return str(folder / f"{name}.{suffix}")
+
+
 def cmd_compile(args) -> int:
     from physc.compiler.infeasible import Infeasible
     from physc.compiler.pipeline import Pipeline
     from physc.domains import load_domain
+    from physc.dsl import ast
+    from physc.dsl.fmt import format_file
     from physc.dsl.frontend import analyze
     from physc.serialize import to_data
 
@@ -56,10 +70,14 @@ def cmd_compile(args) -> int:
         chosen = stage(args.emit)
     except StageError as error:
         raise UsageError(str(error)) from None
-    if args.format not in chosen.formats:
-        raise UsageError(f"the stage '{chosen.name}' can be printed as {' or '.join(chosen.formats)}, not {args.format}")
-    if args.png and chosen.name != "layout":
-        raise UsageError("--png draws a layout: use it with --emit layout")
+    fmt = args.format or chosen.formats[0]
+    if fmt not in chosen.formats:
+        raise UsageError(f"the stage '{chosen.name}' can be printed as {' or '.join(chosen.formats)}, not {fmt}")
+    generating = chosen.name in ("task", "level")
+    if args.png and chosen.name not in ("layout", "task", "level"):
+        raise UsageError("--png draws a layout or a task: use it with --emit layout, task or level")
+    if args.task and not generating:
+        raise UsageError("--task writes the generated task: use it with --emit level or task")
     report = reporter(args)
     analysis = analyze(args.file)
     if analysis.file is None or any(d.is_error for d in analysis.syntax):
@@ -72,8 +90,7 @@ def cmd_compile(args) -> int:
             hint = did_you_mean(name, available) or "scenarios: " + ", ".join(available)
             raise UsageError(f"{args.file} has no scenario named '{name}'; {hint}")
     selected = [s for s in analysis.file.scenarios if s.name.text in names]
-    if args.png and len(selected) != 1:
-        raise UsageError("--png draws one scenario: name it with -s NAME")
+    many = len(selected) > 1
     spans = [s.span for s in selected]
 
     def concerns_selection(d: Diagnostic) -> bool:
@@ -86,28 +103,66 @@ def cmd_compile(args) -> int:
         return status
     checked = {s.name: s for s in analysis.scenarios}
     outputs, failures = [], []
-    for scenario in selected:
+    for index, scenario in enumerate(selected, 1):
         ir = checked[scenario.name.text]
-        pipeline = Pipeline(load_domain(ir.domain), ir, args.seed, args.budget)
+        domain = load_domain(ir.domain)
+        pipeline = Pipeline(
+            domain,
+            ir,
+            args.seed,
+            args.budget,
+            validate=not args.no_validate,
+            layout_budget=args.layouts,
+            time_budget=args.time_budget,
+            source=format_file(ast.File((scenario,))),
+        )
+        if generating and not args.quiet:
+            print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
-            outputs.append(chosen.run(Unit(scenario, ir), pipeline))
+            value = chosen.run(Unit(scenario, ir), pipeline)
         except Infeasible as error:
             failures.append(_infeasible(error, scenario))
+            continue
+        outputs.append((ir.name, domain, value))
+        if generating and not args.quiet:
+            checked_text = "validated" if value.validated else "not validated (--no-validate)"
+            print(
+                f"[{index}/{len(selected)}] {ir.name}: {checked_text}; solution {value.solution.aimed_at}; "
+                f"{value.layouts_tried} layouts, {value.simulations} simulations, {value.seconds['total']:.2f} s",
+                file=sys.stderr,
+                flush=True,
+            )
+        if args.png:
+            png = _destination(args.png, many, ir.name, "png")
+            picture_format = "svg" if png.lower().endswith(".svg") else "png"
+            if chosen.name == "layout":
+                from physc.domains.angrybirds.picture import render
+
+                write_atomic(png, render(value, picture_format))
+            else:
+                write_atomic(png, domain.picture(value, picture_format))
+        if args.task:
+            write_atomic(_destination(args.task, many, ir.name, "json"), json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n")
     if failures:
         report(args.file, analysis.source, failures)
-        return EXIT_INFEASIBLE
-    if args.format == "dot":
-        text = "".join(value.to_dot() for value in outputs)
+    if chosen.name == "level":
+        for name, domain, value in outputs:
+            text = domain.emit_level(value.level)
+            if args.output:
+                write_atomic(_destination(args.output, many, name, "xml"), text)
+            elif not many:
+                sys.stdout.write(text)
+        if many and not args.output and outputs:
+            raise UsageError("several scenarios make several levels: name a folder with -o")
+        return EXIT_INFEASIBLE if failures else EXIT_OK
+    if fmt == "dot":
+        text = "".join(value.to_dot() for _, _, value in outputs)
     else:
-        data = [to_data(value) for value in outputs]
+        data = [to_data(value) for _, _, value in outputs]
         text = json.dumps(data[0] if len(data) == 1 else data, indent=2, ensure_ascii=False) + "\n"
-    if args.png:
-        from physc.domains.angrybirds.picture import render
-
-        fmt = "svg" if args.png.lower().endswith(".svg") else "png"
-        write_atomic(args.png, render(outputs[0], fmt))
-    if args.output:
-        write_atomic(args.output, text)
-    else:
-        sys.stdout.write(text)
-    return EXIT_OK
+    if outputs:
+        if args.output:
+            write_atomic(args.output, text)
+        else:
+            sys.stdout.write(text)
+    return EXIT_INFEASIBLE if failures else EXIT_OK

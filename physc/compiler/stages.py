@@ -47,7 +47,8 @@ STAGES: tuple[Stage, ...] = (
         ("json", "dot"),
     ),
     Stage("layout", "the concrete layout: objects, materials, poses (place)", lambda _, pipeline: pipeline.placed.layout),
-    Stage("level", "the generated task as a Science Birds level"),
+    Stage("task", "the generated task: level, solution, trace, how it was made (JSON)", lambda _, pipeline: pipeline.task),
+    Stage("level", "the generated task as a level file of the domain (Science Birds XML)", lambda _, pipeline: pipeline.task, ("xml",)),
 )
 BY_NAME = {stage.name: stage for stage in STAGES}
 

@@ -6,7 +6,9 @@ the ground after its work is done). An occurrence matches when the term and its
 objects are the same and its direction is one the scenario allows after
 narrowing by the restrictions (`fall` also accepts any direction, since the
 recognised fall names where it landed, not where it came from). The trace must
-also break no restriction, and leave every pig destroyed.
+also break no restriction while the solution runs (from the shot until the declared
+sequence is complete: the paper's restrictions "only apply to the solution
+interaction sequence"), and leave every pig destroyed.
 """
 
 from __future__ import annotations
@@ -53,10 +55,13 @@ def fidelity(scenario: ScenarioIR, trace: Trace) -> Fidelity:
         if matched < len(scenario.interactions) and matches(scenario.interactions[matched], found):
             times.append(found.time)
             matched += 1
+    # Restrictions hold "during the solution": from the shot until the declared
+    # sequence is complete (what happens after the last pig is gone is not the solution).
+    until = times[-1] if matched == len(scenario.interactions) and times else float("inf")
     return Fidelity(
         matched,
         len(scenario.interactions),
-        tuple(v.text() for v in trace.violations),
+        tuple(v.text() for v in trace.violations if v.interaction.time <= until),
         trace.solved,
         tuple(times),
     )
