@@ -44,7 +44,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
-REPAIR_ROUNDS = 10
+REPAIR_ROUNDS = 16  # simulated repair proposals per layout
 PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
@@ -156,33 +156,36 @@ class Satisfier:
                     return False
         return True
 
-    # ---- repairs -----------------------------------------------------------------------------
-    def repair(self, attempts: list[Attempt]) -> bool:
+    # ---- repairs: each proposes changed levels; the satisfier keeps what simulates better ----
+    def with_objects(self, changed: dict[str, LevelObject]) -> Level:
+        return attrs.evolve(self.level, objects=tuple(changed.get(o.name, o) for o in self.level.objects))
+
+    def proposals(self, attempts: list[Attempt]):
+        """(description, level) alternatives that might get past the first unmet interaction."""
         best = max(attempts, key=lambda a: a.fidelity.score)
         index = best.fidelity.matched
         if index >= len(self.scenario.interactions):
-            return False
+            return
         declared = self.scenario.interactions[index]
         previous = [a for a in attempts if a.fidelity.matched >= index]
         if declared.name == "fall" and not any(
             i.name == "fall" and i.objects[0] == declared.objects[0] for i in best.trace.interactions
         ):
-            return self.push_off(declared, index)
-        if declared.name in ("hit", "fall") and index > 0:
-            return self.lie_on_path(declared, previous, index)
-        if declared.name == "destroy":
-            return self.strengthen(declared)
-        if declared.name in ("roll", "slide"):
-            return self.set_moving(declared, index)
-        if declared.name == "bounce":
-            return self.turn(declared.objects[1])
-        return False
+            yield from self.push_off(declared, index)
+        elif declared.name in ("hit", "fall") and index > 0:
+            yield from self.lie_on_path(declared, previous, index)
+        elif declared.name == "destroy":
+            yield from self.strengthen(declared)
+        elif declared.name in ("roll", "slide"):
+            yield from self.set_moving(declared, index)
+        elif declared.name == "bounce":
+            yield from self.turn(declared.objects[1])
 
-    def lie_on_path(self, declared, attempts: list[Attempt], index: int) -> bool:
+    def lie_on_path(self, declared, attempts: list[Attempt], index: int):
         actor, target = declared.objects
         objects = self.objects
-        if target not in objects or actor not in (BIRD, *objects):
-            return False
+        if target not in objects:
+            return
         counts: Counter = Counter()
         for attempt in attempts:
             trace = attempt.trace
@@ -194,12 +197,10 @@ class Satisfier:
             rows = trace.states[int(since / trace.dt) :, trace.index(actor), :2]
             cells = {(round(x / CELL), round(y / CELL)) for x, y in rows if not math.isnan(x)}
             counts.update(cells)
-        if not counts:
-            return False
         sides = declared.directions if declared.name == "hit" else ("above",)
         obj = objects[target]
         width, height = extent(obj)
-        tried = 0
+        offered = 0
         for (cx, cy), _ in sorted(counts.items(), key=lambda item: (-item[1], item[0])):
             px, py = cx * CELL, cy * CELL
             for approach in sides:
@@ -208,15 +209,12 @@ class Satisfier:
                 moved = self.move(target, px + dx, py + dy)
                 if moved is None:
                     continue
-                tried += 1
-                candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
+                candidate = self.with_objects(moved)
                 if self.consistent(candidate, frozenset(moved)):
-                    self.level = candidate
-                    self.repairs.append(f"liesOnPath({target}, {actor}): moved {target} to ({obj.x:.2f}, {obj.y:.2f}) → ({moved[target].x:.2f}, {moved[target].y:.2f})")
-                    return True
-                if tried >= PLACES:
-                    return False
-        return False
+                    offered += 1
+                    yield f"liesOnPath({target}, {actor}): {target} to ({moved[target].x:.2f}, {moved[target].y:.2f})", candidate
+                    if offered >= PLACES:
+                        return
 
     def move(self, name: str, x: float, y: float) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y): with its own support;
@@ -226,158 +224,113 @@ class Satisfier:
         if name in self.on_ground or (name in self.support_of and name not in self.own_support):
             y = obj.y  # it rests on the ground or on a surface others use: slide it along
         dx, dy = x - obj.x, y - obj.y
+        if abs(dx) < 1e-6 and abs(dy) < 1e-6:
+            return None
         changed = {name: attrs.evolve(obj, x=round(x, 5), y=round(y, 5))}
         support = self.own_support.get(name)
         if support is not None and support in objects:
             s = objects[support]
+            if s.y + dy < GROUND_TOP:
+                return None
             changed[support] = attrs.evolve(s, x=round(s.x + dx, 5), y=round(s.y + dy, 5))
-        if support is not None and support in objects and objects[support].y + dy < GROUND_TOP:
-            return None
         return changed
 
-    def strengthen(self, declared) -> bool:
-        attacker, target = declared.objects
-        objects = self.objects
-        pig = objects.get(target)
-        if pig is not None and by_prefab(pig.type).name == "pigMedium" and "pigSmall" in self.allowed.get(target, ()):
-            return self._swap(target, "pigSmall", f"destroy({attacker}, {target}): a small pig")
-        block = objects.get(attacker)
-        if block is not None and block.element == "Block" and block.material != "stone":
-            self.replace({attacker: attrs.evolve(block, material="stone")})
-            self.repairs.append(f"destroy({attacker}, {target}): {attacker} made of stone")
-            return True
-        if block is not None and by_prefab(block.type).name == "circleSmall" and "circle" in self.allowed.get(attacker, ()):
-            return self._swap(attacker, "circle", f"destroy({attacker}, {target}): a larger circle")
-        falls = [t for t in self.scenario.interactions if t.name == "fall" and t.objects[0] == attacker]
-        if block is not None and falls:
-            moved = self.move(attacker, block.x, block.y + 1.0)
-            if moved:
-                candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
-                if self.consistent(candidate):
-                    self.level = candidate
-                    self.repairs.append(f"destroy({attacker}, {target}): {attacker} falls from higher")
-                    return True
-        return False
+    def material(self, name: str, material: str, why: str):
+        obj = self.objects.get(name)
+        if obj is not None and obj.element == "Block" and obj.material != material:
+            yield why, self.with_objects({name: attrs.evolve(obj, material=material)})
 
-    def _swap(self, name: str, concrete: str, why: str) -> bool:
-        obj = self.objects[name]
+    def swap(self, name: str, concrete: str, why: str):
+        obj = self.objects.get(name)
+        if obj is None or concrete not in self.allowed.get(name, ()) or by_prefab(obj.type).name == concrete:
+            return
         old = extent(obj)
         new_shape = shape(concrete)
         y = obj.y - old[1] / 2 + new_shape.height / 2  # keep the bottom where it rests
-        candidate_obj = attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5))
-        candidate = attrs.evolve(self.level, objects=tuple(candidate_obj if o.name == name else o for o in self.level.objects))
-        if not self.consistent(candidate):
-            return False
-        self.level = candidate
-        self.repairs.append(why)
-        return True
+        candidate = self.with_objects({name: attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5))})
+        if self.consistent(candidate):
+            yield why, candidate
+
+    def strengthen(self, declared):
+        attacker, target = declared.objects
+        yield from self.swap(target, "pigSmall", f"destroy({attacker}, {target}): a small pig")
+        yield from self.material(attacker, "stone", f"destroy({attacker}, {target}): {attacker} of stone")
+        yield from self.swap(attacker, "circle", f"destroy({attacker}, {target}): a larger circle")
+        block = self.objects.get(attacker)
+        if block is not None and any(t.name == "fall" and t.objects[0] == attacker for t in self.scenario.interactions):
+            moved = self.move(attacker, block.x, block.y + 1.0)
+            if moved:
+                candidate = self.with_objects(moved)
+                if self.consistent(candidate, frozenset(moved)):
+                    yield f"destroy({attacker}, {target}): {attacker} falls from higher", candidate
 
     def hitter_of(self, name: str, index: int) -> str | None:
         """The actor of the latest declared hit on `name` before interaction `index`."""
         hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == name]
         return hits[-1].objects[0] if hits else None
 
-    def set_moving(self, declared, index: int) -> bool:
-        """roll/slide(a, s, d) did not happen: give a more speed, then bring it closer to s."""
+    def set_moving(self, declared, index: int):
+        """roll/slide(a, s, d) did not happen: a square that slides, more speed, or a closer to s."""
         mover, surface = declared.objects
-        objects = self.objects
-        if declared.name == "slide" and self.make_slippery(mover):
-            return True
-        block = objects.get(mover)
-        if block is not None and block.element == "Block" and block.material != "ice":
-            self.replace({mover: attrs.evolve(block, material="ice")})
-            self.repairs.append(f"{declared.name}({mover}): made of ice, lighter, to gain speed when hit")
-            return True
+        if declared.name == "slide":
+            yield from self.swap(mover, "squareHole", f"slide({mover}): a square slides, a triangle tips")
+        yield from self.material(mover, "ice", f"{declared.name}({mover}): of ice, lighter")
         hitter = self.hitter_of(mover, index)
-        source = objects.get(hitter) if hitter else None
-        if source is not None and source.element == "Block" and source.material != "stone":
-            self.replace({hitter: attrs.evolve(source, material="stone")})
-            self.repairs.append(f"{declared.name}({mover}): its hitter {hitter} made of stone, heavier")
-            return True
-        if source is not None and by_prefab(source.type).name == "circleSmall" and "circle" in self.allowed.get(hitter, ()):
-            if self._swap(hitter, "circle", f"{declared.name}({mover}): its hitter {hitter} a larger circle"):
-                return True
-        return self.bring_closer(mover, surface, declared.directions[0])
+        if hitter:
+            yield from self.material(hitter, "stone", f"{declared.name}({mover}): its hitter {hitter} of stone")
+            yield from self.swap(hitter, "circle", f"{declared.name}({mover}): its hitter {hitter} a larger circle")
+        yield from self.bring_closer(mover, surface, declared.directions[0])
 
-    def push_off(self, declared, index: int) -> bool:
-        """fall(a, b) did not happen: a lighter faller, a heavier hitter, then a at the edge."""
+    def push_off(self, declared, index: int):
+        """fall(a, b) did not happen: a lighter faller, a heavier hitter, a at the edge."""
         faller = declared.objects[0]
-        objects = self.objects
-        block = objects.get(faller)
-        if block is not None and block.element == "Block" and block.material != "ice":
-            self.replace({faller: attrs.evolve(block, material="ice")})
-            self.repairs.append(f"fall({faller}): made of ice, lighter, to be pushed off")
-            return True
+        yield from self.material(faller, "ice", f"fall({faller}): of ice, lighter")
         hitter = self.hitter_of(faller, index)
-        source = objects.get(hitter) if hitter else None
-        if source is not None and source.element == "Block" and source.material != "stone":
-            self.replace({hitter: attrs.evolve(source, material="stone")})
-            self.repairs.append(f"fall({faller}): its hitter {hitter} made of stone, heavier")
-            return True
-        support = self.support_of.get(faller)
+        if hitter:
+            yield from self.material(hitter, "stone", f"fall({faller}): its hitter {hitter} of stone")
+        objects = self.objects
+        block, support = objects.get(faller), self.support_of.get(faller)
         hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == faller]
         if block is None or support not in objects or not hits:
-            return False
-        pushed = "right" if "left" in hits[-1].directions else "left" if "right" in hits[-1].directions else None
-        if pushed is None:
-            return False
-        corners = [p.real for k, p in five_points(objects[support].x, objects[support].y, *extent(objects[support]), objects[support].rotation or 0.0).items() if k != "c"]
-        width = extent(block)[0]
-        x = max(corners) - width / 2 - 0.02 if pushed == "right" else min(corners) + width / 2 + 0.02
-        if abs(x - block.x) < 0.05:
-            return False
-        candidate = attrs.evolve(self.level, objects=tuple(attrs.evolve(o, x=round(x, 5)) if o.name == faller else o for o in self.level.objects))
-        if not self.consistent(candidate, frozenset({faller})):
-            return False
-        self.level = candidate
-        self.repairs.append(f"fall({faller}): brought to the {pushed} edge of {support}")
-        return True
+            return
+        for pushed in [d for d in ("left", "right") if {"left": "right", "right": "left"}[d] in hits[-1].directions]:
+            s = objects[support]
+            corners = [p.real for k, p in five_points(s.x, s.y, *extent(s), s.rotation or 0.0).items() if k != "c"]
+            width = extent(block)[0]
+            x = max(corners) - width / 2 - 0.02 if pushed == "right" else min(corners) + width / 2 + 0.02
+            if abs(x - block.x) < 0.05:
+                continue
+            candidate = self.with_objects({faller: attrs.evolve(block, x=round(x, 5))})
+            if self.consistent(candidate, frozenset({faller})):
+                yield f"fall({faller}): at the {pushed} edge of {support}", candidate
 
-    def bring_closer(self, mover: str, surface: str, heading: str) -> bool:
-        """Move `mover` along its support to just before the start of `surface`."""
+    def bring_closer(self, mover: str, surface: str, heading: str):
+        """`mover` along its support to just before the start of `surface`."""
         objects = self.objects
         if mover not in objects or surface not in objects:
-            return False
+            return
         obj, target = objects[mover], objects[surface]
         width = extent(obj)[0]
         corners = [p.real for k, p in five_points(target.x, target.y, *extent(target), target.rotation or 0.0).items() if k != "c"]
         gap = self.parameters.clearance + 0.02
         x = min(corners) - width / 2 - gap if heading == "right" else max(corners) + width / 2 + gap
-        if abs(x - obj.x) < 0.05:
-            return False
         moved = self.move(mover, x, obj.y)
-        if moved is None:
-            return False
-        candidate = attrs.evolve(self.level, objects=tuple(moved.get(o.name, o) for o in self.level.objects))
-        if not self.consistent(candidate, frozenset(moved)):
-            return False
-        self.level = candidate
-        self.repairs.append(f"{mover} brought next to {surface}")
-        return True
+        if moved is not None:
+            candidate = self.with_objects(moved)
+            if self.consistent(candidate, frozenset(moved)):
+                yield f"{mover} next to {surface}", candidate
 
-    def make_slippery(self, name: str) -> bool:
-        obj = self.objects.get(name)
-        if obj is None or obj.element != "Block":
-            return False
-        if by_prefab(obj.type).name != "squareHole" and "squareHole" in self.allowed.get(name, ()):
-            if self._swap(name, "squareHole", f"slide({name}): a square slides, a triangle tips"):
-                return True
-        return False
-
-    def turn(self, name: str) -> bool:
+    def turn(self, name: str):
         obj = self.objects.get(name)
         if obj is None or obj.element != "Platform":
-            return False
-        for _ in range(4):
-            angle = (obj.rotation or 0.0) + self.rng.choice((-1, 1)) * self.rng.uniform(5, 12)
+            return
+        for step in (-8.0, 8.0, -15.0, 15.0):
+            angle = (obj.rotation or 0.0) + step
             if not 5 <= abs(angle) <= 60:
                 continue
-            candidate = attrs.evolve(self.level, objects=tuple(attrs.evolve(o, rotation=round(angle, 3)) if o.name == name else o for o in self.level.objects))
+            candidate = self.with_objects({name: attrs.evolve(obj, rotation=round(angle, 3))})
             if self.consistent(candidate):
-                self.level = candidate
-                self.repairs.append(f"bounce: {name} turned to {angle:.1f}°")
-                return True
-        return False
+                yield f"bounce: {name} turned to {angle:.1f}°", candidate
 
     # ---- obstruction ---------------------------------------------------------------------------
     def obstruct(self, solution: Attempt) -> bool:
@@ -453,19 +406,33 @@ class Satisfier:
 
     # ---- the whole step ------------------------------------------------------------------------
     def run(self) -> Satisfied | None:
-        for _round in range(REPAIR_ROUNDS):
-            attempts = self.attempts()
-            if not attempts:
-                return None
-            working = [a for a in attempts if a.fidelity.complete and a.fidelity.solved and not a.fidelity.violations]
-            if working:
-                break
-            if not self.repair(attempts):
-                return None
-            if len(set(self.repairs)) < len(self.repairs):
-                return None  # a repair came round again: the repairs undo each other
-        else:
+        """Repair until a candidate realises the sequence: each proposal is simulated and
+        kept only if the best candidate does at least as well as before."""
+        attempts = self.attempts()
+        if not attempts:
             return None
+        score = max(a.fidelity.score for a in attempts)
+        rounds = 0
+        while not self.working(attempts):
+            for description, level in self.proposals(attempts):
+                rounds += 1
+                saved = self.level
+                self.level = level
+                trial = self.attempts()
+                trial_score = max(a.fidelity.score for a in trial)
+                if trial_score >= score and description not in self.repairs:
+                    self.repairs.append(description)
+                    attempts, score = trial, trial_score
+                    break
+                self.level = saved
+                if rounds >= REPAIR_ROUNDS:
+                    return None
+            else:
+                return None
+            if rounds >= REPAIR_ROUNDS:
+                if not self.working(attempts):
+                    return None
+        working = self.working(attempts)
         # The most robust of the working candidates (at most three are replayed).
         scored = [(self.robustness(a), -i, a) for i, a in enumerate(working[:3])]
         (passed, total), _, chosen = max(scored, key=lambda item: (item[0][0], item[1]))
@@ -475,3 +442,7 @@ class Satisfier:
         if not final.fidelity.valid:
             return None
         return Satisfied(self.level, attrs.evolve(final, label=chosen.label), (passed, total), tuple(self.repairs), tuple(self.obstacles), self.simulations)
+
+    @staticmethod
+    def working(attempts: list[Attempt]) -> list[Attempt]:
+        return [a for a in attempts if a.fidelity.valid]
