@@ -30,7 +30,8 @@ def test_paper_scenario_compiles_and_validates(name):
     level = attrs.evolve(written, objects=tuple(attrs.evolve(o, name=n.name) for o, n in zip(written.objects, task.level.objects)))
     assert level == task.level
     shot = Shot(target=tuple(task.solution.target), trajectory=task.solution.trajectory)
-    trace = Game(level).play(shot, 9.0, restrictions=scenario.restrictions)
+    redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
+    trace = Game(level).play(shot, 9.0, restrictions=scenario.restrictions, redirects=redirects)
     result = fidelity(scenario, trace)
     assert result.valid, (result, trace.sequence())
 

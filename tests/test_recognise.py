@@ -53,3 +53,6 @@ def test_a_hit_after_a_bounce_is_not_the_direct_approach():
     restriction = TermIR("cannotHit", ("bird", "pig"), ("left", "right", "above", "below"), text="cannotHit(bird, pig, any)")
     assert violations((bounce, hit), (restriction,)) == ()
     assert len(violations((hit,), (restriction,))) == 1
+    # Only a declared bounce redirects: a bounce on some other platform does not.
+    assert violations((bounce, hit), (restriction,), {("bird", "iSurface")}) == ()
+    assert len(violations((bounce, hit), (restriction,), {("bird", "ramp")})) == 1

@@ -14,6 +14,7 @@ interaction sequence"), and leave every pig destroyed.
 from __future__ import annotations
 
 import attrs
+import numpy as np
 
 from physc.dsl.scenario import ScenarioIR, TermIR
 from physc.simulation.trace import Interaction, Trace
@@ -26,6 +27,7 @@ class Fidelity:
     violations: tuple[str, ...]
     solved: bool
     times: tuple[float, ...]  # when each matched interaction happened
+    progress: float = 0.0  # towards the first unmatched interaction (higher is nearer)
 
     @property
     def complete(self) -> bool:
@@ -37,8 +39,9 @@ class Fidelity:
 
     @property
     def score(self) -> tuple:
-        """Higher is better: more of the sequence, then solved, then no violations."""
-        return (self.matched, self.solved, -len(self.violations))
+        """Higher is better: more of the sequence, then solved, then no violations, then
+        nearer to the next interaction."""
+        return (self.matched, self.solved, -len(self.violations), round(self.progress, 3))
 
 
 def matches(declared: TermIR, found: Interaction) -> bool:
@@ -58,10 +61,36 @@ def fidelity(scenario: ScenarioIR, trace: Trace) -> Fidelity:
     # Restrictions hold "during the solution": from the shot until the declared
     # sequence is complete (what happens after the last pig is gone is not the solution).
     until = times[-1] if matched == len(scenario.interactions) and times else float("inf")
+    progress = 0.0 if matched == len(scenario.interactions) else _progress(scenario.interactions[matched], trace, times[-1] if times else 0.0)
     return Fidelity(
         matched,
         len(scenario.interactions),
         tuple(v.text() for v in trace.violations if v.interaction.time <= until),
         trace.solved,
         tuple(times),
+        progress,
     )
+
+
+def _progress(declared: TermIR, trace: Trace, since: float) -> float:
+    """How near the trace came to the interaction it did not realise, after `since`."""
+    start = int(since / trace.dt)
+    if declared.name == "destroy":
+        target = declared.objects[1]
+        return sum(d.amount for d in trace.damage if d.target == target and d.by == declared.objects[0] and d.time >= since)
+    actor = declared.objects[0]
+    if actor not in trace.names:
+        return 0.0
+    path = trace.states[start:, trace.index(actor), :2]
+    path = path[~np.isnan(path[:, 0])]
+    if not len(path):
+        return 0.0
+    if declared.name in ("roll", "slide"):
+        return float(np.hypot(*(path[-1] - path[0])))
+    other = declared.objects[1] if len(declared.objects) > 1 else None
+    if other in trace.names:
+        target = trace.states[start:, trace.index(other), :2][: len(path)]
+        gaps = np.hypot(*(path[: len(target)] - target).T)
+        gaps = gaps[~np.isnan(gaps)]
+        return -float(gaps.min()) if len(gaps) else 0.0
+    return 0.0

@@ -167,11 +167,12 @@ class Game:
                     break
         return Trace(rules.dt, tuple(dynamic), dict(self.kinds), states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions), pigs)
 
-    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), **options) -> Trace:
-        """Simulate, then recognise the interactions and check the restrictions."""
+    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, **options) -> Trace:
+        """Simulate, then recognise the interactions and check the restrictions
+        (`redirects`: the declared bounces, see recognise.violations)."""
         trace = self.simulate(shot, seconds, **options)
         interactions = recognise(trace, self.radii())
-        return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions))
+        return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
     def radii(self) -> dict[str, float]:
         """The rolling radius of every body that can roll: circles, pigs, the bird."""

@@ -22,7 +22,8 @@ An interaction equal to the one just before it (one roll over two contact
 intervals, a double hit) is reported once.
 
 cannotHit(a, b, D) is violated by a hit(a, b, d) with d in D on a's direct
-approach (before anything redirects it, as in the language's static checks);
+approach (before a bounce the scenario declares redirects it, as in the language's
+static checks; an incidental bounce on some platform does not count);
 cannotFall(a) by any fall(a, …).
 """
 
@@ -228,12 +229,16 @@ def _bounces(trace: Trace, intervals) -> list[Interaction]:
     return out
 
 
-def violations(interactions, restrictions) -> tuple[Violation, ...]:
-    """Restrictions (TermIR-like: name, objects, directions) broken by the interactions."""
+def violations(interactions, restrictions, redirects=None) -> tuple[Violation, ...]:
+    """Restrictions (TermIR-like: name, objects, directions) broken by the interactions.
+
+    `redirects` are the (object, surface) pairs of the bounces the scenario declares:
+    only such a bounce ends an object's direct approach (an incidental bounce on some
+    platform does not lift `cannotHit`). None: every bounce redirects (no scenario)."""
     out = []
     redirected_at: dict[str, float] = {}
     for i in interactions:
-        if i.name == "bounce":
+        if i.name == "bounce" and (redirects is None or tuple(i.objects) in redirects):
             redirected_at.setdefault(i.objects[0], i.time)
     for restriction in restrictions:
         for i in interactions:

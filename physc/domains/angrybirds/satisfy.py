@@ -91,6 +91,7 @@ class Satisfier:
         self.own_support = {a: s for a, s in self.support_of.items() if self.roles.get(s) == "support" and carried[s] == 1}
         self.on_ground = {a for a, s in self.support_of.items() if s not in self.objects}
         self.parameters = domain.layout_parameters
+        self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
@@ -109,7 +110,9 @@ class Satisfier:
     # ---- simulation ---------------------------------------------------------------------
     def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
         self.simulations += 1
-        trace = Game(level or self.level).play(shot, SECONDS, restrictions=self.scenario.restrictions, settle_after_solved=0.3)
+        trace = Game(level or self.level).play(
+            shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
+        )
         return Attempt("", shot, trace, fidelity(self.scenario, trace))
 
     def first_target(self) -> LevelObject | None:
@@ -275,6 +278,7 @@ class Satisfier:
         if declared.name == "slide":
             yield from self.swap(mover, "squareHole", f"slide({mover}): a square slides, a triangle tips")
         yield from self.material(mover, "ice", f"{declared.name}({mover}): of ice, lighter")
+        yield from self.material(mover, "wood", f"{declared.name}({mover}): of wood, lighter than stone, tougher than ice")
         hitter = self.hitter_of(mover, index)
         if hitter:
             yield from self.material(hitter, "stone", f"{declared.name}({mover}): its hitter {hitter} of stone")
@@ -285,6 +289,7 @@ class Satisfier:
         """fall(a, b) did not happen: a lighter faller, a heavier hitter, a at the edge."""
         faller = declared.objects[0]
         yield from self.material(faller, "ice", f"fall({faller}): of ice, lighter")
+        yield from self.material(faller, "wood", f"fall({faller}): of wood, lighter than stone, tougher than ice")
         hitter = self.hitter_of(faller, index)
         if hitter:
             yield from self.material(hitter, "stone", f"fall({faller}): its hitter {hitter} of stone")
@@ -419,8 +424,8 @@ class Satisfier:
                 saved = self.level
                 self.level = level
                 trial = self.attempts()
-                trial_score = max(a.fidelity.score for a in trial)
-                if trial_score >= score and description not in self.repairs:
+                trial_score = max((a.fidelity.score for a in trial), default=None)
+                if trial_score is not None and trial_score >= score and description not in self.repairs:
                     self.repairs.append(description)
                     attempts, score = trial, trial_score
                     break
