@@ -31,7 +31,7 @@ from physc.compiler.infeasible import Infeasible
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
-SHAPE_DRAWS = 4  # how many times shapes are drawn anew before giving up
+SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up
 
 
 class _BudgetSpent(Exception):

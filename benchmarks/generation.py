@@ -1,0 +1,63 @@
+"""Generation: success rate and time per task for the paper's 16 scenarios.
+
+    python benchmarks/generation.py [--seeds 30] [--scenarios SF,R,...] [--time-budget 20]
+
+For every scenario and seed 0..N-1, `physc compile` end to end (validated), on one
+core. Prints, per scenario and per interaction count (2, 4, 6, 8, as the paper
+groups them), how many seeds gave a validated task and the median and
+mean ± SD time per generated task (and the time spent on seeds that failed).
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import statistics
+import time
+from pathlib import Path
+
+from physc.compiler.infeasible import Infeasible
+from physc.compiler.pipeline import Pipeline
+from physc.domains import load_domain
+from physc.dsl.frontend import analyze
+
+PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", type=int, default=30)
+    parser.add_argument("--scenarios", default="")
+    parser.add_argument("--time-budget", type=float, default=20.0)
+    args = parser.parse_args()
+    domain = load_domain("angrybirds")
+    scenarios = analyze(str(PAPER)).scenarios
+    wanted = set(args.scenarios.split(",")) if args.scenarios else None
+    by_count: dict[int, list[float]] = {}
+    print(f"machine: {platform.machine()}, Python {platform.python_version()}; seeds 0-{args.seeds - 1}; time budget {args.time_budget:g} s")
+    print(f"{'scenario':<8} {'n':>2} {'generated':>10} {'median s':>9} {'mean±sd s':>12} {'failed s':>9}")
+    for scenario in scenarios:
+        if wanted and scenario.name not in wanted:
+            continue
+        ok, failed = [], []
+        for seed in range(args.seeds):
+            start = time.perf_counter()
+            try:
+                Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
+                ok.append(time.perf_counter() - start)
+            except Infeasible:
+                failed.append(time.perf_counter() - start)
+        count = len(scenario.interactions)
+        by_count.setdefault(count, []).extend(ok)
+        median = f"{statistics.median(ok):.2f}" if ok else "-"
+        spread = f"{statistics.mean(ok):.2f}±{statistics.pstdev(ok):.2f}" if ok else "-"
+        lost = f"{statistics.median(failed):.1f}" if failed else "-"
+        print(f"{scenario.name:<8} {count:>2} {len(ok):>4}/{args.seeds:<5} {median:>9} {spread:>12} {lost:>9}", flush=True)
+    print()
+    for count, times in sorted(by_count.items()):
+        if times:
+            print(f"{count} interactions: median {statistics.median(times):.2f} s, mean {statistics.mean(times):.2f}±{statistics.pstdev(times):.2f} s over {len(times)} tasks")
+
+
+if __name__ == "__main__":
+    main()
