@@ -125,23 +125,28 @@ def _hits(trace: Trace) -> list[Interaction]:
             last[key] = c.time
             continue
         last[key] = c.time
-        # The normal points from a to b; towards the actor from the target it is:
-        nx, ny = c.normal if actor == c.a else (-c.normal[0], -c.normal[1])
-        out.append(Interaction("hit", (actor, target), side(-nx, -ny), c.time))
+        # The side the actor comes from: against its velocity relative to the target
+        # (the contact normal of a glancing touch on a rounded pig would say less).
+        vx, vy = rv if actor == c.a else (-rv[0], -rv[1])
+        out.append(Interaction("hit", (actor, target), side(-vx, -vy), c.time))
     return out
+
+
+def _on_surfaces(trace: Trace, intervals):
+    """(mover, surface, the mover's state index, contact spans) for each dynamic body
+    touching a static surface."""
+    for pair, spans in intervals.items():
+        names = sorted(pair)
+        surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
+        movers = [n for n in names if n in trace.names]
+        if len(surfaces) == 1 and len(movers) == 1:
+            yield movers[0], surfaces[0], trace.index(movers[0]), spans
 
 
 def _motion(trace: Trace, intervals, radius) -> list[Interaction]:
     out = []
     dt = trace.dt
-    for pair, spans in intervals.items():
-        names = sorted(pair)
-        surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
-        movers = [n for n in names if n in trace.names]
-        if len(surfaces) != 1 or len(movers) != 1:
-            continue
-        surface, mover = surfaces[0], movers[0]
-        index = trace.index(mover)
+    for mover, surface, index, spans in _on_surfaces(trace, intervals):
         for begin, end in spans:
             # State row k holds the time (k + 1) · dt.
             rows = trace.states[int(round(begin / dt)) - 1 : int(round(min(end, trace.duration) / dt)) - 1, index]
@@ -207,14 +212,8 @@ def _falls(trace: Trace, intervals) -> list[Interaction]:
 def _bounces(trace: Trace, intervals) -> list[Interaction]:
     out = []
     dt = trace.dt
-    for pair, spans in intervals.items():
-        names = sorted(pair)
-        surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
-        movers = [n for n in names if n in trace.names]
-        if len(surfaces) != 1 or len(movers) != 1:
-            continue
-        surface, mover = surfaces[0], movers[0]
-        index = trace.index(mover)
+    for mover, surface, index, spans in _on_surfaces(trace, intervals):
+        pair = frozenset((mover, surface))
         for begin, end in spans:
             if end - begin >= BOUNCE_TIME or end >= trace.duration:
                 continue
