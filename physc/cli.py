@@ -18,6 +18,7 @@ from physc.commands.check import cmd_check
 from physc.commands.common import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, Parser, UsageError
 from physc.commands.compile import cmd_compile
 from physc.commands.domains import cmd_domains
+from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.stages import STAGES
@@ -73,6 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.set_defaults(run=cmd_compile)
 
     add_play_commands(commands, common)
+    add_eval_command(commands, common)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")

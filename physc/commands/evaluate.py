@@ -1,0 +1,84 @@
+"""`physc eval`: generate tasks for scenarios and measure them like the paper, and more."""
+
+from __future__ import annotations
+
+import shlex
+import sys
+import time
+from pathlib import Path
+
+from physc.commands.common import EXIT_OK, UsageError, reporter
+
+
+class _Progress:
+    """A rich progress bar on stderr (plain lines when stderr is not a terminal)."""
+
+    def __init__(self, quiet: bool):
+        self.quiet = quiet
+        self.bar = None
+
+    def start(self, total: int, done: int) -> None:
+        if self.quiet:
+            return
+        from rich.console import Console
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+
+        console = Console(stderr=True)
+        self.bar = Progress(
+            TextColumn("[bold]eval"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
+            TextColumn("{task.description}"), console=console, transient=False,
+        )
+        self.bar.start()
+        self.task = self.bar.add_task("", total=total, completed=done)
+        if done:
+            console.print(f"resuming: {done} of {total} tasks already done")
+
+    def advance(self, record: dict) -> None:
+        if self.bar:
+            state = "ok" if record.get("generated") else "no task"
+            self.bar.update(self.task, advance=1, description=f"{record['scenario']} seed {record['seed']}: {state}")
+
+    def stop(self) -> None:
+        if self.bar:
+            self.bar.stop()
+
+
+def cmd_eval(args) -> int:
+    from physc.evaluation.report import write
+    from physc.evaluation.run import jobs_for, run
+
+    if args.tasks < 1 or args.jobs < 1:
+        raise UsageError("--tasks and --jobs take a whole number of at least 1")
+    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget)
+    if problems:
+        report = reporter(args)
+        for path, analysis, errors in problems:
+            report(path, analysis.source, errors)
+        return max(1, max(__import__("physc.diagnostics", fromlist=["exit_status"]).exit_status(e) for _, _, e in problems))
+    if args.scenario:
+        jobs = [j for j in jobs if j.scenario in args.scenario]
+        if not jobs:
+            raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
+    folder = Path(args.out)
+    started = time.perf_counter()
+    records = run(jobs, folder, args.jobs, _Progress(args.quiet))
+    command = "physc eval " + " ".join(shlex.quote(a) for a in sys.argv[2:]) if sys.argv[1:2] == ["eval"] else "physc eval …"
+    summary = write(records, folder, command, time.perf_counter() - started)
+    if not args.quiet:
+        counts = summary["interactions"]
+        made = sum(c["generated"] for c in counts.values())
+        print(f"{made} of {len(records)} tasks generated; report in {folder / 'results.md'}", file=sys.stderr)
+    return EXIT_OK
+
+
+def add_command(commands, common) -> None:
+    parser = commands.add_parser("eval", parents=[common], help="generate tasks and measure them like the paper's results table")
+    parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each is evaluated")
+    parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
+    parser.add_argument("--tasks", type=int, default=30, metavar="N", help="tasks per scenario (default 30)")
+    parser.add_argument("--jobs", type=int, default=1, metavar="N", help="processes (default 1); results do not depend on it")
+    parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
+    parser.add_argument("--time-budget", type=float, default=300.0, metavar="S", help="seconds per task at most (default 300)")
+    parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
+    parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    parser.set_defaults(run=cmd_eval)

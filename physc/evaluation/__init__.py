@@ -1,0 +1,1 @@
+"""`physc eval`: reproduce the paper's results table for any set of scenarios."""

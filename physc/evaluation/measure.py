@@ -1,0 +1,105 @@
+"""The measurements of one generated task (the paper's evaluation, and more).
+
+* physical stability: 10 s with no action; stable when no object moves more than
+  0.05 units and nothing is destroyed;
+* intended solvability: the recorded solution replayed exactly, and 10 times with
+  noise (release angle σ = 0.1°, positions of blocks and pigs σ = 0.005 units);
+* sequence fidelity: the replay realises the declared sequence and breaks no
+  restriction (docs/generation.md);
+* accidental solvability: the paper's heuristic agent shoots at every dynamic
+  object except the solution's target, at its points of interest, on both
+  trajectories; the task's value is the fraction of those plays that solve it.
+
+Every random draw comes from a generator seeded by the task's own seed, so a
+measurement does not depend on which process made it, or in what order.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+import attrs
+import numpy as np
+
+from physc.domains.angrybirds.actions import points_of_interest
+from physc.domains.angrybirds.fidelity import fidelity
+from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import Level
+from physc.domains.angrybirds.world import reachable
+
+STABLE_LIMIT = 0.05
+NOISY_REPLAYS = 10
+ANGLE_SIGMA = 0.1  # degrees
+POSITION_SIGMA = 0.005  # units
+AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
+SECONDS = 10.0
+
+
+def stability(level: Level) -> tuple[bool, float]:
+    """(stable, the largest displacement) over 10 s with no action."""
+    trace = Game(level).simulate(None, SECONDS, stop_at_rest=False)
+    states = trace.states
+    if not states.shape[1]:
+        return True, 0.0
+    shift = float(np.nanmax(np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1])))
+    return shift <= STABLE_LIMIT and not trace.destructions, shift
+
+
+def _play(level: Level, shot: Shot, scenario):
+    redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
+    return Game(level).play(shot, SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
+
+
+def jitter(level: Level, rng: random.Random) -> Level:
+    """The level with every block and pig moved by Gaussian noise (σ = 0.005)."""
+    objects = tuple(
+        attrs.evolve(o, x=o.x + rng.gauss(0.0, POSITION_SIGMA), y=o.y + rng.gauss(0.0, POSITION_SIGMA))
+        if o.element in ("Block", "Pig")
+        else o
+        for o in level.objects
+    )
+    return attrs.evolve(level, objects=objects)
+
+
+def intended(level: Level, solution, scenario, rng: random.Random) -> dict:
+    """Exact and noisy replays of the recorded solution."""
+    shot = Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+    exact = _play(level, shot, scenario)
+    exact_fidelity = fidelity(scenario, exact)
+    solved = faithful = 0
+    for _ in range(NOISY_REPLAYS):
+        noisy = Shot(angle=solution.release_angle + rng.gauss(0.0, ANGLE_SIGMA))
+        trace = _play(jitter(level, rng), noisy, scenario)
+        solved += trace.solved
+        faithful += fidelity(scenario, trace).valid
+    return {
+        "exact_solved": exact.solved,
+        "exact_faithful": exact_fidelity.valid,
+        "noisy_solved": solved / NOISY_REPLAYS,
+        "noisy_faithful": faithful / NOISY_REPLAYS,
+        "trace": exact.sequence(),
+    }
+
+
+def accidental(level: Level, solution_target: str) -> tuple[float, int]:
+    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it."""
+    plays = solved = 0
+    for obj in level.objects:
+        if obj.element not in ("Block", "Pig", "TNT") or obj.name == solution_target:
+            continue
+        points = points_of_interest(obj)
+        for name in AGENT_POINTS:
+            x, y = points[name]
+            if not reachable(x, y):
+                continue
+            for trajectory in ("low", "high"):
+                plays += 1
+                trace = Game(level).simulate(Shot(target=(x, y), trajectory=trajectory), SECONDS, settle_after_solved=0.0)
+                solved += trace.solved
+    return (solved / plays if plays else 0.0), plays
+
+
+def finite(value: float) -> float | None:
+    return None if value is None or (isinstance(value, float) and math.isnan(value)) else value

@@ -1,0 +1,139 @@
+"""Running an evaluation: generate and measure tasks, resumably, in parallel.
+
+Each task is one (scenario, seed) pair, seed = base seed + index. Its record is
+appended to DIR/records.jsonl as soon as it is done (one JSON object a line,
+flushed), so a killed run resumes where it stopped: tasks with a record are not
+done again. A task's record depends only on its scenario and seed, never on the
+process that made it, so the results do not depend on --jobs.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import time
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
+
+import attrs
+
+from physc.compiler.infeasible import Infeasible
+from physc.compiler.pipeline import Pipeline
+from physc.domains import load_domain
+from physc.dsl.frontend import analyze
+from physc.evaluation import measure
+from physc.serialize import to_data
+
+RECORDS = "records.jsonl"
+
+
+@attrs.frozen
+class Job:
+    path: str  # the .phys file
+    scenario: str
+    seed: int
+    time_budget: float
+
+    @property
+    def key(self) -> tuple[str, str, int]:
+        return (self.path, self.scenario, self.seed)
+
+
+def evaluate(job: Job) -> dict:
+    """Generate one task (final validation skipped, as in the paper) and measure it."""
+    analysis = analyze(job.path)
+    scenario = next(s for s in analysis.scenarios if s.name == job.scenario)
+    domain = load_domain(scenario.domain)
+    record = {
+        "file": job.path,
+        "scenario": job.scenario,
+        "interactions": len(scenario.interactions),
+        "seed": job.seed,
+    }
+    started = time.perf_counter()
+    try:
+        task = Pipeline(domain, scenario, job.seed, validate=False, time_budget=job.time_budget).task
+    except Infeasible as error:
+        record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
+        return record
+    record.update(generated=True, generation_seconds=round(time.perf_counter() - started, 4))
+    rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
+    stable, shift = measure.stability(task.level)
+    replay = measure.intended(task.level, task.solution, scenario, rng)
+    target = scenario.interactions[0].objects[1]
+    accidental, plays = measure.accidental(task.level, target)
+    record.update(
+        stable=stable,
+        largest_shift=round(shift, 5),
+        intended_exact=replay["exact_solved"],
+        intended_noisy=replay["noisy_solved"],
+        fidelity_exact=replay["exact_faithful"],
+        fidelity_noisy=replay["noisy_faithful"],
+        accidental=round(accidental, 5),
+        agent_plays=plays,
+        trace=replay["trace"],
+        solution=to_data(task.solution),
+        level=to_data(task.level),
+    )
+    return record
+
+
+def jobs_for(files: list[str], tasks: int, seed: int, time_budget: float) -> tuple[list[Job], list]:
+    """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
+    jobs, problems = [], []
+    for path in files:
+        analysis = analyze(path)
+        errors = [d for d in analysis.diagnostics if d.is_error]
+        if errors:
+            problems.append((path, analysis, errors))
+            continue
+        for scenario in analysis.scenarios:
+            jobs += [Job(path, scenario.name, seed + index, time_budget) for index in range(tasks)]
+    return jobs, problems
+
+
+def done_records(folder: Path) -> dict:
+    """The records already written (a torn last line, from a killed run, is ignored)."""
+    path = folder / RECORDS
+    found = {}
+    if path.exists():
+        for line in path.read_text(encoding="utf-8").splitlines():
+            try:
+                record = json.loads(line)
+            except json.JSONDecodeError:
+                continue
+            found[(record["file"], record["scenario"], record["seed"])] = record
+    return found
+
+
+def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict]:
+    folder.mkdir(parents=True, exist_ok=True)
+    records = done_records(folder)
+    todo = [job for job in jobs if job.key not in records]
+    path = folder / RECORDS
+    # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
+    if records:
+        text = "".join(json.dumps(records[k], sort_keys=True) + "\n" for k in sorted(records))
+        temporary = path.with_suffix(".tmp")
+        temporary.write_text(text, encoding="utf-8")
+        temporary.replace(path)
+    if progress:
+        progress.start(len(jobs), len(jobs) - len(todo))
+    with path.open("a", encoding="utf-8") as out:
+        def keep(record):
+            records[(record["file"], record["scenario"], record["seed"])] = record
+            out.write(json.dumps(record, sort_keys=True) + "\n")
+            out.flush()
+            if progress:
+                progress.advance(record)
+
+        if workers <= 1:
+            for job in todo:
+                keep(evaluate(job))
+        else:
+            with ProcessPoolExecutor(max_workers=workers) as pool:
+                for future in as_completed([pool.submit(evaluate, job) for job in todo]):
+                    keep(future.result())
+    if progress:
+        progress.stop()
+    return [records[job.key] for job in jobs if job.key in records]

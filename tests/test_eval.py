@@ -1,0 +1,52 @@
+"""physc eval: a small smoke run, independence from --jobs, resuming."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import EXAMPLES, run_physc
+
+SF = EXAMPLES / "paper" / "01_SF.phys"
+
+
+def records(folder):
+    out = {}
+    for line in (folder / "records.jsonl").read_text().splitlines():
+        record = json.loads(line)
+        record.pop("generation_seconds")
+        out[(record["scenario"], record["seed"])] = record
+    return out
+
+
+def test_smoke_run_writes_the_report(tmp_path):
+    run = run_physc("eval", SF, "--tasks", "2", "--out", tmp_path, "-q")
+    assert run.status == 0, run.stderr
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"records.jsonl", "results.md", "results.json", "results.csv", "plot_intended_noisy.png", "plot_accidental.png"} <= names
+    assert any(n.startswith("task_SF_") for n in names)
+    report = (tmp_path / "results.md").read_text()
+    assert "| Intended solvability (10 noisy replays) | " in report and "(1.00 ± 0.00)" in report
+    summary = json.loads((tmp_path / "results.json").read_text())
+    assert summary["interactions"]["2"]["generated"] == 2
+    (first, second) = records(tmp_path).values()
+    assert first["stable"] and first["generated"] and 0 <= first["accidental"] <= 1
+
+
+def test_results_do_not_depend_on_jobs(tmp_path):
+    assert run_physc("eval", SF, "--tasks", "2", "--jobs", "2", "--out", tmp_path / "two", "-q").status == 0
+    assert run_physc("eval", SF, "--tasks", "2", "--jobs", "1", "--out", tmp_path / "one", "-q").status == 0
+    assert records(tmp_path / "two") == records(tmp_path / "one")
+
+
+def test_a_killed_run_resumes(tmp_path):
+    assert run_physc("eval", SF, "--tasks", "2", "--out", tmp_path, "-q").status == 0
+    lines = (tmp_path / "records.jsonl").read_text().splitlines()
+    (tmp_path / "records.jsonl").write_text(lines[0] + "\n" + lines[1][:40])  # killed while writing
+    run = run_physc("eval", SF, "--tasks", "2", "--out", tmp_path)
+    assert run.status == 0 and "resuming: 1 of 2 tasks already done" in run.stderr
+    assert len((tmp_path / "records.jsonl").read_text().splitlines()) == 2
+
+
+def test_eval_reports_input_errors(tmp_path):
+    run = run_physc("eval", EXAMPLES / "errors" / "E0201_unknown_term.phys", "--out", tmp_path, "-q")
+    assert run.status == 1 and "E0201" in run.stderr
