@@ -35,7 +35,7 @@ def _resting_places(level, width: float, rng: random.Random):
     return places
 
 
-def distract(satisfier, solution, rng: random.Random, verify: bool = True) -> list[str]:
+def distract(satisfier, solution, rng: random.Random) -> list[str]:
     """Add distractors to the satisfier's level; keep those that leave the solution intact."""
     added = []
     for index in range(rng.randint(0, MAX_DISTRACTORS)):
@@ -51,8 +51,10 @@ def distract(satisfier, solution, rng: random.Random, verify: bool = True) -> li
             candidate = attrs.evolve(satisfier.level, objects=satisfier.level.objects + (obj,))
             if not satisfier.consistent(candidate):
                 continue
-            if verify and not satisfier.simulate(solution.shot, candidate).fidelity.valid:
+            if not satisfier.simulate(solution.shot, candidate).fidelity.valid:
                 continue
+            if satisfier.solves_by_shooting_at(obj, candidate):
+                continue  # a distraction must not be a way to solve the task
             satisfier.level = candidate
             satisfier.roles[name] = "distractor"
             added.append(name)

@@ -49,7 +49,8 @@ PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
 OBSTACLE_LENGTH = 1.4
-PERTURBED = (0.1, -0.1, 0.05, -0.05)  # release angle offsets (degrees) of robustness replays
+ROBUSTNESS_REPLAYS = 6  # replays under the evaluation's noise model (angle σ 0.1°, positions σ 0.005)
+ROBUST_ENOUGH = 5  # of them must realise the sequence, or the layout is given up
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
@@ -402,12 +403,25 @@ class Satisfier:
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt) -> tuple[int, int]:
+        """How many replays under noise (the evaluation's model) realise the sequence."""
+        from physc.evaluation.measure import ANGLE_SIGMA, jitter
+
+        noise = random.Random(f"robustness/{attempt.label}/{attempt.shot.release_angle():.6f}")
         angle = attempt.shot.release_angle()
         passed = 0
-        for offset in PERTURBED:
-            if self.simulate(Shot(angle=angle + offset)).fidelity.valid:
+        for _ in range(ROBUSTNESS_REPLAYS):
+            level = jitter(self.level, noise)
+            if self.simulate(Shot(angle=angle + noise.gauss(0.0, ANGLE_SIGMA)), level).fidelity.valid:
                 passed += 1
-        return passed, len(PERTURBED)
+        return passed, ROBUSTNESS_REPLAYS
+
+    def solves_by_shooting_at(self, obj: LevelObject, level: Level) -> bool:
+        """Whether a shot at one of obj's points of interest solves the level."""
+        for _, shot in candidate_shots(obj):
+            self.simulations += 1
+            if Game(level).simulate(shot, SECONDS, settle_after_solved=0.0).solved:
+                return True
+        return False
 
     # ---- the whole step ------------------------------------------------------------------------
     def run(self) -> Satisfied | None:
@@ -438,9 +452,12 @@ class Satisfier:
                 if not self.working(attempts):
                     return None
         working = self.working(attempts)
-        # The most robust of the working candidates (at most three are replayed).
+        # The most robust of the working candidates (at most three are replayed); a
+        # solution that noise breaks too often is no solution: the next layout is tried.
         scored = [(self.robustness(a), -i, a) for i, a in enumerate(working[:3])]
         (passed, total), _, chosen = max(scored, key=lambda item: (item[0][0], item[1]))
+        if passed < ROBUST_ENOUGH:
+            return None
         if not self.obstruct(chosen):
             return None
         final = self.simulate(chosen.shot)
