@@ -7,6 +7,7 @@ import sys
 import time
 from pathlib import Path
 
+from physc import diagnostics
 from physc.commands.common import EXIT_OK, UsageError, reporter
 
 
@@ -54,7 +55,7 @@ def cmd_eval(args) -> int:
         report = reporter(args)
         for path, analysis, errors in problems:
             report(path, analysis.source, errors)
-        return max(1, max(__import__("physc.diagnostics", fromlist=["exit_status"]).exit_status(e) for _, _, e in problems))
+        return max(diagnostics.exit_status(errors) for _, _, errors in problems)
     if args.scenario:
         jobs = [j for j in jobs if j.scenario in args.scenario]
         if not jobs:
