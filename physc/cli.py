@@ -53,7 +53,7 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.set_defaults(run=cmd_fmt)
 
     stage_names = ", ".join(s.name for s in STAGES)
-    compile_ = commands.add_parser("compile", parents=[common], help="compile a scenario (--emit a stage's IR)")
+    compile_ = commands.add_parser("compile", parents=[common], help="generate a task from a scenario (or print a stage with --emit)")
     compile_.add_argument("file", metavar="FILE")
     compile_.add_argument(
         "-s", "--scenario", action="append", metavar="NAME", help="a scenario of the file (repeatable; default all)"
