@@ -33,7 +33,7 @@ class Outcome:
 
 
 def satisfy(domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool) -> Outcome:
-    satisfier = Satisfier(domain, scenario, layout, rng)
+    satisfier = Satisfier(domain, scenario, layout)
     found = satisfier.run()
     if found is None:
         return Outcome(False, satisfier.simulations)

@@ -73,16 +73,15 @@ class Satisfied:
     simulations: int
 
 
-def _placed(obj: LevelObject, role: str, material=None) -> PlacedObject:
+def _placed(obj: LevelObject, role: str) -> PlacedObject:
     width, height = extent(obj)
-    return PlacedObject(obj.name, role, by_prefab(obj.type).name, material, obj.x, obj.y, obj.rotation or 0.0, width, height)
+    return PlacedObject(obj.name, role, by_prefab(obj.type).name, obj.material, obj.x, obj.y, obj.rotation or 0.0, width, height)
 
 
 class Satisfier:
-    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random):
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout):
         self.domain = domain
         self.scenario = scenario
-        self.rng = rng
         self.level = level_from_layout(layout)
         self.roles = {o.name: o.role for o in layout.objects}
         self.allowed = {o.name: o.concrete for o in scenario.objects}
@@ -101,12 +100,6 @@ class Satisfier:
     @property
     def objects(self) -> dict[str, LevelObject]:
         return {o.name: o for o in self.level.objects}
-
-    def replace(self, changed: dict[str, LevelObject]) -> None:
-        self.level = attrs.evolve(self.level, objects=tuple(changed.get(o.name, o) for o in self.level.objects))
-
-    def add(self, obj: LevelObject) -> None:
-        self.level = attrs.evolve(self.level, objects=self.level.objects + (obj,))
 
     # ---- simulation ---------------------------------------------------------------------
     def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
