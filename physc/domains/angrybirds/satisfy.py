@@ -50,7 +50,7 @@ CELL = 0.25  # grid of path counting
 OBSTACLES = 6
 OBSTACLE_LENGTH = 1.4
 ROBUSTNESS_REPLAYS = 6  # replays under the evaluation's noise model (angle σ 0.1°, positions σ 0.005)
-ROBUST_ENOUGH = 5  # of them must realise the sequence, or the layout is given up
+ROBUST_ENOUGH = 6  # of them must realise the sequence, or the layout is given up
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
@@ -445,11 +445,13 @@ class Satisfier:
                 if not self.working(attempts):
                     return None
         working = self.working(attempts)
-        # The most robust of the working candidates (at most three are replayed); a
-        # solution that noise breaks too often is no solution: the next layout is tried.
-        scored = [(self.robustness(a), -i, a) for i, a in enumerate(working[:3])]
-        (passed, total), _, chosen = max(scored, key=lambda item: (item[0][0], item[1]))
-        if passed < ROBUST_ENOUGH:
+        # The first working candidate that noise does not break too often (at most three
+        # are replayed); if none holds up, the next layout is tried.
+        for chosen in working[:3]:
+            passed, total = self.robustness(chosen)
+            if passed >= ROBUST_ENOUGH:
+                break
+        else:
             return None
         if not self.obstruct(chosen):
             return None
