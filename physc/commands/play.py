@@ -11,8 +11,6 @@ from __future__ import annotations
 import json
 import sys
 
-import numpy as np
-
 from physc.commands.common import EXIT_OK, UsageError, reporter
 from physc.diagnostics import Diagnostic, SourceText
 from physc.files import write_atomic
@@ -138,18 +136,6 @@ def cmd_trace(args) -> int:
     return EXIT_OK
 
 
-def moved_paths(trace, threshold: float = 0.1, every: float = 0.1) -> dict[str, list[tuple[float, float]]]:
-    """The sampled paths of the bodies that moved more than `threshold`."""
-    stride = max(int(round(every / trace.dt)), 1)
-    paths = {}
-    for index, name in enumerate(trace.names):
-        points = trace.states[:, index, :2]
-        points = points[~np.isnan(points[:, 0])]
-        if len(points) and np.max(np.hypot(*(points - points[0]).T)) > threshold:
-            paths[name] = [tuple(p) for p in points[::stride]] + [tuple(points[-1])]
-    return paths
-
-
 def cmd_render(args) -> int:
     from physc.domains.angrybirds.picture import draw_level, save
 
@@ -164,7 +150,7 @@ def cmd_render(args) -> int:
         level, _, trace = _play(args)
         if level is None:
             return trace
-        paths = moved_paths(trace)
+        paths = trace.paths()
     figure = draw_level(level, args.title or args.level, paths)
     write_atomic(args.output, save(figure, "svg" if args.output.lower().endswith(".svg") else "png"))
     return EXIT_OK

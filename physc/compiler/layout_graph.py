@@ -10,8 +10,8 @@ or as Graphviz DOT with `--format dot`.
 
 from __future__ import annotations
 
-import networkx as nx
 import attrs
+import networkx as nx
 
 from physc.diagnostics import Span
 

@@ -21,7 +21,12 @@ from __future__ import annotations
 import itertools
 import random
 
-from physc.compiler.concrete_layout import Body, ChosenRelation, ConcreteLayout, PlacedObject
+from physc.compiler.concrete_layout import (
+    Body,
+    ChosenRelation,
+    ConcreteLayout,
+    PlacedObject,
+)
 from physc.compiler.difference import Inconsistent
 from physc.compiler.dimension_graphs import DimensionGraphs, point, relation_constraints
 from physc.compiler.geometry import overlap_depth, polygon
@@ -96,7 +101,7 @@ class Place:
         return None
 
     @staticmethod
-    def _layout(self_domain, graphs, bodies, centres, separations, deferred) -> ConcreteLayout:
+    def _layout(domain_name, graphs, bodies, centres, separations, deferred) -> ConcreteLayout:
         objects = tuple(
             PlacedObject(
                 name=b.name,
@@ -113,7 +118,7 @@ class Place:
         )
         return ConcreteLayout(
             scenario=graphs.scenario,
-            domain=self_domain,
+            domain=domain_name,
             seed=graphs.seed,
             objects=objects,
             conjunction=graphs.conjunction,

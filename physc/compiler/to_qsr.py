@@ -14,7 +14,13 @@ from __future__ import annotations
 import random
 
 from physc.compiler import qsr
-from physc.compiler.layout_graph import IN_DIRECTION, LOCATED_FAR, ON_LOCATION, TOUCHING, LayoutGraph
+from physc.compiler.layout_graph import (
+    IN_DIRECTION,
+    LOCATED_FAR,
+    ON_LOCATION,
+    TOUCHING,
+    LayoutGraph,
+)
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 TABLE = {

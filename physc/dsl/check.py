@@ -14,7 +14,13 @@ import attrs
 
 from physc.diagnostics import Diagnostic, Label, Span
 from physc.domains import DEFAULT_DOMAIN, DomainError, load_domain
-from physc.domains.vocabulary import DIRECTION, INTERACTION, RESTRICTION, TermSignature, Vocabulary
+from physc.domains.vocabulary import (
+    DIRECTION,
+    INTERACTION,
+    RESTRICTION,
+    TermSignature,
+    Vocabulary,
+)
 from physc.dsl import ast
 from physc.dsl.fmt import format_term
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR

@@ -16,12 +16,17 @@ from pathlib import Path
 
 import attrs
 from lark import Lark, Token, Transformer
-from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken, VisitError
+from lark.exceptions import (
+    UnexpectedCharacters,
+    UnexpectedInput,
+    UnexpectedToken,
+    VisitError,
+)
 
 from physc.diagnostics import Diagnostic, Label, SourceText, Span
-from physc.gc_pause import gc_paused
 from physc.dsl import ast
 from physc.dsl.lexer import FastLexer
+from physc.gc_pause import gc_paused
 
 # What a terminal is called in a message.
 TOKEN_NAMES = {

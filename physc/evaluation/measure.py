@@ -19,7 +19,6 @@ from __future__ import annotations
 import math
 import random
 
-import attrs
 import numpy as np
 
 from physc.domains.angrybirds.actions import points_of_interest
@@ -27,12 +26,11 @@ from physc.domains.angrybirds.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level
+from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 from physc.domains.angrybirds.world import reachable
 
 STABLE_LIMIT = 0.05
 NOISY_REPLAYS = 10
-ANGLE_SIGMA = 0.1  # degrees
-POSITION_SIGMA = 0.005  # units
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 SECONDS = 10.0
 
@@ -50,17 +48,6 @@ def stability(level: Level) -> tuple[bool, float]:
 def _play(level: Level, shot: Shot, scenario):
     redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
     return Game(level).play(shot, SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
-
-
-def jitter(level: Level, rng: random.Random) -> Level:
-    """The level with every block and pig moved by Gaussian noise (σ = 0.005)."""
-    objects = tuple(
-        attrs.evolve(o, x=o.x + rng.gauss(0.0, POSITION_SIGMA), y=o.y + rng.gauss(0.0, POSITION_SIGMA))
-        if o.element in ("Block", "Pig")
-        else o
-        for o in level.objects
-    )
-    return attrs.evolve(level, objects=objects)
 
 
 def intended(level: Level, solution, scenario, rng: random.Random) -> dict:

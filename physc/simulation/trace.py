@@ -109,6 +109,17 @@ class Trace:
     def index(self, name: str) -> int:
         return self.names.index(name)
 
+    def paths(self, threshold: float = 0.1, every: float = 0.1) -> dict[str, list[tuple[float, float]]]:
+        """Sampled paths (every `every` seconds) of the bodies that moved more than `threshold`."""
+        stride = max(int(round(every / self.dt)), 1)
+        out = {}
+        for index, name in enumerate(self.names):
+            points = self.states[:, index, :2]
+            points = points[~np.isnan(points[:, 0])]
+            if len(points) and np.max(np.hypot(*(points - points[0]).T)) > threshold:
+                out[name] = [tuple(p) for p in points[::stride]] + [tuple(points[-1])]
+        return out
+
     def sequence(self) -> str:
         """The recognised interactions in `.phys` syntax: `hit(bird, pig, left) > destroy(bird, pig)`."""
         return " > ".join(i.text() for i in self.interactions)

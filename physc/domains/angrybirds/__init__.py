@@ -43,7 +43,6 @@ class AngryBirds:
     @staticmethod
     def picture(task, fmt: str = "png") -> bytes:
         """The task's level with the paths its solution makes, like the paper's figure."""
-        from physc.commands.play import moved_paths
         from physc.domains.angrybirds.game import Game
         from physc.domains.angrybirds.launch import Shot
         from physc.domains.angrybirds.picture import draw_level, save
@@ -52,7 +51,7 @@ class AngryBirds:
         trace = Game(task.level).simulate(shot, 9.0, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return save(draw_level(task.level, title, moved_paths(trace), supports), fmt)
+        return save(draw_level(task.level, title, trace.paths(), supports), fmt)
 
     def satisfy(self, scenario, layout, rng, validate: bool = True):
         """Simulation-based satisfaction, distractions and validation of one layout."""

@@ -15,7 +15,12 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION, LayoutGraph
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
-from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT
+from physc.domains.angrybirds.world import (
+    BIRD_REST,
+    GROUND_TOP,
+    LEVEL_LEFT,
+    LEVEL_RIGHT,
+)
 from physc.dsl.scenario import ScenarioIR
 
 PATH_SURFACE_LENGTH = (1.5, 3.0)  # short: a rolling circle loses speed to angular drag

@@ -16,13 +16,25 @@ import attrs
 import numpy as np
 
 from physc.backends import BodySpec, Circle, Polygon, load_backend
-from physc.domains.angrybirds.catalogue import BY_PREFAB, MATERIAL, PHYQ_CIRCLES, PLATFORM_BASE, shape
+from physc.domains.angrybirds.catalogue import (
+    BY_PREFAB,
+    MATERIAL,
+    PHYQ_CIRCLES,
+    PLATFORM_BASE,
+    shape,
+)
 from physc.domains.angrybirds.launch import Shot
-from physc.domains.angrybirds.recognise import recognise, violations
 from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.recognise import recognise, violations
 from physc.domains.angrybirds.rules import RULES, Rules
 from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
-from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, SeparationRecord, Trace
+from physc.simulation.trace import (
+    ContactRecord,
+    DamageRecord,
+    DestructionRecord,
+    SeparationRecord,
+    Trace,
+)
 
 BIRD = "bird"
 GROUND = "ground"

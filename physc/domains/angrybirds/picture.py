@@ -22,7 +22,12 @@ from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
-from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP, LEVEL_LEFT, LEVEL_RIGHT  # noqa: E402
+from physc.domains.angrybirds.world import (  # noqa: E402
+    BIRD_REST,
+    GROUND_TOP,
+    LEVEL_LEFT,
+    LEVEL_RIGHT,
+)
 
 MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
 KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}

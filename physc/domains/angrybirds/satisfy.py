@@ -32,12 +32,18 @@ from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlap_depth
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import candidate_shots, extent
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab, shape
+from physc.domains.angrybirds.catalogue import (
+    PLATFORM_BASE,
+    PLATFORM_THICKNESS,
+    by_prefab,
+    shape,
+)
 from physc.domains.angrybirds.fidelity import Fidelity, fidelity
 from physc.domains.angrybirds.game import BIRD, Game
 from physc.domains.angrybirds.launch import Shot
-from physc.domains.angrybirds.recognise import side
 from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
+from physc.domains.angrybirds.recognise import side
 from physc.domains.angrybirds.to_level import level_from_layout
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 from physc.dsl.scenario import ScenarioIR
@@ -397,8 +403,6 @@ class Satisfier:
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt) -> tuple[int, int]:
         """How many replays under noise (the evaluation's model) realise the sequence."""
-        from physc.evaluation.measure import ANGLE_SIGMA, jitter
-
         noise = random.Random(f"robustness/{attempt.label}/{attempt.shot.release_angle():.6f}")
         angle = attempt.shot.release_angle()
         passed = 0
