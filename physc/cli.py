@@ -22,6 +22,7 @@ from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.stages import STAGES
+from physc.files import OutputError
 
 
 # ---- the parser -----------------------------------------------------------------------
@@ -91,7 +92,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_USAGE
     try:
         return args.run(args)
-    except UsageError as error:
+    except (UsageError, OutputError) as error:
         print(f"physc {args.command}: error: {error}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:

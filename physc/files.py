@@ -7,8 +7,34 @@ import tempfile
 from pathlib import Path
 
 
+class OutputError(Exception):
+    """An output cannot be written (a missing folder, no permission, a full disk)."""
+
+    def __init__(self, path, error: OSError):
+        super().__init__(f"cannot write {path}: {error.strerror or error}")
+        self.path = path
+
+
+def ensure_folder(path: str | os.PathLike) -> Path:
+    """The folder, created if missing; OutputError if that cannot be."""
+    folder = Path(path)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise OutputError(folder, error) from None
+    return folder
+
+
 def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
-    """Write to a temporary file beside `path`, then rename it into place."""
+    """Write to a temporary file beside `path`, then rename it into place (OutputError
+    when that cannot be done; nothing half-written is left)."""
+    try:
+        _write_atomic(path, data)
+    except OSError as error:
+        raise OutputError(path, error) from None
+
+
+def _write_atomic(path, data) -> None:
     target = Path(path)
     payload = data.encode("utf-8") if isinstance(data, str) else data
     descriptor, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")

@@ -182,3 +182,13 @@ def test_console_script():
     assert run.returncode == 0 and run.stderr == ""
     run = subprocess.run([sys.executable, "-m", "physc", "--version"], capture_output=True, text=True)
     assert run.stdout.strip() == f"physc {__version__}"
+
+
+def test_unwritable_outputs_are_usage_errors(physc, tmp_path):
+    missing = tmp_path / "no" / "such" / "folder" / "sf.xml"
+    run = physc("compile", SF, "-o", missing, "-q")
+    assert run.status == 2 and f"cannot write {missing}" in run.stderr and "internal error" not in run.stderr
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    run = physc("eval", SF, "--tasks", "1", "--out", blocker / "inside", "-q")
+    assert run.status == 2 and "cannot write" in run.stderr

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import sys
-from pathlib import Path
 
 from physc import diagnostics
 from physc.commands.common import (
@@ -15,7 +14,7 @@ from physc.commands.common import (
 )
 from physc.compiler.stages import StageError, Unit, stage
 from physc.diagnostics import Diagnostic
-from physc.files import write_atomic
+from physc.files import ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
 
@@ -52,9 +51,7 @@ def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | 
         return None
     if not many:
         return path
-    folder = Path(path)
-    folder.mkdir(parents=True, exist_ok=True)
-    return str(folder / f"{name}.{suffix}")
+    return str(ensure_folder(path) / f"{name}.{suffix}")
 
 
 def cmd_compile(args) -> int:

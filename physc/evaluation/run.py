@@ -22,6 +22,7 @@ from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
+from physc.files import ensure_folder
 from physc.serialize import to_data
 
 RECORDS = "records.jsonl"
@@ -107,7 +108,7 @@ def done_records(folder: Path) -> dict:
 
 
 def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict]:
-    folder.mkdir(parents=True, exist_ok=True)
+    ensure_folder(folder)
     records = done_records(folder)
     todo = [job for job in jobs if job.key not in records]
     path = folder / RECORDS
