@@ -52,7 +52,10 @@ def load_level(args):
         if error.line is not None and error.line <= source.line_count:
             start = source._line_starts[error.line - 1] + max((error.column or 1) - 1, 0)
             span = source.span(start, start + 1)
-        return None, _fail(args, Diagnostic(error.code, error.message, span, help=error.help), source)
+        help_text = error.help
+        if str(args.level).endswith(".phys"):
+            help_text = "this is a scenario, not a level: `physc compile FILE -o level.xml --png picture.png` makes one"
+        return None, _fail(args, Diagnostic(error.code, error.message, span, help=help_text), source)
 
 
 def _fail(args, diagnostic: Diagnostic, source=None) -> int:
