@@ -120,6 +120,15 @@ class SourceText:
     def line_count(self) -> int:
         return len(self._line_starts)
 
+    @property
+    def line_starts(self) -> list[int]:
+        """The offset at which each line starts (shared with the spans made from it)."""
+        return self._line_starts
+
+    def offset(self, line: int, column: int) -> int:
+        """The 0-based offset of a 1-based line and column."""
+        return self._line_starts[line - 1] + max(column - 1, 0)
+
     def line_text(self, line: int) -> str:
         start = self._line_starts[line - 1]
         end = self.text.find("\n", start)

@@ -7,6 +7,22 @@ import tempfile
 from pathlib import Path
 
 
+def read_input(path: str, what: str = "the input") -> tuple[bytes | None, str | None]:
+    """(the bytes, None), or (None, why they cannot be read); '-' is standard input."""
+    try:
+        if path == "-":
+            import sys
+
+            return sys.stdin.buffer.read(), None
+        return Path(path).read_bytes(), None
+    except IsADirectoryError:
+        return None, f"cannot read {what}: it is a directory"
+    except FileNotFoundError:
+        return None, f"cannot read {what}: no such file"
+    except OSError as error:
+        return None, f"cannot read {what}: {error.strerror or error}"
+
+
 class OutputError(Exception):
     """An output cannot be written (a missing folder, no permission, a full disk)."""
 

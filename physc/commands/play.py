@@ -9,11 +9,10 @@ paths of the objects that moved.
 from __future__ import annotations
 
 import json
-import sys
 
 from physc.commands.common import EXIT_OK, UsageError, reporter
 from physc.diagnostics import Diagnostic, SourceText
-from physc.files import write_atomic
+from physc.files import read_input, write_atomic
 
 
 def parse_shot(text: str | None, angle: float | None):
@@ -35,14 +34,9 @@ def load_level(args):
     """The level of args.level, or None after reporting why not (the exit status is returned too)."""
     from physc.domains.angrybirds.level_xml import LevelError, read_level
 
-    try:
-        data = sys.stdin.buffer.read() if args.level == "-" else open(args.level, "rb").read()
-    except IsADirectoryError:
-        return None, _fail(args, Diagnostic("E0001", "cannot read the level: it is a directory"))
-    except FileNotFoundError:
-        return None, _fail(args, Diagnostic("E0001", "cannot read the level: no such file"))
-    except OSError as error:
-        return None, _fail(args, Diagnostic("E0001", f"cannot read the level: {error.strerror or error}"))
+    data, problem = read_input(args.level, "the level")
+    if data is None:
+        return None, _fail(args, Diagnostic("E0001", problem))
     try:
         return read_level(data), 0
     except LevelError as error:
@@ -50,7 +44,7 @@ def load_level(args):
         source = SourceText(args.level, text)
         span = None
         if error.line is not None and error.line <= source.line_count:
-            start = source._line_starts[error.line - 1] + max((error.column or 1) - 1, 0)
+            start = source.offset(error.line, error.column or 1)
             span = source.span(start, start + 1)
         help_text = error.help
         if str(args.level).endswith(".phys"):

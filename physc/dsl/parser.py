@@ -12,7 +12,6 @@ from __future__ import annotations
 import functools
 import re
 from importlib import resources
-from pathlib import Path
 
 import attrs
 from lark import Lark, Token, Transformer
@@ -26,6 +25,7 @@ from lark.exceptions import (
 from physc.diagnostics import Diagnostic, Label, SourceText, Span
 from physc.dsl import ast
 from physc.dsl.lexer import FastLexer
+from physc.files import read_input
 from physc.gc_pause import gc_paused
 
 # What a terminal is called in a message.
@@ -406,7 +406,7 @@ def _parse_source(source: SourceText) -> ParseResult:
     scenarios: list[ast.Scenario] = []
     chunks, comments, any_scenario = _chunks(source)
     builder.source = source
-    builder.line_starts = source._line_starts
+    builder.line_starts = source.line_starts
     for index, chunk in enumerate(chunks):
         builder.offset = chunk.start
         builder.problems = []
@@ -448,21 +448,11 @@ class ReadResult:
     diagnostics: tuple[Diagnostic, ...] = ()
 
 
-def read_source(path: str, stdin=None) -> ReadResult:
+def read_source(path: str) -> ReadResult:
     """Read a file as UTF-8 (a leading byte-order mark is dropped); '-' is standard input."""
-    try:
-        if path == "-":
-            import sys
-
-            data = (stdin or sys.stdin.buffer).read()
-        else:
-            data = Path(path).read_bytes()
-    except IsADirectoryError:
-        return ReadResult(None, (Diagnostic("E0001", "cannot read the input: it is a directory"),))
-    except FileNotFoundError:
-        return ReadResult(None, (Diagnostic("E0001", "cannot read the input: no such file"),))
-    except OSError as error:
-        return ReadResult(None, (Diagnostic("E0001", f"cannot read the input: {error.strerror or error}"),))
+    data, problem = read_input(path)
+    if data is None:
+        return ReadResult(None, (Diagnostic("E0001", problem),))
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as error:

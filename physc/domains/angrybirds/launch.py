@@ -12,7 +12,12 @@ import math
 
 import attrs
 
-from physc.domains.angrybirds.world import BIRD_REST, GRAVITY, LAUNCH_SPEED
+from physc.domains.angrybirds.world import (
+    BIRD_REST,
+    GRAVITY,
+    LAUNCH_SPEED,
+    discriminant,
+)
 
 
 class Unreachable(ValueError):
@@ -32,8 +37,8 @@ class Shot:
         if self.angle is not None:
             return self.angle
         x, y = self.target
-        dx, dy = x - BIRD_REST[0], y - BIRD_REST[1]
-        disc = speed**4 - gravity * (gravity * dx * dx + 2 * dy * speed * speed)
+        dx = x - BIRD_REST[0]
+        disc = discriminant(x, y, speed, gravity)
         if disc < 0:
             raise Unreachable(f"({x:g}, {y:g}) is out of reach of a full-stretch shot")
         if dx == 0:

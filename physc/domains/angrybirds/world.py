@@ -8,8 +8,6 @@ scale of 0.48; a full-stretch launch has speed 10.
 
 from __future__ import annotations
 
-import math
-
 import attrs
 
 LEVEL_LEFT = -17.5
@@ -34,23 +32,13 @@ class Area:
 PLACEMENT_AREA = Area()
 
 
+def discriminant(x: float, y: float, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> float:
+    """v⁴ − g(g·dx² + 2·dy·v²) for the point (x, y) seen from the bird's rest point:
+    the launch equation has a real root (the point is in reach) exactly when it is ≥ 0."""
+    dx, dy = x - BIRD_REST[0], y - BIRD_REST[1]
+    return speed**4 - gravity * (gravity * dx * dx + 2 * dy * speed * speed)
+
+
 def reachable(x: float, y: float, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> bool:
-    """Whether a full-stretch shot from the bird's rest point can pass through (x, y).
-
-    The launch equation tan θ = (v² ± √(v⁴ − g(g dx² + 2 dy v²))) / (g dx) has a
-    real root exactly when the discriminant is not negative.
-    """
-    dx, dy = x - BIRD_REST[0], y - BIRD_REST[1]
-    return speed**4 - gravity * (gravity * dx * dx + 2 * dy * speed * speed) >= 0
-
-
-def launch_angles(x: float, y: float, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY):
-    """The (low, high) release angles in radians that pass through (x, y), or None."""
-    dx, dy = x - BIRD_REST[0], y - BIRD_REST[1]
-    disc = speed**4 - gravity * (gravity * dx * dx + 2 * dy * speed * speed)
-    if disc < 0 or dx == 0:
-        return None
-    root = math.sqrt(disc)
-    low = math.atan((speed**2 - root) / (gravity * dx))
-    high = math.atan((speed**2 + root) / (gravity * dx))
-    return low, high
+    """Whether a full-stretch shot from the bird's rest point can pass through (x, y)."""
+    return discriminant(x, y, speed, gravity) >= 0
