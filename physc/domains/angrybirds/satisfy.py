@@ -43,7 +43,6 @@ from physc.domains.angrybirds.game import BIRD, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
-from physc.domains.angrybirds.recognise import side
 from physc.domains.angrybirds.to_level import level_from_layout
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 from physc.dsl.scenario import ScenarioIR
@@ -345,28 +344,26 @@ class Satisfier:
                 continue
             target = restriction.objects[1]
             for _ in range(OBSTACLES):
-                offending = self.offending_shot(target, restriction.directions)
+                offending = self.offending_shot(restriction)
                 if offending is None:
                     break
                 if not self.block(offending, target, solution):
                     return False
-            if self.offending_shot(target, restriction.directions) is not None:
+            if self.offending_shot(restriction) is not None:
                 return False
         return True
 
-    def offending_shot(self, target: str, directions) -> Attempt | None:
-        obj = self.objects.get(target)
+    def offending_shot(self, restriction) -> Attempt | None:
+        """A shot at the restricted object that breaks the restriction, judged exactly as
+        validation judges it (recognised hits, declared bounces)."""
+        obj = self.objects.get(restriction.objects[1])
         if obj is None:
             return None
         for label, shot in candidate_shots(obj):
-            trace = Game(self.level).simulate(shot, 4.0, settle_after_solved=0.0)
             self.simulations += 1
-            for contact in trace.contacts:
-                if {contact.a, contact.b} == {BIRD, target}:
-                    nx, ny = contact.normal if contact.a == BIRD else (-contact.normal[0], -contact.normal[1])
-                    if side(-nx, -ny) in directions:
-                        return Attempt(label, shot, trace, None)
-                    break
+            trace = Game(self.level).play(shot, 4.0, restrictions=(restriction,), redirects=self.redirects, settle_after_solved=0.0)
+            if trace.violations:
+                return Attempt(label, shot, trace, None)
         return None
 
     def block(self, offending: Attempt, target: str, solution: Attempt) -> bool:
