@@ -9,19 +9,12 @@ most 18 shots, of which the unreachable ones are dropped.
 from __future__ import annotations
 
 from physc.compiler.qsr_evaluate import five_points
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab
+from physc.domains.angrybirds.catalogue import extent
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.world import reachable
 
 POINTS = ("ll", "ul", "ur", "lr", "c")
-
-
-def extent(obj: LevelObject) -> tuple[float, float]:
-    catalogue = by_prefab(obj.type)
-    if catalogue.kind == "platform":
-        return PLATFORM_BASE * (obj.scale_x or 1.0), PLATFORM_BASE * (obj.scale_y or 1.0)
-    return catalogue.width, catalogue.height
 
 
 def points_of_interest(obj: LevelObject) -> dict[str, tuple[float, float]]:

@@ -141,3 +141,14 @@ def shape(name: str) -> Shape:
 
 def by_prefab(prefab: str) -> Shape | None:
     return BY_PREFAB.get(prefab)
+
+
+def extent(obj) -> tuple[float, float]:
+    """Width and height of a level object: a platform's from its scales, any other's
+    from the catalogue."""
+    catalogue = BY_PREFAB[obj.type]
+    if catalogue.kind == "platform":
+        scale_x = 1.0 if obj.scale_x is None else obj.scale_x
+        scale_y = 1.0 if obj.scale_y is None else obj.scale_y
+        return PLATFORM_BASE * scale_x, PLATFORM_BASE * scale_y
+    return catalogue.width, catalogue.height

@@ -14,7 +14,7 @@ import random
 
 import attrs
 
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, shape
+from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
@@ -28,9 +28,9 @@ def _resting_places(level, width: float, rng: random.Random):
     places = [((PLACEMENT_AREA.left + 1.5 + width / 2, PLACEMENT_AREA.right - width / 2), GROUND_TOP)]
     for obj in level.objects:
         if obj.element == "Platform" and abs(obj.rotation or 0.0) < 1e-6:
-            half = PLATFORM_BASE * (obj.scale_x or 1.0) / 2
-            if half * 2 >= width + 0.2:
-                places.append(((obj.x - half + width / 2, obj.x + half - width / 2), obj.y + PLATFORM_BASE * (obj.scale_y or 1.0) / 2))
+            length, thickness = extent(obj)
+            if length >= width + 0.2:
+                places.append(((obj.x - length / 2 + width / 2, obj.x + length / 2 - width / 2), obj.y + thickness / 2))
     rng.shuffle(places)
     return places
 

@@ -20,7 +20,7 @@ from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     MATERIAL,
     PHYQ_CIRCLES,
-    PLATFORM_BASE,
+    extent,
     shape,
 )
 from physc.domains.angrybirds.launch import Shot
@@ -58,8 +58,7 @@ class Game:
         rules = self.rules
         angle = math.radians(obj.rotation or 0.0)
         if catalogue.kind == "platform":
-            w = PLATFORM_BASE * (obj.scale_x if obj.scale_x is not None else 1.0) / 2
-            h = PLATFORM_BASE * (obj.scale_y if obj.scale_y is not None else 1.0) / 2
+            w, h = (size / 2 for size in extent(obj))
             outline = Polygon(((-w, -h), (w, -h), (w, h), (-w, h)))
             spec = BodySpec(obj.name, outline, obj.x, obj.y, angle, static=True, friction=rules.platform_friction)
             return spec, "platform", math.inf, 0.0

@@ -19,7 +19,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
 
 from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab  # noqa: E402
+from physc.domains.angrybirds.catalogue import by_prefab, extent  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
 from physc.domains.angrybirds.world import (  # noqa: E402
@@ -39,8 +39,7 @@ def _outline(obj: LevelObject):
     angle = math.radians(obj.rotation or 0.0)
     cos, sin = math.cos(angle), math.sin(angle)
     if catalogue.kind == "platform":
-        w = PLATFORM_BASE * (obj.scale_x if obj.scale_x is not None else 1.0) / 2
-        h = PLATFORM_BASE * (obj.scale_y if obj.scale_y is not None else 1.0) / 2
+        w, h = (size / 2 for size in extent(obj))
         points = ((-w, -h), (w, -h), (w, h), (-w, h))
     elif catalogue.round:
         return patches.Circle((obj.x, obj.y), catalogue.width / 2)

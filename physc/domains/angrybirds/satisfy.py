@@ -31,11 +31,12 @@ import attrs
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlap_depth
 from physc.compiler.qsr_evaluate import five_points, holds
-from physc.domains.angrybirds.actions import candidate_shots, extent
+from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.catalogue import (
     PLATFORM_BASE,
     PLATFORM_THICKNESS,
     by_prefab,
+    extent,
     shape,
 )
 from physc.domains.angrybirds.fidelity import Fidelity, fidelity
