@@ -16,7 +16,6 @@ measurement does not depend on which process made it, or in what order.
 
 from __future__ import annotations
 
-import math
 import random
 
 import numpy as np
@@ -86,7 +85,3 @@ def accidental(level: Level, solution_target: str) -> tuple[float, int]:
                 trace = Game(level).simulate(Shot(target=(x, y), trajectory=trajectory), SECONDS, settle_after_solved=0.0)
                 solved += trace.solved
     return (solved / plays if plays else 0.0), plays
-
-
-def finite(value: float) -> float | None:
-    return None if value is None or (isinstance(value, float) and math.isnan(value)) else value
