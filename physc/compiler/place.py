@@ -30,6 +30,7 @@ from physc.compiler.concrete_layout import (
 from physc.compiler.difference import Inconsistent
 from physc.compiler.dimension_graphs import DimensionGraphs, point, relation_constraints
 from physc.compiler.geometry import overlap_depth, polygon
+from physc.compiler.qsr import joined
 
 ATTEMPTS = 12
 SEPARATIONS = ("W", "E", "N", "S")
@@ -68,7 +69,7 @@ class Place:
         for _attempt in range(self.attempts):
             centres = self._sample(systems, bodies, rng)
             placed = {b.name: b.geometry.points(*centres[b.name]) for b in bodies}
-            clash = self._overlap(bodies, placed)
+            clash = self._overlap(bodies, placed, joined(graphs.conjunction))
             if clash is not None:
                 a, b = clash
                 options = list(SEPARATIONS)
@@ -93,9 +94,11 @@ class Place:
         return None
 
     @staticmethod
-    def _overlap(bodies: list[Body], placed) -> tuple[str, str] | None:
+    def _overlap(bodies: list[Body], placed, joints) -> tuple[str, str] | None:
         solid = [b for b in bodies if b.concrete != "ground"]
         for first, second in itertools.combinations(solid, 2):
+            if frozenset((first.name, second.name)) in joints:
+                continue
             if overlap_depth(polygon(placed[first.name]), polygon(placed[second.name])) > 1e-6:
                 return first.name, second.name
         return None

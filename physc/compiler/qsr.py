@@ -149,3 +149,11 @@ IN_DIRECTION = {
 LOCATED_FAR = {d: tuple("Far" + r for r in rs) for d, rs in IN_DIRECTION.items()}
 ON_LOCATION = {"left": ("MeetDuringW",), "centre": ("MeetN",), "right": ("MeetDuringE",)}
 TOUCHING = {"upperLeft": ("MeetNW",), "centreLeft": ("MeetW",), "lowerLeft": ("MeetSW",)}
+JOINS = frozenset(r for rs in TOUCHING.values() for r in rs)
+
+
+def joined(relations) -> frozenset[frozenset[str]]:
+    """The pairs of objects joined edge to edge (`touching`). Two joined platforms at
+    different angles share a point of their top edges, so their boxes overlap by up to
+    their thickness below the joint (a mitred joint): the one overlap that is allowed."""
+    return frozenset(frozenset((r.a, r.b)) for r in relations if r.relation in JOINS)

@@ -1,7 +1,8 @@
 """Choosing concrete game objects, materials and shapes for a layout graph.
 
 Every choice is drawn from the seeded generator handed in, so the same seed gives
-the same level. Platforms get lengths by role: a surface that something rolls or
+the same level. Concrete objects are drawn with physics-aware preferences
+(preferences.py). Platforms get lengths by role: a surface that something rolls or
 slides on is long enough to gain speed on; a support is short. An inclined
 surface that something rolls or slides on declines towards the motion (10° to
 25°); any other inclined surface (for a bounce) tilts 15° to 40° either way.
@@ -15,6 +16,7 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION, LayoutGraph
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
+from physc.domains.angrybirds.preferences import choose_concrete
 from physc.domains.angrybirds.world import (
     BIRD_REST,
     GROUND_TOP,
@@ -42,7 +44,7 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random) -> 
     for edge in graph.edges:
         if edge.term == ON_LOCATION:
             carried.setdefault(edge.b, []).append(edge.a)
-    concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
+    concrete = choose_concrete(scenario, graph, rng)
     bodies = {}
     # Objects first: a platform's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: shape(concrete[n.name]).kind == "platform"):

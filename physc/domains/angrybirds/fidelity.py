@@ -39,9 +39,10 @@ class Fidelity:
 
     @property
     def score(self) -> tuple:
-        """Higher is better: more of the sequence, then solved, then no violations, then
-        nearer to the next interaction."""
-        return (self.matched, self.solved, -len(self.violations), round(self.progress, 3))
+        """Higher is better: more of the sequence, then fewer broken restrictions, then
+        solved, then nearer to the next interaction. (A pig destroyed by a forbidden hit
+        is no progress.)"""
+        return (self.matched, -len(self.violations), self.solved, round(self.progress, 3))
 
 
 def matches(declared: TermIR, found: Interaction) -> bool:

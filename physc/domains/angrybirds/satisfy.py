@@ -30,6 +30,7 @@ import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlap_depth
+from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.catalogue import (
@@ -153,8 +154,11 @@ class Satisfier:
             if min(xs) < area.left - 1e-6 or max(xs) > area.right + 1e-6 or min(ys) < area.bottom - 1e-6 or max(ys) > area.top + 1e-6:
                 return False
         names = list(placed)
+        joints = joined(self.relations)
         for i, first in enumerate(names):
             for second in names[i + 1 :]:
+                if frozenset((first, second)) in joints:
+                    continue
                 if overlap_depth(corners[first], corners[second]) > 1e-4:
                     return False
         return True
@@ -171,6 +175,8 @@ class Satisfier:
             return
         declared = self.scenario.interactions[index]
         previous = [a for a in attempts if a.fidelity.matched >= index]
+        if len(self.obstacles) < OBSTACLES:
+            yield from self.obstruct_flight(best)
         if declared.name == "fall" and not any(
             i.name == "fall" and i.objects[0] == declared.objects[0] for i in best.trace.interactions
         ):
@@ -369,9 +375,21 @@ class Satisfier:
 
     def block(self, offending: Attempt, target: str, solution: Attempt) -> bool:
         """Put a platform across the offending flight, a little before it reaches the target."""
-        trace = offending.trace
+        for name, candidate in self.obstacles_across(offending.trace, target):
+            check = self.simulate(solution.shot, candidate)
+            if not check.fidelity.valid:
+                continue
+            self.adopt(candidate)
+            return True
+        return False
+
+    def obstacles_across(self, trace: Trace, target: str, before: float | None = None):
+        """(name, level) with a platform across the bird's flight, a little before it first
+        touches `target` (after `before`, if given): further back at each try."""
         bird = trace.states[:, trace.index(BIRD), :]
-        hit_time = next(c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target})
+        hit_time = next((c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target} and (before is None or c.time >= before)), None)
+        if hit_time is None:
+            return
         hit_step = min(int(round(hit_time / trace.dt)) - 1, len(bird) - 1)
         for back in (0.9, 1.3, 1.8, 2.4, 3.0):
             # walk back along the flight by about `back` units
@@ -387,16 +405,32 @@ class Satisfier:
             name = f"obstacle{len(self.obstacles) + 1}"
             platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(OBSTACLE_LENGTH / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
             candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
-            if not self.consistent(candidate):
-                continue
-            check = self.simulate(solution.shot, candidate)
-            if not check.fidelity.valid:
-                continue
-            self.level = candidate
-            self.roles[name] = "obstacle"
-            self.obstacles.append(name)
-            return True
-        return False
+            if self.consistent(candidate):
+                yield name, candidate
+
+    def adopt(self, level: Level) -> None:
+        """Make `level` the current one, registering any obstacle it adds."""
+        for obj in level.objects:
+            if obj.name not in self.roles:
+                self.roles[obj.name] = "obstacle"
+                self.obstacles.append(obj.name)
+        self.level = level
+
+    def bird_violations(self, attempt: Attempt):
+        """cannotHit(bird, x, …) broken by the bird's own flight while the sequence runs."""
+        return [
+            v.interaction
+            for v in attempt.trace.violations
+            if v.interaction.name == "hit" and v.interaction.objects[0] == BIRD and v.restriction.startswith("cannotHit")
+        ]
+
+    def obstruct_flight(self, attempt: Attempt):
+        """pathObstructed during repair: the best candidate's bird breaks a cannotHit on its
+        way, so a platform goes across that flight (the chain ahead must still happen)."""
+        for hit in self.bird_violations(attempt)[:1]:
+            target = hit.objects[1]
+            for name, candidate in self.obstacles_across(attempt.trace, target, before=hit.time - 0.05):
+                yield f"pathObstructed(bird, {target}): {name} across the bird's flight", candidate
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt) -> tuple[int, int]:
@@ -436,6 +470,7 @@ class Satisfier:
                 trial_score = max((a.fidelity.score for a in trial), default=None)
                 if trial_score is not None and trial_score >= score and description not in self.repairs:
                     self.repairs.append(description)
+                    self.adopt(level)
                     attempts, score = trial, trial_score
                     break
                 self.level = saved

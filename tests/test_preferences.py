@@ -1,0 +1,83 @@
+"""Physics-aware preferences for concrete objects, and the repairs that build on them."""
+
+from __future__ import annotations
+
+import random
+
+import attrs
+from middle_end import DOMAIN, paper_scenarios, pipeline, scenario_from_text
+
+from physc.compiler.concrete_layout import ChosenRelation
+from physc.compiler.geometry import Geometry, overlap_depth, polygon
+from physc.compiler.infer_layout import InferLayout
+from physc.compiler.qsr import joined
+from physc.domains.angrybirds.actions import candidate_shots
+from physc.domains.angrybirds.fidelity import fidelity
+from physc.domains.angrybirds.preferences import choose_concrete, narrowed
+from physc.domains.angrybirds.satisfy import Attempt, Satisfier
+
+
+def draws(name: str, seeds=range(40)):
+    scenario = paper_scenarios()[name]
+    graph = InferLayout(DOMAIN).run(scenario)
+    return [choose_concrete(scenario, graph, random.Random(seed)) for seed in seeds]
+
+
+def test_a_pig_that_a_block_destroys_is_small():
+    assert {d["pig"] for d in draws("R")} == {"pigSmall"}
+    # The bird may still meet either pig.
+    assert {d["pig"] for d in draws("SF")} == {"pigSmall", "pigMedium"}
+
+
+def test_a_slider_is_a_square():
+    assert {d["sBlock"] for d in draws("S")} == {"squareHole"}
+
+
+def test_round_blocks_in_a_chain_share_their_size():
+    chains = draws("RRR")
+    assert all(d["rBlock1"] == d["rBlock2"] == d["rBlock3"] for d in chains)
+    assert {d["rBlock1"] for d in chains} == {"circle", "circleSmall"}
+
+
+def test_declared_objects_are_kept():
+    scenario = scenario_from_text(
+        "scenario X {\n  objects {\n    sBlock: slidableBlock = triangleHole\n  }\n"
+        "  interactions {\n    hit(bird, sBlock, left) > slide(sBlock, hSurface, right) > hit(sBlock, pig, left) > destroy(sBlock, pig)\n  }\n}\n"
+    )
+    graph = InferLayout(DOMAIN).run(scenario)
+    assert {choose_concrete(scenario, graph, random.Random(s))["sBlock"] for s in range(10)} == {"triangleHole"}
+    assert narrowed(("a", "b"), ("c",)) == ("a", "b")
+
+
+def test_joined_platforms_may_overlap_at_the_joint_and_nothing_else_may():
+    flat = Geometry(2.0, 0.32, 0.0)
+    ramp = Geometry(2.0, 0.32, -20.0)
+    flat_points = flat.points(0.0, 0.0)
+    # The ramp's upper-left point on the flat platform's upper-right point.
+    ur = flat_points["ur"]
+    probe = ramp.points(0.0, 0.0)
+    dx, dy = ur[0] - probe["ul"][0], ur[1] - probe["ul"][1]
+    ramp_points = ramp.points(dx, dy)
+    assert overlap_depth(polygon(flat_points), polygon(ramp_points)) > 1e-3  # a mitred joint
+    pairs = joined([ChosenRelation("MeetNW", "a", "b", ""), ChosenRelation("W", "a", "c", "")])
+    assert pairs == {frozenset(("a", "b"))}
+
+
+def test_a_bird_breaking_cannot_hit_gets_a_platform_across_its_flight():
+    scenario = paper_scenarios()["R"]  # cannotHit(bird, pig, any)
+    offending = None
+    for seed in range(10):  # the first layout whose pig a direct shot reaches
+        satisfier = Satisfier(DOMAIN, scenario, pipeline("R", seed=seed).placed.layout)
+        for label, shot in candidate_shots(satisfier.objects["pig"]):
+            attempt = satisfier.simulate(shot)
+            if satisfier.bird_violations(attempt):
+                offending = attrs.evolve(attempt, label=label)
+                break
+        if offending is not None:
+            break
+    assert offending is not None, "a shot at the pig breaks cannotHit"
+    proposals = list(satisfier.obstruct_flight(offending))
+    assert proposals and all(d.startswith("pathObstructed(bird, pig)") for d, _ in proposals)
+    cleared = [satisfier.simulate(offending.shot, level) for _, level in proposals]
+    assert any(not satisfier.bird_violations(a) for a in cleared)
+    assert isinstance(cleared[0], Attempt) and fidelity(scenario, cleared[0].trace).total == 4
