@@ -29,10 +29,6 @@ def test_a_pig_that_a_block_destroys_is_small():
     assert {d["pig"] for d in draws("SF")} == {"pigSmall", "pigMedium"}
 
 
-def test_a_slider_is_a_square():
-    assert {d["sBlock"] for d in draws("S")} == {"squareHole"}
-
-
 def test_round_blocks_in_a_chain_share_their_size():
     chains = draws("RRR")
     assert all(d["rBlock1"] == d["rBlock2"] == d["rBlock3"] for d in chains)

@@ -9,16 +9,16 @@ physics favours:
 
 * a pig that a block must destroy is a small pig: life 1 against the medium pig's
   15, and a block arriving at the end of a chain has little momentum left;
-* a slider is a square: a triangle tips over instead of sliding;
 * a round block that hits another round block gives it its own size: between equal
   circles on one surface the impulse passes through both centres, level with the
   surface, while a small circle hitting a large one pushes it upwards and it hops
   (and then lands on its own target from above).
 
 A declared concrete object (`rBlock: rollableBlock = circle`) is always kept: the
-preferences only choose among what the scenario allows. Materials stay a free
-draw: measured on the 6- and 8-interaction scenarios, fixing them (stone rollers,
-ice sliders, masses falling along the chain) did not help (docs/generation.md).
+preferences only choose among what the scenario allows. Materials and slider
+shapes stay a free draw: fixing them (stone rollers, ice sliders, masses falling
+along the chain, square sliders) did not help, and square sliders alone cost the
+S scenario 4 of 30 tasks (docs/generation.md).
 """
 
 from __future__ import annotations
@@ -36,8 +36,6 @@ def preferred_concrete(scenario: ScenarioIR) -> dict[str, tuple[str, ...]]:
     for term in scenario.interactions:
         if term.name == "destroy" and term.objects[0] != BIRD:
             out[term.objects[1]] = ("pigSmall",)
-        elif term.name == "slide":
-            out[term.objects[0]] = ("squareHole",)
     return out
 
 
