@@ -1,24 +1,16 @@
-"""Physics-aware preferences for the concrete objects of a scenario.
+"""A physics-aware preference for the concrete objects of a scenario.
 
-The object grammar lets `rBlock` be any rollable object and `pig` any pig, but not
-every choice can carry a chain of interactions through. Drawing such choices and
-repairing them later by simulation wastes layouts, and for chains of six or eight
-interactions the odds of a working draw at every link multiply to almost nothing.
-So, where the scenario leaves room, the draw is narrowed to what Science Birds'
-physics favours:
+The object grammar lets each `rBlock` be a circle or a circleSmall, independently.
+But a small circle hitting a large one at rest on the same surface pushes it
+upwards, off the surface: it hops, and then comes down on its own target from
+above instead of hitting it from the side, and the chain breaks. Between equal
+circles the impulse passes through both centres, level with the surface. So a
+round block hit by a round block takes its hitter's size, where the scenario
+allows it; a declared concrete object (`rBlock: rollableBlock = circle`) is kept.
 
-* a pig that a block must destroy is a small pig: life 1 against the medium pig's
-  15, and a block arriving at the end of a chain has little momentum left;
-* a round block that hits another round block gives it its own size: between equal
-  circles on one surface the impulse passes through both centres, level with the
-  surface, while a small circle hitting a large one pushes it upwards and it hops
-  (and then lands on its own target from above).
-
-A declared concrete object (`rBlock: rollableBlock = circle`) is always kept: the
-preferences only choose among what the scenario allows. Materials and slider
-shapes stay a free draw: fixing them (stone rollers, ice sliders, masses falling
-along the chain, square sliders) did not help, and square sliders alone cost the
-S scenario 4 of 30 tasks (docs/generation.md).
+Other preferences were measured and dropped (docs/generation.md): a small pig for
+block attackers (R needed 10.9 instead of 7.6 layouts per task), square sliders
+(S lost 4 of 30 tasks), and fixed materials along a chain (no gain).
 """
 
 from __future__ import annotations
@@ -26,23 +18,7 @@ from __future__ import annotations
 from physc.compiler.layout_graph import LayoutGraph
 from physc.dsl.scenario import ScenarioIR
 
-BIRD = "bird"
 ROUND = ("circle", "circleSmall")
-
-
-def preferred_concrete(scenario: ScenarioIR) -> dict[str, tuple[str, ...]]:
-    """The concrete objects preferred for some of the scenario's objects."""
-    out: dict[str, tuple[str, ...]] = {}
-    for term in scenario.interactions:
-        if term.name == "destroy" and term.objects[0] != BIRD:
-            out[term.objects[1]] = ("pigSmall",)
-    return out
-
-
-def narrowed(allowed: tuple[str, ...], preferred: tuple[str, ...]) -> tuple[str, ...]:
-    """The preferred among the allowed, or all allowed when none of them is preferred."""
-    both = tuple(x for x in allowed if x in preferred)
-    return both or allowed
 
 
 def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
@@ -58,8 +34,7 @@ def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[s
 
 
 def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, str]:
-    """A concrete object for every node of the layout graph, drawn with the preferences."""
-    preferred = preferred_concrete(scenario)
-    concrete = {node.name: rng.choice(narrowed(node.concrete, preferred.get(node.name, ()))) for node in graph.nodes}
+    """A concrete object for every node of the layout graph, drawn with the preference."""
+    concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
     match_round_sizes(scenario, graph, concrete)
     return concrete
