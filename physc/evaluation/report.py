@@ -76,7 +76,7 @@ def summarise(records: list[dict]) -> dict:
 def markdown(summary: dict, command: str, seconds: float) -> str:
     counts = sorted(summary["interactions"])
     names = {2: "Two", 4: "Four", 6: "Six", 8: "Eight"}
-    lines = ["# Evaluation results", "", f"Command: `{command}`  ", f"Wall time: {seconds:.0f} s", ""]
+    lines = ["# Evaluation results", "", f"Command: `{command}`  ", f"Wall time of this invocation: {seconds:.0f} s (a resumed run counts only the tasks it ran)", ""]
     lines += ["## Per interaction count (physc; the paper in brackets)", ""]
     lines.append("| Evaluation metric | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")
     lines.append("|---|" + "---|" * len(counts))
