@@ -10,6 +10,7 @@ offset, so every QSR over points is a set of difference constraints over centres
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import attrs
@@ -63,3 +64,12 @@ def overlap_depth(first: list[tuple[float, float]], second: list[tuple[float, fl
                 return 0.0
             depth = min(depth, gap)
     return depth
+
+
+def overlapping_pair(outlines: dict, tolerance: float, allowed=frozenset()) -> tuple[str, str] | None:
+    """The first pair of named outlines (in order) that overlap by more than `tolerance`;
+    pairs in `allowed` (frozensets of two names) may overlap."""
+    for (a, first), (b, second) in itertools.combinations(outlines.items(), 2):
+        if frozenset((a, b)) not in allowed and overlap_depth(first, second) > tolerance:
+            return a, b
+    return None

@@ -18,7 +18,6 @@ search moves on to the next conjunction.
 
 from __future__ import annotations
 
-import itertools
 import random
 
 from physc.compiler.concrete_layout import (
@@ -29,7 +28,7 @@ from physc.compiler.concrete_layout import (
 )
 from physc.compiler.difference import Inconsistent
 from physc.compiler.dimension_graphs import DimensionGraphs, point, relation_constraints
-from physc.compiler.geometry import overlap_depth, polygon
+from physc.compiler.geometry import overlapping_pair, polygon
 from physc.compiler.qsr import joined
 
 ATTEMPTS = 12
@@ -95,13 +94,8 @@ class Place:
 
     @staticmethod
     def _overlap(bodies: list[Body], placed, joints) -> tuple[str, str] | None:
-        solid = [b for b in bodies if b.concrete != "ground"]
-        for first, second in itertools.combinations(solid, 2):
-            if frozenset((first.name, second.name)) in joints:
-                continue
-            if overlap_depth(polygon(placed[first.name]), polygon(placed[second.name])) > 1e-6:
-                return first.name, second.name
-        return None
+        outlines = {b.name: polygon(placed[b.name]) for b in bodies if b.concrete != "ground"}
+        return overlapping_pair(outlines, 1e-6, joints)
 
     @staticmethod
     def _layout(domain_name, graphs, bodies, centres, separations, deferred) -> ConcreteLayout:

@@ -29,7 +29,7 @@ from collections import Counter
 import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
-from physc.compiler.geometry import overlap_depth
+from physc.compiler.geometry import overlapping_pair
 from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import candidate_shots
@@ -153,15 +153,7 @@ class Satisfier:
             ys = [c[1] for c in corners[name]]
             if min(xs) < area.left - 1e-6 or max(xs) > area.right + 1e-6 or min(ys) < area.bottom - 1e-6 or max(ys) > area.top + 1e-6:
                 return False
-        names = list(placed)
-        joints = joined(self.relations)
-        for i, first in enumerate(names):
-            for second in names[i + 1 :]:
-                if frozenset((first, second)) in joints:
-                    continue
-                if overlap_depth(corners[first], corners[second]) > 1e-4:
-                    return False
-        return True
+        return overlapping_pair(corners, 1e-4, joined(self.relations)) is None
 
     # ---- repairs: each proposes changed levels; the satisfier keeps what simulates better ----
     def with_objects(self, changed: dict[str, LevelObject]) -> Level:
