@@ -13,7 +13,9 @@ from physc.compiler.pipeline import Pipeline
 from physc.domains.angrybirds.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.level_xml import read_level
+from physc.domains.angrybirds.stability import stability
 
 # The scenarios generation handles today (docs/results.md has the rates of all 16).
 GENERATED = ["SF", "SFTB", "SFLB", "R", "S", "B", "F"]
@@ -34,6 +36,16 @@ def test_paper_scenario_compiles_and_validates(name):
     trace = Game(level).play(shot, 9.0, restrictions=scenario.restrictions, redirects=redirects)
     result = fidelity(scenario, trace)
     assert result.valid, (result, trace.sequence())
+    assert stability(level)[0]  # left alone, it stands
+
+
+def test_stability_sees_a_rolling_circle():
+    task = Pipeline(DOMAIN, paper_scenarios()["SF"], seed=0).task
+    assert stability(task.level)[0]
+    ramp = LevelObject("Platform", "Platform", 6.0, -1.0, 20.0, scale_x=4.0, scale_y=0.5, name="ramp")
+    ball = LevelObject("Block", "Circle", 6.0, -0.4, 0.0, "wood", name="ball")
+    stable, shift = stability(attrs.evolve(task.level, objects=task.level.objects + (ramp, ball)))
+    assert not stable and shift > 0.05
 
 
 def test_compile_writes_level_task_and_picture(tmp_path):

@@ -62,7 +62,7 @@ def test_a_bird_breaking_cannot_hit_gets_a_platform_across_its_flight():
         satisfier = Satisfier(DOMAIN, scenario, pipeline("R", seed=seed).placed.layout)
         for label, shot in candidate_shots(satisfier.objects["pig"]):
             attempt = satisfier.simulate(shot)
-            if satisfier.bird_violations(attempt):
+            if satisfier.bird_intrusions(attempt):
                 offending = attrs.evolve(attempt, label=label)
                 break
         if offending is not None:
@@ -71,5 +71,5 @@ def test_a_bird_breaking_cannot_hit_gets_a_platform_across_its_flight():
     proposals = list(satisfier.obstruct_flight(offending))
     assert proposals and all(d.startswith("pathObstructed(bird, pig)") for d, _ in proposals)
     cleared = [satisfier.simulate(offending.shot, level) for _, level in proposals]
-    assert any(not satisfier.bird_violations(a) for a in cleared)
+    assert any(not satisfier.bird_intrusions(a) for a in cleared)
     assert isinstance(cleared[0], Attempt) and fidelity(scenario, cleared[0].trace).total == 4

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import random
 
-import numpy as np
 
 from physc.domains.angrybirds.actions import points_of_interest
 from physc.domains.angrybirds.fidelity import fidelity
@@ -26,22 +25,12 @@ from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
+from physc.domains.angrybirds.stability import stability  # noqa: F401  (the evaluation's metric)
 from physc.domains.angrybirds.world import reachable
 
-STABLE_LIMIT = 0.05
 NOISY_REPLAYS = 10
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 SECONDS = 10.0
-
-
-def stability(level: Level) -> tuple[bool, float]:
-    """(stable, the largest displacement) over 10 s with no action."""
-    trace = Game(level).simulate(None, SECONDS, stop_at_rest=False)
-    states = trace.states
-    if not states.shape[1]:
-        return True, 0.0
-    shift = float(np.nanmax(np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1])))
-    return shift <= STABLE_LIMIT and not trace.destructions, shift
 
 
 def _play(level: Level, shot: Shot, scenario):

@@ -2,9 +2,10 @@
 
 A random number of blocks (0 to MAX_DISTRACTORS), of random types and materials,
 each resting on a support: the ground, or the free part of a horizontal
-platform. None may overlap anything, and the intended solution must still
-realise the declared sequence with every distractor in place; a distractor that
-breaks it is taken away again. Pigs are never distractors: every pig must be
+platform. None may overlap anything, the level must still stand (nothing moves
+when left alone), and the intended solution must still realise the declared
+sequence with every distractor in place; a distractor that breaks either is taken
+away again. Pigs are never distractors: every pig must be
 destroyed for the task to be solved.
 """
 
@@ -16,6 +17,7 @@ import attrs
 
 from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.level import LevelObject
+from physc.domains.angrybirds.stability import stability
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
 MAX_DISTRACTORS = 3
@@ -53,6 +55,8 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
                 continue
             if not satisfier.simulate(solution.shot, candidate).fidelity.valid:
                 continue
+            if not stability(candidate)[0]:
+                continue  # it would roll or topple on its own
             if satisfier.solves_by_shooting_at(obj, candidate):
                 continue  # a distraction must not be a way to solve the task
             satisfier.level = candidate

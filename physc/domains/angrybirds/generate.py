@@ -10,6 +10,7 @@ from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.task import Solution
 from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.satisfy import Satisfier
+from physc.domains.angrybirds.stability import stability
 from physc.dsl.scenario import ScenarioIR
 
 
@@ -35,8 +36,8 @@ class Outcome:
 def satisfy(domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool) -> Outcome:
     satisfier = Satisfier(domain, scenario, layout)
     found = satisfier.run()
-    if found is None:
-        return Outcome(False, satisfier.simulations)
+    if found is None or not stability(satisfier.level)[0]:
+        return Outcome(False, satisfier.simulations)  # no solution, or the task does not stand
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).

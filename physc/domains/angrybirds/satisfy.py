@@ -27,6 +27,7 @@ import random
 from collections import Counter
 
 import attrs
+import numpy as np
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlapping_pair
@@ -41,7 +42,7 @@ from physc.domains.angrybirds.catalogue import (
     shape,
 )
 from physc.domains.angrybirds.fidelity import Fidelity, fidelity
-from physc.domains.angrybirds.game import BIRD, Game
+from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
@@ -51,14 +52,16 @@ from physc.dsl.scenario import ScenarioIR
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
-REPAIR_ROUNDS = 16  # simulated repair proposals per layout
+REPAIR_ROUNDS = 16  # simulated repair proposals per layout (per 4 interactions for longer chains)
 PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
 OBSTACLE_LENGTH = 1.4
+ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 ROBUSTNESS_REPLAYS = 6  # replays under the evaluation's noise model (angle σ 0.1°, positions σ 0.005)
 ROBUST_ENOUGH = 6  # of them must realise the sequence, or the layout is given up
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
+MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -78,6 +81,12 @@ class Satisfied:
     repairs: tuple[str, ...]
     obstacles: tuple[str, ...]
     simulations: int
+
+
+def _span(obj: LevelObject) -> tuple[float, float]:
+    """The leftmost and rightmost x of an object's outline box."""
+    xs = [p.real for k, p in five_points(obj.x, obj.y, *extent(obj), obj.rotation or 0.0).items() if k != "c"]
+    return min(xs), max(xs)
 
 
 def _placed(obj: LevelObject, role: str) -> PlacedObject:
@@ -102,6 +111,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
+        self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
     # ---- the level ---------------------------------------------------------------------
     @property
@@ -173,11 +183,19 @@ class Satisfier:
             i.name == "fall" and i.objects[0] == declared.objects[0] for i in best.trace.interactions
         ):
             yield from self.push_off(declared, index)
+        elif declared.name == "hit" and index == 0:
+            yield from self.expose(declared)
         elif declared.name in ("hit", "fall") and index > 0:
+            before = self.scenario.interactions[index - 1]
+            if declared.name == "hit":
+                yield from self.close_gap(declared.objects[0], declared.objects[1], best, index)
             yield from self.lie_on_path(declared, previous, index)
+            if before.name == "bounce" and before.objects[0] == declared.objects[0]:
+                yield from self.turn(before.objects[1], mirror=True)  # it bounced, but away from the target
         elif declared.name == "destroy":
             yield from self.strengthen(declared)
         elif declared.name in ("roll", "slide"):
+            yield from self.close_gap(declared.objects[0], declared.objects[1], best, index)
             yield from self.set_moving(declared, index)
         elif declared.name == "bounce":
             yield from self.turn(declared.objects[1])
@@ -216,6 +234,82 @@ class Satisfier:
                     yield f"liesOnPath({target}, {actor}): {target} to ({moved[target].x:.2f}, {moved[target].y:.2f})", candidate
                     if offered >= PLACES:
                         return
+
+    def close_gap(self, mover: str, goal: str, attempt: Attempt, index: int):
+        """`mover` came to rest short of `goal` (the object it should hit, the surface it
+        should move on): the world ahead of it comes closer. Everything beyond a cut between
+        the two shifts towards the mover, and the flat platforms across the cut get shorter,
+        so joints and supports stay as they were. Offered so that the goal begins a little
+        before where the mover stopped (it arrives still moving)."""
+        objects = self.objects
+        trace = attempt.trace
+        heading = self.heading_of(mover, index)
+        if mover not in objects or goal not in objects or mover not in trace.names or heading is None:
+            return
+        sign = 1.0 if heading == "right" else -1.0
+        since = attempt.fidelity.times[index - 1] if index else 0.0
+        path = trace.states[int(since / trace.dt) :, trace.index(mover), 0]
+        path = path[~np.isnan(path)]
+        if not len(path):
+            return
+        reach = float(np.max(sign * path)) + extent(objects[mover])[0] / 2  # the mover's front, along the heading
+        start = min(sign * x for x in _span(objects[goal]))  # the goal's near end, along the heading
+        gap = start - reach
+        if gap < -extent(objects[goal])[0] / 2:
+            return  # it got there (too slowly, or from the wrong side): not a matter of distance
+        # (a round mover may overlap a round goal's box and still stop short of its outline)
+        cut = min(reach + max(gap, 0.0) / 2, start - 1e-3)
+        for overlap in (0.3, 0.8):
+            shift = -(gap + overlap)  # along the heading
+            changed = {}
+            for name, obj in objects.items():
+                near, far = sorted(sign * x for x in _span(obj))
+                if name == BIRD or far <= cut:
+                    continue
+                if near >= cut:
+                    changed[name] = attrs.evolve(obj, x=round(obj.x + sign * shift, 5))
+                elif obj.element == "Platform" and not obj.rotation and extent(obj)[0] + shift >= MIN_PLATFORM:
+                    length = extent(obj)[0] + shift
+                    changed[name] = attrs.evolve(obj, x=round(obj.x + sign * shift / 2, 5), scale_x=round(length / PLATFORM_BASE, 5))
+                else:
+                    changed = {}
+                    break
+            if changed:
+                candidate = self.with_objects(changed)
+                if self.consistent(candidate, frozenset(changed)):
+                    yield f"{mover} stopped short of {goal}: the world beyond {gap + overlap:.2f} closer", candidate
+
+    def expose(self, declared):
+        """The first hit did not happen from an allowed side: the target's own support
+        reaches out beyond it on that side and shields it from the bird, so it gets shorter."""
+        target = declared.objects[1]
+        objects = self.objects
+        support = self.own_support.get(target)
+        if target not in objects or support not in objects or objects[support].rotation:
+            return
+        left, right = _span(objects[target])
+        s_left, s_right = _span(objects[support])
+        for side in declared.directions:
+            if side == "left" and s_left < left - 0.1:
+                new_left, new_right = left - 0.05, s_right
+            elif side == "right" and s_right > right + 0.1:
+                new_left, new_right = s_left, right + 0.05
+            else:
+                continue
+            if new_right - new_left < MIN_PLATFORM:
+                continue
+            platform = objects[support]
+            changed = {support: attrs.evolve(platform, x=round((new_left + new_right) / 2, 5), scale_x=round((new_right - new_left) / PLATFORM_BASE, 5))}
+            candidate = self.with_objects(changed)
+            if self.consistent(candidate, frozenset({target, support})):
+                yield f"hit({BIRD}, {target}, {side}): {support} no longer shields {target}", candidate
+
+    def heading_of(self, mover: str, index: int) -> str | None:
+        """The direction `mover` last rolled or slid in, before interaction `index`."""
+        moves = [t for t in self.scenario.interactions[: index + 1] if t.name in ("roll", "slide") and t.objects[0] == mover]
+        if not moves or moves[-1].directions[0] not in ("left", "right"):
+            return None
+        return moves[-1].directions[0]
 
     def move(self, name: str, x: float, y: float) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y): with its own support;
@@ -323,12 +417,14 @@ class Satisfier:
             if self.consistent(candidate, frozenset(moved)):
                 yield f"{mover} next to {surface}", candidate
 
-    def turn(self, name: str):
+    def turn(self, name: str, mirror: bool = False):
+        """The bounce surface turned a little either way (and, with `mirror`, tilted the
+        other way: a bounce off its underside then goes the other way)."""
         obj = self.objects.get(name)
         if obj is None or obj.element != "Platform":
             return
-        for step in (-8.0, 8.0, -15.0, 15.0):
-            angle = (obj.rotation or 0.0) + step
+        rotation = obj.rotation or 0.0
+        for angle in [rotation + step for step in (-8.0, 8.0, -15.0, 15.0)] + ([-rotation] if mirror else []):
             if not 5 <= abs(angle) <= 60:
                 continue
             candidate = self.with_objects({name: attrs.evolve(obj, rotation=round(angle, 3))})
@@ -408,21 +504,84 @@ class Satisfier:
                 self.obstacles.append(obj.name)
         self.level = level
 
-    def bird_violations(self, attempt: Attempt):
-        """cannotHit(bird, x, …) broken by the bird's own flight while the sequence runs."""
-        return [
-            v.interaction
+    def bird_intrusions(self, attempt: Attempt):
+        """The bird's hits, while the sequence runs, that break a cannotHit restriction or
+        touch a block or pig the sequence never has the bird touch (after its own work the
+        bird hops on along the chain and knocks its members out of turn), earliest first."""
+        declared = {o for t in self.scenario.interactions if t.objects[0] == BIRD for o in t.objects[1:]}
+        objects = self.objects
+        fidelity = attempt.fidelity
+        until = fidelity.times[-1] if fidelity.complete else math.inf
+        broken = {
+            (v.interaction.objects, v.interaction.time)
             for v in attempt.trace.violations
-            if v.interaction.name == "hit" and v.interaction.objects[0] == BIRD and v.restriction.startswith("cannotHit")
+            if v.interaction.objects[0] == BIRD and v.restriction.startswith("cannotHit")
+        }
+        return [
+            hit
+            for hit in attempt.trace.interactions
+            if hit.name == "hit"
+            and hit.objects[0] == BIRD
+            and hit.time <= until
+            and (
+                (hit.objects, hit.time) in broken
+                or (hit.objects[1] not in declared and hit.objects[1] in objects and objects[hit.objects[1]].element != "Platform")
+            )
         ]
 
     def obstruct_flight(self, attempt: Attempt):
-        """pathObstructed during repair: the best candidate's bird breaks a cannotHit on its
-        way, so a platform goes across that flight (the chain ahead must still happen)."""
-        for hit in self.bird_violations(attempt)[:1]:
+        """pathObstructed during repair: the best candidate's bird breaks a cannotHit, or
+        knocks a member of the chain out of turn, so a platform goes across that flight
+        (the chain ahead must still happen)."""
+        for hit in self.bird_intrusions(attempt)[:1]:
             target = hit.objects[1]
             for name, candidate in self.obstacles_across(attempt.trace, target, before=hit.time - 0.05):
                 yield f"pathObstructed(bird, {target}): {name} across the bird's flight", candidate
+
+    # ---- accidental solutions ------------------------------------------------------------------
+    def accidental_shot(self, target: str) -> Attempt | None:
+        """A shot at a point of interest of a block or pig other than the solution's target
+        that solves the level (the paper's heuristic agent, on all eight points)."""
+        for obj in self.level.objects:
+            if obj.element not in ("Block", "Pig", "TNT") or obj.name == target:
+                continue
+            for label, shot in candidate_shots(obj):
+                self.simulations += 1
+                trace = Game(self.level).simulate(shot, SECONDS, settle_after_solved=0.0)
+                if trace.solved:
+                    return Attempt(label, shot, trace, None)
+        return None
+
+    def guard_accidents(self, solution: Attempt) -> None:
+        """pathObstructed for shortcuts: a platform across the flight of each shot that solves
+        the level without being the solution, before the bird first touches anything; kept
+        only if the solution still realises the sequence and survives the noisy replays as
+        often as the robustness check demands. A shortcut that cannot be blocked stays."""
+        first = self.first_target()
+        if first is None:
+            return
+        before = self.level
+        added = False
+        for _ in range(ACCIDENT_OBSTACLES):
+            accident = self.accidental_shot(first.name)
+            if accident is None:
+                break
+            touched = next((c for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)), None)
+            if touched is None:
+                break
+            other = touched.b if touched.a == BIRD else touched.a
+            for _, candidate in self.obstacles_across(accident.trace, other):
+                if self.simulate(solution.shot, candidate).fidelity.valid:
+                    self.adopt(candidate)
+                    added = True
+                    break
+            else:
+                break
+        if added and self.robustness(solution)[0] < ROBUST_ENOUGH:
+            for name in [o.name for o in self.level.objects if o.name not in {b.name for b in before.objects}]:
+                self.obstacles.remove(name)
+                self.roles.pop(name, None)
+            self.level = before
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt) -> tuple[int, int]:
@@ -466,11 +625,11 @@ class Satisfier:
                     attempts, score = trial, trial_score
                     break
                 self.level = saved
-                if rounds >= REPAIR_ROUNDS:
+                if rounds >= self.repair_rounds:
                     return None
             else:
                 return None
-            if rounds >= REPAIR_ROUNDS:
+            if rounds >= self.repair_rounds:
                 if not self.working(attempts):
                     return None
         working = self.working(attempts)
@@ -484,6 +643,7 @@ class Satisfier:
             return None
         if not self.obstruct(chosen):
             return None
+        self.guard_accidents(chosen)
         final = self.simulate(chosen.shot)
         if not final.fidelity.valid:
             return None
