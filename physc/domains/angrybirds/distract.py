@@ -4,8 +4,8 @@ A random number of blocks (0 to MAX_DISTRACTORS), of random types and materials,
 each resting on a support: the ground, or the free part of a horizontal
 platform. None may overlap anything, the level must still stand (nothing moves
 when left alone), and the intended solution must still realise the declared
-sequence with every distractor in place; a distractor that breaks either is taken
-away again. Pigs are never distractors: every pig must be
+sequence with every distractor in place, exactly and in the noisy replays of the
+robustness check; a distractor that breaks any of this is taken away again. Pigs are never distractors: every pig must be
 destroyed for the task to be solved.
 """
 
@@ -17,6 +17,7 @@ import attrs
 
 from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.level import LevelObject
+from physc.domains.angrybirds.satisfy import ROBUST_ENOUGH
 from physc.domains.angrybirds.stability import stability
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
@@ -57,6 +58,8 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
                 continue
             if not stability(candidate)[0]:
                 continue  # it would roll or topple on its own
+            if satisfier.robustness(solution, candidate)[0] < ROBUST_ENOUGH:
+                continue  # it makes the solution fragile under noise
             if satisfier.solves_by_shooting_at(obj, candidate):
                 continue  # a distraction must not be a way to solve the task
             satisfier.level = candidate

@@ -584,13 +584,13 @@ class Satisfier:
             self.level = before
 
     # ---- robustness ------------------------------------------------------------------------------
-    def robustness(self, attempt: Attempt) -> tuple[int, int]:
+    def robustness(self, attempt: Attempt, level: Level | None = None) -> tuple[int, int]:
         """How many replays under noise (the evaluation's model) realise the sequence."""
         noise = random.Random(f"robustness/{attempt.label}/{attempt.shot.release_angle():.6f}")
         angle = attempt.shot.release_angle()
         passed = 0
         for _ in range(ROBUSTNESS_REPLAYS):
-            level = jitter(self.level, noise)
+            level = jitter(level or self.level, noise)
             if self.simulate(Shot(angle=angle + noise.gauss(0.0, ANGLE_SIGMA)), level).fidelity.valid:
                 passed += 1
         return passed, ROBUSTNESS_REPLAYS
@@ -633,16 +633,19 @@ class Satisfier:
                 if not self.working(attempts):
                     return None
         working = self.working(attempts)
-        # The first working candidate that noise does not break too often (at most three
-        # are replayed); if none holds up, the next layout is tried.
+        # The first working candidate that noise does not break (at most three are
+        # replayed); if none holds up, the next layout is tried.
         for chosen in working[:3]:
             passed, total = self.robustness(chosen)
             if passed >= ROBUST_ENOUGH:
                 break
         else:
             return None
+        checked = len(self.obstacles)
         if not self.obstruct(chosen):
             return None
+        if len(self.obstacles) > checked and self.robustness(chosen)[0] < ROBUST_ENOUGH:
+            return None  # the obstacles made the solution fragile
         self.guard_accidents(chosen)
         final = self.simulate(chosen.shot)
         if not final.fidelity.valid:

@@ -1,0 +1,117 @@
+"""Repairs of the satisfier that change the world's geometry: close the gap, expose the
+first target, turn a bounce surface over, block shortcuts."""
+
+from __future__ import annotations
+
+import itertools
+
+import attrs
+from middle_end import DOMAIN, paper_scenarios, pipeline
+
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
+from physc.domains.angrybirds.satisfy import Satisfier, _span
+
+
+def satisfier(name: str, seed: int = 0) -> Satisfier:
+    return Satisfier(DOMAIN, paper_scenarios()[name], pipeline(name, seed=seed).placed.layout)
+
+
+def test_close_gap_brings_the_world_beyond_a_stopped_mover_closer():
+    s = satisfier("R")
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    assert best.fidelity.matched >= 2  # the roll happened: its time starts the mover's path
+    # Push the pig 2 units further away along a longer surface, so the mover stops short.
+    pig = s.objects["pig"]
+    support = s.support_of["pig"]
+    surface = s.objects[support]
+    longer = attrs.evolve(surface, x=surface.x + 1.0, scale_x=surface.scale_x + 2.0 / PLATFORM_BASE)
+    s.level = s.with_objects({"pig": attrs.evolve(pig, x=pig.x + 2.0), support: longer})
+    before = s.objects
+    proposals = list(s.close_gap("rBlock", "pig", best, 2))
+    assert proposals, "a gap of about two units is closed"
+    for description, level in proposals:
+        after = {o.name: o for o in level.objects}
+        moved = before["pig"].x - after["pig"].x
+        assert "rBlock stopped short of pig" in description and moved > 0.3
+        assert after["rBlock"] == before["rBlock"]  # the mover and what is behind it stay
+        # The surface under the cut is shorter by the same amount; its near end stays.
+        assert _span(after[support])[0] == _span(before[support])[0] or after[support].x < before[support].x
+        assert s.consistent(level, frozenset(n for n in after if after[n] != before[n]))
+
+
+def test_close_gap_offers_nothing_when_the_mover_got_there():
+    s = satisfier("R")
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    far_left = {"pig": attrs.evolve(s.objects["pig"], x=s.objects["rBlock"].x - 3.0)}
+    s.level = s.with_objects(far_left)  # the goal is behind the mover's reach
+    assert list(s.close_gap("rBlock", "pig", best, 2)) == []
+
+
+def test_expose_shortens_a_support_that_shields_the_first_target():
+    s = satisfier("S")
+    target = s.first_target()
+    support = s.own_support[target.name]
+    platform = s.objects[support]
+    wider = extent(platform)[0] + 2.0
+    # Reach out 2 units further to the left: the bird's low shot would hit the support first.
+    s.level = s.with_objects({support: attrs.evolve(platform, x=platform.x - 1.0, scale_x=wider / PLATFORM_BASE)})
+    proposals = list(s.expose(s.scenario.interactions[0]))
+    assert proposals
+    description, level = proposals[0]
+    exposed = {o.name: o for o in level.objects}[support]
+    assert _span(exposed)[0] == round(_span(target)[0] - 0.05, 4) or abs(_span(exposed)[0] - (_span(target)[0] - 0.05)) < 1e-4
+    assert abs(_span(exposed)[1] - _span(s.objects[support])[1]) < 1e-4  # the far end stays
+    assert "no longer shields" in description
+
+
+def test_a_bounce_surface_may_be_turned_over():
+    s = satisfier("B")
+    surface = s.objects["iSurface"]
+    angles = [float(d.split(" to ")[1].rstrip("°")) for d, _ in s.turn("iSurface", mirror=True)]
+    assert -round(surface.rotation, 1) in [round(a, 1) for a in angles]
+    assert -round(surface.rotation, 1) not in [round(float(d.split(" to ")[1].rstrip("°")), 1) for d, _ in s.turn("iSurface")]
+
+
+def _guarded(monkeypatch, robust: bool):
+    """guard_accidents on R (seed 7, whose first layout works without repairs), with the
+    shortcut and the platform across it given, and the robustness check's verdict."""
+    from physc.domains.angrybirds import satisfy
+
+    s = satisfier("R", seed=7)
+    solution = s.working(s.attempts())[0]
+    shortcut = s.accidental_shot("rBlock")
+    assert shortcut is not None  # a shot at the pig solves the bare layout
+    platform = satisfy.LevelObject("Platform", "Platform", 20.0, 20.0, 0.0, scale_x=1.0, scale_y=0.5, name="obstacle1")
+    blocked = attrs.evolve(s.level, objects=s.level.objects + (platform,))
+    shots = iter([shortcut, None])
+    monkeypatch.setattr(s, "accidental_shot", lambda target: next(shots))
+    monkeypatch.setattr(s, "obstacles_across", lambda trace, target, before=None: iter([("obstacle1", blocked)]))
+    monkeypatch.setattr(s, "robustness", lambda attempt, level=None: (6 if robust else 0, 6))
+    unguarded = s.level
+    s.guard_accidents(solution)
+    return s, unguarded, blocked
+
+
+def test_a_shortcut_is_blocked_when_the_solution_survives(monkeypatch):
+    s, _, blocked = _guarded(monkeypatch, robust=True)
+    assert s.level == blocked and s.obstacles == ["obstacle1"] and s.roles["obstacle1"] == "obstacle"
+
+
+def test_a_block_that_makes_the_solution_fragile_is_taken_away(monkeypatch):
+    s, unguarded, _ = _guarded(monkeypatch, robust=False)
+    assert s.level == unguarded and s.obstacles == [] and "obstacle1" not in s.roles
+
+
+def test_the_bird_knocking_a_chain_member_out_of_turn_is_an_intrusion():
+    scenario = paper_scenarios()["RRR"]
+    intrusions = []
+    for placed in itertools.islice(pipeline("RRR", seed=0).placements(), 4):
+        s = Satisfier(DOMAIN, scenario, placed.layout)
+        for attempt in s.attempts():
+            intrusions += [(s, attempt, hit) for hit in s.bird_intrusions(attempt)]
+    members = [(s, a, h) for s, a, h in intrusions if h.objects[1] in ("rBlock2", "rBlock3")]
+    assert members, "in some candidate the bird hops on and hits a later member of the chain"
+    s, attempt, hit = members[0]
+    assert all(h.time >= hit.time for h in s.bird_intrusions(attempt))  # earliest first
+    proposals = list(s.obstruct_flight(attempt))
+    assert all(d.startswith(f"pathObstructed(bird, {hit.objects[1]})") for d, _ in proposals)
