@@ -17,14 +17,16 @@ from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.level_xml import read_level
 from physc.domains.angrybirds.stability import stability
 
-# The scenarios generation handles today (docs/results.md has the rates of all 16).
-GENERATED = ["SF", "SFTB", "SFLB", "R", "S", "B", "F"]
+# A fixed seed per scenario that generation handles today (docs/results.md has the rates
+# of all 16): seed 0 for the short ones; for the chains, a seed the full evaluation run
+# generated. RS, FR, SFR, RRF and RRR generated no task in that run.
+GENERATED = {"SF": 0, "SFTB": 0, "SFLB": 0, "R": 0, "S": 0, "B": 0, "F": 0, "RF": 28, "SR": 11, "BF": 11, "SRF": 0}
 
 
 @pytest.mark.parametrize("name", GENERATED)
 def test_paper_scenario_compiles_and_validates(name):
     scenario = paper_scenarios()[name]
-    task = Pipeline(DOMAIN, scenario, seed=0).task
+    task = Pipeline(DOMAIN, scenario, seed=GENERATED[name]).task
     assert task.validated
     # Replay the written level independently: the solution realises the sequence.
     written = read_level(DOMAIN.emit_level(task.level).encode())

@@ -12,12 +12,20 @@ first declared interaction that no candidate reaches, it repairs the layout:
   the concrete objects and materials the scenario allows (a smaller pig, a
   stone block, a larger circle), or a falling attacker starts higher;
 * `slide`: the slider becomes ice (less friction), a square if it may;
-* `bounce`: the surface is turned a little.
+* `bounce`: the surface is turned a little (or over, when the bounce went away
+  from the next target);
+* a mover that stopped short of what it should hit or move on: the world
+  beyond it comes closer (`close_gap`); a first target shielded by its own
+  support: the support gets shorter (`expose`);
+* the bird breaking a cannotHit, or knocking a chain member out of turn: a
+  platform across its flight (`obstruct_flight`).
 
 Once a candidate realises the whole sequence, `pathObstructed(a, b, d)` (from
 `cannotHit`) adds platforms across the paths of shots that would hit b from a
-forbidden side, each verified by simulation not to disturb the solution. The
-solution kept is the candidate that survives the most perturbed replays.
+forbidden side, each verified by simulation not to disturb the solution, and
+`guard_accidents` does the same for shots at other objects that solve the level.
+The solution kept is the first candidate that survives every noisy replay, on the
+level as finally written.
 """
 
 from __future__ import annotations
@@ -391,10 +399,9 @@ class Satisfier:
         if block is None or support not in objects or not hits:
             return
         for pushed in [d for d in ("left", "right") if {"left": "right", "right": "left"}[d] in hits[-1].directions]:
-            s = objects[support]
-            corners = [p.real for k, p in five_points(s.x, s.y, *extent(s), s.rotation or 0.0).items() if k != "c"]
+            left, right = _span(objects[support])
             width = extent(block)[0]
-            x = max(corners) - width / 2 - 0.02 if pushed == "right" else min(corners) + width / 2 + 0.02
+            x = right - width / 2 - 0.02 if pushed == "right" else left + width / 2 + 0.02
             if abs(x - block.x) < 0.05:
                 continue
             candidate = self.with_objects({faller: attrs.evolve(block, x=round(x, 5))})
@@ -408,9 +415,9 @@ class Satisfier:
             return
         obj, target = objects[mover], objects[surface]
         width = extent(obj)[0]
-        corners = [p.real for k, p in five_points(target.x, target.y, *extent(target), target.rotation or 0.0).items() if k != "c"]
+        left, right = _span(target)
         gap = self.parameters.clearance + 0.02
-        x = min(corners) - width / 2 - gap if heading == "right" else max(corners) + width / 2 + gap
+        x = left - width / 2 - gap if heading == "right" else right + width / 2 + gap
         moved = self.move(mover, x, obj.y)
         if moved is not None:
             candidate = self.with_objects(moved)
