@@ -115,3 +115,20 @@ def test_the_bird_knocking_a_chain_member_out_of_turn_is_an_intrusion():
     assert all(h.time >= hit.time for h in s.bird_intrusions(attempt))  # earliest first
     proposals = list(s.obstruct_flight(attempt))
     assert all(d.startswith(f"pathObstructed(bird, {hit.objects[1]})") for d, _ in proposals)
+
+
+def test_every_noisy_replay_starts_from_the_level_itself(monkeypatch):
+    from physc.domains.angrybirds import satisfy
+
+    s = satisfier("SF")
+    solution = s.attempts()[0]
+    seen = []
+    real_jitter = satisfy.jitter
+
+    def recording(level, rng):
+        seen.append(level)
+        return real_jitter(level, rng)
+
+    monkeypatch.setattr(satisfy, "jitter", recording)
+    s.robustness(solution)
+    assert len(seen) == satisfy.ROBUSTNESS_REPLAYS and all(level is s.level for level in seen)

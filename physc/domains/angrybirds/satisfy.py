@@ -596,9 +596,10 @@ class Satisfier:
         noise = random.Random(f"robustness/{attempt.label}/{attempt.shot.release_angle():.6f}")
         angle = attempt.shot.release_angle()
         passed = 0
+        level = level or self.level
         for _ in range(ROBUSTNESS_REPLAYS):
-            level = jitter(level or self.level, noise)
-            if self.simulate(Shot(angle=angle + noise.gauss(0.0, ANGLE_SIGMA)), level).fidelity.valid:
+            noisy = jitter(level, noise)  # each replay from the level itself: noise does not add up
+            if self.simulate(Shot(angle=angle + noise.gauss(0.0, ANGLE_SIGMA)), noisy).fidelity.valid:
                 passed += 1
         return passed, ROBUSTNESS_REPLAYS
 
