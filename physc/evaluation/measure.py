@@ -19,7 +19,7 @@ from __future__ import annotations
 import random
 
 
-from physc.domains.angrybirds.actions import points_of_interest
+from physc.domains.angrybirds.actions import agent_targets, points_of_interest
 from physc.domains.angrybirds.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
@@ -61,9 +61,7 @@ def intended(level: Level, solution, scenario, rng: random.Random) -> dict:
 def accidental(level: Level, solution_target: str) -> tuple[float, int]:
     """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it."""
     plays = solved = 0
-    for obj in level.objects:
-        if obj.element not in ("Block", "Pig", "TNT") or obj.name == solution_target:
-            continue
+    for obj in agent_targets(level, solution_target):
         points = points_of_interest(obj)
         for name in AGENT_POINTS:
             x, y = points[name]

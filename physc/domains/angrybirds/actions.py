@@ -34,3 +34,9 @@ def candidate_shots(target: LevelObject) -> list[tuple[str, Shot]]:
         for trajectory in ("low", "high"):
             out.append((f"{target.name}.{label}, {trajectory}", Shot(target=(round(x, 5), round(y, 5)), trajectory=trajectory)))
     return out
+
+
+def agent_targets(level, excluded: str):
+    """What the paper's heuristic agent shoots at: every block, pig and TNT of the level
+    except `excluded` (the solution's target)."""
+    return [obj for obj in level.objects if obj.element in ("Block", "Pig", "TNT") and obj.name != excluded]

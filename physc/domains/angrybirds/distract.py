@@ -60,7 +60,7 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
                 continue  # it would roll or topple on its own
             if satisfier.robustness(solution, candidate)[0] < ROBUST_ENOUGH:
                 continue  # it makes the solution fragile under noise
-            if satisfier.solves_by_shooting_at(obj, candidate):
+            if satisfier.solving_shot(obj, candidate) is not None:
                 continue  # a distraction must not be a way to solve the task
             satisfier.level = candidate
             satisfier.roles[name] = "distractor"

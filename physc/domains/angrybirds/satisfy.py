@@ -41,7 +41,7 @@ from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlapping_pair
 from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
-from physc.domains.angrybirds.actions import candidate_shots
+from physc.domains.angrybirds.actions import agent_targets, candidate_shots
 from physc.domains.angrybirds.catalogue import (
     PLATFORM_BASE,
     PLATFORM_THICKNESS,
@@ -549,14 +549,10 @@ class Satisfier:
     def accidental_shot(self, target: str) -> Attempt | None:
         """A shot at a point of interest of a block or pig other than the solution's target
         that solves the level (the paper's heuristic agent, on all eight points)."""
-        for obj in self.level.objects:
-            if obj.element not in ("Block", "Pig", "TNT") or obj.name == target:
-                continue
-            for label, shot in candidate_shots(obj):
-                self.simulations += 1
-                trace = Game(self.level).simulate(shot, SECONDS, settle_after_solved=0.0)
-                if trace.solved:
-                    return Attempt(label, shot, trace, None)
+        for obj in agent_targets(self.level, target):
+            found = self.solving_shot(obj, self.level)
+            if found is not None:
+                return found
         return None
 
     def guard_accidents(self, solution: Attempt) -> None:
@@ -567,8 +563,7 @@ class Satisfier:
         first = self.first_target()
         if first is None:
             return
-        before = self.level
-        added = False
+        before, kept = self.level, len(self.obstacles)
         for _ in range(ACCIDENT_OBSTACLES):
             accident = self.accidental_shot(first.name)
             if accident is None:
@@ -580,14 +575,13 @@ class Satisfier:
             for _, candidate in self.obstacles_across(accident.trace, other):
                 if self.simulate(solution.shot, candidate).fidelity.valid:
                     self.adopt(candidate)
-                    added = True
                     break
             else:
                 break
-        if added and self.robustness(solution)[0] < ROBUST_ENOUGH:
-            for name in [o.name for o in self.level.objects if o.name not in {b.name for b in before.objects}]:
-                self.obstacles.remove(name)
+        if len(self.obstacles) > kept and self.robustness(solution)[0] < ROBUST_ENOUGH:
+            for name in self.obstacles[kept:]:
                 self.roles.pop(name, None)
+            del self.obstacles[kept:]
             self.level = before
 
     # ---- robustness ------------------------------------------------------------------------------
@@ -603,13 +597,14 @@ class Satisfier:
                 passed += 1
         return passed, ROBUSTNESS_REPLAYS
 
-    def solves_by_shooting_at(self, obj: LevelObject, level: Level) -> bool:
-        """Whether a shot at one of obj's points of interest solves the level."""
-        for _, shot in candidate_shots(obj):
+    def solving_shot(self, obj: LevelObject, level: Level) -> Attempt | None:
+        """A shot at one of obj's points of interest that solves the level, if any."""
+        for label, shot in candidate_shots(obj):
             self.simulations += 1
-            if Game(level).simulate(shot, SECONDS, settle_after_solved=0.0).solved:
-                return True
-        return False
+            trace = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
+            if trace.solved:
+                return Attempt(label, shot, trace, None)
+        return None
 
     # ---- the whole step ------------------------------------------------------------------------
     def run(self) -> Satisfied | None:
