@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 
 import attrs
+import numpy as np
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
@@ -132,3 +133,61 @@ def test_every_noisy_replay_starts_from_the_level_itself(monkeypatch):
     monkeypatch.setattr(satisfy, "jitter", recording)
     s.robustness(solution)
     assert len(seen) == satisfy.ROBUSTNESS_REPLAYS and all(level is s.level for level in seen)
+
+
+def test_a_target_on_a_joined_path_moves_with_its_whole_structure():
+    s = satisfier("FR")
+    # rBlock's support is joined to the surface it rolls on, on which the pig rests.
+    assert s.structure("rBlock") == {"rBlock", s.support_of["rBlock"], "surface", "pig"}
+    before = s.objects
+    rblock = before["rBlock"]
+    moved = s.move_structure("rBlock", rblock.x - 1.0, rblock.y + 0.5, actor="fBlock")
+    assert set(moved) == s.structure("rBlock")
+    for name, obj in moved.items():
+        assert abs(obj.x - (before[name].x - 1.0)) < 1e-4 and abs(obj.y - (before[name].y + 0.5)) < 1e-4
+    assert s.move_structure("rBlock", rblock.x - 1.0, rblock.y, actor="rBlock") is None  # the actor is in it
+
+
+def test_drop_over_moves_a_fall_onto_its_target():
+    s = satisfier("FR")
+    attempt = max(s.attempts(), key=lambda a: a.fidelity.score)
+    assert attempt.fidelity.matched >= 1  # the bird hit fBlock: the fall's path starts there
+    # Pretend fBlock came straight down 2.5 units to the left of rBlock.
+    before = s.objects
+    landing = before["rBlock"].x - 2.5
+    trace = attempt.trace
+    states = trace.states.copy()
+    start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index("fBlock")
+    states[start:, column, 0] = landing
+    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.02 * np.arange(len(states) - start)
+    states[start:, column, 4] = -1.0
+    fallen = attrs.evolve(attempt, trace=attrs.evolve(trace, states=states))
+    proposals = list(s.drop_over(s.scenario.interactions[1], fallen, 1))
+    assert proposals
+    reach = (extent(before["rBlock"])[0] + extent(before["fBlock"])[0]) / 2
+    for description, level in proposals:
+        after = {o.name: o for o in level.objects}
+        assert "to come down on rBlock" in description
+        changed = {n for n in after if after[n] != before[n]}
+        if changed == {"fBlock", s.support_of["fBlock"]}:
+            shift = after["fBlock"].x - before["fBlock"].x  # the fall moves with it
+        else:
+            assert changed == s.structure("rBlock")
+            shift = before["rBlock"].x - after["rBlock"].x  # rBlock comes to the fall
+        assert abs(shift - 2.5) < reach  # fBlock now comes down on rBlock
+        assert s.consistent(level, frozenset(changed))
+
+
+def test_a_moved_edge_may_hold_by_another_qsr_of_its_clause():
+    s = satisfier("FR")
+    far = next(r for r in s.relations if r.edge.startswith("locatedFar"))
+    assert far.relation in far.alternatives and len(far.alternatives) == 3
+    # fBlock (with its support) straight above rBlock, far above: FarN, whatever was chosen.
+    f, r = s.objects["fBlock"], s.objects["rBlock"]
+    rise = (r.y + extent(r)[1] / 2 + 2.0) - (f.y - extent(f)[1] / 2)
+    moved = s.shift({"fBlock", s.support_of["fBlock"]}, r.x - f.x, max(rise, 0.0))
+    level = s.with_objects(moved)
+    assert s.consistent(level, frozenset(moved))
+    assert far.relation == "FarNW"  # what placement chose for this seed
+    s.relations = tuple(attrs.evolve(x, alternatives=()) for x in s.relations)
+    assert not s.consistent(level, frozenset(moved))  # the chosen QSR alone no longer holds

@@ -48,6 +48,7 @@ class ChosenRelation:
     a: str
     b: str
     edge: str  # the layout edge, e.g. "inDirection(rBlock, surface, left)"
+    alternatives: tuple[str, ...] = ()  # every QSR of the edge's clause (any one realises the edge)
 
 
 @attrs.frozen

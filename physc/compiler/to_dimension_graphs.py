@@ -99,7 +99,7 @@ class ToDimensionGraphs:
                         scenario=dnf.scenario,
                         seed=dnf.seed,
                         bodies=tuple(bodies.values()),
-                        conjunction=tuple(ChosenRelation(r, c.a, c.b, c.edge.text()) for c, r, _ in chosen),
+                        conjunction=tuple(ChosenRelation(r, c.a, c.b, c.edge.text(), tuple(c.relations)) for c, r, _ in chosen),
                         constraints=tuple(base) + tuple(k for _, _, cs in chosen for k in cs),
                         conjunctions_tried=tried,
                         conjunctions_rejected=rejected,

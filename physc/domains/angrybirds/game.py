@@ -39,6 +39,7 @@ from physc.simulation.trace import (
 BIRD = "bird"
 GROUND = "ground"
 STILL_SPEED = 0.02  # below this (units/s and rad/s) a body counts as at rest
+FALLING_SPEED = 0.5  # coming down faster than this (units/s), a body is still falling
 
 
 def _material(obj: LevelObject) -> str:
@@ -109,7 +110,8 @@ class Game:
         2 s of invulnerability); with no shot, the first 2 s are invulnerable, as
         when the level loads. With `stop_at_rest` the run ends once everything has
         come to rest (and the bird is gone or still); with `settle_after_solved`, that
-        many seconds after the last pig is destroyed."""
+        many seconds after the last pig is destroyed, once nothing is falling (a fall
+        that began while the sequence ran is recognised where it lands)."""
         rules = self.rules
         world = self.build()
         if invulnerable is None:
@@ -161,7 +163,7 @@ class Game:
             if settle_after_solved is not None and pigs:
                 if solved_at is None and not any(p in alive for p in pigs):
                     solved_at = time
-                if solved_at is not None and time - solved_at >= settle_after_solved:
+                if solved_at is not None and time - solved_at >= settle_after_solved and not self._falling(states[step], index, alive):
                     states = states[: step + 1]
                     break
             if stop_at_rest:
@@ -184,6 +186,10 @@ class Game:
         trace = self.simulate(shot, seconds, **options)
         interactions = recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
+
+    def _falling(self, row, index: dict[str, int], alive) -> bool:
+        """Whether a block, pig or TNT (not the bird) is coming down fast."""
+        return any(row[index[n], 4] < -FALLING_SPEED for n in alive if n != BIRD)
 
     def radii(self) -> dict[str, float]:
         """The rolling radius of every body that can roll: circles, pigs, the bird."""

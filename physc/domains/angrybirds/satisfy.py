@@ -149,14 +149,16 @@ class Satisfier:
 
     # ---- constraint checks ------------------------------------------------------------------
     def consistent(self, level: Level, moved: frozenset = frozenset()) -> bool:
-        """Every QSR of the chosen conjunction holds, nothing overlaps, all inside the area.
+        """Every layout edge of the chosen conjunction holds, nothing overlaps, all inside the area.
 
+        An edge holds when any QSR of its clause does (a repair may carry an object from
+        one of the clause's regions to another: the edge is what the scenario asks for).
         An object that liesOnPath moved along its support may rest anywhere on it: for
         it, resting on the left, middle or right part of its support all count."""
         placed = {o.name: _placed(o, self.roles.get(o.name, "object")) for o in level.objects}
         for relation in self.relations:
             if relation.a in placed and relation.b in placed:
-                names = (relation.relation,)
+                names = relation.alternatives or (relation.relation,)
                 if relation.a in moved and relation.relation in RESTING:
                     names = RESTING
                 a, b = placed[relation.a], placed[relation.b]
@@ -197,6 +199,8 @@ class Satisfier:
             before = self.scenario.interactions[index - 1]
             if declared.name == "hit":
                 yield from self.close_gap(declared.objects[0], declared.objects[1], best, index)
+            else:
+                yield from self.drop_over(declared, best, index)
             yield from self.lie_on_path(declared, previous, index)
             if before.name == "bounce" and before.objects[0] == declared.objects[0]:
                 yield from self.turn(before.objects[1], mirror=True)  # it bounced, but away from the target
@@ -233,7 +237,7 @@ class Satisfier:
             for approach in sides:
                 offsets = {"left": (width / 2, 0.0), "right": (-width / 2, 0.0), "above": (0.0, -height / 2), "below": (0.0, height / 2)}
                 dx, dy = offsets.get(approach, (0.0, 0.0))
-                moved = self.move(target, px + dx, py + dy)
+                moved = self.move_structure(target, px + dx, py + dy, actor) or self.move(target, px + dx, py + dy)
                 if moved is None:
                     continue
                 candidate = self.with_objects(moved)
@@ -318,6 +322,86 @@ class Satisfier:
         if not moves or moves[-1].directions[0] not in ("left", "right"):
             return None
         return moves[-1].directions[0]
+
+    def structure(self, name: str) -> set[str]:
+        """`name` with everything joined to it by resting and touching: its supports, the
+        platforms joined to them, and what rests on any of those (not the ground)."""
+        objects = self.objects
+        links: dict[str, set[str]] = {}
+        pairs = [(a, s) for a, s in self.support_of.items()] + [tuple(p) for p in joined(self.relations)]
+        for a, b in pairs:
+            if a in objects and b in objects:
+                links.setdefault(a, set()).add(b)
+                links.setdefault(b, set()).add(a)
+        found, todo = {name}, [name]
+        while todo:
+            for other in links.get(todo.pop(), ()):
+                if other not in found:
+                    found.add(other)
+                    todo.append(other)
+        return found
+
+    def move_structure(self, name: str, x: float, y: float, actor: str) -> dict[str, LevelObject] | None:
+        """The objects changed by putting `name`'s centre at (x, y) together with its whole
+        structure (a support joined to further platforms cannot move alone), if `actor`,
+        which must reach `name`, is not part of it. Only sideways if any of it rests on the ground."""
+        members = self.structure(name)
+        objects = self.objects
+        if actor in members or len(members) <= 1 + (name in self.own_support):
+            return None
+        obj = objects[name]
+        return self.shift(members, x - obj.x, y - obj.y)
+
+    def shift(self, members: set[str], dx: float, dy: float) -> dict[str, LevelObject] | None:
+        """The objects changed by moving `members` together by (dx, dy): only sideways if
+        any of them rests on the ground; None if that leaves nothing to do or sinks one."""
+        objects = self.objects
+        if members & self.on_ground:
+            dy = 0.0
+        if abs(dx) < 1e-6 and abs(dy) < 1e-6:
+            return None
+        changed = {m: attrs.evolve(objects[m], x=round(objects[m].x + dx, 5), y=round(objects[m].y + dy, 5)) for m in sorted(members)}
+        if min(o.y - extent(o)[1] / 2 for o in changed.values()) < GROUND_TOP - 1e-6:
+            return None
+        return changed
+
+    def drop_over(self, declared, attempt: Attempt, index: int):
+        """fall(a, b) happened, but a came down away from b: a's structure (a, its support
+        and what is joined to them) moves so that the same fall ends on b. The fall path is
+        read where a comes down to b's top; b itself does not move."""
+        faller, target = declared.objects
+        objects = self.objects
+        trace = attempt.trace
+        if faller not in objects or target not in objects or faller not in trace.names:
+            return
+        since = attempt.fidelity.times[index - 1] if index else 0.0
+        rows = trace.states[int(since / trace.dt) :, trace.index(faller), :]
+        level = objects[target].y + extent(objects[target])[1] / 2 + extent(objects[faller])[1] / 2
+        landing = next((x for x, y, _, _, vy, _ in rows if not math.isnan(x) and vy < 0 and y <= level), None)
+        if landing is None:
+            return
+        # Off centre by up to about half their widths, a still comes down on b: the
+        # nudges reach the places where the layout edges hold (locatedFar keeps a "far"
+        # distance on both axes of a diagonal tile).
+        # Either a's structure moves (b stays), or b's (a stays), if they are apart.
+        reach = (extent(objects[target])[0] + extent(objects[faller])[0]) / 2
+        nudges = sorted({round(k * 0.15, 2) for k in range(-4, 5) if abs(k * 0.15) < reach}, key=lambda n: (abs(n), n))
+        for moving, other, sign in ((faller, target, 1.0), (target, faller, -1.0)):
+            members = self.structure(moving)
+            if other in members:
+                continue
+            offered = 0
+            for nudge in nudges:
+                dx = round(sign * (objects[target].x - landing + nudge), 3)
+                changed = self.shift(members, dx, 0.0)
+                if changed is None:
+                    continue
+                candidate = self.with_objects(changed)
+                if self.consistent(candidate, frozenset(changed)):
+                    yield f"fall({faller}, {target}): {moving} moved {dx:+.2f} for {faller} to come down on {target}", candidate
+                    offered += 1
+                    if offered >= 2:
+                        break
 
     def move(self, name: str, x: float, y: float) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y): with its own support;
