@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import random
 
-
 from physc.domains.angrybirds.actions import agent_targets, points_of_interest
 from physc.domains.angrybirds.fidelity import fidelity
 from physc.domains.angrybirds.game import Game

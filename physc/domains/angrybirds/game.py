@@ -187,7 +187,8 @@ class Game:
         interactions = recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
-    def _falling(self, row, index: dict[str, int], alive) -> bool:
+    @staticmethod
+    def _falling(row, index: dict[str, int], alive) -> bool:
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
         return any(row[index[n], 4] < -FALLING_SPEED for n in alive if n != BIRD)
 

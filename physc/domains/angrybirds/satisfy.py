@@ -35,6 +35,7 @@ import random
 from collections import Counter
 
 import attrs
+import networkx as nx
 import numpy as np
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
@@ -114,6 +115,11 @@ class Satisfier:
         carried = Counter(self.support_of.values())
         self.own_support = {a: s for a, s in self.support_of.items() if self.roles.get(s) == "support" and carried[s] == 1}
         self.on_ground = {a for a, s in self.support_of.items() if s not in self.objects}
+        # What rests on what and which platforms are joined: the structures that move as one.
+        self.joints = nx.Graph()
+        self.joints.add_edges_from(
+            pair for pair in [*self.support_of.items(), *map(tuple, joined(self.relations))] if all(n in self.objects for n in pair)
+        )
         self.parameters = domain.layout_parameters
         self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
         self.repairs: list[str] = []
@@ -326,20 +332,7 @@ class Satisfier:
     def structure(self, name: str) -> set[str]:
         """`name` with everything joined to it by resting and touching: its supports, the
         platforms joined to them, and what rests on any of those (not the ground)."""
-        objects = self.objects
-        links: dict[str, set[str]] = {}
-        pairs = [(a, s) for a, s in self.support_of.items()] + [tuple(p) for p in joined(self.relations)]
-        for a, b in pairs:
-            if a in objects and b in objects:
-                links.setdefault(a, set()).add(b)
-                links.setdefault(b, set()).add(a)
-        found, todo = {name}, [name]
-        while todo:
-            for other in links.get(todo.pop(), ()):
-                if other not in found:
-                    found.add(other)
-                    todo.append(other)
-        return found
+        return set(nx.node_connected_component(self.joints, name)) if name in self.joints else {name}
 
     def move_structure(self, name: str, x: float, y: float, actor: str) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y) together with its whole
@@ -367,8 +360,9 @@ class Satisfier:
 
     def drop_over(self, declared, attempt: Attempt, index: int):
         """fall(a, b) happened, but a came down away from b: a's structure (a, its support
-        and what is joined to them) moves so that the same fall ends on b. The fall path is
-        read where a comes down to b's top; b itself does not move."""
+        and what is joined to them) moves so that the same fall ends on b, or else b's
+        structure moves the other way, under the fall. The fall path is read where a comes
+        down to b's top."""
         faller, target = declared.objects
         objects = self.objects
         trace = attempt.trace
@@ -383,7 +377,6 @@ class Satisfier:
         # Off centre by up to about half their widths, a still comes down on b: the
         # nudges reach the places where the layout edges hold (locatedFar keeps a "far"
         # distance on both axes of a diagonal tile).
-        # Either a's structure moves (b stays), or b's (a stays), if they are apart.
         reach = (extent(objects[target])[0] + extent(objects[faller])[0]) / 2
         nudges = sorted({round(k * 0.15, 2) for k in range(-4, 5) if abs(k * 0.15) < reach}, key=lambda n: (abs(n), n))
         for moving, other, sign in ((faller, target, 1.0), (target, faller, -1.0)):
