@@ -107,3 +107,29 @@ def test_launch_model():
 def test_backend_is_a_plugin():
     assert "pymunk" in installed_backends()
     assert load_backend("pymunk").name == "pymunk"
+
+
+def test_batched_states_match_one_by_one_reads_awake_asleep_and_gone():
+    """`states` is one batched read; its rows must equal `state` per body, whatever
+    order the engine keeps them in as bodies fall asleep, and NaN for removed ones."""
+    from physc.backends import BodySpec, Circle, Polygon
+
+    world = load_backend("pymunk").create_world(GRAVITY)
+    world.add(BodySpec("ground", Polygon(((-20, -0.5), (20, -0.5), (20, 0.5), (-20, 0.5))), 0.0, -4.0, static=True))
+    names = [f"ball{k}" for k in range(4)]
+    for k, name in enumerate(names):
+        world.add(BodySpec(name, Circle(0.3), -3.0 + 2.0 * k, -3.0 + 0.5 * k, angular_damping=0.1))
+    world.set_velocity("ball3", 2.0, 0.0)
+    asleep = set()
+    for step in range(400):
+        world.step(RULES.dt)
+        if step == 250:
+            world.remove("ball1")
+        rows = world.states(["ball3", *names])
+        for name, row in zip(["ball3", *names], rows):
+            if name in world.bodies:
+                assert tuple(row) == world.state(name)
+                asleep |= {name} if world.bodies[name].is_sleeping else set()
+            else:
+                assert np.isnan(row).all()
+    assert asleep  # the read was also checked while bodies slept

@@ -191,3 +191,24 @@ def test_a_moved_edge_may_hold_by_another_qsr_of_its_clause():
     assert far.relation == "FarNW"  # what placement chose for this seed
     s.relations = tuple(attrs.evolve(x, alternatives=()) for x in s.relations)
     assert not s.consistent(level, frozenset(moved))  # the chosen QSR alone no longer holds
+
+
+def test_attempts_simulates_only_what_is_asked_and_keeps_what_is_done():
+    """Screening a repair proposal: the nearest shots first, the rest only if needed."""
+    from physc.domains.angrybirds.satisfy import SCREEN
+
+    s = satisfier("R")
+    full = s.attempts()
+    screened = Satisfier.most_promising(full)
+    assert len(screened) == SCREEN
+    best = max(a.fidelity.score for a in full)
+    assert full[[a.label for a in full].index(screened[0])].fidelity.score == best
+    count = s.simulations
+    some = s.attempts(only=screened)
+    assert [a.label for a in some] == [a.label for a in full if a.label in screened]
+    assert s.simulations - count == SCREEN
+    count = s.simulations
+    rest = s.attempts(done=some)
+    assert s.simulations - count == len(full) - SCREEN  # the screened ones are not simulated again
+    assert [a.label for a in rest] == [a.label for a in full]
+    assert [a.fidelity for a in rest] == [a.fidelity for a in full]  # the same level, the same outcomes

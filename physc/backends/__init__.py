@@ -2,8 +2,8 @@
 pymunk one included.
 
 A backend is thin (docs/plugins.md): it turns bodies into an engine world and
-offers primitives — add and remove bodies, step, read poses and velocities, set a
-velocity, and report the contacts that began or ended. Game rules and the
+offers primitives — add and remove bodies, step, read poses and velocities (one body
+or all at once), set a velocity, and report the contacts that began or ended. Game rules and the
 recognition of interactions are domain code over the backend-neutral values
 defined here, so every engine is judged by the same rules.
 """
@@ -11,10 +11,12 @@ defined here, so every engine is judged by the same rules.
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from importlib.metadata import EntryPoint, entry_points
 from typing import Protocol
 
 import attrs
+import numpy as np
 
 from physc.suggest import did_you_mean
 
@@ -69,6 +71,10 @@ class World(Protocol):
     def remove(self, name: str) -> None: ...
     def step(self, dt: float) -> None: ...
     def state(self, name: str) -> tuple[float, float, float, float, float, float]: ...
+    def states(self, names: Sequence[str]) -> np.ndarray:
+        """`state` of every named body, a row each (NaN for a body not in the world):
+        the game reads the whole world once per step through this."""
+        ...
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None: ...
     def begun(self) -> list[ContactEvent]: ...
     def ended(self) -> list[tuple[str, str]]: ...

@@ -17,8 +17,11 @@ result.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
+import numpy as np
 import pymunk
+import pymunk.batch
 
 from physc.backends import BodySpec, Circle, ContactEvent
 
@@ -27,6 +30,14 @@ SLOP = 0.005  # Box2D's linear slop
 SKIN = 0.01  # Box2D's polygon radius (2 × linear slop): polygons keep this far apart
 SLEEP_AFTER = 0.5  # seconds at rest before a body sleeps (as Box2D's time to sleep)
 IDLE_SPEED = 0.05
+# What one batched read returns per body: id; x, y, angle, vx, vy, ω (in this order).
+BATCH_FIELDS = (
+    pymunk.batch.BodyFields.BODY_ID
+    | pymunk.batch.BodyFields.POSITION
+    | pymunk.batch.BodyFields.ANGLE
+    | pymunk.batch.BodyFields.VELOCITY
+    | pymunk.batch.BodyFields.ANGULAR_VELOCITY
+)
 
 
 def _velocity_function(scale: float):
@@ -54,7 +65,15 @@ class PymunkWorld:
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
-        self._cache: dict[str, tuple] = {}  # the last state of each body, for sleeping ones
+        # One batched read of every body per step (pymunk.batch's own call, without
+        # building its request anew each time): the buffer, the request, the reader.
+        self._buffer = pymunk.batch.Buffer()
+        self._request = pymunk.batch.ffi.new("pmBatchedData *")
+        self._request.fields = BATCH_FIELDS.value
+        self._request.floatArray = self._buffer._float_arr
+        self._request.intArray = self._buffer._int_arr
+        self._reader = pymunk.batch.ffi.addressof(pymunk.batch.lib, "pmSpaceBodyGetIteratorFuncBatched")
+        self._order: tuple | None = None  # the space's body order and the rows it gives
         self.space.on_collision(begin=self._on_begin, separate=self._on_separate)
 
     # ---- building --------------------------------------------------------------
@@ -97,7 +116,6 @@ class PymunkWorld:
         if name in self._drags:
             self.space.remove(self._drags.pop(name))
         self.space.remove(body, shape)
-        self._cache.pop(name, None)
         self.names.remove(name)
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
@@ -108,12 +126,30 @@ class PymunkWorld:
 
     def state(self, name: str):
         body = self.bodies[name]
-        if body.is_sleeping and name in self._cache:
-            return self._cache[name]
         (x, y), (vx, vy) = body.position, body.velocity
-        state = (x, y, body.angle, vx, vy, body.angular_velocity)
-        self._cache[name] = state
-        return state
+        return (x, y, body.angle, vx, vy, body.angular_velocity)
+
+    def states(self, names: Sequence[str]) -> np.ndarray:
+        """`state` of every named body at once, a row per name (NaN for a body not in the
+        world), from one batched read of the space."""
+        buffer = self._buffer
+        buffer.clear()
+        pymunk.batch.lib.cpSpaceEachBody(self.space._space, self._reader, self._request)
+        ids = bytes(buffer.int_buf())
+        if self._order is None or self._order[0] != ids or self._order[1] != names:
+            self._order = (ids, list(names), *self._rows(np.frombuffer(ids, dtype=np.uintp), names))
+        rows, absent = self._order[2:]
+        out = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)[rows]
+        if absent is not None:
+            out[absent] = np.nan
+        return out
+
+    def _rows(self, ids: np.ndarray, names: Sequence[str]):
+        """Where each named body is in a batched read; which names have no body."""
+        row_of = {int(i): r for r, i in enumerate(ids)}
+        rows = [row_of.get(self.bodies[n].id, -1) if n in self.bodies else -1 for n in names]
+        absent = np.array([r < 0 for r in rows], dtype=bool)
+        return np.array([max(r, 0) for r in rows], dtype=np.intp), (absent if absent.any() else None)
 
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
         body = self.bodies[name]

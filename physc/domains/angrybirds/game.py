@@ -86,6 +86,7 @@ class Game:
         world.add(ground)
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
+        self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
             world.add(spec)
@@ -141,37 +142,34 @@ class Game:
                     self._damage(world, record, damage, time)
             for a, b in world.ended():
                 separations.append(SeparationRecord(time, a, b))
-            # Destruction: by damage, by leaving the level; birds at rest or too old go.
-            # In `dynamic` order: the order of removals must not depend on string hashing.
-            for name in [n for n in dynamic if n in alive]:
-                x, y, angle, vx, vy, w = world.state(name)
-                gone = None
-                if self.life.get(name, math.inf) <= 0:
-                    gone = ("damage", self._last_attacker(damage, name))
-                elif not rules.world_left <= x <= rules.world_right:
-                    gone = ("out of world", None)
-                elif name == BIRD and (time >= rules.bird_lifetime or (time >= rules.bird_still_after and math.hypot(vx, vy) < rules.bird_still_speed)):
-                    gone = ("removed", None)
-                if gone:
-                    if self.kinds[name] == "tnt" and gone[0] == "damage":
-                        self._explode(world, name, alive, damage, time)
-                    destructions.append(DestructionRecord(time, name, gone[0], gone[1]))
-                    world.remove(name)
-                    alive.discard(name)
-                else:
-                    states[step, index[name]] = (x, y, angle, vx, vy, w)
+            row = world.states(dynamic)
+            values = row.tolist()  # (plain floats are quicker to test than a small array)
+            if self._removals(values, alive, time):
+                # Destruction: by damage, by leaving the level; birds at rest or too old go.
+                # In `dynamic` order: the order of removals must not depend on string hashing,
+                # and a TNT's blast changes the state of what is read after it.
+                for name in [n for n in dynamic if n in alive]:
+                    x, y, angle, vx, vy, w = world.state(name)
+                    gone = self._gone(name, x, vx, vy, time, damage)
+                    if gone:
+                        if self.kinds[name] == "tnt" and gone[0] == "damage":
+                            self._explode(world, name, alive, damage, time)
+                        destructions.append(DestructionRecord(time, name, gone[0], gone[1]))
+                        world.remove(name)
+                        alive.discard(name)
+                    else:
+                        states[step, index[name]] = (x, y, angle, vx, vy, w)
+                values = states[step].tolist()
+            else:
+                states[step] = row  # the rows of bodies already gone are NaN (no test below holds for NaN)
             if settle_after_solved is not None and pigs:
                 if solved_at is None and not any(p in alive for p in pigs):
                     solved_at = time
-                if solved_at is not None and time - solved_at >= settle_after_solved and not self._falling(states[step], index, alive):
+                if solved_at is not None and time - solved_at >= settle_after_solved and not self._falling(values, dynamic):
                     states = states[: step + 1]
                     break
             if stop_at_rest:
-                moving = any(
-                    abs(states[step, index[n], 3]) + abs(states[step, index[n], 4]) + abs(states[step, index[n], 5]) > STILL_SPEED
-                    for n in alive
-                )
-                if moving or BIRD in alive:
+                if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > STILL_SPEED for _, _, _, vx, vy, w in values):
                     resting_since = None
                 elif resting_since is None:
                     resting_since = time
@@ -187,10 +185,44 @@ class Game:
         interactions = recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
+    def _removals(self, values: list, alive: set, time: float) -> bool:
+        """Whether anything may leave the level this step (what does is `_gone`'s to say):
+        a body whose life is spent, one outside the level, the bird at rest or too old.
+        `values`: the state of each body, NaN for the bodies already gone."""
+        if not self.spent.isdisjoint(alive):
+            return True
+        left, right = self.rules.world_left, self.rules.world_right
+        if any(not left <= v[0] <= right for v in values if v[0] == v[0]):
+            return True
+        if BIRD in alive:
+            _, _, _, vx, vy, _ = values[0]  # the bird, if any, is the first body
+            return self._bird_done(vx, vy, time)
+        return False
+
     @staticmethod
-    def _falling(row, index: dict[str, int], alive) -> bool:
+    def _falling(values: list, dynamic: list[str]) -> bool:
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
-        return any(row[index[n], 4] < -FALLING_SPEED for n in alive if n != BIRD)
+        return any(v[4] < -FALLING_SPEED for v, name in zip(values, dynamic) if name != BIRD)
+
+    def _gone(self, name: str, x: float, vx: float, vy: float, time: float, damage) -> tuple | None:
+        """Why `name` leaves the level now (the kind of destruction and by whom), if it does."""
+        rules = self.rules
+        if name in self.spent:
+            return ("damage", self._last_attacker(damage, name))
+        if not rules.world_left <= x <= rules.world_right:
+            return ("out of world", None)
+        if name == BIRD and self._bird_done(vx, vy, time):
+            return ("removed", None)
+        return None
+
+    def _bird_done(self, vx: float, vy: float, time: float) -> bool:
+        rules = self.rules
+        return time >= rules.bird_lifetime or (time >= rules.bird_still_after and math.hypot(vx, vy) < rules.bird_still_speed)
+
+    def _wound(self, target: str, amount: float) -> None:
+        self.life[target] -= amount
+        if self.life[target] <= 0:
+            self.spent.add(target)
 
     def radii(self) -> dict[str, float]:
         """The rolling radius of every body that can roll: circles, pigs, the bird."""
@@ -231,7 +263,7 @@ class Game:
             amount -= self.defence[target]
             if amount <= 0:
                 continue
-            self.life[target] -= amount
+            self._wound(target, amount)
             other = contact.b if target == contact.a else contact.a
             out.append(DamageRecord(time, target, amount, self.life[target], other))
 
@@ -252,5 +284,5 @@ class Game:
             push = rules.tnt_impulse / max(world.mass(other), 1e-6)
             world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
             if other in self.life:
-                self.life[other] -= rules.tnt_damage
+                self._wound(other, rules.tnt_damage)
                 damage.append(DamageRecord(time, other, rules.tnt_damage, self.life[other], name))

@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 import random
 from collections import Counter
+from collections.abc import Collection, Sequence
 
 import attrs
 import networkx as nx
@@ -62,6 +63,7 @@ from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
 REPAIR_ROUNDS = 16  # simulated repair proposals per layout (per 4 interactions for longer chains)
+SCREEN = 4  # a repair proposal is first simulated with the shots that came nearest so far
 PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
@@ -144,14 +146,26 @@ class Satisfier:
         first = self.scenario.interactions[0]
         return self.objects.get(first.objects[1]) if first.name == "hit" else None
 
-    def attempts(self) -> list[Attempt]:
+    def attempts(self, only: Collection[str] | None = None, done: Sequence[Attempt] = ()) -> list[Attempt]:
+        """Simulate the candidate shots (of them, those labelled `only`; the ones `done`
+        already are not simulated again), in the candidates' order."""
         target = self.first_target()
         if target is None:
             return []
+        known = {a.label: a for a in done}
         out = []
         for label, shot in candidate_shots(target):
-            out.append(attrs.evolve(self.simulate(shot), label=label))
+            if label in known:
+                out.append(known[label])
+            elif only is None or label in only:
+                out.append(attrs.evolve(self.simulate(shot), label=label))
         return out
+
+    @staticmethod
+    def most_promising(attempts: Sequence[Attempt]) -> list[str]:
+        """The labels of the SCREEN best attempts (the first in candidate order among equals)."""
+        ranked = sorted(range(len(attempts)), key=lambda i: attempts[i].fidelity.score, reverse=True)
+        return [attempts[i].label for i in ranked[:SCREEN]]
 
     # ---- constraint checks ------------------------------------------------------------------
     def consistent(self, level: Level, moved: frozenset = frozenset()) -> bool:
@@ -697,7 +711,11 @@ class Satisfier:
                 rounds += 1
                 saved = self.level
                 self.level = level
-                trial = self.attempts()
+                # Screening: a proposal is judged first by the shots that came nearest so far;
+                # only if one of them does as well as before are the others simulated too.
+                trial = self.attempts(only=self.most_promising(attempts)) if description not in self.repairs else []
+                if max((a.fidelity.score for a in trial), default=score) >= score and trial:
+                    trial = self.attempts(done=trial)
                 trial_score = max((a.fidelity.score for a in trial), default=None)
                 if trial_score is not None and trial_score >= score and description not in self.repairs:
                     self.repairs.append(description)
