@@ -10,8 +10,9 @@ damped rotary spring of no stiffness to the static body (C, not Python). Contact
 are reported from pymunk 7's `Space.on_collision` begin and separate callbacks.
 Collision slop, the skin around polygons and the solver's iterations follow
 Box2D's defaults for metre-sized objects (levels saved from the game keep
-stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). The world is deterministic: same bodies, same steps, same
-result.
+stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). `states` reads
+every body in one batched call (pymunk.batch), which is what the game does each step. The world
+is deterministic: same bodies, same steps, same result.
 """
 
 from __future__ import annotations
