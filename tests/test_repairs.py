@@ -212,3 +212,21 @@ def test_attempts_simulates_only_what_is_asked_and_keeps_what_is_done():
     assert s.simulations - count == len(full) - SCREEN  # the screened ones are not simulated again
     assert [a.label for a in rest] == [a.label for a in full]
     assert [a.fidelity for a in rest] == [a.fidelity for a in full]  # the same level, the same outcomes
+
+
+def test_offending_shots_are_watched_for_the_whole_flight():
+    """A high shot at a pig near the sling is in the air for more than 4 s: cannotHit(bird,
+    pig) must see it hit (evaluation's agent would, and the pig would be unprotected)."""
+    from physc.domains.angrybirds.catalogue import PLATFORM_BASE
+    from physc.domains.angrybirds.level import Level, LevelObject
+    from physc.domains.angrybirds.world import GROUND_TOP
+
+    s = satisfier("F")
+    restriction = next(r for r in s.scenario.restrictions if r.text == "cannotHit(bird, pig, any)")
+    pig = LevelObject("Pig", "BasicSmall", 0.0, GROUND_TOP + 0.24, 0.0, name="pig")
+    # A wall stops every low shot; only the high lob comes down on the pig, after 4 s.
+    wall = LevelObject("Platform", "Platform", -2.0, GROUND_TOP + 2.25, 90.0, scale_x=4.5 / PLATFORM_BASE, scale_y=0.25 / PLATFORM_BASE, name="wall")
+    s.level = Level(objects=(pig, wall))
+    offending = s.offending_shot(restriction)
+    assert offending is not None and offending.shot.trajectory == "high"
+    assert min(v.interaction.time for v in offending.trace.violations) > 4.0

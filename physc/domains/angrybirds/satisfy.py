@@ -548,13 +548,14 @@ class Satisfier:
 
     def offending_shot(self, restriction) -> Attempt | None:
         """A shot at the restricted object that breaks the restriction, judged exactly as
-        validation judges it (recognised hits, declared bounces)."""
+        validation judges it (recognised hits, declared bounces), over the whole flight (a
+        high shot at a far target is in the air for more than 4 s)."""
         obj = self.objects.get(restriction.objects[1])
         if obj is None:
             return None
         for label, shot in candidate_shots(obj):
             self.simulations += 1
-            trace = Game(self.level).play(shot, 4.0, restrictions=(restriction,), redirects=self.redirects, settle_after_solved=0.0)
+            trace = Game(self.level).play(shot, SECONDS, restrictions=(restriction,), redirects=self.redirects, settle_after_solved=0.0)
             if trace.violations:
                 return Attempt(label, shot, trace, None)
         return None
