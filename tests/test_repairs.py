@@ -6,6 +6,7 @@ from __future__ import annotations
 import itertools
 
 import attrs
+import pytest
 import numpy as np
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
@@ -230,3 +231,27 @@ def test_offending_shots_are_watched_for_the_whole_flight():
     offending = s.offending_shot(restriction)
     assert offending is not None and offending.shot.trajectory == "high"
     assert min(v.interaction.time for v in offending.trace.violations) > 4.0
+
+
+def test_obstacles_across_go_further_back_and_shorter_when_asked():
+    """The obstruction's fallbacks: platforms further back along the flight, then shorter."""
+    import math
+
+    from physc.domains.angrybirds.actions import candidate_shots
+    from physc.domains.angrybirds.catalogue import PLATFORM_BASE
+    from physc.domains.angrybirds.game import Game
+    from physc.domains.angrybirds.level import Level, LevelObject
+    from physc.domains.angrybirds.satisfy import OBSTACLE_LENGTH, SHORT_OBSTACLE
+    from physc.domains.angrybirds.world import GROUND_TOP
+
+    s = satisfier("F")
+    pig = LevelObject("Pig", "BasicSmall", 6.0, GROUND_TOP + 0.24, 0.0, name="pig")
+    s.level = Level(objects=(pig,))
+    trace = Game(s.level).simulate(candidate_shots(pig)[0][1], 9.0)
+    hit = next(c.point for c in trace.contacts if {c.a, c.b} == {"bird", "pig"})
+    for backs, length in (((0.9,), OBSTACLE_LENGTH), ((4.5,), OBSTACLE_LENGTH), ((4.5,), SHORT_OBSTACLE)):
+        (_, level), = s.obstacles_across(trace, "pig", backs=backs, length=length)
+        platform = level.objects[-1]
+        assert platform.scale_x * PLATFORM_BASE == pytest.approx(length, abs=1e-4)
+        # Along a flight that curves, the straight distance is a little shorter than the way walked.
+        assert 0.8 * backs[0] < math.dist((platform.x, platform.y), hit) < backs[0] + 0.5

@@ -68,6 +68,9 @@ PLACES = 14  # places tried per liesOnPath repair
 CELL = 0.25  # grid of path counting
 OBSTACLES = 6
 OBSTACLE_LENGTH = 1.4
+SHORT_OBSTACLE = 0.9  # tried last, when no obstacle of the full length leaves the solution working
+BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obstacle goes
+FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 ROBUSTNESS_REPLAYS = 6  # replays under the evaluation's noise model (angle σ 0.1°, positions σ 0.005)
 ROBUST_ENOUGH = 6  # of them must realise the sequence, or the layout is given up
@@ -561,24 +564,27 @@ class Satisfier:
         return None
 
     def block(self, offending: Attempt, target: str, solution: Attempt) -> bool:
-        """Put a platform across the offending flight, a little before it reaches the target."""
-        for name, candidate in self.obstacles_across(offending.trace, target):
-            check = self.simulate(solution.shot, candidate)
-            if not check.fidelity.valid:
-                continue
-            self.adopt(candidate)
-            return True
+        """Put a platform across the offending flight, a little before it reaches the target;
+        if no such platform leaves the solution working, further back, then shorter ones."""
+        for backs, length in ((BACKS, OBSTACLE_LENGTH), (FURTHER_BACKS, OBSTACLE_LENGTH), (BACKS + FURTHER_BACKS, SHORT_OBSTACLE)):
+            for name, candidate in self.obstacles_across(offending.trace, target, backs=backs, length=length):
+                check = self.simulate(solution.shot, candidate)
+                if not check.fidelity.valid:
+                    continue
+                self.adopt(candidate)
+                return True
         return False
 
-    def obstacles_across(self, trace: Trace, target: str, before: float | None = None):
+    def obstacles_across(self, trace: Trace, target: str, before: float | None = None, backs=BACKS, length: float = OBSTACLE_LENGTH):
         """(name, level) with a platform across the bird's flight, a little before it first
-        touches `target` (after `before`, if given): further back at each try."""
+        touches `target` (after `before`, if given): further back at each try (`backs`:
+        how far along the flight, in units)."""
         bird = trace.states[:, trace.index(BIRD), :]
         hit_time = next((c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target} and (before is None or c.time >= before)), None)
         if hit_time is None:
             return
         hit_step = min(int(round(hit_time / trace.dt)) - 1, len(bird) - 1)
-        for back in (0.9, 1.3, 1.8, 2.4, 3.0):
+        for back in backs:
             # walk back along the flight by about `back` units
             step, travelled = hit_step, 0.0
             while step > 1 and travelled < back:
@@ -590,7 +596,7 @@ class Satisfier:
             angle = math.degrees(math.atan2(vy, vx)) + 90.0  # across the flight
             angle = (angle + 90) % 180 - 90
             name = f"obstacle{len(self.obstacles) + 1}"
-            platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(OBSTACLE_LENGTH / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
+            platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
             candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
             if self.consistent(candidate):
                 yield name, candidate
