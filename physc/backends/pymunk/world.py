@@ -74,7 +74,8 @@ class PymunkWorld:
         self._request.floatArray = self._buffer._float_arr
         self._request.intArray = self._buffer._int_arr
         self._reader = pymunk.batch.ffi.addressof(pymunk.batch.lib, "pmSpaceBodyGetIteratorFuncBatched")
-        self._order: tuple | None = None  # the space's body order and the rows it gives
+        self._read_order: tuple | None = None  # (body ids as read, names asked) of the last read,
+        self._rows: tuple = ()  # and where the names' rows are in it: `_arrange`'s result
         self.space.on_collision(begin=self._on_begin, separate=self._on_separate)
 
     # ---- building --------------------------------------------------------------
@@ -137,15 +138,16 @@ class PymunkWorld:
         buffer.clear()
         pymunk.batch.lib.cpSpaceEachBody(self.space._space, self._reader, self._request)
         ids = bytes(buffer.int_buf())
-        if self._order is None or self._order[0] != ids or self._order[1] != names:
-            self._order = (ids, list(names), *self._rows(np.frombuffer(ids, dtype=np.uintp), names))
-        rows, absent = self._order[2:]
+        if self._read_order != (ids, names):
+            self._read_order = (ids, list(names))
+            self._rows = self._arrange(np.frombuffer(ids, dtype=np.uintp), names)
+        rows, absent = self._rows
         out = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)[rows]
         if absent is not None:
             out[absent] = np.nan
         return out
 
-    def _rows(self, ids: np.ndarray, names: Sequence[str]):
+    def _arrange(self, ids: np.ndarray, names: Sequence[str]):
         """Where each named body is in a batched read; which names have no body."""
         row_of = {int(i): r for r, i in enumerate(ids)}
         rows = [row_of.get(self.bodies[n].id, -1) if n in self.bodies else -1 for n in names]

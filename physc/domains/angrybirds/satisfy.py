@@ -170,6 +170,15 @@ class Satisfier:
         ranked = sorted(range(len(attempts)), key=lambda i: attempts[i].fidelity.score, reverse=True)
         return [attempts[i].label for i in ranked[:SCREEN]]
 
+    def screened(self, attempts: Sequence[Attempt], score: tuple) -> list[Attempt] | None:
+        """All candidates in the current level if they do at least as well as `score`, else
+        None. Screening: first only the SCREEN shots that came nearest in `attempts`; the
+        others are simulated only if one of these does as well (most proposals fail)."""
+        trial = self.attempts(only=self.most_promising(attempts))
+        if not trial or max(a.fidelity.score for a in trial) < score:
+            return None
+        return self.attempts(done=trial)
+
     # ---- constraint checks ------------------------------------------------------------------
     def consistent(self, level: Level, moved: frozenset = frozenset()) -> bool:
         """Every layout edge of the chosen conjunction holds, nothing overlaps, all inside the area.
@@ -718,16 +727,11 @@ class Satisfier:
                 rounds += 1
                 saved = self.level
                 self.level = level
-                # Screening: a proposal is judged first by the shots that came nearest so far;
-                # only if one of them does as well as before are the others simulated too.
-                trial = self.attempts(only=self.most_promising(attempts)) if description not in self.repairs else []
-                if max((a.fidelity.score for a in trial), default=score) >= score and trial:
-                    trial = self.attempts(done=trial)
-                trial_score = max((a.fidelity.score for a in trial), default=None)
-                if trial_score is not None and trial_score >= score and description not in self.repairs:
+                trial = None if description in self.repairs else self.screened(attempts, score)
+                if trial is not None:
                     self.repairs.append(description)
                     self.adopt(level)
-                    attempts, score = trial, trial_score
+                    attempts, score = trial, max(a.fidelity.score for a in trial)
                     break
                 self.level = saved
                 if rounds >= self.repair_rounds:
