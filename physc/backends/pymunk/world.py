@@ -168,7 +168,9 @@ class PymunkWorld:
         return events
 
     def ended(self) -> list[tuple[str, str]]:
-        events, self._ended = self._ended, []
+        # Chipmunk reports separations while walking a hash set keyed by memory addresses:
+        # their order within a step would vary from process to process.
+        events, self._ended = sorted(self._ended), []
         return events
 
     def touching(self, name: str) -> set[str]:
