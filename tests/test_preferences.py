@@ -29,6 +29,25 @@ def test_round_blocks_in_a_chain_share_their_size():
     assert {d["rBlock1"] for d in chains} == {"circle", "circleSmall"}
 
 
+def test_a_pig_at_the_end_of_a_chain_is_small():
+    # The destroyer got its momentum through at least two collisions: the pig is small.
+    for name in ("RF", "RS", "FR", "SR", "RRF", "RRR"):
+        assert {d["pig"] for d in draws(name)} == {"pigSmall"}, name
+    # The bird hits the destroyer itself (R, F, S, BF) or destroys the pig (SF, B): either pig.
+    for name in ("SF", "R", "F", "S", "B", "BF"):
+        assert {d["pig"] for d in draws(name)} == {"pigSmall", "pigMedium"}, name
+
+
+def test_a_declared_pig_is_kept_at_the_end_of_a_chain():
+    scenario = scenario_from_text(
+        "scenario X {\n  objects {\n    pig: pig = pigMedium\n  }\n"
+        "  interactions {\n    hit(bird, rBlock1, left) > roll(rBlock1, surface1, right) > hit(rBlock1, rBlock2, left)\n"
+        "    > roll(rBlock2, surface2, right) > hit(rBlock2, pig, left) > destroy(rBlock2, pig)\n  }\n}\n"
+    )
+    graph = InferLayout(DOMAIN).run(scenario)
+    assert {choose_concrete(scenario, graph, random.Random(s))["pig"] for s in range(20)} == {"pigMedium"}
+
+
 def test_declared_objects_are_kept():
     scenario = scenario_from_text(
         "scenario X {\n  objects {\n    rBlock2: rollableBlock = circle\n  }\n"

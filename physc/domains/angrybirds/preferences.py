@@ -1,4 +1,4 @@
-"""A physics-aware preference for the concrete objects of a scenario.
+"""Physics-aware preferences for the concrete objects of a scenario.
 
 The object grammar lets each `rBlock` be a circle or a circleSmall, independently.
 But a small circle hitting a large one at rest on the same surface pushes it
@@ -8,17 +8,28 @@ circles the impulse passes through both centres, level with the surface. So a
 round block hit by a round block takes its hitter's size, where the scenario
 allows it; a declared concrete object (`rBlock: rollableBlock = circle`) is kept.
 
+A pig at the end of a chain is small. Its destroyer is a block the bird does not
+hit itself: the bird's momentum (0.545 × at most 10) has passed through at least
+two collisions, and rolled or slid on friction, before it arrives. A medium pig
+(life 15, defence 1) needs a momentum of (15 + 1) / (11.22 · 0.5) ≈ 2.85 at the
+impact (sciencebirds-facts §3): an ice square would have to arrive at 6.5 units/s.
+A small pig (life 1) dies at a tenth of that. Where the bird hits the destroyer
+itself (R, F, S), the pig keeps its draw.
+
 Other preferences were measured and dropped (docs/generation.md): a small pig for
-block attackers (R needed 10.9 instead of 7.6 layouts per task), square sliders
-(S lost 4 of 30 tasks), and fixed materials along a chain (no gain).
+every block attacker, the bird's direct targets included (R needed 10.9 instead of
+7.6 layouts per task), square sliders (S lost 4 of 30 tasks), and fixed materials
+along a chain (no gain).
 """
 
 from __future__ import annotations
 
 from physc.compiler.layout_graph import LayoutGraph
+from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
 ROUND = ("circle", "circleSmall")
+SMALL_PIG = "pigSmall"
 
 
 def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
@@ -33,8 +44,23 @@ def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[s
             concrete[b] = concrete[a]
 
 
+def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
+    """A pig destroyed by a block that the bird does not hit itself is small (when the
+    scenario allows it)."""
+    allowed = {node.name: node.concrete for node in graph.nodes}
+    player = {o.name for o in scenario.objects if o.term == VOCABULARY.player}
+    hit_by_player = {t.objects[1] for t in scenario.interactions if t.name == "hit" and t.objects[0] in player}
+    for term in scenario.interactions:
+        if term.name != "destroy":
+            continue
+        destroyer, pig = term.objects
+        if destroyer not in player and destroyer not in hit_by_player and SMALL_PIG in allowed.get(pig, ()):
+            concrete[pig] = SMALL_PIG
+
+
 def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, str]:
     """A concrete object for every node of the layout graph, drawn with the preference."""
     concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
     match_round_sizes(scenario, graph, concrete)
+    small_pig_at_chain_end(scenario, graph, concrete)
     return concrete
