@@ -59,7 +59,7 @@ def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: d
 
 
 def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, str]:
-    """A concrete object for every node of the layout graph, drawn with the preference."""
+    """A concrete object for every node of the layout graph, drawn with the preferences."""
     concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
     match_round_sizes(scenario, graph, concrete)
     small_pig_at_chain_end(scenario, graph, concrete)
