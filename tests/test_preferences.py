@@ -92,3 +92,38 @@ def test_a_bird_breaking_cannot_hit_gets_a_platform_across_its_flight():
     cleared = [satisfier.simulate(offending.shot, level) for _, level in proposals]
     assert any(not satisfier.bird_intrusions(a) for a in cleared)
     assert isinstance(cleared[0], Attempt) and fidelity(scenario, cleared[0].trace).total == 4
+
+
+def materials_drawn(name: str, seeds=range(30)):
+    scenario = paper_scenarios()[name]
+    graph = InferLayout(DOMAIN).run(scenario)
+    out = []
+    for seed in seeds:
+        bodies = DOMAIN.concretize(graph, scenario, random.Random(seed))
+        out.append({n: b.material for n, b in bodies.items()})
+    return out
+
+
+DENSER = {("wood", "stone"), ("ice", "wood"), ("ice", "stone")}  # (lighter, heavier)
+
+
+def test_momentum_passes_down_a_chain_from_heavier_to_lighter():
+    # A block the bird hits and that then moves is never stone; a block hit by a block
+    # is never denser than its hitter.
+    for name in ("R", "S", "RF", "RS", "FR", "SR", "RRR", "SFR"):
+        scenario = paper_scenarios()[name]
+        hits = [t.objects for t in scenario.interactions if t.name == "hit" and t.objects[1] != "pig"]
+        for drawn in materials_drawn(name):
+            for hitter, target in hits:
+                if hitter == "bird":
+                    assert drawn[target] != "stone", (name, target)
+                else:
+                    assert (drawn[hitter], drawn[target]) not in DENSER, (name, hitter, target, drawn)
+
+
+def test_a_moving_block_keeps_both_light_materials():
+    # Stone becomes wood; wood and ice are still both drawn, at the head of a chain and
+    # (taking the hitter's material) at its end.
+    assert {d["fBlock"] for d in materials_drawn("F")} == {"wood", "ice"}
+    assert {d["rBlock1"] for d in materials_drawn("RRR")} == {"wood", "ice"}
+    assert {d["rBlock3"] for d in materials_drawn("RRR")} == {"wood", "ice"}

@@ -1,8 +1,8 @@
 """Choosing concrete game objects, materials and shapes for a layout graph.
 
 Every choice is drawn from the seeded generator handed in, so the same seed gives
-the same level. Concrete objects are drawn with physics-aware preferences
-(preferences.py). Platforms get lengths by role: a surface that something rolls or
+the same level. Concrete objects are drawn with physics-aware preferences, and
+materials adjusted so that momentum passes down a chain (preferences.py). Platforms get lengths by role: a surface that something rolls or
 slides on is long enough to gain speed on; a support is short. An inclined
 surface that something rolls or slides on declines towards the motion (10° to
 25°); any other inclined surface (for a bounce) tilts 15° to 40° either way.
@@ -12,11 +12,13 @@ from __future__ import annotations
 
 import random
 
+import attrs
+
 from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION, LayoutGraph
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
-from physc.domains.angrybirds.preferences import choose_concrete
+from physc.domains.angrybirds.preferences import choose_concrete, light_chain_materials
 from physc.domains.angrybirds.world import (
     BIRD_REST,
     GROUND_TOP,
@@ -75,4 +77,7 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random) -> 
         low = max(low, 3 * widest + 0.4)
         high = max(high, low + 1.0)
         bodies[name] = Body(name, node.role, chosen, Geometry(_length(rng, (low, high)), PLATFORM_THICKNESS))
+    materials = {name: body.material for name, body in bodies.items()}
+    light_chain_materials(scenario, materials)
+    bodies = {name: attrs.evolve(body, material=materials[name]) for name, body in bodies.items()}
     return {node.name: bodies[node.name] for node in graph.nodes}

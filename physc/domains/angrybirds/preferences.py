@@ -16,6 +16,17 @@ impact (sciencebirds-facts §3): an ice square would have to arrive at 6.5 units
 A small pig (life 1) dies at a tenth of that. Where the bird hits the destroyer
 itself (R, F, S), the pig keeps its draw.
 
+Materials pass momentum down a chain from heavier to lighter. A collision gives
+its target at most (1 + e)·m₁/(m₁ + m₂) of the hitter's speed. Hit by the bird
+(mass 0.545, bounciness 0.43), a large circle gets 0.34 of the bird's speed if it
+is stone (mass 1.77), 0.65 if wood (0.66), 0.89 if ice (0.33); a stone ball hit
+by the bird was seen to start at 0.7 units/s and stop short, and a stone block hit
+by a wooden ball hardly moves. So a
+block the bird hits that then rolls, slides or falls is not stone (it becomes
+wood), and a block hit by a block is no denser than its hitter (it takes the
+hitter's material). The materials are drawn as before and then adjusted, so
+scenarios without such chains keep their levels.
+
 Other preferences were measured and dropped (docs/generation.md): a small pig for
 every block attacker, the bird's direct targets included (R needed 10.9 instead of
 7.6 layouts per task), square sliders (S lost 4 of 30 tasks), and fixed materials
@@ -25,11 +36,13 @@ along a chain (no gain).
 from __future__ import annotations
 
 from physc.compiler.layout_graph import LayoutGraph
+from physc.domains.angrybirds.catalogue import MATERIAL
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
 ROUND = ("circle", "circleSmall")
 SMALL_PIG = "pigSmall"
+DENSITY = {name: material.density for name, material in MATERIAL.items()}
 
 
 def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
@@ -64,3 +77,22 @@ def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, 
     match_round_sizes(scenario, graph, concrete)
     small_pig_at_chain_end(scenario, graph, concrete)
     return concrete
+
+
+def light_chain_materials(scenario: ScenarioIR, materials: dict[str, str | None]) -> None:
+    """Momentum passes down a chain only from heavier to lighter: a block the bird hits
+    and that then moves is not stone, and, in sequence order, a block hit by a block is
+    no denser than its hitter (it takes the hitter's material)."""
+    player = {o.name for o in scenario.objects if o.term == VOCABULARY.player}
+    movers = {t.objects[0] for t in scenario.interactions if t.name in ("roll", "slide", "fall")}
+    for term in scenario.interactions:
+        if term.name != "hit":
+            continue
+        hitter, target = term.objects
+        if materials.get(target) is None:
+            continue
+        if hitter in player:
+            if target in movers and materials[target] == "stone":
+                materials[target] = "wood"
+        elif materials.get(hitter) is not None and DENSITY[materials[target]] > DENSITY[materials[hitter]]:
+            materials[target] = materials[hitter]
