@@ -127,3 +127,11 @@ def test_a_moving_block_keeps_both_light_materials():
     assert {d["fBlock"] for d in materials_drawn("F")} == {"wood", "ice"}
     assert {d["rBlock1"] for d in materials_drawn("RRR")} == {"wood", "ice"}
     assert {d["rBlock3"] for d in materials_drawn("RRR")} == {"wood", "ice"}
+
+
+def test_a_block_a_ball_hits_sideways_is_a_square():
+    # RF's fBlock and RS's sBlock are hit from the left by rBlock: never a triangle.
+    assert {d["fBlock"] for d in draws("RF")} == {"squareHole", "circle", "circleSmall"}
+    assert {d["sBlock"] for d in draws("RS")} == {"squareHole"}
+    # S's sBlock is hit by the bird: both shapes stay.
+    assert {d["sBlock"] for d in draws("S")} == {"squareHole", "triangleHole"}

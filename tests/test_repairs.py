@@ -255,3 +255,60 @@ def test_obstacles_across_go_further_back_and_shorter_when_asked():
         assert platform.scale_x * PLATFORM_BASE == pytest.approx(length, abs=1e-4)
         # Along a flight that curves, the straight distance is a little shorter than the way walked.
         assert 0.8 * backs[0] < math.dist((platform.x, platform.y), hit) < backs[0] + 0.5
+
+
+def test_a_fragile_shot_is_centred_in_its_window_of_working_angles(monkeypatch):
+    s = satisfier("R", 4)  # its first layout works as placed
+    solution = s.working(s.attempts())[0]
+    angle = solution.shot.release_angle()
+    # Pretend the sequence is realised only from angle - 0.05° to angle + 0.25°: the
+    # shot found lies near the low edge of its window, the middle is angle + 0.10°.
+    real = s.simulate
+
+    def simulate(shot, level=None):
+        attempt = real(shot, level)
+        inside = -0.05 - 1e-6 <= shot.release_angle() - angle <= 0.25 + 1e-6
+        whole = attrs.evolve(attempt.fidelity, matched=attempt.fidelity.total, violations=(), solved=inside)
+        return attrs.evolve(attempt, fidelity=whole)
+
+    monkeypatch.setattr(s, "simulate", simulate)
+    centred = s.centred(solution)
+    assert centred is not None and centred.label == solution.label
+    assert centred.shot.release_angle() - angle == pytest.approx(0.10, abs=1e-4)
+    assert centred.shot.trajectory == solution.shot.trajectory
+    assert centred.shot.target[0] == solution.shot.target[0]  # named by its point above the same x
+
+
+def test_a_shot_alone_in_its_window_stays():
+    s = satisfier("R", 4)  # its first layout works as placed
+    solution = s.working(s.attempts())[0]
+    # R seed 4's first layout works at this one angle, not 0.05° either side: nothing to move.
+    assert s.centred(solution) is None
+
+
+def test_world_beyond_brings_a_target_nearer_along_the_heading():
+    s = satisfier("R", 4)
+    before = s.objects
+    start = _span(before["pig"])[0]
+    level = s.world_beyond(start - 1e-3, 0.3, 1.0)
+    assert level is not None
+    after = {o.name: o for o in level.objects}
+    assert after["pig"].x == pytest.approx(before["pig"].x - 0.3)
+    assert after["rBlock"] == before["rBlock"]
+    support = s.support_of["pig"]
+    assert _span(after[support])[0] == pytest.approx(_span(before[support])[0])  # near end stays
+    assert extent(after[support])[0] == pytest.approx(extent(before[support])[0] - 0.3)
+    assert s.world_beyond(start - 1e-3, 50.0, 1.0) is None  # the surface would vanish
+
+
+def test_a_fragile_solution_is_firmed_up_by_bringing_targets_nearer(monkeypatch):
+    s = satisfier("R", 4)  # its first layout works as placed
+    solution = s.working(s.attempts())[0]
+    pig_x = s.objects["pig"].x
+    # Pretend noise breaks the solution unless the pig is at least 0.1 nearer (0.15 nearer,
+    # the solution still works; 0.3 nearer, it does not).
+    monkeypatch.setattr(s, "robustness", lambda attempt, level=None: (6 if {o.name: o for o in (level or s.level).objects}["pig"].x < pig_x - 0.1 else 2, 6))
+    firmed, passed = s.firmed(solution, 2)
+    assert passed == 6 and firmed.fidelity.valid
+    assert s.objects["pig"].x == pytest.approx(pig_x - 0.15)
+    assert s.repairs[-1].startswith("firmer: pig")

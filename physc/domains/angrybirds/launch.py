@@ -48,6 +48,15 @@ class Shot:
         angle = math.degrees(math.atan(tangent))
         return angle if dx > 0 else angle + 180.0
 
+    def at_angle(self, angle: float, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> Shot:
+        """The shot released at `angle` instead, named like this one: by the point of its
+        flight above the same x as this shot's target, on the same trajectory."""
+        x = self.target[0]
+        dx = x - BIRD_REST[0]
+        theta = math.radians(angle)
+        y = BIRD_REST[1] + dx * math.tan(theta) - gravity * dx * dx / (2 * speed**2 * math.cos(theta) ** 2)
+        return Shot(target=(x, round(y, 6)), trajectory=self.trajectory)
+
     def velocity(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
         angle = math.radians(self.release_angle(speed, gravity))
         return speed * math.cos(angle), speed * math.sin(angle)

@@ -27,6 +27,10 @@ wood), and a block hit by a block is no denser than its hitter (it takes the
 hitter's material). The materials are drawn as before and then adjusted, so
 scenarios without such chains keep their levels.
 
+A block hit from the side by a round block is a square, not a triangle: the ball
+climbs the triangle's slanted face and is recognised hitting it from above (RF's
+fBlock, RS's sBlock and the 8-interaction fallers).
+
 Other preferences were measured and dropped (docs/generation.md): a small pig for
 every block attacker, the bird's direct targets included (R needed 10.9 instead of
 7.6 layouts per task), square sliders (S lost 4 of 30 tasks), and fixed materials
@@ -42,6 +46,8 @@ from physc.dsl.scenario import ScenarioIR
 
 ROUND = ("circle", "circleSmall")
 SMALL_PIG = "pigSmall"
+SQUARE, TRIANGLE = "squareHole", "triangleHole"
+SIDEWAYS = {"left", "right"}
 DENSITY = {name: material.density for name, material in MATERIAL.items()}
 
 
@@ -71,11 +77,24 @@ def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: d
             concrete[pig] = SMALL_PIG
 
 
+def square_when_a_ball_hits_sideways(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
+    """A block hit from the side by a round block is a square, not a triangle (when the
+    scenario allows it): the ball would climb the triangle's slanted face."""
+    allowed = {node.name: node.concrete for node in graph.nodes}
+    for term in scenario.interactions:
+        if term.name != "hit" or concrete.get(term.objects[0]) not in ROUND or not set(term.directions) <= SIDEWAYS:
+            continue
+        target = term.objects[1]
+        if concrete.get(target) == TRIANGLE and SQUARE in allowed.get(target, ()):
+            concrete[target] = SQUARE
+
+
 def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, str]:
     """A concrete object for every node of the layout graph, drawn with the preferences."""
     concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
     match_round_sizes(scenario, graph, concrete)
     small_pig_at_chain_end(scenario, graph, concrete)
+    square_when_a_ball_hits_sideways(scenario, graph, concrete)
     return concrete
 
 

@@ -74,6 +74,9 @@ FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targ
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 ROBUSTNESS_REPLAYS = 6  # replays under the evaluation's noise model (angle σ 0.1°, positions σ 0.005)
 ROBUST_ENOUGH = 6  # of them must realise the sequence, or the layout is given up
+CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
+CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
+FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
@@ -304,24 +307,31 @@ class Satisfier:
         # (a round mover may overlap a round goal's box and still stop short of its outline)
         cut = min(reach + max(gap, 0.0) / 2, start - 1e-3)
         for overlap in (0.3, 0.8):
-            shift = -(gap + overlap)  # along the heading
-            changed = {}
-            for name, obj in objects.items():
-                near, far = sorted(sign * x for x in _span(obj))
-                if name == BIRD or far <= cut:
-                    continue
-                if near >= cut:
-                    changed[name] = attrs.evolve(obj, x=round(obj.x + sign * shift, 5))
-                elif obj.element == "Platform" and not obj.rotation and extent(obj)[0] + shift >= MIN_PLATFORM:
-                    length = extent(obj)[0] + shift
-                    changed[name] = attrs.evolve(obj, x=round(obj.x + sign * shift / 2, 5), scale_x=round(length / PLATFORM_BASE, 5))
-                else:
-                    changed = {}
-                    break
-            if changed:
-                candidate = self.with_objects(changed)
-                if self.consistent(candidate, frozenset(changed)):
-                    yield f"{mover} stopped short of {goal}: the world beyond {gap + overlap:.2f} closer", candidate
+            candidate = self.world_beyond(cut, gap + overlap, sign)
+            if candidate is not None:
+                yield f"{mover} stopped short of {goal}: the world beyond {gap + overlap:.2f} closer", candidate
+
+    def world_beyond(self, cut: float, distance: float, sign: float) -> Level | None:
+        """The level with everything beyond `cut` (along the heading `sign`) shifted
+        `distance` back towards it, the flat platforms across the cut shorter by as much;
+        None if a platform would get too short or something else spans the cut, or the
+        result breaks a layout edge."""
+        changed = {}
+        for name, obj in self.objects.items():
+            near, far = sorted(sign * x for x in _span(obj))
+            if name == BIRD or far <= cut:
+                continue
+            if near >= cut:
+                changed[name] = attrs.evolve(obj, x=round(obj.x - sign * distance, 5))
+            elif obj.element == "Platform" and not obj.rotation and extent(obj)[0] - distance >= MIN_PLATFORM:
+                length = extent(obj)[0] - distance
+                changed[name] = attrs.evolve(obj, x=round(obj.x - sign * distance / 2, 5), scale_x=round(length / PLATFORM_BASE, 5))
+            else:
+                return None
+        if not changed:
+            return None
+        candidate = self.with_objects(changed)
+        return candidate if self.consistent(candidate, frozenset(changed)) else None
 
     def expose(self, declared):
         """The first hit did not happen from an allowed side: the target's own support
@@ -704,6 +714,59 @@ class Satisfier:
                 passed += 1
         return passed, ROBUSTNESS_REPLAYS
 
+    def centred(self, attempt: Attempt) -> Attempt | None:
+        """A solution that noise breaks too often, moved to the middle of the interval of
+        release angles around it that realise the sequence (a chain's window of working
+        angles can be narrow, and the shot found may lie at its edge): None if the middle
+        is the shot itself or does not realise the sequence."""
+        angle = attempt.shot.release_angle()
+
+        def works(step: int) -> bool:
+            return self.simulate(attempt.shot.at_angle(angle + step * CENTRING_STEP)).fidelity.valid
+
+        low = 0
+        while low > -CENTRING_STEPS and works(low - 1):
+            low -= 1
+        high = 0
+        while high < CENTRING_STEPS and works(high + 1):
+            high += 1
+        if low + high == 0:
+            return None
+        centre = self.simulate(attempt.shot.at_angle(angle + (low + high) / 2 * CENTRING_STEP))
+        return attrs.evolve(centre, label=attempt.label) if centre.fidelity.valid else None
+
+    def firmed(self, chosen: Attempt, passed: int) -> tuple[Attempt, int]:
+        """A working solution that noise breaks too often: a block that rolls or slides into
+        its next target may arrive too slowly, or only just, so that target and the world
+        beyond it come a little nearer (the last such link first). A change is kept when
+        the solution still realises the sequence and survives more noisy replays. Returns
+        the solution in the level as it is now and how many replays it passes."""
+        for index in reversed(range(len(self.scenario.interactions))):
+            term = self.scenario.interactions[index]
+            mover, goal = term.objects[0], term.objects[-1]
+            heading = self.heading_of(mover, index) if term.name == "hit" else None
+            if heading is None or goal not in self.objects:
+                continue
+            sign = 1.0 if heading == "right" else -1.0
+            start = min(sign * x for x in _span(self.objects[goal]))
+            for distance in FIRMING:
+                candidate = self.world_beyond(start - 1e-3, distance, sign)
+                if candidate is None:
+                    continue
+                trial = self.simulate(chosen.shot, candidate)
+                if not trial.fidelity.valid:
+                    continue
+                trial = attrs.evolve(trial, label=chosen.label)
+                score = self.robustness(trial, candidate)[0]
+                if score > passed:
+                    self.repairs.append(f"firmer: {goal} and the world beyond {distance:.2f} nearer to {mover}")
+                    self.adopt(candidate)
+                    chosen, passed = trial, score
+                    if passed >= ROBUST_ENOUGH:
+                        return chosen, passed
+                    break
+        return chosen, passed
+
     def solving_shot(self, obj: LevelObject, level: Level) -> Attempt | None:
         """A shot at one of obj's points of interest that solves the level, if any."""
         for label, shot in candidate_shots(obj):
@@ -742,10 +805,20 @@ class Satisfier:
                 if not self.working(attempts):
                     return None
         working = self.working(attempts)
-        # The first working candidate that noise does not break (at most three are
-        # replayed); if none holds up, the next layout is tried.
-        for chosen in working[:3]:
+        # The first working candidate that noise does not break, or else its shot moved
+        # to the middle of its window of working angles (at most three are replayed);
+        # if none holds up, the next layout is tried.
+        for candidate in working[:3]:
+            chosen = candidate
             passed, total = self.robustness(chosen)
+            if passed >= ROBUST_ENOUGH:
+                break
+            chosen = self.centred(candidate)
+            if chosen is not None:
+                passed, total = self.robustness(chosen)
+                if passed >= ROBUST_ENOUGH:
+                    break
+            chosen, passed = self.firmed(chosen or candidate, passed)
             if passed >= ROBUST_ENOUGH:
                 break
         else:
