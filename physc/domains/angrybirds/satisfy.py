@@ -702,9 +702,10 @@ class Satisfier:
             self.level = before
 
     # ---- robustness ------------------------------------------------------------------------------
-    def robustness(self, attempt: Attempt, level: Level | None = None) -> tuple[int, int]:
-        """How many replays under noise (the evaluation's model) realise the sequence."""
-        noise = random.Random(f"robustness/{attempt.label}/{attempt.shot.release_angle():.6f}")
+    def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
+        """How many replays under noise (the evaluation's model) realise the sequence
+        (`stream` names the noise drawn: another name, other replays)."""
+        noise = random.Random(f"{stream}/{attempt.label}/{attempt.shot.release_angle():.6f}")
         angle = attempt.shot.release_angle()
         passed = 0
         level = level or self.level
@@ -806,8 +807,9 @@ class Satisfier:
                     return None
         working = self.working(attempts)
         # The first working candidate that noise does not break, or else its shot moved
-        # to the middle of its window of working angles (at most three are replayed);
-        # if none holds up, the next layout is tried.
+        # to the middle of its window of working angles, or the world around it firmed up,
+        # confirmed by fresh replays (at most three are tried); if none holds up, the next
+        # layout is tried.
         for candidate in working[:3]:
             chosen = candidate
             passed, total = self.robustness(chosen)
@@ -816,10 +818,11 @@ class Satisfier:
             chosen = self.centred(candidate)
             if chosen is not None:
                 passed, total = self.robustness(chosen)
-                if passed >= ROBUST_ENOUGH:
-                    break
-            chosen, passed = self.firmed(chosen or candidate, passed)
-            if passed >= ROBUST_ENOUGH:
+            if chosen is None or passed < ROBUST_ENOUGH:
+                chosen, passed = self.firmed(chosen or candidate, passed)
+            # A solution made to pass the replays was chosen for passing them: it must
+            # pass as many fresh ones too.
+            if passed >= ROBUST_ENOUGH and self.robustness(chosen, stream="confirmation")[0] >= ROBUST_ENOUGH:
                 break
         else:
             return None
