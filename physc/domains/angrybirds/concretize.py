@@ -2,8 +2,9 @@
 
 Every choice is drawn from the seeded generator handed in, so the same seed gives
 the same level. Concrete objects are drawn with physics-aware preferences, and
-materials adjusted so that momentum passes down a chain (preferences.py). Platforms get lengths by role: a surface that something rolls or
-slides on is long enough to gain speed on; a support is short. An inclined
+materials adjusted so that momentum passes down a chain (preferences.py).
+Platforms get lengths by role: a surface that something rolls or slides on is
+long enough to gain speed on; a support is short. An inclined
 surface that something rolls or slides on declines towards the motion (10° to
 25°); any other inclined surface (for a bounce) tilts 15° to 40° either way.
 """

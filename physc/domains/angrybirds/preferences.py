@@ -21,11 +21,10 @@ its target at most (1 + e)·m₁/(m₁ + m₂) of the hitter's speed. Hit by the
 (mass 0.545, bounciness 0.43), a large circle gets 0.34 of the bird's speed if it
 is stone (mass 1.77), 0.65 if wood (0.66), 0.89 if ice (0.33); a stone ball hit
 by the bird was seen to start at 0.7 units/s and stop short, and a stone block hit
-by a wooden ball hardly moves. So a
-block the bird hits that then rolls, slides or falls is not stone (it becomes
-wood), and a block hit by a block is no denser than its hitter (it takes the
-hitter's material). The materials are drawn as before and then adjusted, so
-scenarios without such chains keep their levels.
+by a wooden ball hardly moves. So a block the bird hits that then rolls, slides or
+falls is not stone (it becomes wood), and a block hit by a block is no denser than
+its hitter (it takes the hitter's material). The materials are drawn as before and
+then adjusted, so scenarios without such blocks keep their levels.
 
 A block hit from the side by a round block is a square, not a triangle: the ball
 climbs the triangle's slanted face and is recognised hitting it from above (RF's

@@ -25,7 +25,9 @@ Once a candidate realises the whole sequence, `pathObstructed(a, b, d)` (from
 forbidden side, each verified by simulation not to disturb the solution, and
 `guard_accidents` does the same for shots at other objects that solve the level.
 The solution kept is the first candidate that survives every noisy replay, on the
-level as finally written.
+level as finally written. A candidate that fails some is first centred in its window
+of working release angles, then firmed up (the targets of rolling and sliding blocks
+brought nearer); one made to pass that way must pass as many fresh replays too.
 """
 
 from __future__ import annotations
