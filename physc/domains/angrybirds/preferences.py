@@ -50,10 +50,19 @@ SIDEWAYS = {"left", "right"}
 DENSITY = {name: material.density for name, material in MATERIAL.items()}
 
 
+def _allowed(graph: LayoutGraph) -> dict[str, tuple[str, ...]]:
+    """The concrete objects the scenario allows for each node."""
+    return {node.name: node.concrete for node in graph.nodes}
+
+
+def _players(scenario: ScenarioIR) -> set[str]:
+    return {o.name for o in scenario.objects if o.term == VOCABULARY.player}
+
+
 def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
     """In sequence order, a round block hit by a round block takes its hitter's size
     (when the scenario allows it)."""
-    allowed = {node.name: node.concrete for node in graph.nodes}
+    allowed = _allowed(graph)
     for term in scenario.interactions:
         if term.name != "hit":
             continue
@@ -65,8 +74,8 @@ def match_round_sizes(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[s
 def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
     """A pig destroyed by a block that the bird does not hit itself is small (when the
     scenario allows it)."""
-    allowed = {node.name: node.concrete for node in graph.nodes}
-    player = {o.name for o in scenario.objects if o.term == VOCABULARY.player}
+    allowed = _allowed(graph)
+    player = _players(scenario)
     hit_by_player = {t.objects[1] for t in scenario.interactions if t.name == "hit" and t.objects[0] in player}
     for term in scenario.interactions:
         if term.name != "destroy":
@@ -79,7 +88,7 @@ def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: d
 def square_when_a_ball_hits_sideways(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
     """A block hit from the side by a round block is a square, not a triangle (when the
     scenario allows it): the ball would climb the triangle's slanted face."""
-    allowed = {node.name: node.concrete for node in graph.nodes}
+    allowed = _allowed(graph)
     for term in scenario.interactions:
         if term.name != "hit" or concrete.get(term.objects[0]) not in ROUND or not set(term.directions) <= SIDEWAYS:
             continue
@@ -101,7 +110,7 @@ def light_chain_materials(scenario: ScenarioIR, materials: dict[str, str | None]
     """Momentum passes down a chain only from heavier to lighter: a block the bird hits
     and that then moves is not stone, and, in sequence order, a block hit by a block is
     no denser than its hitter (it takes the hitter's material)."""
-    player = {o.name for o in scenario.objects if o.term == VOCABULARY.player}
+    player = _players(scenario)
     movers = {t.objects[0] for t in scenario.interactions if t.name in ("roll", "slide", "fall")}
     for term in scenario.interactions:
         if term.name != "hit":
