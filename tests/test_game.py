@@ -126,6 +126,9 @@ def test_batched_states_match_one_by_one_reads_awake_asleep_and_gone():
         if step == 250:
             world.remove("ball1")
         rows = world.states(["ball3", *names])
+        into = np.zeros((len(names) + 1, 6))
+        world.states(("ball3", *names), out=into)  # another sequence of the same names, into an array
+        assert np.array_equal(rows, into, equal_nan=True)
         for name, row in zip(["ball3", *names], rows):
             if name in world.bodies:
                 assert tuple(row) == world.state(name)
@@ -133,3 +136,31 @@ def test_batched_states_match_one_by_one_reads_awake_asleep_and_gone():
             else:
                 assert np.isnan(row).all()
     assert asleep  # the read was also checked while bodies slept
+
+
+def test_direct_steps_equal_pymunks_own_steps():
+    """The world steps Chipmunk directly once nothing was added or removed since the last
+    step; pymunk's own `Space.step` throughout must give the very same run."""
+    from physc.backends import BodySpec, Circle, Polygon
+
+    def run(own_steps: bool):
+        world = load_backend("pymunk").create_world(GRAVITY)
+        world.add(BodySpec("ground", Polygon(((-20, -0.5), (20, -0.5), (20, 0.5), (-20, 0.5))), 0.0, -4.0, static=True))
+        names = [f"box{k}" for k in range(5)]
+        for k, name in enumerate(names):
+            world.add(BodySpec(name, Polygon(((-0.4, -0.4), (0.4, -0.4), (0.4, 0.4), (-0.4, 0.4))), -3.0 + 0.9 * k, -3.0 + 0.4 * k, angular_damping=0.1))
+        world.set_velocity("box0", 6.0, 1.0)
+        rows, contacts = [], []
+        for step in range(300):
+            world.space.step(RULES.dt) if own_steps else world.step(RULES.dt)
+            if step == 120:
+                world.remove("box2")
+            if step == 150:
+                world.add(BodySpec("late", Circle(0.3), 0.0, 2.0))
+            rows.append(world.states([*names, "late"]))
+            contacts.extend((e.a, e.b, e.point) for e in world.begun())
+        return np.array(rows), contacts
+
+    direct, own = run(False), run(True)
+    assert np.array_equal(direct[0], own[0], equal_nan=True)
+    assert direct[1] == own[1] and len(direct[1]) > 5

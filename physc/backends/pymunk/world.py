@@ -10,9 +10,12 @@ damped rotary spring of no stiffness to the static body (C, not Python). Contact
 are reported from pymunk 7's `Space.on_collision` begin and separate callbacks.
 Collision slop, the skin around polygons and the solver's iterations follow
 Box2D's defaults for metre-sized objects (levels saved from the game keep
-stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). `states` reads
-every body in one batched call (pymunk.batch), which is what the game does each step. The world
-is deterministic: same bodies, same steps, same result.
+stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). The game steps
+and reads the world hundreds of times per simulation, so both are kept lean: `states` reads every
+body in one batched call (pymunk.batch) through numpy views of its buffer, and `step` calls
+Chipmunk's step directly unless bodies were added or removed since the last step (then pymunk's
+own `Space.step` does its bookkeeping). The world is deterministic: same bodies, same steps, same
+result.
 """
 
 from __future__ import annotations
@@ -67,15 +70,24 @@ class PymunkWorld:
         self._touching: dict[str, set[str]] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
         # One batched read of every body per step (pymunk.batch's own call, without
-        # building its request anew each time): the buffer, the request, the reader.
+        # building its request anew each time): the buffer, the request, the reader, and
+        # numpy views of the buffer's two arrays (`_views`, renewed when they grow).
         self._buffer = pymunk.batch.Buffer()
         self._request = pymunk.batch.ffi.new("pmBatchedData *")
         self._request.fields = BATCH_FIELDS.value
         self._request.floatArray = self._buffer._float_arr
         self._request.intArray = self._buffer._int_arr
         self._reader = pymunk.batch.ffi.addressof(pymunk.batch.lib, "pmSpaceBodyGetIteratorFuncBatched")
-        self._read_order: tuple | None = None  # (body ids as read, names asked) of the last read,
+        self._capacity = -1  # the int array's capacity when the views were made
+        self._ids = self._floats = np.empty(0)
+        self._read_order: tuple | None = None  # (body ids as read, names asked, a copy) of the last read,
         self._rows: tuple = ()  # and where the names' rows are in it: `_arrange`'s result
+        # Chipmunk's step, called directly once pymunk's own bookkeeping (checking new
+        # bodies, releasing removed shapes) has nothing to do: after the first step
+        # following an `add` or a `remove`. The callbacks never add or remove bodies.
+        self._cp_space = self.space._space
+        self._cp_step = pymunk.batch.lib.cpSpaceStep
+        self._changed = True
         self.space.on_collision(begin=self._on_begin, separate=self._on_separate)
 
     # ---- building --------------------------------------------------------------
@@ -98,6 +110,7 @@ class PymunkWorld:
         shape.friction = math.sqrt(max(spec.friction, 0.0))
         shape.elasticity = spec.bounciness
         self.space.add(body, shape)
+        self._changed = True
         if not spec.static and spec.gravity_scale != 1.0:
             body.velocity_func = _velocity_function(spec.gravity_scale)
         if not spec.static and spec.angular_damping:
@@ -118,31 +131,47 @@ class PymunkWorld:
         if name in self._drags:
             self.space.remove(self._drags.pop(name))
         self.space.remove(body, shape)
+        self._changed = True
         self.names.remove(name)
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
 
     # ---- running -----------------------------------------------------------------
     def step(self, dt: float) -> None:
-        self.space.step(dt)
+        if self._changed:
+            self.space.step(dt)
+            self._changed = False
+        else:
+            self._cp_step(self._cp_space, dt)
 
     def state(self, name: str):
         body = self.bodies[name]
         (x, y), (vx, vy) = body.position, body.velocity
         return (x, y, body.angle, vx, vy, body.angular_velocity)
 
-    def states(self, names: Sequence[str]) -> np.ndarray:
+    def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
         """`state` of every named body at once, a row per name (NaN for a body not in the
-        world), from one batched read of the space."""
-        buffer = self._buffer
-        buffer.clear()
-        pymunk.batch.lib.cpSpaceEachBody(self.space._space, self._reader, self._request)
-        ids = bytes(buffer.int_buf())
-        if self._read_order != (ids, names):
-            self._read_order = (ids, list(names))
-            self._rows = self._arrange(np.frombuffer(ids, dtype=np.uintp), names)
+        world), from one batched read of the space; into `out` if given."""
+        floats, ints = self._buffer._float_arr, self._buffer._int_arr
+        floats.num = ints.num = 0
+        pymunk.batch.lib.cpSpaceEachBody(self._cp_space, self._reader, self._request)
+        if ints.max != self._capacity:  # the arrays grew (were reallocated): view them anew
+            self._capacity = ints.max
+            ffi = pymunk.batch.ffi
+            self._ids = np.frombuffer(ffi.buffer(ints.arr, ffi.sizeof("uintptr_t") * ints.max), dtype=np.uintp)
+            self._floats = np.frombuffer(ffi.buffer(floats.arr, ffi.sizeof("cpFloat") * floats.max), dtype=np.float64)
+        count = ints.num
+        ids = self._ids[:count].tobytes()
+        order = self._read_order
+        if order is None or order[0] != ids or (order[1] is not names and order[2] != tuple(names)):
+            self._read_order = (ids, names, tuple(names))
+            self._rows = self._arrange(self._ids[:count], names)
         rows, absent = self._rows
-        out = np.frombuffer(buffer.float_buf(), dtype=np.float64).reshape(-1, 6)[rows]
+        table = self._floats[: count * 6].reshape(-1, 6)
+        if out is None:
+            out = table[rows]
+        else:
+            table.take(rows, axis=0, out=out)
         if absent is not None:
             out[absent] = np.nan
         return out

@@ -87,6 +87,7 @@ class Game:
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
         self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
+        self._bird_checked_from = min(self.rules.bird_lifetime, self.rules.bird_still_after)  # `_bird_done` is False before
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
             world.add(spec)
@@ -142,12 +143,13 @@ class Game:
                     self._damage(world, record, damage, time)
             for a, b in world.ended():
                 separations.append(SeparationRecord(time, a, b))
-            row = world.states(dynamic)
+            row = world.states(dynamic, out=states[step])  # NaN for the bodies already gone
             values = row.tolist()  # (plain floats are quicker to test than a small array)
             if self._removals(values, alive, time):
                 # Destruction: by damage, by leaving the level; birds at rest or too old go.
                 # In `dynamic` order: the order of removals must not depend on string hashing,
                 # and a TNT's blast changes the state of what is read after it.
+                row[:] = np.nan
                 for name in [n for n in dynamic if n in alive]:
                     x, y, angle, vx, vy, w = world.state(name)
                     gone = self._gone(name, x, vx, vy, time, damage)
@@ -158,10 +160,8 @@ class Game:
                         world.remove(name)
                         alive.discard(name)
                     else:
-                        states[step, index[name]] = (x, y, angle, vx, vy, w)
-                values = states[step].tolist()
-            else:
-                states[step] = row  # the rows of bodies already gone are NaN (no test below holds for NaN)
+                        row[index[name]] = (x, y, angle, vx, vy, w)
+                values = row.tolist()
             if settle_after_solved is not None and pigs:
                 if solved_at is None and not any(p in alive for p in pigs):
                     solved_at = time
@@ -188,13 +188,14 @@ class Game:
     def _removals(self, values: list, alive: set, time: float) -> bool:
         """Whether anything may leave the level this step (what does is `_gone`'s to say):
         a body whose life is spent, one outside the level, the bird at rest or too old.
-        `values`: the state of each body, NaN for the bodies already gone."""
-        if not self.spent.isdisjoint(alive):
+        `values`: the state of each body, NaN for the bodies already gone (no test holds for NaN)."""
+        if self.spent and not self.spent.isdisjoint(alive):
             return True
         left, right = self.rules.world_left, self.rules.world_right
-        if any(not left <= v[0] <= right for v in values if v[0] == v[0]):
-            return True
-        if BIRD in alive:
+        for v in values:
+            if v[0] < left or v[0] > right:
+                return True
+        if BIRD in alive and time >= self._bird_checked_from:
             _, _, _, vx, vy, _ = values[0]  # the bird, if any, is the first body
             return self._bird_done(vx, vy, time)
         return False
