@@ -31,7 +31,8 @@ from physc.compiler.infeasible import Infeasible
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
-SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up
+SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up, if no conjunction is consistent
+MAX_SHAPE_DRAWS = 120  # draws in all while consistent conjunctions are found and still asked for
 
 
 class _BudgetSpent(Exception):
@@ -66,8 +67,13 @@ class ToDimensionGraphs:
 
     def run(self, dnf: QsrDnf, graph, scenario, rng: random.Random) -> Iterator[DimensionGraphs]:
         parameters = self.domain.layout_parameters
-        tried = rejected = 0
-        for draw in range(SHAPE_DRAWS):
+        tried = rejected = found = 0
+        for draw in range(MAX_SHAPE_DRAWS):
+            # Each draw yields the consistent conjunctions for its shapes; once some were
+            # found, the caller decides how many it wants (its budget of layouts) and shapes
+            # are drawn on for it; if none are, the search gives up after SHAPE_DRAWS.
+            if draw >= SHAPE_DRAWS and not found:
+                break
             bodies = self.domain.concretize(graph, scenario, rng)
             systems, base = self.base(bodies)
             nodes = 0
@@ -94,7 +100,8 @@ class ToDimensionGraphs:
                     yield from walk(depth + 1, following, chosen + ((clause, relation, tuple(constraints)),))
 
             try:
-                for found, chosen in walk(0, systems, ()):
+                for consistent, chosen in walk(0, systems, ()):
+                    found += 1
                     yield DimensionGraphs(
                         scenario=dnf.scenario,
                         seed=dnf.seed,
@@ -105,7 +112,7 @@ class ToDimensionGraphs:
                         conjunctions_rejected=rejected,
                         dnf_size=dnf.size,
                         shape_draws=draw + 1,
-                        systems=found,
+                        systems=consistent,
                     )
                     rejected += 1  # the caller came back: it could not use this one
             except _BudgetSpent:
@@ -115,6 +122,12 @@ class ToDimensionGraphs:
                     tried=tried,
                     budget=True,
                 ) from None
+        if found:
+            raise Infeasible(
+                self.name,
+                f"the {found} consistent conjunctions of {MAX_SHAPE_DRAWS} shape draws were all used",
+                tried=tried,
+            )
         conflicts = self.explain(dnf, bodies)
         raise Infeasible(
             self.name,
