@@ -83,6 +83,17 @@ def test_thirty_seeds_give_distinct_layouts(name):
     assert len(layouts) >= 25
 
 
+def test_layouts_keep_coming_while_the_caller_asks():
+    """RS has 3 consistent conjunctions per shape draw: the first 12 draws give 36 layouts,
+    and shapes are drawn on for more (a --layouts budget above 36 is not capped)."""
+    placed = list(itertools.islice(pipeline("RS", seed=1).placements(), 45))
+    assert len(placed) == 45
+    assert max(p.graphs.shape_draws for p in placed) > 12
+    assert len({dumps(p.layout.objects) for p in placed}) == 45
+    for p in placed[36:]:
+        check_layout(p.layout)
+
+
 def test_infeasible_scenario_exits_3_and_names_the_conflict():
     path = EXAMPLES / "infeasible" / "E0801_fall_from_below.phys"
     run = run_physc("compile", path, "--emit", "layout", "--color", "never")

@@ -78,7 +78,7 @@ class PymunkWorld:
         self._request.floatArray = self._buffer._float_arr
         self._request.intArray = self._buffer._int_arr
         self._reader = pymunk.batch.ffi.addressof(pymunk.batch.lib, "pmSpaceBodyGetIteratorFuncBatched")
-        self._capacity = -1  # the int array's capacity when the views were made
+        self._capacity = (-1, -1)  # the arrays' capacities when the views were made
         self._ids = self._floats = np.empty(0)
         self._read_order: tuple | None = None  # (body ids as read, names asked, a copy) of the last read,
         self._rows: tuple = ()  # and where the names' rows are in it: `_arrange`'s result
@@ -155,8 +155,8 @@ class PymunkWorld:
         floats, ints = self._buffer._float_arr, self._buffer._int_arr
         floats.num = ints.num = 0
         pymunk.batch.lib.cpSpaceEachBody(self._cp_space, self._reader, self._request)
-        if ints.max != self._capacity:  # the arrays grew (were reallocated): view them anew
-            self._capacity = ints.max
+        if (ints.max, floats.max) != self._capacity:  # an array grew (was reallocated): view them anew
+            self._capacity = (ints.max, floats.max)
             ffi = pymunk.batch.ffi
             self._ids = np.frombuffer(ffi.buffer(ints.arr, ffi.sizeof("uintptr_t") * ints.max), dtype=np.uintp)
             self._floats = np.frombuffer(ffi.buffer(floats.arr, ffi.sizeof("cpFloat") * floats.max), dtype=np.float64)
