@@ -71,7 +71,7 @@ class PymunkWorld:
         self._drags: dict[str, pymunk.Constraint] = {}
         # One batched read of every body per step (pymunk.batch's own call, without
         # building its request anew each time): the buffer, the request, the reader, and
-        # numpy views of the buffer's two arrays (`_views`, renewed when they grow).
+        # numpy views of the buffer's two arrays (`_ids`, `_floats`; renewed when one grows).
         self._buffer = pymunk.batch.Buffer()
         self._request = pymunk.batch.ffi.new("pmBatchedData *")
         self._request.fields = BATCH_FIELDS.value
