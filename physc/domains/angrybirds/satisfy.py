@@ -108,6 +108,13 @@ def _span(obj: LevelObject) -> tuple[float, float]:
     return min(xs), max(xs)
 
 
+def _along(obj: LevelObject, sign: float) -> tuple[float, float]:
+    """The near and the far end of an object's outline box along a heading (`sign` +1
+    to the right, -1 to the left), as coordinates that grow along it."""
+    near, far = sorted(sign * x for x in _span(obj))
+    return near, far
+
+
 def _placed(obj: LevelObject, role: str) -> PlacedObject:
     width, height = extent(obj)
     return PlacedObject(obj.name, role, by_prefab(obj.type).name, obj.material, obj.x, obj.y, obj.rotation or 0.0, width, height)
@@ -302,7 +309,7 @@ class Satisfier:
         if not len(path):
             return
         reach = float(np.max(sign * path)) + extent(objects[mover])[0] / 2  # the mover's front, along the heading
-        start = min(sign * x for x in _span(objects[goal]))  # the goal's near end, along the heading
+        start = _along(objects[goal], sign)[0]  # the goal's near end
         gap = start - reach
         if gap < -extent(objects[goal])[0] / 2:
             return  # it got there (too slowly, or from the wrong side): not a matter of distance
@@ -320,7 +327,7 @@ class Satisfier:
         result breaks a layout edge."""
         changed = {}
         for name, obj in self.objects.items():
-            near, far = sorted(sign * x for x in _span(obj))
+            near, far = _along(obj, sign)
             if name == BIRD or far <= cut:
                 continue
             if near >= cut:
@@ -751,7 +758,7 @@ class Satisfier:
             if heading is None or goal not in self.objects:
                 continue
             sign = 1.0 if heading == "right" else -1.0
-            start = min(sign * x for x in _span(self.objects[goal]))
+            start = _along(self.objects[goal], sign)[0]
             for distance in FIRMING:
                 candidate = self.world_beyond(start - 1e-3, distance, sign)
                 if candidate is None:
