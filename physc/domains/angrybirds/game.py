@@ -51,6 +51,7 @@ class Game:
         self.level = level
         self.backend = backend or load_backend()
         self.rules = rules
+        self._bird_checked_from = min(rules.bird_lifetime, rules.bird_still_after)  # `_bird_done` is False before
 
     # ---- building the world ---------------------------------------------------------
     def _spec(self, obj: LevelObject) -> tuple[BodySpec, str, float, float]:
@@ -87,7 +88,6 @@ class Game:
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
         self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
-        self._bird_checked_from = min(self.rules.bird_lifetime, self.rules.bird_still_after)  # `_bird_done` is False before
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
             world.add(spec)
