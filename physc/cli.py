@@ -15,7 +15,14 @@ from typing import Sequence
 
 from physc import __version__
 from physc.commands.check import cmd_check
-from physc.commands.common import EXIT_INTERNAL, EXIT_OK, EXIT_USAGE, Parser, UsageError
+from physc.commands.common import (
+    EXIT_INTERNAL,
+    EXIT_OK,
+    EXIT_USAGE,
+    Parser,
+    UsageError,
+    add_min_robustness,
+)
 from physc.commands.compile import cmd_compile
 from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
@@ -65,6 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
     compile_.add_argument("--layouts", type=int, default=40, metavar="N", help="layouts simulation may try per task (default 40)")
     compile_.add_argument("--time-budget", type=float, default=120.0, metavar="S", help="seconds per task at most (default 120)")
+    add_min_robustness(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=int, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(

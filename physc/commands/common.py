@@ -46,3 +46,19 @@ def summary(errors: int, warnings: int, files: int) -> str:
         return f"{n} {word}{'' if n == 1 else 's'}"
 
     return f"{plural(errors, 'error')}, {plural(warnings, 'warning')} in {plural(files, 'file')}"
+
+
+def add_min_robustness(parser) -> None:
+    parser.add_argument(
+        "--min-robustness",
+        type=int,
+        metavar="K",
+        help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
+        "(6 in angrybirds), use the most robust one that passes at least K of them, confirmed by as many fresh "
+        "replays (default: none; the task JSON records the replays passed)",
+    )
+
+
+def check_min_robustness(value: int | None) -> None:
+    if value is not None and value < 1:
+        raise UsageError("--min-robustness takes a whole number of at least 1")

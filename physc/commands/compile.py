@@ -10,6 +10,7 @@ from physc.commands.common import (
     EXIT_INFEASIBLE,
     EXIT_OK,
     UsageError,
+    check_min_robustness,
     reporter,
 )
 from physc.compiler.stages import StageError, Unit, stage
@@ -63,6 +64,7 @@ def cmd_compile(args) -> int:
     from physc.dsl.frontend import analyze
     from physc.serialize import to_data
 
+    check_min_robustness(args.min_robustness)
     try:
         chosen = stage(args.emit)
     except StageError as error:
@@ -112,6 +114,7 @@ def cmd_compile(args) -> int:
             layout_budget=args.layouts,
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),
+            min_robustness=args.min_robustness,
         )
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)

@@ -8,7 +8,13 @@ import time
 from pathlib import Path
 
 from physc import diagnostics
-from physc.commands.common import EXIT_OK, UsageError, reporter
+from physc.commands.common import (
+    EXIT_OK,
+    UsageError,
+    add_min_robustness,
+    check_min_robustness,
+    reporter,
+)
 
 
 class _Progress:
@@ -57,7 +63,8 @@ def cmd_eval(args) -> int:
 
     if args.tasks < 1 or args.jobs < 1:
         raise UsageError("--tasks and --jobs take a whole number of at least 1")
-    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget)
+    check_min_robustness(args.min_robustness)
+    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness)
     if problems:
         report = reporter(args)
         for path, analysis, errors in problems:
@@ -87,6 +94,7 @@ def add_command(commands, common) -> None:
     parser.add_argument("--jobs", type=int, default=1, metavar="N", help="processes (default 1); results do not depend on it")
     parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
     parser.add_argument("--time-budget", type=float, default=300.0, metavar="S", help="seconds per task at most (default 300)")
+    add_min_robustness(parser)
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=cmd_eval)

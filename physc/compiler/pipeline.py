@@ -29,6 +29,7 @@ from physc.dsl.scenario import ScenarioIR
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 LAYOUT_BUDGET = 40  # placed layouts that simulation-based satisfaction may try
 TIME_BUDGET = 120.0  # seconds for generating one task
+FALLBACKS = 3  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
 
 @attrs.frozen
@@ -48,6 +49,7 @@ class Pipeline:
         layout_budget: int = LAYOUT_BUDGET,
         time_budget: float = TIME_BUDGET,
         source: str = "",
+        min_robustness: int | None = None,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -57,6 +59,10 @@ class Pipeline:
         self.layout_budget = layout_budget  # layouts that simulation may try
         self.time_budget = time_budget  # seconds for the whole generation
         self.source = source
+        # Noisy replays (of the domain's robustness_replays) that a solution must pass at
+        # least: when no layout within the budget gives one that passes them all, the most
+        # robust of the fragile ones that pass this many is used. None: all of them.
+        self.min_robustness = min_robustness
         self.rng = random.Random(seed)
 
     @functools.cached_property
@@ -109,20 +115,22 @@ class Pipeline:
         started = time.perf_counter()
         seconds = {"layout": 0.0, "satisfy": 0.0}
         layouts = simulations = 0
+        fragile: list[tuple[int, int, ConcreteLayout]] = []  # (-replays passed, order, layout)
         clock = time.perf_counter()
         placements = self.placements()
         while True:
             try:
                 placed = next(placements)
             except Infeasible as error:
-                if layouts:
-                    raise Infeasible(
-                        "satisfy",
-                        f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
-                        tried=error.tried,
-                        budget=error.budget,
-                    ) from None
-                raise
+                if not layouts:
+                    raise
+                failure = Infeasible(
+                    "satisfy",
+                    f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
+                    tried=error.tried,
+                    budget=error.budget,
+                )
+                break
             layouts += 1
             seconds["layout"] += time.perf_counter() - clock
             clock = time.perf_counter()
@@ -130,16 +138,35 @@ class Pipeline:
             seconds["satisfy"] += time.perf_counter() - clock
             simulations += result.simulations
             if result.satisfied:
+                failure, used = None, placed.layout
                 break
+            if self.min_robustness is not None and result.nearest >= self.min_robustness:
+                fragile.append((-result.nearest, layouts, placed.layout))
             if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
-                raise Infeasible(
+                failure = Infeasible(
                     "satisfy",
                     f"no layout realised the sequence in simulation within the budget "
                     f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
                     tried=placed.layout.conjunctions_tried,
                     budget=True,
                 )
+                break
             clock = time.perf_counter()
+        if failure is not None:
+            # No solution survived every noisy replay: the most robust of the fragile ones
+            # (each layout satisfied again, accepting as many replays as it passed).
+            clock = time.perf_counter()
+            for nearest, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
+                if time.perf_counter() - started > self.time_budget:
+                    break
+                result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=-nearest)
+                simulations += result.simulations
+                if result.satisfied:
+                    used = layout
+                    break
+            seconds["satisfy"] += time.perf_counter() - clock
+            if not result.satisfied:
+                raise failure
         seconds["total"] = time.perf_counter() - started
         parts = result.parts
         return Task(
@@ -156,7 +183,7 @@ class Pipeline:
             obstacles=parts.obstacles,
             distractors=parts.distractors,
             layouts_tried=layouts,
-            conjunctions_tried=placed.layout.conjunctions_tried,
+            conjunctions_tried=used.conjunctions_tried,
             simulations=simulations,
             seconds={k: round(v, 4) for k, v in seconds.items()},
         )

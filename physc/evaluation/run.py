@@ -34,6 +34,7 @@ class Job:
     scenario: str
     seed: int
     time_budget: float
+    min_robustness: int | None = None  # see Pipeline
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -50,14 +51,17 @@ def evaluate(job: Job) -> dict:
         "scenario": job.scenario,
         "interactions": len(scenario.interactions),
         "seed": job.seed,
+        "min_robustness": job.min_robustness,
     }
     started = time.perf_counter()
     try:
-        task = Pipeline(domain, scenario, job.seed, validate=False, time_budget=job.time_budget).task
+        task = Pipeline(
+            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness
+        ).task
     except Infeasible as error:
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return record
-    record.update(generated=True, generation_seconds=round(time.perf_counter() - started, 4))
+    record.update(generated=True, generation_seconds=round(time.perf_counter() - started, 4), robustness=list(task.robustness))
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = measure.stability(task.level)
     replay = measure.intended(task.level, task.solution, scenario, rng)
@@ -79,7 +83,9 @@ def evaluate(job: Job) -> dict:
     return record
 
 
-def jobs_for(files: list[str], tasks: int, seed: int, time_budget: float) -> tuple[list[Job], list]:
+def jobs_for(
+    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int | None = None
+) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs, problems = [], []
     for path in files:
@@ -89,7 +95,7 @@ def jobs_for(files: list[str], tasks: int, seed: int, time_budget: float) -> tup
             problems.append((path, analysis, errors))
             continue
         for scenario in analysis.scenarios:
-            jobs += [Job(path, scenario.name, seed + index, time_budget) for index in range(tasks)]
+            jobs += [Job(path, scenario.name, seed + index, time_budget, min_robustness) for index in range(tasks)]
     return jobs, problems
 
 
@@ -110,7 +116,8 @@ def done_records(folder: Path) -> dict:
 def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict]:
     ensure_folder(folder)
     records = done_records(folder)
-    todo = [job for job in jobs if job.key not in records]
+    # A record made with other generation settings is made again (the last line of a key wins).
+    todo = [job for job in jobs if job.key not in records or records[job.key].get("min_robustness") != job.min_robustness]
     path = folder / RECORDS
     # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
     if records:

@@ -3,6 +3,7 @@
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.domains.angrybirds import layout_rules, world
 from physc.domains.angrybirds.concretize import concretize
+from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 
 
@@ -11,6 +12,7 @@ class AngryBirds:
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY
     layout_rules = layout_rules
+    robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     layout_parameters = LayoutParameters(
         clearance=0.1,
         far=1.5,
@@ -53,11 +55,12 @@ class AngryBirds:
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, title, trace.paths(), supports), fmt)
 
-    def satisfy(self, scenario, layout, rng, validate: bool = True):
-        """Simulation-based satisfaction, distractions and validation of one layout."""
+    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
+        """Simulation-based satisfaction, distractions and validation of one layout; the
+        solution must pass `accept` of the noisy replays (default: all of them)."""
         from physc.domains.angrybirds.generate import satisfy
 
-        return satisfy(self, scenario, layout, rng, validate)
+        return satisfy(self, scenario, layout, rng, validate, accept)
 
 
 DOMAIN = AngryBirds()

@@ -17,7 +17,6 @@ import attrs
 
 from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.level import LevelObject
-from physc.domains.angrybirds.satisfy import ROBUST_ENOUGH
 from physc.domains.angrybirds.stability import stability
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
@@ -58,7 +57,7 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
                 continue
             if not stability(candidate)[0]:
                 continue  # it would roll or topple on its own
-            if satisfier.robustness(solution, candidate)[0] < ROBUST_ENOUGH:
+            if satisfier.robustness(solution, candidate)[0] < satisfier.accept:
                 continue  # it makes the solution fragile under noise
             if satisfier.solving_shot(obj, candidate) is not None:
                 continue  # a distraction must not be a way to solve the task

@@ -9,7 +9,7 @@ import attrs
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.task import Solution
 from physc.domains.angrybirds.distract import distract
-from physc.domains.angrybirds.satisfy import Satisfier
+from physc.domains.angrybirds.satisfy import ROBUST_ENOUGH, Satisfier
 from physc.domains.angrybirds.stability import stability
 from physc.dsl.scenario import ScenarioIR
 
@@ -31,13 +31,19 @@ class Outcome:
     satisfied: bool
     simulations: int
     parts: Parts | None = None
+    nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
 
 
-def satisfy(domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool) -> Outcome:
-    satisfier = Satisfier(domain, scenario, layout)
+def satisfy(
+    domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool, accept: int | None = None
+) -> Outcome:
+    """`accept`: the noisy replays a solution must pass (default: all of them)."""
+    satisfier = Satisfier(domain, scenario, layout, ROBUST_ENOUGH if accept is None else accept)
     found = satisfier.run()
-    if found is None or not stability(satisfier.level)[0]:
-        return Outcome(False, satisfier.simulations)  # no solution, or the task does not stand
+    if found is None:
+        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest)
+    if not stability(satisfier.level)[0]:
+        return Outcome(False, satisfier.simulations)  # the task does not stand
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).

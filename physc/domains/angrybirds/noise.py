@@ -15,6 +15,7 @@ from physc.domains.angrybirds.level import Level
 
 ANGLE_SIGMA = 0.1  # degrees
 POSITION_SIGMA = 0.005  # units
+ROBUSTNESS_REPLAYS = 6  # noisy replays of a solution while generating (the evaluation runs 10)
 
 
 def jitter(level: Level, rng: random.Random) -> Level:
