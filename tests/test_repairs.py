@@ -312,3 +312,17 @@ def test_a_fragile_solution_is_firmed_up_by_bringing_targets_nearer(monkeypatch)
     assert passed == 6 and firmed.fidelity.valid
     assert s.objects["pig"].x == pytest.approx(pig_x - 0.15)
     assert s.repairs[-1].startswith("firmer: pig")
+
+
+def test_what_a_repair_moved_may_rest_anywhere_on_its_support_in_later_checks():
+    # Closing a gap moves a target along a shortened support: in the checks of later
+    # obstacles and distractors it must still count as resting there (RS lost every
+    # obstacle this way: the pig had left the right third of its shorter surface).
+    s = satisfier("R")
+    pig = s.objects["pig"]
+    support = s.objects[s.support_of["pig"]]
+    left, right = _span(support)
+    half = extent(pig)[0] / 2
+    for x in (left + half + 0.01, (left + right) / 2, right - half - 0.01):
+        assert s.consistent(s.with_objects({"pig": attrs.evolve(pig, x=round(x, 5))})), x
+    assert not s.consistent(s.with_objects({"pig": attrs.evolve(pig, x=right + 1.0)}))  # off its support

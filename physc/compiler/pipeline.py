@@ -29,7 +29,7 @@ from physc.dsl.scenario import ScenarioIR
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 LAYOUT_BUDGET = 40  # placed layouts that simulation-based satisfaction may try
 TIME_BUDGET = 120.0  # seconds for generating one task
-FALLBACKS = 3  # fragile layouts tried again, most robust first, when no layout gave a robust solution
+FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
 
 @attrs.frozen
@@ -153,13 +153,13 @@ class Pipeline:
                 break
             clock = time.perf_counter()
         if failure is not None:
-            # No solution survived every noisy replay: the most robust of the fragile ones
-            # (each layout satisfied again, accepting as many replays as it passed).
+            # No solution survived every noisy replay: the fragile ones, most robust first,
+            # each layout satisfied again, accepting min_robustness replays.
             clock = time.perf_counter()
-            for nearest, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
+            for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
                 if time.perf_counter() - started > self.time_budget:
                     break
-                result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=-nearest)
+                result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
                 simulations += result.simulations
                 if result.satisfied:
                     used = layout

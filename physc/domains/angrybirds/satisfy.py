@@ -128,6 +128,7 @@ class Satisfier:
         self.nearest = 0  # most replays passed by a working solution given up as too fragile
         self.scenario = scenario
         self.level = level_from_layout(layout)
+        self.placed_at = {o.name: (o.x, o.y) for o in self.level.objects}  # where placement put each object
         self.roles = {o.name: o.role for o in layout.objects}
         self.allowed = {o.name: o.concrete for o in scenario.objects}
         self.relations = tuple(layout.conjunction) + tuple(layout.separations)
@@ -200,9 +201,12 @@ class Satisfier:
 
         An edge holds when any QSR of its clause does (a repair may carry an object from
         one of the clause's regions to another: the edge is what the scenario asks for).
-        An object that liesOnPath moved along its support may rest anywhere on it: for
-        it, resting on the left, middle or right part of its support all count."""
+        An object that a repair moved (liesOnPath, closing a gap) may rest anywhere on its
+        support: for it, resting on the left, middle or right part of its support all count."""
         placed = {o.name: _placed(o, self.roles.get(o.name, "object")) for o in level.objects}
+        # What an adopted repair moved keeps that freedom in every later check (an obstacle,
+        # a distractor): it is judged as when it was moved.
+        moved = moved | {o.name for o in level.objects if self.placed_at.get(o.name, (o.x, o.y)) != (o.x, o.y)}
         for relation in self.relations:
             if relation.a in placed and relation.b in placed:
                 names = relation.alternatives or (relation.relation,)

@@ -1,0 +1,73 @@
+"""--min-robustness: when no layout gives a solution that survives every noisy replay,
+the most robust fragile one is used (and only one that passes at least K)."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import EXAMPLES, run_physc
+from middle_end import DOMAIN, paper_scenarios
+from physc.compiler.infeasible import Infeasible
+from physc.compiler.pipeline import FALLBACKS, Pipeline
+from physc.domains.angrybirds.generate import Outcome, Parts
+
+
+class Scripted:
+    """The angrybirds domain, but satisfaction follows a script: layout i (in order of
+    placement) is given up with `nearest[i]` replays passed, and a second try of layout i
+    succeeds when `accept` is at most `works[i]`."""
+
+    def __init__(self, nearest, works=None):
+        self.nearest = nearest
+        self.works = works or {}
+        self.order = {}
+        self.calls = []
+
+    def __getattr__(self, name):
+        return getattr(DOMAIN, name)
+
+    def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+        index = self.order.setdefault(id(layout), len(self.order))
+        self.calls.append((index, accept))
+        if accept is None:
+            return Outcome(False, 1, nearest=self.nearest[index] if index < len(self.nearest) else 0)
+        if accept <= self.works.get(index, -1):
+            parts = Parts(None, None, "", None, (accept, 6), (), (), ())
+            return Outcome(True, 1, parts)
+        return Outcome(False, 1)
+
+
+def generate(domain, min_robustness, layouts=5):
+    return Pipeline(domain, paper_scenarios()["R"], 0, validate=False, layout_budget=layouts, min_robustness=min_robustness).task
+
+
+def test_the_most_robust_fragile_layout_is_tried_first():
+    domain = Scripted([3, 5, 0, 5, 4], works={1: 5, 3: 5})
+    task = generate(domain, 4)
+    assert task.robustness == (5, 6)
+    assert domain.calls[5:] == [(1, 5)]  # the first of the two that passed 5
+
+
+def test_fallbacks_go_on_when_a_second_try_fails():
+    domain = Scripted([4, 5, 0, 5, 4], works={0: 4})
+    task = generate(domain, 4)
+    assert task.robustness == (4, 6)
+    assert domain.calls[5:] == [(1, 5), (3, 5), (0, 4)]
+    # At most FALLBACKS second tries: layout 4 (as robust as layout 0, placed later) is never reached.
+    assert FALLBACKS == 3
+    with pytest.raises(Infeasible):
+        generate(Scripted([4, 5, 0, 5, 4], works={4: 4}), 4)
+
+
+def test_nothing_below_the_floor_and_nothing_without_the_option():
+    with pytest.raises(Infeasible):
+        generate(Scripted([3, 2, 3, 0, 1], works={0: 6}), 4)
+    strict = Scripted([5, 5, 5, 5, 5], works={0: 6})
+    with pytest.raises(Infeasible):
+        generate(strict, None)
+    assert all(accept is None for _, accept in strict.calls)
+
+
+def test_cli_refuses_a_floor_below_one(tmp_path):
+    run = run_physc("compile", EXAMPLES / "paper" / "01_SF.phys", "--min-robustness", "0", "-q")
+    assert run.status == 2 and "--min-robustness" in run.stderr
