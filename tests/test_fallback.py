@@ -15,7 +15,7 @@ from physc.domains.angrybirds.generate import Outcome, Parts
 class Scripted:
     """The angrybirds domain, but satisfaction follows a script: layout i (in order of
     placement) is given up with `nearest[i]` replays passed, and a second try of layout i
-    succeeds when `accept` is at most `works[i]`."""
+    succeeds, passing works[i] replays, when `accept` is at most that."""
 
     def __init__(self, nearest, works=None):
         self.nearest = nearest
@@ -32,7 +32,7 @@ class Scripted:
         if accept is None:
             return Outcome(False, 1, nearest=self.nearest[index] if index < len(self.nearest) else 0)
         if accept <= self.works.get(index, -1):
-            parts = Parts(None, None, "", None, (accept, 6), (), (), ())
+            parts = Parts(None, None, "", None, (self.works[index], 6), (), (), ())
             return Outcome(True, 1, parts)
         return Outcome(False, 1)
 
@@ -45,18 +45,21 @@ def test_the_most_robust_fragile_layout_is_tried_first():
     domain = Scripted([3, 5, 0, 5, 4], works={1: 5, 3: 5})
     task = generate(domain, 4)
     assert task.robustness == (5, 6)
-    assert domain.calls[5:] == [(1, 5)]  # the first of the two that passed 5
+    assert domain.calls[5:] == [(1, 4)]  # the first of the two that passed 5, accepting 4
 
 
 def test_fallbacks_go_on_when_a_second_try_fails():
     domain = Scripted([4, 5, 0, 5, 4], works={0: 4})
     task = generate(domain, 4)
     assert task.robustness == (4, 6)
-    assert domain.calls[5:] == [(1, 5), (3, 5), (0, 4)]
-    # At most FALLBACKS second tries: layout 4 (as robust as layout 0, placed later) is never reached.
-    assert FALLBACKS == 3
+    assert domain.calls[5:] == [(1, 4), (3, 4), (0, 4)]  # most robust first, then in order of placement
+
+
+def test_at_most_so_many_second_tries():
+    domain = Scripted([4] * (FALLBACKS + 2), works={FALLBACKS: 4})
     with pytest.raises(Infeasible):
-        generate(Scripted([4, 5, 0, 5, 4], works={4: 4}), 4)
+        generate(domain, 4, layouts=FALLBACKS + 2)
+    assert [index for index, accept in domain.calls if accept] == list(range(FALLBACKS))
 
 
 def test_nothing_below_the_floor_and_nothing_without_the_option():
