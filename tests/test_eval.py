@@ -50,3 +50,11 @@ def test_a_killed_run_resumes(tmp_path):
 def test_eval_reports_input_errors(tmp_path):
     run = run_physc("eval", EXAMPLES / "errors" / "E0201_unknown_term.phys", "--out", tmp_path, "-q")
     assert run.status == 1 and "E0201" in run.stderr
+
+
+def test_records_made_with_other_settings_are_made_again(tmp_path):
+    assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
+    run = run_physc("eval", SF, "--tasks", "1", "--min-robustness", "4", "--out", tmp_path)
+    assert run.status == 0 and "resuming" not in run.stderr
+    (record,) = records(tmp_path).values()
+    assert record["min_robustness"] == 4 and record["robustness"] == [6, 6]

@@ -3,6 +3,8 @@ the most robust fragile one is used (and only one that passes at least K)."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 
 from conftest import EXAMPLES, run_physc
@@ -74,3 +76,19 @@ def test_nothing_below_the_floor_and_nothing_without_the_option():
 def test_cli_refuses_a_floor_below_one(tmp_path):
     run = run_physc("compile", EXAMPLES / "paper" / "01_SF.phys", "--min-robustness", "0", "-q")
     assert run.status == 2 and "--min-robustness" in run.stderr
+
+
+def test_a_fragile_chain_compiles_as_a_fallback(tmp_path):
+    # RS seed 1: none of its first 6 layouts gives a solution that survives all 6 noisy
+    # replays; the most robust passes 4 of them.
+    paper = EXAMPLES / "paper" / "all.paper.phys"
+    args = ("compile", paper, "-s", "RS", "--seed", "1", "--layouts", "6", "--color", "never")
+    strict = run_physc(*args, "-q", "-o", tmp_path / "strict.xml")
+    assert strict.status == 3 and "passed 4 of 6 noisy replays (--min-robustness 4 accepts such a one)" in strict.stderr
+    assert not (tmp_path / "strict.xml").exists()
+    task = tmp_path / "task.json"
+    run = run_physc(*args, "--min-robustness", "4", "-o", tmp_path / "level.xml", "--task", task)
+    assert run.status == 0, run.stderr
+    assert "4 of 6 noisy replays (a fallback: --min-robustness)" in run.stderr
+    data = json.loads(task.read_text())
+    assert data["robustness"] == [4, 6] and data["validated"] is True

@@ -55,6 +55,12 @@ def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | 
     return str(ensure_folder(path) / f"{name}.{suffix}")
 
 
+def _robustness(robustness) -> str:
+    passed, total = robustness
+    text = f"{passed} of {total} noisy replays"
+    return text if passed == total else text + " (a fallback: --min-robustness)"
+
+
 def cmd_compile(args) -> int:
     from physc.compiler.infeasible import Infeasible
     from physc.compiler.pipeline import Pipeline
@@ -128,6 +134,7 @@ def cmd_compile(args) -> int:
             checked_text = "validated" if value.validated else "not validated (--no-validate)"
             print(
                 f"[{index}/{len(selected)}] {ir.name}: {checked_text}; solution {value.solution.aimed_at}; "
+                f"{_robustness(value.robustness)}; "
                 f"{value.layouts_tried} layouts, {value.simulations} simulations, {value.seconds['total']:.2f} s",
                 file=sys.stderr,
                 flush=True,

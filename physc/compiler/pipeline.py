@@ -116,6 +116,7 @@ class Pipeline:
         seconds = {"layout": 0.0, "satisfy": 0.0}
         layouts = simulations = 0
         fragile: list[tuple[int, int, ConcreteLayout]] = []  # (-replays passed, order, layout)
+        nearest = 0  # most noisy replays passed by a solution given up as too fragile
         clock = time.perf_counter()
         placements = self.placements()
         while True:
@@ -140,6 +141,7 @@ class Pipeline:
             if result.satisfied:
                 failure, used = None, placed.layout
                 break
+            nearest = max(nearest, result.nearest)
             if self.min_robustness is not None and result.nearest >= self.min_robustness:
                 fragile.append((-result.nearest, layouts, placed.layout))
             if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
@@ -166,6 +168,19 @@ class Pipeline:
                     break
             seconds["satisfy"] += time.perf_counter() - clock
             if not result.satisfied:
+                if nearest:
+                    hint = (
+                        f"--min-robustness {nearest} accepts such a one"
+                        if self.min_robustness is None
+                        else f"the second tries with --min-robustness {self.min_robustness} failed too"
+                    )
+                    failure = Infeasible(
+                        failure.stage,
+                        f"{failure.message}; the most robust solution found passed {nearest} of "
+                        f"{self.domain.robustness_replays} noisy replays ({hint})",
+                        tried=failure.tried,
+                        budget=failure.budget,
+                    )
                 raise failure
         seconds["total"] = time.perf_counter() - started
         parts = result.parts

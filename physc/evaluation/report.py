@@ -63,7 +63,10 @@ def summarise(records: list[dict]) -> dict:
 
     def stats(rows):
         made = [r for r in rows if r.get("generated")]
-        out = {"tasks": len(rows), "generated": len(made)}
+        # Fallbacks (--min-robustness): tasks whose solution passed fewer than all the
+        # generator's noisy replays.
+        fallbacks = sum(1 for r in made if r.get("robustness") and r["robustness"][0] < r["robustness"][1])
+        out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
         for metric, _, _ in METRICS:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None])
         return out
@@ -71,6 +74,12 @@ def summarise(records: list[dict]) -> dict:
     scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
     counts = {count: stats(rows) for count, rows in sorted(group("interactions").items())}
     return {"scenarios": scenarios, "interactions": counts, "paper": PAPER}
+
+
+def _generated(row: dict) -> str:
+    text = f"{row['generated']}/{row['tasks']}"
+    fallbacks = row.get("fallbacks", 0)
+    return text + (f" ({fallbacks} fallback{'s' if fallbacks != 1 else ''})" if fallbacks else "")
 
 
 def markdown(summary: dict, command: str, seconds: float) -> str:
@@ -87,13 +96,13 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
             paper = PAPER.get(paper_key, {}).get(c) if paper_key else None
             cells.append(f"{ours} ({fmt(paper)})" if paper else ours)
         lines.append(f"| {title} | " + " | ".join(cells) + " |")
-    lines.append("| Tasks generated | " + " | ".join(f"{summary['interactions'][c]['generated']}/{summary['interactions'][c]['tasks']}" for c in counts) + " |")
+    lines.append("| Tasks generated | " + " | ".join(_generated(summary["interactions"][c]) for c in counts) + " |")
     lines += ["", "## Per scenario", ""]
     header = ["scenario", "interactions", "generated"] + [title for _, title, _ in METRICS]
     lines.append("| " + " | ".join(header) + " |")
     lines.append("|" + "---|" * len(header))
     for name, row in summary["scenarios"].items():
-        cells = [name, str(row["interactions"]), f"{row['generated']}/{row['tasks']}"] + [fmt(row[m]) for m, _, _ in METRICS]
+        cells = [name, str(row["interactions"]), _generated(row)] + [fmt(row[m]) for m, _, _ in METRICS]
         lines.append("| " + " | ".join(cells) + " |")
     lines += [
         "",
@@ -103,7 +112,8 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
         "the replay realises the declared sequence without breaking a restriction; accidental solvability =",
         "the paper's AS: the share of the heuristic agent's plays (every dynamic object but the solution's",
         "target, at its points of interest, both trajectories) that solve the task. Metrics are over the",
-        "generated tasks; generation ran with the final validation skipped, as in the paper.",
+        "generated tasks; generation ran with the final validation skipped, as in the paper. A fallback",
+        "(`--min-robustness`) is a task whose solution passed fewer than all of the generator's 6 noisy replays.",
     ]
     return "\n".join(lines) + "\n"
 
