@@ -108,6 +108,37 @@ class Pipeline:
             raise
         raise AssertionError("the search ends by raising Infeasible")
 
+    def fallback(self, fragile: list, started: float):
+        """No solution survived every noisy replay: the layouts given up as fragile, most
+        robust first, satisfied again accepting min_robustness replays. (simulations, the
+        outcome, its layout) of the first that succeeds, or None."""
+        simulations = 0
+        for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
+            if time.perf_counter() - started > self.time_budget:
+                break
+            result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
+            simulations += result.simulations
+            if result.satisfied:
+                return simulations, result, layout
+        return None
+
+    def explained(self, failure: Infeasible, nearest: int) -> Infeasible:
+        """The failure, with the most robust fragile solution found and what would accept it."""
+        if not nearest:
+            return failure
+        hint = (
+            f"--min-robustness {nearest} accepts such a one"
+            if self.min_robustness is None
+            else f"the second tries with --min-robustness {self.min_robustness} failed too"
+        )
+        return Infeasible(
+            failure.stage,
+            f"{failure.message}; the most robust solution found passed {nearest} of "
+            f"{self.domain.robustness_replays} noisy replays ({hint})",
+            tried=failure.tried,
+            budget=failure.budget,
+        )
+
     @functools.cached_property
     def task(self) -> Task:
         """Generate the task: layouts one after another until simulation-based
@@ -155,33 +186,13 @@ class Pipeline:
                 break
             clock = time.perf_counter()
         if failure is not None:
-            # No solution survived every noisy replay: the fragile ones, most robust first,
-            # each layout satisfied again, accepting min_robustness replays.
             clock = time.perf_counter()
-            for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
-                if time.perf_counter() - started > self.time_budget:
-                    break
-                result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
-                simulations += result.simulations
-                if result.satisfied:
-                    used = layout
-                    break
+            fallback = self.fallback(fragile, started)
             seconds["satisfy"] += time.perf_counter() - clock
-            if not result.satisfied:
-                if nearest:
-                    hint = (
-                        f"--min-robustness {nearest} accepts such a one"
-                        if self.min_robustness is None
-                        else f"the second tries with --min-robustness {self.min_robustness} failed too"
-                    )
-                    failure = Infeasible(
-                        failure.stage,
-                        f"{failure.message}; the most robust solution found passed {nearest} of "
-                        f"{self.domain.robustness_replays} noisy replays ({hint})",
-                        tried=failure.tried,
-                        budget=failure.budget,
-                    )
-                raise failure
+            if fallback is None:
+                raise self.explained(failure, nearest)
+            simulated, result, used = fallback
+            simulations += simulated
         seconds["total"] = time.perf_counter() - started
         parts = result.parts
         return Task(
