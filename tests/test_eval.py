@@ -58,3 +58,5 @@ def test_records_made_with_other_settings_are_made_again(tmp_path):
     assert run.status == 0 and "resuming" not in run.stderr
     (record,) = records(tmp_path).values()
     assert record["min_robustness"] == 4 and record["robustness"] == [6, 6]
+    header, row = (tmp_path / "results.csv").read_text().splitlines()[:2]
+    assert header.endswith(",min_robustness,robustness") and row.endswith(",4,6/6")

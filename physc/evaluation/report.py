@@ -40,6 +40,7 @@ METRICS = (
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
+    "min_robustness", "robustness",
 )
 
 
@@ -146,7 +147,8 @@ def write(records: list[dict], folder: Path, command: str, seconds: float) -> di
     writer = csv.DictWriter(out, fieldnames=CSV_COLUMNS, extrasaction="ignore")
     writer.writeheader()
     for record in sorted(records, key=lambda r: (r["scenario"], r["seed"])):
-        writer.writerow(record)
+        passed = record.get("robustness")
+        writer.writerow(record | {"robustness": f"{passed[0]}/{passed[1]}" if passed else ""})
     write_atomic(folder / "results.csv", out.getvalue())
     for metric, title, paper_key in METRICS:
         write_atomic(folder / f"plot_{metric}.png", plot(summary, metric, title, paper_key))
