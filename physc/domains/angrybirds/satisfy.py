@@ -27,7 +27,9 @@ forbidden side, each verified by simulation not to disturb the solution, and
 The solution kept is the first candidate that survives every noisy replay, on the
 level as finally written. A candidate that fails some is first centred in its window
 of working release angles, then firmed up (the targets of rolling and sliding blocks
-brought nearer); one made to pass that way must pass as many fresh replays too.
+brought nearer); one made to pass that way must pass as many fresh replays too. A
+layout given up as fragile reports the most replays a solution passed (`nearest`), and
+the pipeline's fallbacks satisfy it again accepting fewer (`accept`), confirmed likewise.
 """
 
 from __future__ import annotations
@@ -74,7 +76,7 @@ SHORT_OBSTACLE = 0.9  # tried last, when no obstacle of the full length leaves t
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obstacle goes
 FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
-ROBUST_ENOUGH = ROBUSTNESS_REPLAYS  # of them must realise the sequence, or the layout is given up (unless a caller accepts fewer)
+ROBUST_ENOUGH = ROBUSTNESS_REPLAYS  # replays that must realise the sequence (a fallback accepts fewer)
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
