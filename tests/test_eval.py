@@ -54,9 +54,9 @@ def test_eval_reports_input_errors(tmp_path):
 
 def test_records_made_with_other_settings_are_made_again(tmp_path):
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
-    run = run_physc("eval", SF, "--tasks", "1", "--min-robustness", "4", "--out", tmp_path)
+    run = run_physc("eval", SF, "--tasks", "1", "--min-robustness", "6", "--out", tmp_path)
     assert run.status == 0 and "resuming" not in run.stderr
     (record,) = records(tmp_path).values()
-    assert record["min_robustness"] == 4 and record["robustness"] == [6, 6]
+    assert record["min_robustness"] == 6 and record["robustness"] == [6, 6]
     header, row = (tmp_path / "results.csv").read_text().splitlines()[:2]
-    assert header.endswith(",min_robustness,robustness") and row.endswith(",4,6/6")
+    assert header.endswith(",min_robustness,robustness") and row.endswith(",6,6/6")

@@ -11,6 +11,7 @@ from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import FALLBACKS, Pipeline
+from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains.angrybirds.generate import Outcome, Parts
 
 
@@ -64,13 +65,17 @@ def test_at_most_so_many_second_tries():
     assert [index for index, accept in domain.calls if accept] == list(range(FALLBACKS))
 
 
-def test_nothing_below_the_floor_and_nothing_without_the_option():
+def test_nothing_below_the_floor_and_nothing_when_all_replays_are_asked_for():
     with pytest.raises(Infeasible):
         generate(Scripted([3, 2, 3, 0, 1], works={0: 6}), 4)
     strict = Scripted([5, 5, 5, 5, 5], works={0: 6})
     with pytest.raises(Infeasible):
-        generate(strict, None)
+        generate(strict, DOMAIN.robustness_replays)
     assert all(accept is None for _, accept in strict.calls)
+
+
+def test_the_default_floor():
+    assert Pipeline(DOMAIN, paper_scenarios()["R"]).min_robustness == MIN_ROBUSTNESS == 4
 
 
 def test_cli_refuses_a_floor_below_one(tmp_path):
@@ -83,12 +88,14 @@ def test_a_fragile_chain_compiles_as_a_fallback(tmp_path):
     # replays; the most robust passes 4 of them.
     paper = EXAMPLES / "paper" / "all.paper.phys"
     args = ("compile", paper, "-s", "RS", "--seed", "1", "--layouts", "6", "--color", "never")
-    strict = run_physc(*args, "-q", "-o", tmp_path / "strict.xml")
+    strict = run_physc(*args, "--min-robustness", "6", "-q", "-o", tmp_path / "strict.xml")
     assert strict.status == 3 and "passed 4 of 6 noisy replays (--min-robustness 4 accepts such a one)" in strict.stderr
     assert not (tmp_path / "strict.xml").exists()
     task = tmp_path / "task.json"
-    run = run_physc(*args, "--min-robustness", "4", "-o", tmp_path / "level.xml", "--task", task)
+    run = run_physc(*args, "-o", tmp_path / "level.xml", "--task", task)  # the default: 4
     assert run.status == 0, run.stderr
     assert "4 of 6 noisy replays (a fallback: --min-robustness)" in run.stderr
     data = json.loads(task.read_text())
     assert data["robustness"] == [4, 6] and data["validated"] is True
+    floor = run_physc(*args, "--min-robustness", "5", "-q", "-o", tmp_path / "five.xml")
+    assert floor.status == 3 and "passed 4 of 6 noisy replays (--min-robustness 4 accepts such a one)" in floor.stderr

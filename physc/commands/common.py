@@ -8,6 +8,7 @@ import sys
 from typing import Sequence
 
 from physc import diagnostics
+from physc.compiler.task import MIN_ROBUSTNESS
 from physc.diagnostics import Diagnostic
 
 EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
@@ -52,13 +53,14 @@ def add_min_robustness(parser) -> None:
     parser.add_argument(
         "--min-robustness",
         type=int,
+        default=MIN_ROBUSTNESS,
         metavar="K",
         help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
-        "(6 in angrybirds), use the most robust one that passes at least K of them, confirmed by as many fresh "
-        "replays (default: none; the task JSON records the replays passed)",
+        f"(6 in angrybirds), use the most robust one that passes at least K of them, and as many fresh replays "
+        f"(default {MIN_ROBUSTNESS}; 6: no such fallbacks); the task JSON records the replays passed",
     )
 
 
-def check_min_robustness(value: int | None) -> None:
-    if value is not None and value < 1:
+def check_min_robustness(value: int) -> None:
+    if value < 1:
         raise UsageError("--min-robustness takes a whole number of at least 1")

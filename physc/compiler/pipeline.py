@@ -21,7 +21,7 @@ from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
-from physc.compiler.task import Task
+from physc.compiler.task import MIN_ROBUSTNESS, Task
 from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.dsl.scenario import ScenarioIR
@@ -49,7 +49,7 @@ class Pipeline:
         layout_budget: int = LAYOUT_BUDGET,
         time_budget: float = TIME_BUDGET,
         source: str = "",
-        min_robustness: int | None = None,
+        min_robustness: int = MIN_ROBUSTNESS,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -61,7 +61,8 @@ class Pipeline:
         self.source = source
         # Noisy replays (of the domain's robustness_replays) that a solution must pass at
         # least: when no layout within the budget gives one that passes them all, the most
-        # robust of the fragile ones that pass this many is used. None: all of them.
+        # robust of the fragile ones that pass this many is used (a fallback). All of
+        # them: no fallbacks.
         self.min_robustness = min_robustness
         self.rng = random.Random(seed)
 
@@ -128,8 +129,8 @@ class Pipeline:
             return failure
         hint = (
             f"--min-robustness {nearest} accepts such a one"
-            if self.min_robustness is None
-            else f"the second tries with --min-robustness {self.min_robustness} failed too"
+            if nearest < self.min_robustness
+            else "tried again as a fallback, it failed"
         )
         return Infeasible(
             failure.stage,
@@ -173,7 +174,7 @@ class Pipeline:
                 failure, used = None, placed.layout
                 break
             nearest = max(nearest, result.nearest)
-            if self.min_robustness is not None and result.nearest >= self.min_robustness:
+            if result.nearest >= self.min_robustness:
                 fragile.append((-result.nearest, layouts, placed.layout))
             if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
                 failure = Infeasible(

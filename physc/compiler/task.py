@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import attrs
 
+# A task whose solution failed some noisy replays of the generator (the domain's
+# robustness_replays; 6 in angrybirds) is a fallback; by default it must pass this many.
+MIN_ROBUSTNESS = 4
+
 
 @attrs.frozen
 class Solution:
@@ -25,7 +29,7 @@ class Task:
     solution: Solution
     trace: str  # the interactions the solution realises, in .phys syntax
     validated: bool | None  # None when validation was skipped
-    robustness: tuple[int, int]  # perturbed replays passed, run
+    robustness: tuple[int, int]  # perturbed replays passed, run (fewer than run: a fallback)
     repairs: tuple[str, ...]  # what simulation-based satisfaction changed
     obstacles: tuple[str, ...]
     distractors: tuple[str, ...]

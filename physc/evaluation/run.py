@@ -19,6 +19,7 @@ import attrs
 
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
+from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
@@ -34,7 +35,7 @@ class Job:
     scenario: str
     seed: int
     time_budget: float
-    min_robustness: int | None = None  # see Pipeline
+    min_robustness: int = MIN_ROBUSTNESS  # see Pipeline
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -84,7 +85,7 @@ def evaluate(job: Job) -> dict:
 
 
 def jobs_for(
-    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int | None = None
+    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS
 ) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs, problems = [], []
