@@ -9,7 +9,8 @@ import attrs
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.task import Solution
 from physc.domains.angrybirds.distract import distract
-from physc.domains.angrybirds.satisfy import ROBUST_ENOUGH, Satisfier
+from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
+from physc.domains.angrybirds.satisfy import Satisfier
 from physc.domains.angrybirds.stability import stability
 from physc.dsl.scenario import ScenarioIR
 
@@ -38,7 +39,7 @@ def satisfy(
     domain, scenario: ScenarioIR, layout: ConcreteLayout, rng: random.Random, validate: bool, accept: int | None = None
 ) -> Outcome:
     """`accept`: the noisy replays a solution must pass (default: all of them)."""
-    satisfier = Satisfier(domain, scenario, layout, ROBUST_ENOUGH if accept is None else accept)
+    satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept)
     found = satisfier.run()
     if found is None:
         return Outcome(False, satisfier.simulations, nearest=satisfier.nearest)

@@ -76,7 +76,6 @@ SHORT_OBSTACLE = 0.9  # tried last, when no obstacle of the full length leaves t
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obstacle goes
 FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
-ROBUST_ENOUGH = ROBUSTNESS_REPLAYS  # replays that must realise the sequence (a fallback accepts fewer)
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
@@ -122,7 +121,7 @@ def _placed(obj: LevelObject, role: str) -> PlacedObject:
 
 
 class Satisfier:
-    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUST_ENOUGH):
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS):
         self.domain = domain
         # Noisy replays (of ROBUSTNESS_REPLAYS) a solution must pass. Fewer than all of them
         # only for a fallback: then the fresh replays of the confirmation must pass as many.
@@ -781,7 +780,7 @@ class Satisfier:
                     self.repairs.append(f"firmer: {goal} and the world beyond {distance:.2f} nearer to {mover}")
                     self.adopt(candidate)
                     chosen, passed = trial, score
-                    if passed >= ROBUST_ENOUGH:
+                    if passed >= ROBUSTNESS_REPLAYS:  # a fallback, too, is firmed as far as it goes
                         return chosen, passed
                     break
         return chosen, passed
