@@ -64,3 +64,19 @@ def test_redundant_edges_are_merged():
     assert len(bird_surface) == 1
     assert bird_surface[0].values == ("below",)
     assert [p.text for p in bird_surface[0].provenance] == ["bounce(bird, iSurface, below)", "hit(bird, iSurface, any)"]
+
+
+def test_an_object_knocked_off_from_one_side_falls_ahead():
+    # hit(rBlock, fBlock, left) pushes fBlock right: it starts above the pig or up to its left.
+    assert "locatedFar(fBlock, pig, aboveLeft)" in edges("RF")
+    assert "locatedFar(fBlock, pig, aboveLeft)" in edges("RRF")
+    # The bird's hit may come from above (left ∨ above): it may knock the block off either way.
+    assert "locatedFar(fBlock, pig, above)" in edges("F")
+    assert "locatedFar(fBlock, rBlock, above)" in edges("FR")
+
+
+def test_falling_ahead_keeps_the_straight_drop_and_the_near_side():
+    from physc.compiler.to_qsr import relations_for
+
+    assert set(relations_for("locatedFar", ("aboveLeft",))) == {"FarN", "FarNW"}
+    assert set(relations_for("locatedFar", ("aboveRight",))) == {"FarN", "FarNE"}

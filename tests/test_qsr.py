@@ -148,7 +148,7 @@ def test_dnf_size_is_exact_and_lazy():
     expected = 1
     for clause in dnf.clauses:
         expected *= len(clause.relations)
-    assert dnf.size == expected == 17496
+    assert dnf.size == expected == 11664
     first = list(zip(range(5), dnf.conjunctions()))
     assert [c for _, c in first] == [dnf.conjunction(i) for i in range(5)]
 

@@ -147,6 +147,10 @@ IN_DIRECTION = {
     "below": ("S", "SE", "SW"),
 }
 LOCATED_FAR = {d: tuple("Far" + r for r in rs) for d, rs in IN_DIRECTION.items()}
+# Above, but not beyond on one side: where an object pushed off its support towards the
+# other side lands on b (straight below it, or ahead of it).
+LOCATED_FAR["aboveLeft"] = ("FarN", "FarNW")
+LOCATED_FAR["aboveRight"] = ("FarN", "FarNE")
 ON_LOCATION = {"left": ("MeetDuringW",), "centre": ("MeetN",), "right": ("MeetDuringE",)}
 TOUCHING = {"upperLeft": ("MeetNW",), "centreLeft": ("MeetW",), "lowerLeft": ("MeetSW",)}
 JOINS = frozenset(r for rs in TOUCHING.values() for r in rs)

@@ -5,6 +5,8 @@ The paper's table "Inferred layout constraints":
     hit(a, b, d)      → liesOnPath(b, a) ∧ inDirection(b, a, -d)
     roll(a, b, d)     → inDirection(a, b, -d)
     fall(a, b, d)     → locatedFar(a, b, d)
+                        (d = aboveLeft when d is above and the hit before the fall comes
+                        from the left only, pushing a right: it comes down ahead)
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d)
     cannotHit(a,b,d)  → pathObstructed(a, b, d)
@@ -51,6 +53,7 @@ from physc.dsl.scenario import ScenarioIR, TermIR
 
 OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
 SIDES = ("left", "right", "above", "below")
+AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed that way, a faller starts above its target so
 FLAT = "flatPlatform"
 GROUND = "ground"
 
@@ -104,7 +107,12 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
         elif term.name in ("roll", "slide"):
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
-            b.edge(LOCATED_FAR, term.objects[0], term.objects[1], term.directions, why)
+            pushed = _pushed_towards(scenario, term)
+            if pushed is not None and tuple(term.directions) == ("above",):
+                # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
+                b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
+            else:
+                b.edge(LOCATED_FAR, term.objects[0], term.objects[1], term.directions, why)
         elif term.name == "bounce":
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], term.directions, why)
     for term in scenario.restrictions:
@@ -192,6 +200,19 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
                 b.edge(TOUCHING, second, first, ("upperLeft",), why)
 
     return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
+
+
+def _pushed_towards(scenario: ScenarioIR, fall: TermIR) -> str | None:
+    """The way (left or right) that the latest hit on a falling object before its fall
+    pushes it, if that hit is declared from one side only (from the left: to the right).
+    A hit that may come from above (the bird's, in the paper's scenarios) may knock the
+    object off either way."""
+    faller = fall.objects[0]
+    before = scenario.interactions[: scenario.interactions.index(fall)]
+    hits = [t for t in before if t.name == "hit" and t.objects[1] == faller]
+    if not hits or len(hits[-1].directions) != 1 or hits[-1].directions[0] not in ("left", "right"):
+        return None
+    return OPPOSITE[hits[-1].directions[0]]
 
 
 def _push_off(direction: str) -> tuple[str, ...]:

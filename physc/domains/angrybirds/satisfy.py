@@ -831,12 +831,14 @@ class Satisfier:
             chosen = candidate
             passed, total = self.robustness(chosen)
             made = False  # centring or firming made it pass
-            if passed < self.accept:
+            # A fallback too is centred and firmed until it passes every replay, as when it
+            # was first found: what it passed then (`nearest`) is what it is tried again for.
+            if passed < ROBUSTNESS_REPLAYS:
                 made = True
                 chosen = self.centred(candidate)
                 if chosen is not None:
                     passed, total = self.robustness(chosen)
-                if chosen is None or passed < self.accept:
+                if chosen is None or passed < ROBUSTNESS_REPLAYS:
                     chosen, passed = self.firmed(chosen or candidate, passed)
             # A solution made to pass the replays was chosen for passing them, and so is
             # one accepted with fewer than all (the best of many layouts): it must pass as
