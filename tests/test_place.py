@@ -99,7 +99,7 @@ def test_infeasible_scenario_exits_3_and_names_the_conflict():
     run = run_physc("compile", path, "--emit", "layout", "--color", "never")
     assert run.status == 3 and run.stdout == ""
     assert f"{path}:4:10: error[E0801]" in run.stderr
-    assert "locatedFar(fBlock, pig, above) comes from interaction `fall(fBlock, pig)`" in run.stderr
+    assert "locatedFar(fBlock, pig, aboveLeft) comes from interaction `fall(fBlock, pig)`" in run.stderr
     assert "inDirection(pig, fBlock, above) comes from interaction `hit(fBlock, pig, below)`" in run.stderr
     assert f"({path}:7:11)" in run.stderr and f"({path}:8:11)" in run.stderr
 
