@@ -53,7 +53,7 @@ from physc.dsl.scenario import ScenarioIR, TermIR
 
 OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
 SIDES = ("left", "right", "above", "below")
-AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed that way, a faller starts above its target so
+AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed right, a faller starts above its target or up to its left
 FLAT = "flatPlatform"
 GROUND = "ground"
 
@@ -98,7 +98,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     dynamic = [o.name for o in scenario.objects if not o.static and o.term != "bird"]
 
     # 1. The paper's table.
-    for term in scenario.interactions:
+    for position, term in enumerate(scenario.interactions):
         why = _interaction_provenance(term)
         if term.name == "hit":
             actor, target = term.objects
@@ -107,7 +107,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
         elif term.name in ("roll", "slide"):
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
-            pushed = _pushed_towards(scenario, term)
+            pushed = _pushed_towards(scenario.interactions[:position], term)
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
@@ -202,13 +202,12 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
 
 
-def _pushed_towards(scenario: ScenarioIR, fall: TermIR) -> str | None:
-    """The way (left or right) that the latest hit on a falling object before its fall
+def _pushed_towards(before, fall: TermIR) -> str | None:
+    """The way (left or right) that the latest hit on a falling object `before` its fall
     pushes it, if that hit is declared from one side only (from the left: to the right).
     A hit that may come from above (the bird's, in the paper's scenarios) may knock the
     object off either way."""
     faller = fall.objects[0]
-    before = scenario.interactions[: scenario.interactions.index(fall)]
     hits = [t for t in before if t.name == "hit" and t.objects[1] == faller]
     if not hits or len(hits[-1].directions) != 1 or hits[-1].directions[0] not in ("left", "right"):
         return None
