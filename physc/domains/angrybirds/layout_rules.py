@@ -207,11 +207,15 @@ def _pushed_towards(before, fall: TermIR) -> str | None:
     pushes it, if that hit is declared from one side only (from the left: to the right).
     A hit that may come from above (the bird's, in the paper's scenarios) may knock the
     object off either way."""
-    faller = fall.objects[0]
-    hits = [t for t in before if t.name == "hit" and t.objects[1] == faller]
-    if not hits or len(hits[-1].directions) != 1 or hits[-1].directions[0] not in ("left", "right"):
+    hit = last_hit_on(before, fall.objects[0])
+    if hit is None or len(hit.directions) != 1 or hit.directions[0] not in ("left", "right"):
         return None
-    return OPPOSITE[hits[-1].directions[0]]
+    return OPPOSITE[hit.directions[0]]
+
+
+def last_hit_on(interactions, name: str) -> TermIR | None:
+    """The last declared hit on `name` among `interactions` (those before some point)."""
+    return next((t for t in reversed(interactions) if t.name == "hit" and t.objects[1] == name), None)
 
 
 def _push_off(direction: str) -> tuple[str, ...]:

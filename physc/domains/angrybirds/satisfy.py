@@ -58,6 +58,7 @@ from physc.domains.angrybirds.catalogue import (
 from physc.domains.angrybirds.fidelity import Fidelity, fidelity
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.layout_rules import OPPOSITE, last_hit_on
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.noise import ANGLE_SIGMA, ROBUSTNESS_REPLAYS, jitter
 from physc.domains.angrybirds.to_level import level_from_layout
@@ -499,8 +500,8 @@ class Satisfier:
 
     def hitter_of(self, name: str, index: int) -> str | None:
         """The actor of the latest declared hit on `name` before interaction `index`."""
-        hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == name]
-        return hits[-1].objects[0] if hits else None
+        hit = last_hit_on(self.scenario.interactions[:index], name)
+        return hit.objects[0] if hit else None
 
     def set_moving(self, declared, index: int):
         """roll/slide(a, s, d) did not happen: a square that slides, more speed, or a closer to s."""
@@ -520,15 +521,15 @@ class Satisfier:
         faller = declared.objects[0]
         yield from self.material(faller, "ice", f"fall({faller}): of ice, lighter")
         yield from self.material(faller, "wood", f"fall({faller}): of wood, lighter than stone, tougher than ice")
-        hitter = self.hitter_of(faller, index)
-        if hitter:
+        hit = last_hit_on(self.scenario.interactions[:index], faller)
+        if hit:
+            hitter = hit.objects[0]
             yield from self.material(hitter, "stone", f"fall({faller}): its hitter {hitter} of stone")
         objects = self.objects
         block, support = objects.get(faller), self.support_of.get(faller)
-        hits = [t for t in self.scenario.interactions[:index] if t.name == "hit" and t.objects[1] == faller]
-        if block is None or support not in objects or not hits:
+        if block is None or support not in objects or hit is None:
             return
-        for pushed in [d for d in ("left", "right") if {"left": "right", "right": "left"}[d] in hits[-1].directions]:
+        for pushed in [d for d in ("left", "right") if OPPOSITE[d] in hit.directions]:
             left, right = _span(objects[support])
             width = extent(block)[0]
             x = right - width / 2 - 0.02 if pushed == "right" else left + width / 2 + 0.02
