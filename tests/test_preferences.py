@@ -123,10 +123,17 @@ def test_momentum_passes_down_a_chain_from_heavier_to_lighter():
 
 def test_a_moving_block_keeps_both_light_materials():
     # Stone becomes wood; wood and ice are still both drawn, at the head of a chain and
-    # (taking the hitter's material) at its end.
+    # (taking the hitter's material) where a falling block hits it.
     assert {d["fBlock"] for d in materials_drawn("F")} == {"wood", "ice"}
     assert {d["rBlock1"] for d in materials_drawn("RRR")} == {"wood", "ice"}
-    assert {d["rBlock3"] for d in materials_drawn("RRR")} == {"wood", "ice"}
+    assert {d["rBlock"] for d in materials_drawn("FR")} == {"wood", "ice"}
+
+
+def test_a_block_set_moving_by_a_rolling_or_sliding_block_is_ice():
+    # Ball against ball, wood grips at friction 4 and turns the struck ball the wrong way.
+    for name, blocks in (("RRR", ("rBlock2", "rBlock3")), ("RS", ("sBlock",)), ("SR", ("rBlock",)), ("RRF", ("rBlock2", "fBlock"))):
+        for drawn in materials_drawn(name):
+            assert all(drawn[b] == "ice" for b in blocks), (name, drawn)
 
 
 def test_a_block_a_ball_hits_sideways_is_a_square():

@@ -23,8 +23,13 @@ is stone (mass 1.77), 0.65 if wood (0.66), 0.89 if ice (0.33); a stone ball hit
 by the bird was seen to start at 0.7 units/s and stop short, and a stone block hit
 by a wooden ball hardly moves. So a block the bird hits that then rolls, slides or
 falls is not stone (it becomes wood), and a block hit by a block is no denser than
-its hitter (it takes the hitter's material). The materials are drawn as before and
-then adjusted, so scenarios without such blocks keep their levels.
+its hitter (it takes the hitter's material). A block that a rolling or sliding block
+sets moving is ice: a rolling ball's front turns downwards, and wood against wood grips
+at friction 4, so the struck ball is spun the wrong way and the hitter climbs it (a
+wooden ball rolling at 3 units/s moves a wooden one at rest 0.57 units, at most 0.65
+units/s; an ice one 1.55, at 2.0; ice against ice, friction 0.7: 1.41, at 1.46). The
+materials are drawn as before and then adjusted, so scenarios without such blocks keep
+their levels.
 
 A block hit from the side by a round block is a square, not a triangle: the ball
 climbs the triangle's slanted face and is recognised hitting it from above (RF's
@@ -108,11 +113,15 @@ def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, 
 
 def light_chain_materials(scenario: ScenarioIR, materials: dict[str, str | None]) -> None:
     """Momentum passes down a chain only from heavier to lighter: a block the bird hits
-    and that then moves is not stone, and, in sequence order, a block hit by a block is
-    no denser than its hitter (it takes the hitter's material)."""
+    and that then moves is not stone, a block that a rolling or sliding block sets moving
+    is ice, and, in sequence order, any other block hit by a block is no denser than its
+    hitter (it takes the hitter's material)."""
     player = _players(scenario)
     movers = {t.objects[0] for t in scenario.interactions if t.name in ("roll", "slide", "fall")}
+    rolled: set[str] = set()  # blocks that rolled or slid so far, in sequence order
     for term in scenario.interactions:
+        if term.name in ("roll", "slide"):
+            rolled.add(term.objects[0])
         if term.name != "hit":
             continue
         hitter, target = term.objects
@@ -121,5 +130,7 @@ def light_chain_materials(scenario: ScenarioIR, materials: dict[str, str | None]
         if hitter in player:
             if target in movers and materials[target] == "stone":
                 materials[target] = "wood"
+        elif materials.get(hitter) is not None and target in movers and hitter in rolled:
+            materials[target] = "ice"
         elif materials.get(hitter) is not None and DENSITY[materials[target]] > DENSITY[materials[hitter]]:
             materials[target] = materials[hitter]
