@@ -796,33 +796,54 @@ class Satisfier:
         return None
 
     # ---- the whole step ------------------------------------------------------------------------
-    def run(self) -> Satisfied | None:
-        """Repair until a candidate realises the sequence: each proposal is simulated and
-        kept only if the best candidate does at least as well as before."""
-        attempts = self.attempts()
-        if not attempts:
-            return None
+    def repaired(self, attempts: list[Attempt]) -> list[Attempt] | None:
+        """Repair until a candidate realises the sequence, depth first: each proposal is
+        simulated and kept if the best candidate does at least as well as before; when no
+        proposal for the level as it is helps, the last repair kept is undone and the
+        proposals that came after it are tried (backtracking). All proposals tried count
+        against `repair_rounds`. The candidates then, or None."""
         score = max(a.fidelity.score for a in attempts)
+        kept: list[tuple] = []  # per repair kept: the state before it and the proposals left there
+        proposals = self.proposals(attempts)
         rounds = 0
         while not self.working(attempts):
-            for description, level in self.proposals(attempts):
+            if rounds >= self.repair_rounds:
+                return None
+            for description, level in proposals:
                 rounds += 1
                 saved = self.level
                 self.level = level
                 trial = None if description in self.repairs else self.screened(attempts, score)
+                self.level = saved
                 if trial is not None:
+                    kept.append((saved, attempts, score, len(self.repairs), len(self.obstacles), proposals))
                     self.repairs.append(description)
                     self.adopt(level)
                     attempts, score = trial, max(a.fidelity.score for a in trial)
+                    proposals = self.proposals(attempts)
                     break
-                self.level = saved
                 if rounds >= self.repair_rounds:
                     return None
             else:
-                return None
-            if rounds >= self.repair_rounds:
-                if not self.working(attempts):
+                if not kept:
                     return None
+                self.level, attempts, score, repairs, obstacles, proposals = kept.pop()
+                del self.repairs[repairs:]
+                for name in self.obstacles[obstacles:]:
+                    self.roles.pop(name, None)
+                del self.obstacles[obstacles:]
+        return attempts
+
+    def run(self) -> Satisfied | None:
+        """Repair the layout until a candidate realises the sequence, then keep the first
+        working candidate that noise does not break, obstruct what the restrictions forbid
+        and guard against shortcuts."""
+        attempts = self.attempts()
+        if not attempts:
+            return None
+        attempts = self.repaired(attempts)
+        if attempts is None:
+            return None
         working = self.working(attempts)
         # The first working candidate that noise does not break, or else its shot moved
         # to the middle of its window of working angles, or the world around it firmed up,
