@@ -11,7 +11,8 @@ import numpy as np
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
-from physc.domains.angrybirds.satisfy import Satisfier, _span
+from physc.domains.angrybirds.fidelity import Fidelity
+from physc.domains.angrybirds.satisfy import Attempt, Satisfier, _span
 
 
 def satisfier(name: str, seed: int = 0) -> Satisfier:
@@ -326,3 +327,56 @@ def test_what_a_repair_moved_may_rest_anywhere_on_its_support_in_later_checks():
     for x in (left + half + 0.01, (left + right) / 2, right - half - 0.01):
         assert s.consistent(s.with_objects({"pig": attrs.evolve(pig, x=round(x, 5))})), x
     assert not s.consistent(s.with_objects({"pig": attrs.evolve(pig, x=right + 1.0)}))  # off its support
+
+
+def _scripted_search(monkeypatch, tree: dict, outcomes: dict, budget: int = 16):
+    """A satisfier whose levels are told apart by their high score: `tree` maps a level's
+    mark to the (description, mark) proposals made there, `outcomes` a proposed level's
+    mark to the best matched count it gives (negative: no better than before; 4: the whole
+    sequence of R)."""
+    s = satisfier("R")
+    base = s.level
+    marked = {}
+
+    def level(mark):
+        if mark not in marked:
+            extra = () if mark != "obstacle" else (attrs.evolve(base.objects[-1], name="obstacle1"),)
+            marked[mark] = attrs.evolve(base, high_score=float(len(marked) + 1), objects=base.objects + extra)
+        return marked[mark]
+
+    mark_of = {}
+
+    def proposals(attempts):
+        for description, mark in tree.get(mark_of.get(s.level.high_score, "root"), ()):
+            proposed = level(mark)
+            mark_of[proposed.high_score] = mark
+            yield description, proposed
+
+    def attempt(matched: int):
+        fidelity = Fidelity(matched, 4, (), matched == 4, (0.0,) * matched)
+        return [Attempt("c", None, None, fidelity)]
+
+    def screened(attempts, score):
+        matched = outcomes[mark_of[s.level.high_score]]
+        return None if matched < 0 else attempt(matched)
+
+    monkeypatch.setattr(s, "proposals", proposals)
+    monkeypatch.setattr(s, "screened", screened)
+    s.repair_rounds = budget
+    return s, s.repaired(attempt(1)), mark_of
+
+
+def test_a_dead_end_is_undone_and_the_next_proposal_tried(monkeypatch):
+    # Greedily, "a" is kept (it gets one interaction further) and nothing helps after it;
+    # backtracking undoes "a", with the obstacle it added, and "b" realises the sequence.
+    tree = {"root": [("a", "obstacle"), ("b", "b")], "obstacle": [("c", "c")]}
+    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"obstacle": 2, "b": 4, "c": -1})
+    assert attempts is not None and attempts[0].fidelity.valid
+    assert s.repairs == ["b"] and mark_of[s.level.high_score] == "b"
+    assert s.obstacles == [] and "obstacle1" not in s.roles
+
+
+def test_backtracking_stops_at_the_rounds_budget(monkeypatch):
+    tree = {"root": [(f"p{k}", f"p{k}") for k in range(40)]}
+    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {f"p{k}": -1 for k in range(40)}, budget=7)
+    assert attempts is None and len(mark_of) == 7 and s.repairs == []

@@ -20,6 +20,8 @@ first declared interaction that no candidate reaches, it repairs the layout:
 * the bird breaking a cannotHit, or knocking a chain member out of turn: a
   platform across its flight (`obstruct_flight`).
 
+A proposal is kept when the best candidate does at least as well with it; when none
+helps, the last one kept is undone and the proposals after it are tried (backtracking).
 Once a candidate realises the whole sequence, `pathObstructed(a, b, d)` (from
 `cannotHit`) adds platforms across the paths of shots that would hit b from a
 forbidden side, each verified by simulation not to disturb the solution, and
