@@ -648,6 +648,14 @@ class Satisfier:
                 self.obstacles.append(obj.name)
         self.level = level
 
+    def restore(self, level: Level, obstacles: int) -> None:
+        """Make `level` (an earlier one) the current one again, forgetting the obstacles
+        registered after the first `obstacles`."""
+        for name in self.obstacles[obstacles:]:
+            self.roles.pop(name, None)
+        del self.obstacles[obstacles:]
+        self.level = level
+
     def bird_intrusions(self, attempt: Attempt):
         """The bird's hits, while the sequence runs, that break a cannotHit restriction or
         touch a block or pig the sequence never has the bird touch (after its own work the
@@ -716,10 +724,7 @@ class Satisfier:
             else:
                 break
         if len(self.obstacles) > kept and self.robustness(solution)[0] < self.accept:
-            for name in self.obstacles[kept:]:
-                self.roles.pop(name, None)
-            del self.obstacles[kept:]
-            self.level = before
+            self.restore(before, kept)
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
@@ -818,7 +823,7 @@ class Satisfier:
                 trial = None if description in self.repairs else self.screened(attempts, score)
                 self.level = saved
                 if trial is not None:
-                    kept.append((saved, attempts, score, len(self.repairs), len(self.obstacles), proposals))
+                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals))
                     self.repairs.append(description)
                     self.adopt(level)
                     attempts, score = trial, max(a.fidelity.score for a in trial)
@@ -829,11 +834,10 @@ class Satisfier:
             else:
                 if not kept:
                     return None
-                self.level, attempts, score, repairs, obstacles, proposals = kept.pop()
+                level, attempts, repairs, obstacles, proposals = kept.pop()
+                score = max(a.fidelity.score for a in attempts)
                 del self.repairs[repairs:]
-                for name in self.obstacles[obstacles:]:
-                    self.roles.pop(name, None)
-                del self.obstacles[obstacles:]
+                self.restore(level, obstacles)
         return attempts
 
     def run(self) -> Satisfied | None:
