@@ -24,7 +24,7 @@ from physc.domains.angrybirds.stability import stability
 # tasks of the latest full evaluation. RRR generated no task there.
 GENERATED = {
     "SF": 0, "SFTB": 0, "SFLB": 0, "R": 0, "S": 0, "B": 0, "F": 0,
-    "RF": 10, "SR": 11, "BF": 11, "FR": 0, "RS": 7, "SRF": 11, "SFR": 16, "RRF": 8,
+    "RF": 10, "SR": 11, "BF": 11, "FR": 15, "RS": 7, "SRF": 11, "SFR": 16, "RRF": 8,
 }
 
 

@@ -142,3 +142,11 @@ def test_a_block_a_ball_hits_sideways_is_a_square():
     assert {d["sBlock"] for d in draws("RS")} == {"squareHole"}
     # S's sBlock is hit by the bird: both shapes stay.
     assert {d["sBlock"] for d in draws("S")} == {"squareHole", "triangleHole"}
+
+
+def test_a_block_that_falls_on_a_block_that_moves_next_is_not_round():
+    # A falling ball rolls off the top of a ball at rest; a square lands and pushes it.
+    assert {d["fBlock"] for d in draws("FR")} == {"squareHole", "triangleHole"}
+    assert {d["fBlock"] for d in draws("SFR")} == {"squareHole", "triangleHole"}
+    # Falling on a pig (F, RF): every fallable shape stays.
+    assert {d["fBlock"] for d in draws("F")} == {"squareHole", "triangleHole", "circle", "circleSmall"}

@@ -154,14 +154,14 @@ def test_drop_over_moves_a_fall_onto_its_target():
     s = satisfier("FR")
     attempt = max(s.attempts(), key=lambda a: a.fidelity.score)
     assert attempt.fidelity.matched >= 1  # the bird hit fBlock: the fall's path starts there
-    # Pretend fBlock came straight down 2.5 units to the left of rBlock.
+    # Pretend fBlock, pushed right by the bird, came straight down 1.2 units beyond rBlock.
     before = s.objects
-    landing = before["rBlock"].x - 2.5
+    landing = before["rBlock"].x + 1.2
     trace = attempt.trace
     states = trace.states.copy()
     start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index("fBlock")
     states[start:, column, 0] = landing
-    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.02 * np.arange(len(states) - start)
+    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.1 * np.arange(len(states) - start)
     states[start:, column, 4] = -1.0
     fallen = attrs.evolve(attempt, trace=attrs.evolve(trace, states=states))
     proposals = list(s.drop_over(s.scenario.interactions[1], fallen, 1))
@@ -176,18 +176,18 @@ def test_drop_over_moves_a_fall_onto_its_target():
         else:
             assert changed == s.structure("rBlock")
             shift = before["rBlock"].x - after["rBlock"].x  # rBlock comes to the fall
-        assert abs(shift - 2.5) < reach  # fBlock now comes down on rBlock
+        assert abs(shift + 1.2) < reach  # fBlock now comes down on rBlock
         assert s.consistent(level, frozenset(changed))
 
 
 def test_a_moved_edge_may_hold_by_another_qsr_of_its_clause():
-    s = satisfier("FR")
+    s = satisfier("BF", seed=1)
     far = next(r for r in s.relations if r.edge.startswith("locatedFar"))
     assert far.relation in far.alternatives and len(far.alternatives) == 3
-    # fBlock (with its support) straight above rBlock, far above: FarN, whatever was chosen.
-    f, r = s.objects["fBlock"], s.objects["rBlock"]
-    rise = (r.y + extent(r)[1] / 2 + 2.0) - (f.y - extent(f)[1] / 2)
-    moved = s.shift({"fBlock", s.support_of["fBlock"]}, r.x - f.x, max(rise, 0.0))
+    # fBlock (with its support) straight above the pig, far above: FarN, whatever was chosen.
+    f, p = s.objects["fBlock"], s.objects["pig"]
+    rise = (p.y + extent(p)[1] / 2 + 2.0) - (f.y - extent(f)[1] / 2)
+    moved = s.shift({"fBlock", s.support_of["fBlock"]}, p.x - f.x, max(rise, 0.0))
     level = s.with_objects(moved)
     assert s.consistent(level, frozenset(moved))
     assert far.relation == "FarNW"  # what placement chose for this seed
@@ -380,3 +380,48 @@ def test_backtracking_stops_at_the_rounds_budget(monkeypatch):
     tree = {"root": [(f"p{k}", f"p{k}") for k in range(40)]}
     s, attempts, mark_of = _scripted_search(monkeypatch, tree, {f"p{k}": -1 for k in range(40)}, budget=7)
     assert attempts is None and len(mark_of) == 7 and s.repairs == []
+
+
+def test_a_block_landing_behind_a_balls_centre_sets_it_rolling():
+    """The premise of landing off centre: dead centre moves the ball not at all."""
+    from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
+    from physc.domains.angrybirds.game import Game
+    from physc.domains.angrybirds.level import Level, LevelObject
+
+    def rolled(offset: float) -> float:
+        platform = LevelObject("Platform", "Platform", 3.0, 0.0, 0.0, scale_x=14 / PLATFORM_BASE, scale_y=PLATFORM_THICKNESS / PLATFORM_BASE, name="p")
+        y = PLATFORM_THICKNESS / 2 + 0.375 + 0.005
+        ball = LevelObject("Block", "Circle", 0.0, y, 0.0, "ice", name="ball")
+        square = LevelObject("Block", "SquareHole", offset, y + 0.375 + 0.38 + 2.5, 0.0, "wood", name="square")
+        trace = Game(Level(objects=(platform, ball, square))).simulate(None, 6.0)
+        xs = trace.states[:, trace.index("ball"), 0]
+        return float(xs[-1] - xs[0])
+
+    reach = (0.75 + 0.7636) / 2
+    assert abs(rolled(0.0)) < 0.05
+    assert rolled(-0.45 * reach) > 1.0  # behind the centre (to its left): it rolls right
+
+
+def test_a_fall_on_a_block_that_moves_next_is_aimed_behind_its_centre():
+    s = satisfier("FR")
+    attempt = max(s.attempts(), key=lambda a: a.fidelity.score)
+    assert attempt.fidelity.matched >= 1
+    # Pretend fBlock came straight down on the top of rBlock and the fall was recognised.
+    before = s.objects
+    trace = attempt.trace
+    states = trace.states.copy()
+    start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index("fBlock")
+    states[start:, column, 0] = before["rBlock"].x
+    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.1 * np.arange(len(states) - start)
+    states[start:, column, 4] = -1.0
+    times = (attempt.fidelity.times[0], attempt.fidelity.times[0] + 0.5, attempt.fidelity.times[0] + 0.6)
+    landed = attrs.evolve(attempt, trace=attrs.evolve(trace, states=states), fidelity=attrs.evolve(attempt.fidelity, matched=3, times=times))
+    proposals = list(s.land_off_centre("rBlock", 3, landed))
+    assert proposals
+    reach = (extent(before["rBlock"])[0] + extent(before["fBlock"])[0]) / 2
+    description, level = proposals[0]
+    after = {o.name: o for o in level.objects}
+    # Where fBlock now comes down, seen from rBlock's centre: behind it (rBlock rolls right).
+    landing = before["rBlock"].x + (after["fBlock"].x - before["fBlock"].x)
+    offset = landing - after["rBlock"].x
+    assert -0.65 * reach < offset < -0.25 * reach, description

@@ -5,8 +5,8 @@ The paper's table "Inferred layout constraints":
     hit(a, b, d)      → liesOnPath(b, a) ∧ inDirection(b, a, -d)
     roll(a, b, d)     → inDirection(a, b, -d)
     fall(a, b, d)     → locatedFar(a, b, d)
-                        (d = aboveLeft when d is above and the hit before the fall comes
-                        from the left only, pushing a right: it comes down ahead)
+                        (d = aboveLeft when d is above and the hit before the fall pushes
+                        a right: it comes down ahead; see `pushes`)
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d)
     cannotHit(a,b,d)  → pathObstructed(a, b, d)
@@ -22,7 +22,8 @@ reading (docs/qsr.md, "From scenario to layout"):
   - otherwise an object that rolls or slides rests on a support platform of its
     own, which its path continues from (`roll(a, s, right)` puts `a` left of `s`);
   - otherwise a new support: a platform, or the ground, at any location; for an
-    object that will fall, a platform it can be pushed off.
+    object that will fall, a platform it can be pushed off (on the part of it that
+    the hit pushes it towards).
 * The path of an object that rolls or slides: its support, then its surfaces in
   order, then the support of an object it hits sideways if that one has a path
   of its own. `cannotFall(a)` links consecutive platforms of a's path with
@@ -96,6 +97,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     b = _Builder(scenario)
     # A list, not a set: iteration order must not depend on string hashing.
     dynamic = [o.name for o in scenario.objects if not o.static and o.term != "bird"]
+    players = {o.name for o in scenario.objects if o.term == "bird"}
 
     # 1. The paper's table.
     for position, term in enumerate(scenario.interactions):
@@ -107,7 +109,8 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
         elif term.name in ("roll", "slide"):
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
-            pushed = _pushed_towards(scenario.interactions[:position], term)
+            hits = [i for i, t in enumerate(scenario.interactions[:position]) if t.name == "hit" and t.objects[1] == term.objects[0]]
+            pushed = pushes(scenario.interactions, hits[-1], players) if hits else None
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
@@ -141,7 +144,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     def path_of(mover: str) -> list[str]:
         return paths.get(mover, [])
 
-    for term in scenario.interactions:
+    for position, term in enumerate(scenario.interactions):
         if term.name != "hit":
             continue
         actor, target = term.objects
@@ -163,7 +166,8 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
         else:
             own = b.support_node(target, (FLAT,) if target in falls else (FLAT, GROUND))
             if target in falls:
-                locations = tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
+                pushed = pushes(scenario.interactions, position, players)
+                locations = (pushed,) if pushed else tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
                 text = f"{target} rests where it can be pushed off to fall: {term.text}"
             else:
                 locations = ("left", "centre", "right")
@@ -202,15 +206,19 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
 
 
-def _pushed_towards(before, fall: TermIR) -> str | None:
-    """The way (left or right) that the latest hit on a falling object `before` its fall
-    pushes it, if that hit is declared from one side only (from the left: to the right).
-    A hit that may come from above (the bird's, in the paper's scenarios) may knock the
-    object off either way."""
-    hit = last_hit_on(before, fall.objects[0])
-    if hit is None or len(hit.directions) != 1 or hit.directions[0] not in ("left", "right"):
-        return None
-    return OPPOSITE[hit.directions[0]]
+def pushes(interactions, position: int, players: set[str]) -> str | None:
+    """The way (left or right) that the hit `interactions[position]` pushes its target, if
+    known: away from the one side it is declared from (from the left: to the right). A hit
+    that may also come from above (`left ∨ above`) pushes the way its actor flies: the
+    player's bird, launched from the slingshot at the left edge of the level, flies to the
+    right until it has bounced."""
+    hit, before = interactions[position], interactions[:position]
+    if len(hit.directions) == 1 and hit.directions[0] in ("left", "right"):
+        return OPPOSITE[hit.directions[0]]
+    actor = hit.objects[0]
+    if actor in players and not any(t.name == "bounce" and t.objects[0] == actor for t in before):
+        return "right"
+    return None
 
 
 def last_hit_on(interactions, name: str) -> TermIR | None:

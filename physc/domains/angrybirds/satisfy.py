@@ -12,6 +12,8 @@ first declared interaction that no candidate reaches, it repairs the layout:
   the concrete objects and materials the scenario allows (a smaller pig, a
   stone block, a larger circle), or a falling attacker starts higher;
 * `slide`: the slider becomes ice (less friction), a square if it may;
+* a block that a fall should set rolling or sliding: the fall is moved to end behind
+  its centre (`land_off_centre`; dead centre, it does not move);
 * `bounce`: the surface is turned a little (or over, when the bounce went away
   from the next target);
 * a mover that stopped short of what it should hit or move on: the world
@@ -84,6 +86,7 @@ CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
+LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next ends this far behind its centre (of their half-widths)
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -257,6 +260,8 @@ class Satisfier:
             else:
                 yield from self.drop_over(declared, best, index)
             yield from self.lie_on_path(declared, previous, index)
+            if before.name in ("roll", "slide") and before.objects[0] == declared.objects[0]:
+                yield from self.land_off_centre(declared.objects[0], index, best)  # it moved, but not far enough
             if before.name == "bounce" and before.objects[0] == declared.objects[0]:
                 yield from self.turn(before.objects[1], mirror=True)  # it bounced, but away from the target
         elif declared.name == "destroy":
@@ -264,6 +269,7 @@ class Satisfier:
         elif declared.name in ("roll", "slide"):
             yield from self.close_gap(declared.objects[0], declared.objects[1], best, index)
             yield from self.set_moving(declared, index)
+            yield from self.land_off_centre(declared.objects[0], index, best)
         elif declared.name == "bounce":
             yield from self.turn(declared.objects[1])
 
@@ -415,10 +421,14 @@ class Satisfier:
         return changed
 
     def drop_over(self, declared, attempt: Attempt, index: int):
-        """fall(a, b) happened, but a came down away from b: a's structure (a, its support
-        and what is joined to them) moves so that the same fall ends on b, or else b's
-        structure moves the other way, under the fall. The fall path is read where a comes
-        down to b's top."""
+        """fall(a, b) happened, but a came down away from b (or, proposed by
+        `land_off_centre`, on b but without setting it moving): a's structure (a, its
+        support and what is joined to them) moves so that the same fall ends on b, or else
+        b's structure moves the other way, under the fall. The fall path is read where a
+        comes down to b's top. When b is to roll or slide next, a comes down on b's
+        shoulder behind that heading: a block landing on the top of a ball at rest does not
+        move it, and one landing 0.3 to 0.6 of their half-widths behind its centre moves it
+        furthest (docs/generation.md, "Landing off centre")."""
         faller, target = declared.objects
         objects = self.objects
         trace = attempt.trace
@@ -430,11 +440,15 @@ class Satisfier:
         landing = next((x for x, y, _, _, vy, _ in rows if not math.isnan(x) and vy < 0 and y <= level), None)
         if landing is None:
             return
-        # Off centre by up to about half their widths, a still comes down on b: the
-        # nudges reach the places where the layout edges hold (locatedFar keeps a "far"
-        # distance on both axes of a diagonal tile).
         reach = (extent(objects[target])[0] + extent(objects[faller])[0]) / 2
+        # Off centre by up to about half their widths, a still comes down on b: the nudges
+        # reach the places where the layout edges hold (locatedFar keeps a "far" distance on
+        # both axes of a diagonal tile). Behind b's centre first if b is to move next.
         nudges = sorted({round(k * 0.15, 2) for k in range(-4, 5) if abs(k * 0.15) < reach}, key=lambda n: (abs(n), n))
+        heading = self.heading_after(target, index)
+        if heading is not None:
+            behind = 1.0 if heading == "left" else -1.0
+            nudges = [round(behind * share * reach, 3) for share in LANDING_SHARES] + nudges
         for moving, other, sign in ((faller, target, 1.0), (target, faller, -1.0)):
             members = self.structure(moving)
             if other in members:
@@ -451,6 +465,23 @@ class Satisfier:
                     offered += 1
                     if offered >= 2:
                         break
+
+    def heading_after(self, name: str, index: int) -> str | None:
+        """The direction `name` first rolls or slides in, from interaction `index` on."""
+        return next(
+            (t.directions[0] for t in self.scenario.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name and t.directions[0] in ("left", "right")),
+            None,
+        )
+
+    def land_off_centre(self, mover: str, index: int, attempt: Attempt):
+        """`mover`, set moving by a block that fell on it, did not roll or slide (far enough):
+        the fall is moved to end on its shoulder (`drop_over`)."""
+        hit = last_hit_on(self.scenario.interactions[:index], mover)
+        if hit is None:
+            return
+        falls = [j for j, t in enumerate(self.scenario.interactions[:index]) if t.name == "fall" and tuple(t.objects) == (hit.objects[0], mover)]
+        if falls and attempt.fidelity.matched > falls[-1]:
+            yield from self.drop_over(self.scenario.interactions[falls[-1]], attempt, falls[-1])
 
     def move(self, name: str, x: float, y: float) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y): with its own support;
