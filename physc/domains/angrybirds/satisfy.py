@@ -428,7 +428,7 @@ class Satisfier:
         comes down to b's top. When b is to roll or slide next, a comes down on b's
         shoulder behind that heading: a block landing on the top of a ball at rest does not
         move it, and one landing 0.3 to 0.6 of their half-widths behind its centre moves it
-        furthest (docs/generation.md, "Landing off centre")."""
+        furthest (docs/generation.md, "Falls aimed to set a block moving")."""
         faller, target = declared.objects
         objects = self.objects
         trace = attempt.trace
