@@ -150,20 +150,25 @@ def test_a_target_on_a_joined_path_moves_with_its_whole_structure():
     assert s.move_structure("rBlock", rblock.x - 1.0, rblock.y, actor="rBlock") is None  # the actor is in it
 
 
+def straight_fall(attempt: Attempt, faller: str, x: float, top: float):
+    """`attempt`'s trace, with `faller` coming straight down at `x` from `top` after the
+    attempt's first matched interaction (0.1 units a step)."""
+    trace = attempt.trace
+    states = trace.states.copy()
+    start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index(faller)
+    states[start:, column, 0] = x
+    states[start:, column, 1] = top - 0.1 * np.arange(len(states) - start)
+    states[start:, column, 4] = -1.0
+    return attrs.evolve(trace, states=states)
+
+
 def test_drop_over_moves_a_fall_onto_its_target():
     s = satisfier("FR")
     attempt = max(s.attempts(), key=lambda a: a.fidelity.score)
     assert attempt.fidelity.matched >= 1  # the bird hit fBlock: the fall's path starts there
     # Pretend fBlock, pushed right by the bird, came straight down 1.2 units beyond rBlock.
     before = s.objects
-    landing = before["rBlock"].x + 1.2
-    trace = attempt.trace
-    states = trace.states.copy()
-    start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index("fBlock")
-    states[start:, column, 0] = landing
-    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.1 * np.arange(len(states) - start)
-    states[start:, column, 4] = -1.0
-    fallen = attrs.evolve(attempt, trace=attrs.evolve(trace, states=states))
+    fallen = attrs.evolve(attempt, trace=straight_fall(attempt, "fBlock", before["rBlock"].x + 1.2, before["rBlock"].y + 3.0))
     proposals = list(s.drop_over(s.scenario.interactions[1], fallen, 1))
     assert proposals
     reach = (extent(before["rBlock"])[0] + extent(before["fBlock"])[0]) / 2
@@ -408,14 +413,9 @@ def test_a_fall_on_a_block_that_moves_next_is_aimed_behind_its_centre():
     assert attempt.fidelity.matched >= 1
     # Pretend fBlock came straight down on the top of rBlock and the fall was recognised.
     before = s.objects
-    trace = attempt.trace
-    states = trace.states.copy()
-    start, column = int(attempt.fidelity.times[0] / trace.dt), trace.index("fBlock")
-    states[start:, column, 0] = before["rBlock"].x
-    states[start:, column, 1] = before["rBlock"].y + 3.0 - 0.1 * np.arange(len(states) - start)
-    states[start:, column, 4] = -1.0
+    trace = straight_fall(attempt, "fBlock", before["rBlock"].x, before["rBlock"].y + 3.0)
     times = (attempt.fidelity.times[0], attempt.fidelity.times[0] + 0.5, attempt.fidelity.times[0] + 0.6)
-    landed = attrs.evolve(attempt, trace=attrs.evolve(trace, states=states), fidelity=attrs.evolve(attempt.fidelity, matched=3, times=times))
+    landed = attrs.evolve(attempt, trace=trace, fidelity=attrs.evolve(attempt.fidelity, matched=3, times=times))
     proposals = list(s.land_off_centre("rBlock", 3, landed))
     assert proposals
     reach = (extent(before["rBlock"])[0] + extent(before["fBlock"])[0]) / 2

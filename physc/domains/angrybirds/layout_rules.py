@@ -109,8 +109,8 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
         elif term.name in ("roll", "slide"):
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
-            hits = [i for i, t in enumerate(scenario.interactions[:position]) if t.name == "hit" and t.objects[1] == term.objects[0]]
-            pushed = pushes(scenario.interactions, hits[-1], players) if hits else None
+            hit = last_hit_at(scenario.interactions[:position], term.objects[0])
+            pushed = None if hit is None else pushes(scenario.interactions, hit, players)
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
@@ -209,9 +209,9 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
 def pushes(interactions, position: int, players: set[str]) -> str | None:
     """The way (left or right) that the hit `interactions[position]` pushes its target, if
     known: away from the one side it is declared from (from the left: to the right). A hit
-    that may also come from above (`left ∨ above`) pushes the way its actor flies: the
-    player's bird, launched from the slingshot at the left edge of the level, flies to the
-    right until it has bounced."""
+    declared otherwise (`left ∨ above`, `any`) pushes the way its actor flies, if that is
+    known: the player's bird, launched from the slingshot at the left edge of the level,
+    flies to the right until it has bounced."""
     hit, before = interactions[position], interactions[:position]
     if len(hit.directions) == 1 and hit.directions[0] in ("left", "right"):
         return OPPOSITE[hit.directions[0]]
@@ -221,9 +221,16 @@ def pushes(interactions, position: int, players: set[str]) -> str | None:
     return None
 
 
+def last_hit_at(interactions, name: str) -> int | None:
+    """The position of the last declared hit on `name` among `interactions` (those before
+    some point)."""
+    return next((i for i in reversed(range(len(interactions))) if interactions[i].name == "hit" and interactions[i].objects[1] == name), None)
+
+
 def last_hit_on(interactions, name: str) -> TermIR | None:
     """The last declared hit on `name` among `interactions` (those before some point)."""
-    return next((t for t in reversed(interactions) if t.name == "hit" and t.objects[1] == name), None)
+    at = last_hit_at(interactions, name)
+    return None if at is None else interactions[at]
 
 
 def _push_off(direction: str) -> tuple[str, ...]:
