@@ -425,3 +425,51 @@ def test_a_fall_on_a_block_that_moves_next_is_aimed_behind_its_centre():
     landing = before["rBlock"].x + (after["fBlock"].x - before["fBlock"].x)
     offset = landing - after["rBlock"].x
     assert -0.65 * reach < offset < -0.25 * reach, description
+
+
+def _struck(prefab: str, material: str, point: str) -> tuple[bool, bool]:
+    """(still there, slide recognised) for a block on a long platform struck by the bird."""
+    from physc.domains.angrybirds.actions import points_of_interest
+    from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, by_prefab
+    from physc.domains.angrybirds.game import Game
+    from physc.domains.angrybirds.launch import Shot
+    from physc.domains.angrybirds.level import Level, LevelObject
+
+    platform = LevelObject("Platform", "Platform", 3.0, -2.0, 0.0, scale_x=10 / PLATFORM_BASE, scale_y=PLATFORM_THICKNESS / PLATFORM_BASE, name="p")
+    block = LevelObject("Block", prefab, 0.0, -2.0 + PLATFORM_THICKNESS / 2 + by_prefab(prefab).height / 2 + 0.002, 0.0, material, name="block")
+    trace = Game(Level(objects=(platform, block))).play(Shot(target=points_of_interest(block)[point], trajectory="low"), 6.0)
+    there = not np.isnan(trace.states[-1, trace.index("block"), 0])
+    return there, any(f.name == "slide" and f.objects[0] == "block" for f in trace.interactions)
+
+
+def test_only_an_ice_square_or_a_triangle_struck_low_slides():
+    """The premise of the slide repairs: wood grips a platform at friction 1.26, more than
+    a square's width over its height, so a struck wooden square tips over instead."""
+    assert _struck("SquareHole", "wood", "left") == (True, False)
+    assert _struck("SquareHole", "ice", "left") == (True, True)
+    assert _struck("TriangleHole", "wood", "lr") == (True, True)
+    assert _struck("TriangleHole", "wood", "c") == (True, False)  # struck high, it tips
+
+
+def test_a_stuck_slide_is_offered_a_block_that_slides():
+    s = satisfier("S", seed=2)  # a square placed where a triangle fits too
+    slide = next(k for k, t in enumerate(s.scenario.interactions) if t.name == "slide")
+    declared = s.scenario.interactions[slide]
+    block = s.objects["sBlock"]
+
+    def offered(prefab: str, material: str) -> list[tuple[str, str, str]]:
+        bottom = block.y - extent(block)[1] / 2
+        changed = attrs.evolve(block, type=prefab, material=material)
+        s.level = s.with_objects({"sBlock": attrs.evolve(changed, y=bottom + extent(changed)[1] / 2)})
+        out = []
+        for description, level in s.set_moving(declared, slide):
+            after = {o.name: o for o in level.objects}["sBlock"]
+            out.append((description, after.type, after.material))
+        return out
+
+    square = offered("SquareHole", "wood")
+    assert ("TriangleHole", "wood") == square[0][1:], square[0][0]
+    assert ("SquareHole", "ice") in [o[1:] for o in square]
+    assert ("SquareHole", "wood") not in [o[1:] for o in square]  # a wooden square tips
+    triangle = offered("TriangleHole", "wood")
+    assert ("SquareHole", "ice") == triangle[0][1:], triangle[0][0]

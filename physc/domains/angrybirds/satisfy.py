@@ -507,14 +507,19 @@ class Satisfier:
         if obj is not None and obj.element == "Block" and obj.material != material:
             yield why, self.with_objects({name: attrs.evolve(obj, material=material)})
 
-    def swap(self, name: str, concrete: str, why: str):
+    def is_square(self, name: str) -> bool:
+        obj = self.objects.get(name)
+        return obj is not None and by_prefab(obj.type).name == "squareHole"
+
+    def swap(self, name: str, concrete: str, why: str, material: str | None = None):
+        """`name` as another concrete object (and of `material`, if given)."""
         obj = self.objects.get(name)
         if obj is None or concrete not in self.allowed.get(name, ()) or by_prefab(obj.type).name == concrete:
             return
         old = extent(obj)
         new_shape = shape(concrete)
         y = obj.y - old[1] / 2 + new_shape.height / 2  # keep the bottom where it rests
-        candidate = self.with_objects({name: attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5))})
+        candidate = self.with_objects({name: attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5), material=material or obj.material)})
         if self.consistent(candidate):
             yield why, candidate
 
@@ -537,12 +542,18 @@ class Satisfier:
         return hit.objects[0] if hit else None
 
     def set_moving(self, declared, index: int):
-        """roll/slide(a, s, d) did not happen: a square that slides, more speed, or a closer to s."""
+        """roll/slide(a, s, d) did not happen: a block that slides, more speed, or a closer to s."""
         mover, surface = declared.objects
         if declared.name == "slide":
-            yield from self.swap(mover, "squareHole", f"slide({mover}): a square slides, a triangle tips")
+            # Only an ice square slides: wood and stone grip a platform harder than a
+            # square's width over its height, so it tips over its leading edge. A wooden
+            # triangle, struck low, slides (about a unit, hit by the bird) but tips when
+            # struck high. (docs/generation.md, "Which blocks slide")
+            yield from self.swap(mover, "squareHole", f"slide({mover}): an ice square (a triangle tips when struck high)", "ice")
+            yield from self.swap(mover, "triangleHole", f"slide({mover}): a wooden triangle (a square tips unless it is ice)", "wood")
         yield from self.material(mover, "ice", f"{declared.name}({mover}): of ice, lighter")
-        yield from self.material(mover, "wood", f"{declared.name}({mover}): of wood, lighter than stone, tougher than ice")
+        if not (declared.name == "slide" and self.is_square(mover)):
+            yield from self.material(mover, "wood", f"{declared.name}({mover}): of wood, lighter than stone, tougher than ice")
         hitter = self.hitter_of(mover, index)
         if hitter:
             yield from self.material(hitter, "stone", f"{declared.name}({mover}): its hitter {hitter} of stone")
