@@ -60,3 +60,24 @@ def test_records_made_with_other_settings_are_made_again(tmp_path):
     assert record["min_robustness"] == 6 and record["robustness"] == [6, 6]
     header, row = (tmp_path / "results.csv").read_text().splitlines()[:2]
     assert header.endswith(",min_robustness,robustness") and row.endswith(",6,6/6")
+
+
+def test_records_of_a_changed_scenario_or_time_budget_are_made_again(tmp_path):
+    source = tmp_path / "sf.phys"
+    source.write_text(SF.read_text())
+    out = tmp_path / "out"
+    assert run_physc("eval", source, "--tasks", "1", "--out", out, "-q").status == 0
+    # Only layout and comments changed: the scenario says the same, the record stands.
+    source.write_text("# a comment\n\n" + SF.read_text())
+    run = run_physc("eval", source, "--tasks", "1", "--out", out)
+    assert run.status == 0 and "resuming: 1 of 1 tasks already done" in run.stderr
+    run = run_physc("eval", source, "--tasks", "1", "--time-budget", "59", "--out", out)
+    assert run.status == 0 and "resuming" not in run.stderr
+    (record,) = records(out).values()
+    assert record["settings"]["time_budget"] == 59
+    # A changed interaction is another scenario.
+    changed = source.read_text().replace("hit(bird, pig, any)", "hit(bird, pig, left)")
+    assert changed != source.read_text()
+    source.write_text(changed)
+    run = run_physc("eval", source, "--tasks", "1", "--time-budget", "59", "--out", out)
+    assert run.status == 0 and "resuming" not in run.stderr

@@ -3,12 +3,15 @@
 Each task is one (scenario, seed) pair, seed = base seed + index. Its record is
 appended to DIR/records.jsonl as soon as it is done (one JSON object a line,
 flushed), so a killed run resumes where it stopped: tasks with a record are not
-done again. A task's record depends only on its scenario and seed, never on the
-process that made it, so the results do not depend on --jobs.
+done again, unless the record was made with other settings (the generation settings,
+the scenario as written, physc's version): those are made again. A task's record
+depends only on its scenario and seed, never on the process that made it, so the
+results do not depend on --jobs.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import random
 import time
@@ -17,6 +20,7 @@ from pathlib import Path
 
 import attrs
 
+from physc import __version__
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
@@ -36,10 +40,23 @@ class Job:
     seed: int
     time_budget: float
     min_robustness: int = MIN_ROBUSTNESS  # see Pipeline
+    fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
 
     @property
     def key(self) -> tuple[str, str, int]:
         return (self.path, self.scenario, self.seed)
+
+    @property
+    def settings(self) -> dict:
+        """What a task's record depends on besides its key: a record made with other
+        settings is stale."""
+        return {"time_budget": self.time_budget, "min_robustness": self.min_robustness, "scenario": self.fingerprint, "physc": __version__}
+
+
+def scenario_fingerprint(scenario) -> str:
+    """A hash of what a scenario says (not where it is written: spans and layout do not count)."""
+    data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.name not in ("span", "path"))
+    return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()[:16]
 
 
 def evaluate(job: Job) -> dict:
@@ -53,6 +70,7 @@ def evaluate(job: Job) -> dict:
         "interactions": len(scenario.interactions),
         "seed": job.seed,
         "min_robustness": job.min_robustness,
+        "settings": job.settings,
     }
     started = time.perf_counter()
     try:
@@ -96,7 +114,8 @@ def jobs_for(
             problems.append((path, analysis, errors))
             continue
         for scenario in analysis.scenarios:
-            jobs += [Job(path, scenario.name, seed + index, time_budget, min_robustness) for index in range(tasks)]
+            fingerprint = scenario_fingerprint(scenario)
+            jobs += [Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint) for index in range(tasks)]
     return jobs, problems
 
 
@@ -117,8 +136,8 @@ def done_records(folder: Path) -> dict:
 def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict]:
     ensure_folder(folder)
     records = done_records(folder)
-    # A record made with other generation settings is made again (the last line of a key wins).
-    todo = [job for job in jobs if job.key not in records or records[job.key].get("min_robustness") != job.min_robustness]
+    # A record made with other settings is made again (the last line of a key wins).
+    todo = [job for job in jobs if job.key not in records or records[job.key].get("settings") != job.settings]
     path = folder / RECORDS
     # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
     if records:
