@@ -54,8 +54,9 @@ class Job:
 
 
 def scenario_fingerprint(scenario) -> str:
-    """A hash of what a scenario says (not where it is written: spans and layout do not count)."""
-    data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.name not in ("span", "path"))
+    """A hash of what a scenario says: the fields its equality compares (not where it is
+    written: spans, the file's path, layout and comments do not count)."""
+    data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.eq)
     return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()[:16]
 
 

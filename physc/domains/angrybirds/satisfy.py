@@ -11,7 +11,8 @@ first declared interaction that no candidate reaches, it repairs the layout:
 * `destroy(a, b)`: the attacker is made stronger or the target weaker, within
   the concrete objects and materials the scenario allows (a smaller pig, a
   stone block, a larger circle), or a falling attacker starts higher;
-* `slide`: the slider becomes ice (less friction), a square if it may;
+* `slide`: a block that slides (an ice square for a triangle, a wooden triangle for
+  a square; a wooden square tips over), or the slider of ice;
 * a block that a fall should set rolling or sliding: the fall is moved to end behind
   its centre (`land_off_centre`; dead centre, it does not move);
 * `bounce`: the surface is turned a little (or over, when the bounce went away
@@ -507,14 +508,15 @@ class Satisfier:
         if obj is not None and obj.element == "Block" and obj.material != material:
             yield why, self.with_objects({name: attrs.evolve(obj, material=material)})
 
-    def is_square(self, name: str) -> bool:
+    def concrete_of(self, name: str) -> str | None:
+        """The concrete object (`squareHole`, `circle`, …) that `name` is now."""
         obj = self.objects.get(name)
-        return obj is not None and by_prefab(obj.type).name == "squareHole"
+        return None if obj is None else by_prefab(obj.type).name
 
     def swap(self, name: str, concrete: str, why: str, material: str | None = None):
         """`name` as another concrete object (and of `material`, if given)."""
         obj = self.objects.get(name)
-        if obj is None or concrete not in self.allowed.get(name, ()) or by_prefab(obj.type).name == concrete:
+        if obj is None or concrete not in self.allowed.get(name, ()) or self.concrete_of(name) == concrete:
             return
         old = extent(obj)
         new_shape = shape(concrete)
@@ -552,7 +554,7 @@ class Satisfier:
             yield from self.swap(mover, "squareHole", f"slide({mover}): an ice square (a triangle tips when struck high)", "ice")
             yield from self.swap(mover, "triangleHole", f"slide({mover}): a wooden triangle (a square tips unless it is ice)", "wood")
         yield from self.material(mover, "ice", f"{declared.name}({mover}): of ice, lighter")
-        if not (declared.name == "slide" and self.is_square(mover)):
+        if not (declared.name == "slide" and self.concrete_of(mover) == "squareHole"):
             yield from self.material(mover, "wood", f"{declared.name}({mover}): of wood, lighter than stone, tougher than ice")
         hitter = self.hitter_of(mover, index)
         if hitter:
