@@ -63,7 +63,9 @@ def test_compile_writes_level_task_and_picture(tmp_path):
     data = json.loads(task.read_text())
     assert data["scenario"] == "SF" and data["seed"] == 0 and data["validated"] is True
     assert data["trace"].endswith("destroy(bird, pig)")
-    assert set(data["seconds"]) == {"layout", "satisfy", "total"}
+    seconds = data["seconds"]
+    assert list(seconds) == ["layout", "satisfy", "distract", "validate", "total"]
+    assert sum(seconds.values()) - seconds["total"] == pytest.approx(seconds["total"], abs=1e-3)
     assert read_level(level.read_bytes()).objects
     assert png.read_bytes().startswith(b"\x89PNG")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["sf.json", "sf.png", "sf.xml"]

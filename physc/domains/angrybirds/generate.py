@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import random
+import time
 
 import attrs
 
@@ -33,6 +34,7 @@ class Outcome:
     simulations: int
     parts: Parts | None = None
     nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
+    seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfy
 
 
 def satisfy(
@@ -48,7 +50,9 @@ def satisfy(
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).
+    distracting = time.perf_counter()
     distractors = distract(satisfier, attempt, rng)
+    validating = time.perf_counter()
     validated = None
     trace = attempt.trace
     if validate:
@@ -56,6 +60,7 @@ def satisfy(
         if not final.fidelity.valid:
             return Outcome(False, satisfier.simulations)
         validated, trace = True, final.trace
+    seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
     shot = attempt.shot
     solution = Solution(attempt.label, shot.target, shot.trajectory, round(shot.release_angle(), 5))
     parts = Parts(
@@ -68,4 +73,4 @@ def satisfy(
         obstacles=found.obstacles,
         distractors=tuple(distractors),
     )
-    return Outcome(True, satisfier.simulations, parts)
+    return Outcome(True, satisfier.simulations, parts, seconds=seconds)
