@@ -5,7 +5,9 @@
 For every scenario and seed 0..N-1, `physc compile` end to end (validated), on one
 core. Prints, per scenario and per interaction count (2, 4, 6, 8, as the paper
 groups them), how many seeds gave a validated task and the median and
-mean ± SD time per generated task (and the time spent on seeds that failed).
+mean ± SD time per generated task (and the time spent on seeds that failed), and
+per interaction count where the time of the generated tasks went, stage by stage
+(the task's own `seconds`: layout, satisfy, distract, validate).
 """
 
 from __future__ import annotations
@@ -34,6 +36,7 @@ def main() -> None:
     scenarios = analyze(str(PAPER)).scenarios
     wanted = set(args.scenarios.split(",")) if args.scenarios else None
     by_count: dict[int, list[float]] = {}
+    stages_by_count: dict[int, dict[str, float]] = {}
     print(f"machine: {platform.machine()}, Python {platform.python_version()}; seeds 0-{args.seeds - 1}; time budget {args.time_budget:g} s")
     print(f"{'scenario':<8} {'n':>2} {'generated':>10} {'median s':>9} {'mean±sd s':>12} {'failed s':>9}")
     for scenario in scenarios:
@@ -43,8 +46,11 @@ def main() -> None:
         for seed in range(args.seeds):
             start = time.perf_counter()
             try:
-                Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
+                task = Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
                 ok.append(time.perf_counter() - start)
+                stages = stages_by_count.setdefault(len(scenario.interactions), {})
+                for stage, spent in task.seconds.items():
+                    stages[stage] = stages.get(stage, 0.0) + spent
             except Infeasible:
                 failed.append(time.perf_counter() - start)
         count = len(scenario.interactions)
@@ -57,6 +63,9 @@ def main() -> None:
     for count, times in sorted(by_count.items()):
         if times:
             print(f"{count} interactions: median {statistics.median(times):.2f} s, mean {statistics.mean(times):.2f}±{statistics.pstdev(times):.2f} s over {len(times)} tasks")
+            stages = stages_by_count[count]
+            shares = ", ".join(f"{stage} {100 * spent / stages['total']:.1f} %" for stage, spent in stages.items() if stage != "total")
+            print(f"  where the time went: {shares}")
 
 
 if __name__ == "__main__":
