@@ -87,7 +87,7 @@ def _guarded(monkeypatch, robust: bool):
     platform = satisfy.LevelObject("Platform", "Platform", 20.0, 20.0, 0.0, scale_x=1.0, scale_y=0.5, name="obstacle1")
     blocked = attrs.evolve(s.level, objects=s.level.objects + (platform,))
     shots = iter([shortcut, None])
-    monkeypatch.setattr(s, "accidental_shot", lambda target: next(shots))
+    monkeypatch.setattr(s, "accidental_shot", lambda target, skip=(): next(shots))
     monkeypatch.setattr(s, "obstacles_across", lambda trace, target, before=None: iter([("obstacle1", blocked)]))
     monkeypatch.setattr(s, "robustness", lambda attempt, level=None: (6 if robust else 0, 6))
     unguarded = s.level
@@ -103,6 +103,55 @@ def test_a_shortcut_is_blocked_when_the_solution_survives(monkeypatch):
 def test_a_block_that_makes_the_solution_fragile_is_taken_away(monkeypatch):
     s, unguarded, _ = _guarded(monkeypatch, robust=False)
     assert s.level == unguarded and s.obstacles == [] and "obstacle1" not in s.roles
+
+
+def _guarded_twice(monkeypatch, blocks: list[str]):
+    """guard_accidents on R (seed 7) against two shortcuts, labelled "first" and "second";
+    the platform offered across the n-th is `blocks[n]`: "firm" (the solution survives it),
+    "fragile" (the noisy replays fail with it). Returns the satisfier, the platforms (level
+    per name) and the `skip` each search for a shortcut was given."""
+    from physc.domains.angrybirds import satisfy
+
+    s = satisfier("R", seed=7)
+    solution = s.working(s.attempts())[0]
+    shortcut = s.accidental_shot("rBlock")
+    shortcuts = [attrs.evolve(shortcut, label=label) for label in ("first", "second")]
+    asked: list[list[str]] = []
+
+    def accidental_shot(target, skip=()):
+        asked.append(list(skip))
+        return next((shot for shot in shortcuts if shot.label not in skip and len(asked) <= 2), None)
+
+    offered = iter(range(len(blocks)))
+    platforms: dict[str, object] = {}
+
+    def obstacles_across(trace, target, before=None):
+        index = next(offered)
+        name = f"obstacle{len(s.obstacles) + 1}"
+        obj = satisfy.LevelObject("Platform", "Platform", 20.0 + 3 * index, 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
+        platforms[blocks[index]] = level = attrs.evolve(s.level, objects=s.level.objects + (obj,))
+        yield name, level
+
+    def robustness(attempt, level=None):
+        fragile = "fragile" in platforms and platforms["fragile"] is level
+        return (0 if fragile else 6), 6
+
+    monkeypatch.setattr(s, "accidental_shot", accidental_shot)
+    monkeypatch.setattr(s, "obstacles_across", obstacles_across)
+    monkeypatch.setattr(s, "robustness", robustness)
+    s.guard_accidents(solution)
+    return s, platforms, asked
+
+
+def test_a_shortcut_that_cannot_be_blocked_does_not_end_the_guard(monkeypatch):
+    s, platforms, asked = _guarded_twice(monkeypatch, ["fragile", "firm"])
+    assert asked[:2] == [[], ["first"]]  # the next search leaves the unblocked shortcut out
+    assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
+
+
+def test_a_platform_that_makes_the_solution_fragile_leaves_the_earlier_ones(monkeypatch):
+    s, platforms, _ = _guarded_twice(monkeypatch, ["firm", "fragile"])
+    assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
 
 
 def test_the_bird_knocking_a_chain_member_out_of_turn_is_an_intrusion():

@@ -81,7 +81,7 @@ OBSTACLE_LENGTH = 1.4
 SHORT_OBSTACLE = 0.9  # tried last, when no obstacle of the full length leaves the solution working
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obstacle goes
 FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
-ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
+ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects), and shortcuts given up on
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
@@ -735,40 +735,39 @@ class Satisfier:
                 yield f"pathObstructed(bird, {target}): {name} across the bird's flight", candidate
 
     # ---- accidental solutions ------------------------------------------------------------------
-    def accidental_shot(self, target: str) -> Attempt | None:
+    def accidental_shot(self, target: str, skip: Collection[str] = ()) -> Attempt | None:
         """A shot at a point of interest of a block or pig other than the solution's target
-        that solves the level (the paper's heuristic agent, on all eight points)."""
+        that solves the level (the paper's heuristic agent, on all eight points), other
+        than those labelled in `skip`."""
         for obj in agent_targets(self.level, target):
-            found = self.solving_shot(obj, self.level)
+            found = self.solving_shot(obj, self.level, skip)
             if found is not None:
                 return found
         return None
 
     def guard_accidents(self, solution: Attempt) -> None:
         """pathObstructed for shortcuts: a platform across the flight of each shot that solves
-        the level without being the solution, before the bird first touches anything; kept
-        only if the solution still realises the sequence and survives the noisy replays as
-        often as the robustness check demands. A shortcut that cannot be blocked stays."""
+        the level without being the solution, before the bird first touches anything; each
+        kept only if the solution still realises the sequence and survives the noisy replays
+        as often as the robustness check demands. A shortcut that cannot be blocked stays,
+        and the next one is tried."""
         first = self.first_target()
         if first is None:
             return
-        before, kept = self.level, len(self.obstacles)
-        for _ in range(ACCIDENT_OBSTACLES):
-            accident = self.accidental_shot(first.name)
+        unblocked: list[str] = []  # the shortcuts no platform stops (by the shot's label)
+        placed = 0
+        while placed < ACCIDENT_OBSTACLES and len(unblocked) < ACCIDENT_OBSTACLES:
+            accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
             touched = next((c for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)), None)
-            if touched is None:
-                break
-            other = touched.b if touched.a == BIRD else touched.a
-            for _, candidate in self.obstacles_across(accident.trace, other):
-                if self.simulate(solution.shot, candidate).fidelity.valid:
+            for _, candidate in self.obstacles_across(accident.trace, touched.b if touched.a == BIRD else touched.a) if touched else ():
+                if self.simulate(solution.shot, candidate).fidelity.valid and self.robustness(solution, candidate)[0] >= self.accept:
                     self.adopt(candidate)
+                    placed += 1
                     break
             else:
-                break
-        if len(self.obstacles) > kept and self.robustness(solution)[0] < self.accept:
-            self.restore(before, kept)
+                unblocked.append(accident.label)
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
@@ -837,9 +836,12 @@ class Satisfier:
                     break
         return chosen, passed
 
-    def solving_shot(self, obj: LevelObject, level: Level) -> Attempt | None:
-        """A shot at one of obj's points of interest that solves the level, if any."""
+    def solving_shot(self, obj: LevelObject, level: Level, skip: Collection[str] = ()) -> Attempt | None:
+        """A shot at one of obj's points of interest that solves the level, if any (other
+        than those labelled in `skip`)."""
         for label, shot in candidate_shots(obj):
+            if label in skip:
+                continue
             self.simulations += 1
             trace = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
             if trace.solved:
