@@ -81,7 +81,8 @@ OBSTACLE_LENGTH = 1.4
 SHORT_OBSTACLE = 0.9  # tried last, when no obstacle of the full length leaves the solution working
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obstacle goes
 FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
-ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects), and shortcuts given up on
+ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
+SHORTCUTS_LEFT = 3  # shortcuts no platform stops, after which the guard ends
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
@@ -756,12 +757,13 @@ class Satisfier:
             return
         unblocked: list[str] = []  # the shortcuts no platform stops (by the shot's label)
         placed = 0
-        while placed < ACCIDENT_OBSTACLES and len(unblocked) < ACCIDENT_OBSTACLES:
+        while placed < ACCIDENT_OBSTACLES and len(unblocked) < SHORTCUTS_LEFT:
             accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
             touched = next((c for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)), None)
-            for _, candidate in self.obstacles_across(accident.trace, touched.b if touched.a == BIRD else touched.a) if touched else ():
+            offered = () if touched is None else self.obstacles_across(accident.trace, touched.b if touched.a == BIRD else touched.a)
+            for _, candidate in offered:
                 if self.simulate(solution.shot, candidate).fidelity.valid and self.robustness(solution, candidate)[0] >= self.accept:
                     self.adopt(candidate)
                     placed += 1
