@@ -42,18 +42,18 @@ def main() -> None:
     for scenario in scenarios:
         if wanted and scenario.name not in wanted:
             continue
+        count = len(scenario.interactions)
         ok, failed = [], []
         for seed in range(args.seeds):
             start = time.perf_counter()
             try:
                 task = Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
                 ok.append(time.perf_counter() - start)
-                stages = stages_by_count.setdefault(len(scenario.interactions), {})
+                stages = stages_by_count.setdefault(count, {})
                 for stage, spent in task.seconds.items():
                     stages[stage] = stages.get(stage, 0.0) + spent
             except Infeasible:
                 failed.append(time.perf_counter() - start)
-        count = len(scenario.interactions)
         by_count.setdefault(count, []).extend(ok)
         median = f"{statistics.median(ok):.2f}" if ok else "-"
         spread = f"{statistics.mean(ok):.2f}±{statistics.pstdev(ok):.2f}" if ok else "-"

@@ -75,82 +75,66 @@ def test_a_bounce_surface_may_be_turned_over():
     assert -round(surface.rotation, 1) not in [round(float(d.split(" to ")[1].rstrip("°")), 1) for d, _ in s.turn("iSurface")]
 
 
-def _guarded(monkeypatch, robust: bool):
-    """guard_accidents on R (seed 7, whose first layout works without repairs), with the
-    shortcut and the platform across it given, and the robustness check's verdict."""
+def _guarded(monkeypatch, blocks: list[str]):
+    """guard_accidents on R (seed 7, whose first layout works without repairs) against a
+    shortcut per entry of `blocks`, labelled "first", "second", … and found in that order
+    (the real first shortcut's flight, relabelled); the platform offered across the n-th
+    is `blocks[n]`: "firm" (the solution survives it) or "fragile" (the noisy replays fail
+    with it). Returns the satisfier, the level before, the platforms offered (level by
+    kind) and the `skip` each search for a shortcut was given."""
     from physc.domains.angrybirds import satisfy
 
     s = satisfier("R", seed=7)
     solution = s.working(s.attempts())[0]
     shortcut = s.accidental_shot("rBlock")
     assert shortcut is not None  # a shot at the pig solves the bare layout
-    platform = satisfy.LevelObject("Platform", "Platform", 20.0, 20.0, 0.0, scale_x=1.0, scale_y=0.5, name="obstacle1")
-    blocked = attrs.evolve(s.level, objects=s.level.objects + (platform,))
-    shots = iter([shortcut, None])
-    monkeypatch.setattr(s, "accidental_shot", lambda target, skip=(): next(shots))
-    monkeypatch.setattr(s, "obstacles_across", lambda trace, target, before=None: iter([("obstacle1", blocked)]))
-    monkeypatch.setattr(s, "robustness", lambda attempt, level=None: (6 if robust else 0, 6))
-    unguarded = s.level
-    s.guard_accidents(solution)
-    return s, unguarded, blocked
-
-
-def test_a_shortcut_is_blocked_when_the_solution_survives(monkeypatch):
-    s, _, blocked = _guarded(monkeypatch, robust=True)
-    assert s.level == blocked and s.obstacles == ["obstacle1"] and s.roles["obstacle1"] == "obstacle"
-
-
-def test_a_block_that_makes_the_solution_fragile_is_taken_away(monkeypatch):
-    s, unguarded, _ = _guarded(monkeypatch, robust=False)
-    assert s.level == unguarded and s.obstacles == [] and "obstacle1" not in s.roles
-
-
-def _guarded_twice(monkeypatch, blocks: list[str]):
-    """guard_accidents on R (seed 7) against two shortcuts, labelled "first" and "second";
-    the platform offered across the n-th is `blocks[n]`: "firm" (the solution survives it),
-    "fragile" (the noisy replays fail with it). Returns the satisfier, the platforms (level
-    per name) and the `skip` each search for a shortcut was given."""
-    from physc.domains.angrybirds import satisfy
-
-    s = satisfier("R", seed=7)
-    solution = s.working(s.attempts())[0]
-    shortcut = s.accidental_shot("rBlock")
-    shortcuts = [attrs.evolve(shortcut, label=label) for label in ("first", "second")]
+    pending = [attrs.evolve(shortcut, label=label) for label in ("first", "second", "third")[: len(blocks)]]
     asked: list[list[str]] = []
 
     def accidental_shot(target, skip=()):
         asked.append(list(skip))
-        return next((shot for shot in shortcuts if shot.label not in skip and len(asked) <= 2), None)
+        return pending.pop(0) if pending else None
 
-    offered = iter(range(len(blocks)))
+    offered = iter(blocks)
     platforms: dict[str, object] = {}
 
     def obstacles_across(trace, target, before=None):
-        index = next(offered)
+        kind = next(offered)
         name = f"obstacle{len(s.obstacles) + 1}"
-        obj = satisfy.LevelObject("Platform", "Platform", 20.0 + 3 * index, 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
-        platforms[blocks[index]] = level = attrs.evolve(s.level, objects=s.level.objects + (obj,))
+        obj = satisfy.LevelObject("Platform", "Platform", 20.0 + 3 * len(platforms), 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
+        platforms[kind] = level = attrs.evolve(s.level, objects=s.level.objects + (obj,))
         yield name, level
 
     def robustness(attempt, level=None):
-        fragile = "fragile" in platforms and platforms["fragile"] is level
-        return (0 if fragile else 6), 6
+        judged = s.level if level is None else level  # as the real check: None is the level as it is
+        return (0 if judged is platforms.get("fragile") else 6), 6
 
     monkeypatch.setattr(s, "accidental_shot", accidental_shot)
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
     monkeypatch.setattr(s, "robustness", robustness)
+    unguarded = s.level
     s.guard_accidents(solution)
-    return s, platforms, asked
+    return s, unguarded, platforms, asked
+
+
+def test_a_shortcut_is_blocked_when_the_solution_survives(monkeypatch):
+    s, _, platforms, _ = _guarded(monkeypatch, ["firm"])
+    assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"] and s.roles["obstacle1"] == "obstacle"
+
+
+def test_a_block_that_makes_the_solution_fragile_is_taken_away(monkeypatch):
+    s, unguarded, _, _ = _guarded(monkeypatch, ["fragile"])
+    assert s.level == unguarded and s.obstacles == [] and "obstacle1" not in s.roles
 
 
 def test_a_shortcut_that_cannot_be_blocked_does_not_end_the_guard(monkeypatch):
-    s, platforms, asked = _guarded_twice(monkeypatch, ["fragile", "firm"])
+    s, _, platforms, asked = _guarded(monkeypatch, ["fragile", "firm"])
     assert asked[:2] == [[], ["first"]]  # the next search leaves the unblocked shortcut out
     assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
 
 
 def test_a_platform_that_makes_the_solution_fragile_leaves_the_earlier_ones(monkeypatch):
-    s, platforms, _ = _guarded_twice(monkeypatch, ["firm", "fragile"])
+    s, _, platforms, _ = _guarded(monkeypatch, ["firm", "fragile"])
     assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
 
 
