@@ -5,8 +5,9 @@ and names what happened, in the order it happened:
 
 * hit(a, b, d): a contact begins at a relative speed of at least HIT_SPEED; a is
   the body whose velocity carries it into b (for a static b, the moving one); d
-  is the side of b that was struck (the larger component of the direction from
-  b's contact towards a). Chatter of one pair within REHIT seconds is one hit.
+  is the side of b that was struck (the larger component of a's velocity relative
+  to b, reversed: of the bodies' centres, see `approach`). Chatter of one pair within
+  REHIT seconds is one hit.
 * roll(a, s, d): a touches a surface s (a platform or the ground) while moving at
   least MOVING and turning so that |ω|·r is within ROLL_SLIP of its speed, for at
   least MOTION_TIME in all; d is the way it moved.
@@ -127,9 +128,29 @@ def _hits(trace: Trace) -> list[Interaction]:
         last[key] = c.time
         # The side the actor comes from: against its velocity relative to the target
         # (the contact normal of a glancing touch on a rounded pig would say less).
-        vx, vy = rv if actor == c.a else (-rv[0], -rv[1])
+        vx, vy = approach(trace, c, actor, target)
         out.append(Interaction("hit", (actor, target), side(-vx, -vy), c.time))
     return out
+
+
+def approach(trace: Trace, contact, actor: str, target: str) -> tuple[float, float]:
+    """The actor's velocity relative to the target's, of their centres, in the step
+    before the contact began. Not the contact points' velocities: the front of a
+    rolling ball turns downwards, so a ball rolling into a block at its side would
+    seem to come from above. (The contact points' when a body's state is unknown.)"""
+    step = int(round(contact.time / trace.dt)) - 2  # states[k] is the state after step k + 1
+    velocities = []
+    for name in (actor, target):
+        if name not in trace.names:
+            velocities.append((0.0, 0.0))  # a platform or the ground: static
+            continue
+        row = trace.states[step, trace.index(name)] if step >= 0 else None
+        if row is None or math.isnan(row[3]):
+            rv = contact.relative_velocity
+            return rv if actor == contact.a else (-rv[0], -rv[1])
+        velocities.append((float(row[3]), float(row[4])))
+    (ax, ay), (tx, ty) = velocities
+    return ax - tx, ay - ty
 
 
 def _on_surfaces(trace: Trace, intervals):
