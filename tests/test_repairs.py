@@ -12,7 +12,8 @@ from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
 from physc.domains.angrybirds.fidelity import Fidelity
-from physc.domains.angrybirds.satisfy import Attempt, Satisfier, _span
+from physc.compiler.qsr_evaluate import holds
+from physc.domains.angrybirds.satisfy import Attempt, Satisfier, _placed, _span
 
 
 def satisfier(name: str, seed: int = 0) -> Satisfier:
@@ -232,6 +233,21 @@ def test_a_moved_edge_may_hold_by_another_qsr_of_its_clause():
     s.relations = tuple(attrs.evolve(x, alternatives=()) for x in s.relations)
     assert not s.consistent(level, frozenset(moved))  # the chosen QSR alone no longer holds
 
+
+
+def test_a_moved_end_of_a_fall_may_be_nearer_than_the_far_gap():
+    # A block pushed off slowly comes down just beside its support: its target, moved there,
+    # is below and to the right of the faller but nearer across than the far gap.
+    s = satisfier("BF", seed=1)
+    far = next(r for r in s.relations if r.edge.startswith("locatedFar"))
+    f, p = s.objects[far.a], s.objects[far.b]
+    x = f.x + extent(f)[0] / 2 + extent(p)[0]  # the pig's left end half its width past fBlock's right end
+    moved = s.shift({far.b}, x - p.x, 0.0)
+    level = s.with_objects(moved)
+    placed = {o.name: _placed(o, s.roles.get(o.name, "object")) for o in level.objects}
+    parameters = s.parameters
+    assert not any(holds(name, placed[far.a], placed[far.b], parameters.clearance, parameters.far) for name in far.alternatives)
+    assert s.consistent(level, frozenset(moved))
 
 def test_attempts_simulates_only_what_is_asked_and_keeps_what_is_done():
     """Screening a repair proposal: the nearest shots first, the rest only if needed."""

@@ -87,6 +87,7 @@ CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution ar
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
+FAR = "Far"  # the prefix of locatedFar's relations (FarNW: NW with the far gap on both axes)
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next ends this far behind its centre (of their half-widths)
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
@@ -211,7 +212,11 @@ class Satisfier:
         An edge holds when any QSR of its clause does (a repair may carry an object from
         one of the clause's regions to another: the edge is what the scenario asks for).
         An object that a repair moved (liesOnPath, closing a gap) may rest anywhere on its
-        support: for it, resting on the left, middle or right part of its support all count."""
+        support: for it, resting on the left, middle or right part of its support all count.
+        And a locatedFar edge of a moved object (one end moved to where a fall comes down)
+        holds in the near tiles of its directions too: far on both axes is the layout's
+        proxy for a fall, and simulation judges the fall itself (a block pushed off slowly
+        comes down beside its support, nearer than the far gap)."""
         placed = {o.name: _placed(o, self.roles.get(o.name, "object")) for o in level.objects}
         # What an adopted repair moved keeps that freedom in every later check (an obstacle,
         # a distractor): it is judged as when it was moved.
@@ -221,6 +226,8 @@ class Satisfier:
                 names = relation.alternatives or (relation.relation,)
                 if relation.a in moved and relation.relation in RESTING:
                     names = RESTING
+                elif (relation.a in moved or relation.b in moved) and all(name.startswith(FAR) for name in names):
+                    names = names + tuple(name[len(FAR) :] for name in names)  # the near tiles too
                 a, b = placed[relation.a], placed[relation.b]
                 if not any(holds(name, a, b, self.parameters.clearance, self.parameters.far) for name in names):
                     return False
