@@ -34,7 +34,7 @@ import math
 
 import numpy as np
 
-from physc.simulation.trace import Interaction, Trace, Violation
+from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
 
 HIT_SPEED = 0.3
 REHIT = 0.1
@@ -133,12 +133,12 @@ def _hits(trace: Trace) -> list[Interaction]:
     return out
 
 
-def approach(trace: Trace, contact, actor: str, target: str) -> tuple[float, float]:
+def approach(trace: Trace, contact: ContactRecord, actor: str, target: str) -> tuple[float, float]:
     """The actor's velocity relative to the target's, of their centres, in the step
     before the contact began. Not the contact points' velocities: the front of a
     rolling ball turns downwards, so a ball rolling into a block at its side would
     seem to come from above. (The contact points' when a body's state is unknown.)"""
-    step = int(round(contact.time / trace.dt)) - 2  # states[k] is the state after step k + 1
+    step = int(round(contact.time / trace.dt)) - 2  # state row k holds the time (k + 1) · dt
     velocities = []
     for name in (actor, target):
         if name not in trace.names:
