@@ -150,3 +150,11 @@ def test_a_block_that_falls_on_a_block_that_moves_next_is_not_round():
     assert {d["fBlock"] for d in draws("SFR")} == {"squareHole", "triangleHole"}
     # Falling on a pig (F, RF): every fallable shape stays.
     assert {d["fBlock"] for d in draws("F")} == {"squareHole", "triangleHole", "circle", "circleSmall"}
+
+
+def test_a_ball_that_destroys_the_pig_after_a_block_hit_it_is_large():
+    # SR's rBlock is struck by a sliding block and kills the pig: its damage grows with its mass.
+    assert {d["rBlock"] for d in draws("SR")} == {"circle"}
+    # Struck by the bird (R) or by a ball of its own size (RRR): both sizes stay.
+    assert {d["rBlock"] for d in draws("R")} == {"circle", "circleSmall"}
+    assert {d["rBlock3"] for d in draws("RRR")} == {"circle", "circleSmall"}

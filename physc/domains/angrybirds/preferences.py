@@ -8,6 +8,13 @@ circles the impulse passes through both centres, level with the surface. So a
 round block hit by a round block takes its hitter's size, where the scenario
 allows it; a declared concrete object (`rBlock: rollableBlock = circle`) is kept.
 
+A ball that destroys the pig after a block struck it (SR's rBlock, hit by the sliding
+block; FR's and SFR's when the block falling on it was drawn square or triangle) is a
+large circle: damage grows with the attacker's mass, and an ice circleSmall (0.10) must
+reach a small pig at 3.4 units/s to kill it, an ice circle (0.33) at 1.1. (Evaluation
+seeds 0–29: SR 24 → 26 tasks, fallbacks 7 → 5, noisy intended solvability 0.87 → 0.93;
+FR 30 as before, 0.89 → 0.92; docs/generation.md.)
+
 A pig at the end of a chain is small. Its destroyer is a block the bird does not
 hit itself: the bird's momentum (0.545 × at most 10) has passed through at least
 two collisions, and rolled or slid on friction, before it arrives. A medium pig
@@ -54,6 +61,7 @@ from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
 ROUND = ("circle", "circleSmall")
+LARGE = "circle"
 SMALL_PIG = "pigSmall"
 SQUARE, TRIANGLE = "squareHole", "triangleHole"
 SIDEWAYS = {"left", "right"}
@@ -95,6 +103,21 @@ def small_pig_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: d
             concrete[pig] = SMALL_PIG
 
 
+def large_ball_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
+    """A round block that destroys a pig, hit by neither the bird nor another round
+    block, is a large circle (when the scenario allows it): its damage grows with its mass."""
+    allowed = _allowed(graph)
+    player = _players(scenario)
+    hitters = {t.objects[1]: t.objects[0] for t in scenario.interactions if t.name == "hit"}
+    for term in scenario.interactions:
+        if term.name != "destroy":
+            continue
+        destroyer = term.objects[0]
+        hitter = hitters.get(destroyer)
+        if concrete.get(destroyer) in ROUND and hitter is not None and hitter not in player and concrete.get(hitter) not in ROUND and LARGE in allowed.get(destroyer, ()):
+            concrete[destroyer] = LARGE
+
+
 def square_when_a_ball_hits_sideways(scenario: ScenarioIR, graph: LayoutGraph, concrete: dict[str, str]) -> None:
     """A block hit from the side by a round block is a square, not a triangle (when the
     scenario allows it): the ball would climb the triangle's slanted face."""
@@ -123,6 +146,7 @@ def choose_concrete(scenario: ScenarioIR, graph: LayoutGraph, rng) -> dict[str, 
     concrete = {node.name: rng.choice(node.concrete) for node in graph.nodes}
     match_round_sizes(scenario, graph, concrete)
     small_pig_at_chain_end(scenario, graph, concrete)
+    large_ball_at_chain_end(scenario, graph, concrete)
     square_when_a_ball_hits_sideways(scenario, graph, concrete)
     square_when_it_falls_on_a_mover(scenario, graph, concrete)
     return concrete
