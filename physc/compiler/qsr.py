@@ -124,10 +124,12 @@ TILES = {  # relation → (state in x, state in y)
     "NW": ("before", "after"),
 }
 
+FAR = "Far"  # the prefix of a far relation: FarNW is NW with the far gap on both axes
+
 RELATIONS: dict[str, tuple[Atom, ...]] = {}
 for _name, (_h, _v) in TILES.items():
     RELATIONS[_name] = _directional(_h, _v, "clearance")
-    RELATIONS["Far" + _name] = _directional(_h, _v, "far")
+    RELATIONS[FAR + _name] = _directional(_h, _v, "far")
 
 _ON_TOP = [_eq("y", "min", "max"), _ge("x", "min", "min"), _le("x", "max", "max")]
 RELATIONS["MeetN"] = tuple(_ON_TOP + [_ge("x", "c", "low_third"), _le("x", "c", "high_third")])
@@ -146,7 +148,7 @@ IN_DIRECTION = {
     "above": ("N", "NE", "NW"),
     "below": ("S", "SE", "SW"),
 }
-LOCATED_FAR = {d: tuple("Far" + r for r in rs) for d, rs in IN_DIRECTION.items()}
+LOCATED_FAR = {d: tuple(FAR + r for r in rs) for d, rs in IN_DIRECTION.items()}
 # Above, but not beyond on one side: where an object pushed off its support towards the
 # other side lands on b (straight below it, or ahead of it).
 LOCATED_FAR["aboveLeft"] = ("FarN", "FarNW")

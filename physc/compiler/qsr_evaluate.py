@@ -13,7 +13,7 @@ from __future__ import annotations
 import cmath
 import math
 
-from physc.compiler.qsr import TILES
+from physc.compiler.qsr import FAR, TILES
 
 TOLERANCE = 1e-5
 
@@ -62,8 +62,8 @@ def _axis_is(state: str, a_low, a_high, b_low, b_high, gap: float) -> bool:
 def holds(relation: str, first, second, clearance: float, far: float) -> bool:
     """Whether `relation(first, second)` holds; the objects have x, y, width, height, rotation."""
     a, b = _Object(first), _Object(second)
-    far_relation = relation.startswith("Far")
-    tile = relation[3:] if far_relation else relation
+    far_relation = relation.startswith(FAR)
+    tile = relation[len(FAR) :] if far_relation else relation
     if tile in TILES:
         gap = far if far_relation else clearance
         horizontal, vertical = TILES[tile]

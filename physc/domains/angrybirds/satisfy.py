@@ -50,7 +50,7 @@ import numpy as np
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlapping_pair
-from physc.compiler.qsr import joined
+from physc.compiler.qsr import FAR, joined
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import agent_targets, candidate_shots
 from physc.domains.angrybirds.catalogue import (
@@ -87,7 +87,6 @@ CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution ar
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
-FAR = "Far"  # the prefix of locatedFar's relations (FarNW: NW with the far gap on both axes)
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next ends this far behind its centre (of their half-widths)
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
