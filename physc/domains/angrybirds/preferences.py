@@ -57,6 +57,7 @@ from __future__ import annotations
 
 from physc.compiler.layout_graph import LayoutGraph
 from physc.domains.angrybirds.catalogue import MATERIAL
+from physc.domains.angrybirds.layout_rules import last_hit_on
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
@@ -108,13 +109,15 @@ def large_ball_at_chain_end(scenario: ScenarioIR, graph: LayoutGraph, concrete: 
     block, is a large circle (when the scenario allows it): its damage grows with its mass."""
     allowed = _allowed(graph)
     player = _players(scenario)
-    hitters = {t.objects[1]: t.objects[0] for t in scenario.interactions if t.name == "hit"}
-    for term in scenario.interactions:
+    for position, term in enumerate(scenario.interactions):
         if term.name != "destroy":
             continue
         destroyer = term.objects[0]
-        hitter = hitters.get(destroyer)
-        if concrete.get(destroyer) in ROUND and hitter is not None and hitter not in player and concrete.get(hitter) not in ROUND and LARGE in allowed.get(destroyer, ()):
+        hit = last_hit_on(scenario.interactions[:position], destroyer)
+        if hit is None or concrete.get(destroyer) not in ROUND or LARGE not in allowed.get(destroyer, ()):
+            continue
+        hitter = hit.objects[0]
+        if hitter not in player and concrete.get(hitter) not in ROUND:
             concrete[destroyer] = LARGE
 
 
