@@ -89,6 +89,7 @@ FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sl
 RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next ends this far behind its centre (of their half-widths)
+STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -123,6 +124,11 @@ def _along(obj: LevelObject, sign: float) -> tuple[float, float]:
     return near, far
 
 
+def _geometry(obj: LevelObject) -> tuple:
+    """Where an object is and how long and turned: what a repair that moves or reshapes it changes."""
+    return (obj.x, obj.y, obj.scale_x, obj.scale_y, obj.rotation)
+
+
 def _placed(obj: LevelObject, role: str) -> PlacedObject:
     width, height = extent(obj)
     return PlacedObject(obj.name, role, by_prefab(obj.type).name, obj.material, obj.x, obj.y, obj.rotation or 0.0, width, height)
@@ -137,7 +143,7 @@ class Satisfier:
         self.nearest = 0  # most replays passed by a working solution given up as too fragile
         self.scenario = scenario
         self.level = level_from_layout(layout)
-        self.placed_at = {o.name: (o.x, o.y) for o in self.level.objects}  # where placement put each object
+        self.placed_at = {o.name: _geometry(o) for o in self.level.objects}  # where and how placement put each object
         self.roles = {o.name: o.role for o in layout.objects}
         self.allowed = {o.name: o.concrete for o in scenario.objects}
         self.relations = tuple(layout.conjunction) + tuple(layout.separations)
@@ -219,7 +225,10 @@ class Satisfier:
         placed = {o.name: _placed(o, self.roles.get(o.name, "object")) for o in level.objects}
         # What an adopted repair moved keeps that freedom in every later check (an obstacle,
         # a distractor): it is judged as when it was moved.
-        moved = moved | {o.name for o in level.objects if self.placed_at.get(o.name, (o.x, o.y)) != (o.x, o.y)}
+        moved = moved | {o.name for o in level.objects if self.placed_at.get(o.name, _geometry(o)) != _geometry(o)}
+        # So does what rests on a support that a repair moved or shortened (`expose`,
+        # closing a gap): it rests on another part of it now.
+        moved = moved | {a for a, support in self.support_of.items() if support in moved}
         for relation in self.relations:
             if relation.a in placed and relation.b in placed:
                 names = relation.alternatives or (relation.relation,)
@@ -273,7 +282,7 @@ class Satisfier:
             if before.name == "bounce" and before.objects[0] == declared.objects[0]:
                 yield from self.turn(before.objects[1], mirror=True)  # it bounced, but away from the target
         elif declared.name == "destroy":
-            yield from self.strengthen(declared)
+            yield from self.strengthen(declared, index, best)
         elif declared.name in ("roll", "slide"):
             yield from self.close_gap(declared.objects[0], declared.objects[1], best, index)
             yield from self.set_moving(declared, index)
@@ -341,9 +350,19 @@ class Satisfier:
         # (a round mover may overlap a round goal's box and still stop short of its outline)
         cut = min(reach + max(gap, 0.0) / 2, start - 1e-3)
         for overlap in (0.3, 0.8):
-            candidate = self.world_beyond(cut, gap + overlap, sign)
+            distance = gap + overlap
+            candidate = self.world_beyond(cut, distance, sign)
             if candidate is not None:
-                yield f"{mover} stopped short of {goal}: the world beyond {gap + overlap:.2f} closer", candidate
+                yield f"{mover} stopped short of {goal}: the world beyond {distance:.2f} closer", candidate
+                continue
+            # The world cannot come that far (the surface under the cut would get too
+            # short): the goal alone comes back to where the mover stops, along its surface
+            # or with its own support; what came after it is then repaired in its turn.
+            moved = self.move(goal, objects[goal].x - sign * distance, objects[goal].y)
+            if moved is not None:
+                candidate = self.with_objects(moved)
+                if self.consistent(candidate, frozenset(moved)):
+                    yield f"{mover} stopped short of {goal}: {goal} {distance:.2f} closer", candidate
 
     def world_beyond(self, cut: float, distance: float, sign: float) -> Level | None:
         """The level with everything beyond `cut` (along the heading `sign`) shifted
@@ -532,18 +551,68 @@ class Satisfier:
         if self.consistent(candidate):
             yield why, candidate
 
-    def strengthen(self, declared):
+    def strengthen(self, declared, index: int, attempt: Attempt):
+        """destroy(a, b) did not happen: a smaller pig, a heavier or larger attacker, a
+        falling attacker from higher; an attacker set moving by a block (not the bird),
+        struck harder (its hitter of stone, or falling from higher), or meeting b sooner,
+        where it moves fastest (`meet_sooner`)."""
         attacker, target = declared.objects
         yield from self.swap(target, "pigSmall", f"destroy({attacker}, {target}): a small pig")
         yield from self.material(attacker, "stone", f"destroy({attacker}, {target}): {attacker} of stone")
         yield from self.swap(attacker, "circle", f"destroy({attacker}, {target}): a larger circle")
-        block = self.objects.get(attacker)
-        if block is not None and any(t.name == "fall" and t.objects[0] == attacker for t in self.scenario.interactions):
-            moved = self.move(attacker, block.x, block.y + 1.0)
-            if moved:
-                candidate = self.with_objects(moved)
-                if self.consistent(candidate, frozenset(moved)):
-                    yield f"destroy({attacker}, {target}): {attacker} falls from higher", candidate
+        yield from self.raised(attacker, f"destroy({attacker}, {target}): {attacker} falls from higher")
+        hitter = self.hitter_of(attacker, index)
+        if hitter is not None and hitter != BIRD:
+            yield from self.material(hitter, "stone", f"destroy({attacker}, {target}): its hitter {hitter} of stone, striking harder")
+            yield from self.raised(hitter, f"destroy({attacker}, {target}): its hitter {hitter} falls from higher")
+        yield from self.meet_sooner(attacker, target, attempt, index)
+
+    def raised(self, name: str, why: str):
+        """`name`, a block that falls in the sequence, a unit higher (with its own support)."""
+        block = self.objects.get(name)
+        if block is None or not any(t.name == "fall" and t.objects[0] == name for t in self.scenario.interactions):
+            return
+        moved = self.move(name, block.x, block.y + 1.0)
+        if moved:
+            candidate = self.with_objects(moved)
+            if self.consistent(candidate, frozenset(moved)):
+                yield why, candidate
+
+    def meet_sooner(self, attacker: str, target: str, attempt: Attempt, index: int):
+        """A rolling or sliding attacker reached its target too slowly to destroy it: the
+        target (and the world beyond it, or else it alone) comes back along the attacker's
+        path to where the attacker moved fastest, once its roll or slide was under way."""
+        heading = self.heading_of(attacker, index)
+        objects = self.objects
+        trace = attempt.trace
+        if heading is None or attacker not in objects or target not in objects or attacker not in trace.names:
+            return
+        moves = [j for j, t in enumerate(self.scenario.interactions[:index]) if t.name in ("roll", "slide") and t.objects[0] == attacker]
+        if not moves or len(attempt.fidelity.times) < index:
+            return
+        sign = 1.0 if heading == "right" else -1.0
+        since = attempt.fidelity.times[moves[-1]] + SETTLE_MOTION
+        until = attempt.fidelity.times[index - 1]  # when it hit the target
+        rows = trace.states[int(since / trace.dt) : int(until / trace.dt) + 1, trace.index(attacker), :]
+        rows = rows[~np.isnan(rows[:, 0])]
+        if not len(rows):
+            return
+        fastest = rows[int(np.argmax(sign * rows[:, 3]))]
+        front = sign * fastest[0] + extent(objects[attacker])[0] / 2
+        start = _along(objects[target], sign)[0]
+        distance = start - front
+        if distance < 0.2:
+            return
+        why = f"destroy({attacker}, {target}): {target} {distance:.2f} nearer, where {attacker} moves fastest"
+        candidate = self.world_beyond(front + distance / 2, distance, sign)
+        if candidate is not None:
+            yield why + " (the world beyond with it)", candidate
+            return
+        moved = self.move(target, objects[target].x - sign * distance, objects[target].y)
+        if moved is not None:
+            candidate = self.with_objects(moved)
+            if self.consistent(candidate, frozenset(moved)):
+                yield why, candidate
 
     def hitter_of(self, name: str, index: int) -> str | None:
         """The actor of the latest declared hit on `name` before interaction `index`."""
@@ -569,6 +638,10 @@ class Satisfier:
             yield from self.swap(hitter, "circle", f"{declared.name}({mover}): its hitter {hitter} a larger circle")
         yield from self.bring_closer(mover, surface, declared.directions[0])
 
+    def motion_before(self, name: str, index: int) -> str | None:
+        """How `name` last moved (roll or slide) before interaction `index`, if it did."""
+        return next((t.name for t in reversed(self.scenario.interactions[:index]) if t.name in ("roll", "slide") and t.objects[0] == name), None)
+
     def push_off(self, declared, index: int):
         """fall(a, b) did not happen: a lighter faller, a heavier hitter, a at the edge."""
         faller = declared.objects[0]
@@ -578,6 +651,14 @@ class Satisfier:
         if hit:
             hitter = hit.objects[0]
             yield from self.material(hitter, "stone", f"fall({faller}): its hitter {hitter} of stone")
+            # A hitter that slides or rolls into the faller may arrive too slowly to push it
+            # off: an ice square slides faster and further than a wooden triangle, and a
+            # large circle carries more than a small one.
+            motion = self.motion_before(hitter, index)
+            if motion == "slide":
+                yield from self.swap(hitter, "squareHole", f"fall({faller}): its hitter {hitter} an ice square, sliding faster", "ice")
+            elif motion == "roll":
+                yield from self.swap(hitter, "circle", f"fall({faller}): its hitter {hitter} a larger circle")
         objects = self.objects
         block, support = objects.get(faller), self.support_of.get(faller)
         if block is None or support not in objects or hit is None:
@@ -591,6 +672,49 @@ class Satisfier:
             candidate = self.with_objects({faller: attrs.evolve(block, x=round(x, 5))})
             if self.consistent(candidate, frozenset({faller})):
                 yield f"fall({faller}): at the {pushed} edge of {support}", candidate
+            yield from self.to_the_edge(faller, hit.objects[0], support, pushed, index)
+
+    def ledge_ends_at(self, faller: str, support: str, pushed: str, dx: float = 0.0):
+        """The changed objects for `faller` moved `dx` along its support, and the support
+        ending just beyond it on the side it is pushed to (the platform shorter at that end
+        only), or None: a smaller push then takes it over the edge. Nothing else may rest
+        beyond it there."""
+        objects = self.objects
+        platform, block = objects[support], objects[faller]
+        if platform.element != "Platform" or platform.rotation:
+            return None
+        left, right = _span(platform)
+        b_left, b_right = (end + dx for end in _span(block))
+        if any(self.support_of.get(n) == support and n != faller and (_span(o)[0] > b_right if pushed == "right" else _span(o)[1] < b_left) for n, o in objects.items()):
+            return None
+        new_left, new_right = (left, b_right + 0.02) if pushed == "right" else (b_left - 0.02, right)
+        if new_right - new_left < MIN_PLATFORM or b_left < left or b_right > right or (right - new_right) + (new_left - left) < 0.1:
+            return None
+        changed = {support: attrs.evolve(platform, x=round((new_left + new_right) / 2, 5), scale_x=round((new_right - new_left) / PLATFORM_BASE, 5))}
+        if dx:
+            changed[faller] = attrs.evolve(block, x=round(block.x + dx, 5))
+        return changed
+
+    def to_the_edge(self, faller: str, hitter: str, support: str, pushed: str, index: int):
+        """The faller's support ends at it (`ledge_ends_at`), where it is or, when its
+        hitter rolls or slides a long way to it and arrives too slowly to push it off,
+        nearer the hitter, so that it is struck after about a unit of motion (enough to
+        tell the roll or slide), at more speed; the fall then comes down elsewhere, and
+        what it should land on is brought under it in turn (`drop_over`)."""
+        objects = self.objects
+        sign = 1.0 if pushed == "right" else -1.0
+        shifts = [0.0]
+        if hitter in objects and self.motion_before(hitter, index) is not None:
+            gap = _along(objects[faller], sign)[0] - _along(objects[hitter], sign)[1]
+            shifts += [-sign * (gap - travel) for travel in STRIKE_AFTER if gap - travel >= 0.2]
+        for dx in shifts:
+            changed = self.ledge_ends_at(faller, support, pushed, dx)
+            if changed is None:
+                continue
+            candidate = self.with_objects(changed)
+            if self.consistent(candidate, frozenset(changed)):
+                where = f"{faller} {abs(dx):.2f} nearer {hitter}, " if dx else ""
+                yield f"fall({faller}): {where}{support} ends at {faller}", candidate
 
     def bring_closer(self, mover: str, surface: str, heading: str):
         """`mover` along its support to just before the start of `surface`."""
@@ -862,37 +986,58 @@ class Satisfier:
         simulated and kept if the best candidate does at least as well as before; when no
         proposal for the level as it is helps, the last repair kept is undone and the
         proposals that came after it are tried (backtracking). All proposals tried count
-        against `repair_rounds`. The candidates then, or None."""
+        against `repair_rounds`. A repair kept without progress (the same score: an obstacle
+        across the bird's flight, say) whose continuations all failed is not worth trying
+        again in another place: proposals described as it was are skipped at that level.
+        The candidates then, or None."""
         score = max(a.fidelity.score for a in attempts)
         kept: list[tuple] = []  # per repair kept: the state before it and the proposals left there
-        proposals = self.proposals(attempts)
+        proposals = self.distinct(self.proposals(attempts), self.level)
+        futile: set[str] = set()  # at this level: repairs kept without progress that led nowhere
         rounds = 0
         while not self.working(attempts):
             if rounds >= self.repair_rounds:
                 return None
             for description, level in proposals:
+                if description in futile:
+                    continue
                 rounds += 1
                 saved = self.level
                 self.level = level
                 trial = None if description in self.repairs else self.screened(attempts, score)
                 self.level = saved
                 if trial is not None:
-                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals))
+                    better = max(a.fidelity.score for a in trial)
+                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals, futile, description, better > score))
                     self.repairs.append(description)
                     self.adopt(level)
-                    attempts, score = trial, max(a.fidelity.score for a in trial)
-                    proposals = self.proposals(attempts)
+                    attempts, score, futile = trial, better, set()
+                    proposals = self.distinct(self.proposals(attempts), self.level)
                     break
                 if rounds >= self.repair_rounds:
                     return None
             else:
                 if not kept:
                     return None
-                level, attempts, repairs, obstacles, proposals = kept.pop()
+                level, attempts, repairs, obstacles, proposals, futile, undone, progressed = kept.pop()
+                if not progressed:
+                    futile.add(undone)
                 score = max(a.fidelity.score for a in attempts)
                 del self.repairs[repairs:]
                 self.restore(level, obstacles)
         return attempts
+
+    @staticmethod
+    def distinct(proposals, level: Level):
+        """The proposals for `level`, each changed level once: two repairs may propose the
+        same change (liesOnPath from above and from below puts a pig on its surface at the
+        same place), and a proposal that changes nothing is no repair. Each would be
+        simulated, and count against the repair rounds, for nothing."""
+        seen = {level}
+        for description, proposed in proposals:
+            if proposed not in seen:
+                seen.add(proposed)
+                yield description, proposed
 
     def run(self) -> Satisfied | None:
         """Repair the layout until a candidate realises the sequence, then keep the first
