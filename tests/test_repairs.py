@@ -13,7 +13,7 @@ from middle_end import DOMAIN, paper_scenarios, pipeline
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
 from physc.domains.angrybirds.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
-from physc.domains.angrybirds.satisfy import Attempt, Satisfier, _placed, _span
+from physc.domains.angrybirds.satisfy import STRIKE_AFTER, Attempt, Satisfier, _placed, _span
 
 
 def satisfier(name: str, seed: int = 0) -> Satisfier:
@@ -522,3 +522,95 @@ def test_a_stuck_slide_is_offered_a_block_that_slides():
     assert ("SquareHole", "wood") not in [o[1:] for o in square]  # a wooden square tips
     triangle = offered("TriangleHole", "wood")
     assert ("SquareHole", "ice") == triangle[0][1:], triangle[0][0]
+
+
+def test_a_repair_kept_without_progress_that_led_nowhere_is_not_tried_elsewhere(monkeypatch):
+    # Two obstacles across the bird's flight, described alike, each leaving the score as it
+    # was: after the first one's continuations fail, the second is skipped for "b".
+    tree = {"root": [("obstacle", "o1"), ("obstacle", "o2"), ("b", "b")], "o1": [("c", "c")], "o2": [("d", "d")]}
+    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"o1": 1, "o2": 1, "c": -1, "d": 4, "b": 4})
+    assert attempts is not None and s.repairs == ["b"]
+    # A repair that made progress is tried again in its other places.
+    tree = {"root": [("x", "x1"), ("x", "x2")], "x1": [("c", "c")], "x2": [("d", "d")]}
+    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"x1": 2, "x2": 2, "c": -1, "d": 4})
+    assert attempts is not None and s.repairs == ["x", "d"]
+
+
+def test_the_same_change_proposed_twice_is_simulated_once():
+    s = satisfier("R")
+    pig = s.objects["pig"]
+    moved = s.with_objects({"pig": attrs.evolve(pig, x=pig.x - 0.5)})
+    again = s.with_objects({"pig": attrs.evolve(pig, x=pig.x - 0.5)})
+    proposals = [("from above", moved), ("from below", again), ("nothing", s.level), ("left", s.with_objects({"pig": attrs.evolve(pig, x=pig.x - 0.7)}))]
+    assert [d for d, _ in s.distinct(iter(proposals), s.level)] == ["from above", "left"]
+
+
+def test_what_rests_on_a_shortened_support_may_rest_anywhere_on_it_in_later_checks():
+    # expose shortens the first target's own support at its far end; the target, which did
+    # not move, now stands on another part of it. Every check after that failed (SFR lost
+    # its layouts at the slide into the faller: no repair there passed).
+    s = satisfier("S")
+    target = s.first_target().name
+    proposals = list(s.expose(s.scenario.interactions[0]))
+    assert proposals, "S's placed support reaches out to the left of sBlock"
+    s.adopt(proposals[0][1])
+    assert s.consistent(s.level)
+
+
+def test_close_gap_brings_the_goal_alone_when_the_world_cannot_come(monkeypatch):
+    s = satisfier("R")
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    pig = s.objects["pig"]
+    support = s.support_of["pig"]
+    surface = s.objects[support]
+    longer = attrs.evolve(surface, x=surface.x + 1.0, scale_x=surface.scale_x + 2.0 / PLATFORM_BASE)
+    s.level = s.with_objects({"pig": attrs.evolve(pig, x=pig.x + 2.0), support: longer})
+    monkeypatch.setattr(s, "world_beyond", lambda cut, distance, sign: None)  # the surface cannot get shorter
+    before = s.objects
+    proposals = list(s.close_gap("rBlock", "pig", best, 2))
+    assert proposals
+    for description, level in proposals:
+        after = {o.name: o for o in level.objects}
+        assert [n for n in after if after[n] != before[n]] == ["pig"]
+        assert description.startswith("rBlock stopped short of pig: pig") and before["pig"].x - after["pig"].x > 1.5
+
+
+def test_a_faller_is_offered_a_ledge_that_ends_at_it_and_nearer_its_hitter():
+    # RF: the rolling rBlock pushes fBlock off its surface. The surface may end at fBlock,
+    # and fBlock may come nearer rBlock (so that it is struck after 1.6 or 1.0 units of
+    # roll, faster), the surface ending at it there.
+    s = satisfier("RF")
+    fall = next(i for i, t in enumerate(s.scenario.interactions) if t.name == "fall")
+    support = s.support_of["fBlock"]
+    before = s.objects
+    offered = {d: {o.name: o for o in level.objects} for d, level in s.push_off(s.scenario.interactions[fall], fall)}
+    edges = {d: after for d, after in offered.items() if d.endswith(f"{support} ends at fBlock")}
+    gap = _span(before["fBlock"])[0] - _span(before["rBlock"])[1]
+    assert len(edges) == 1 + sum(gap - travel >= 0.2 for travel in STRIKE_AFTER) >= 2
+    travels = []
+    for after in edges.values():
+        assert {n for n in after if after[n] != before[n]} <= {"fBlock", support}
+        assert abs(_span(after[support])[0] - _span(before[support])[0]) < 1e-4  # the near end stays
+        assert abs(_span(after[support])[1] - (_span(after["fBlock"])[1] + 0.02)) < 1e-4  # the far end at fBlock
+        travels.append(round(_span(after["fBlock"])[0] - _span(before["rBlock"])[1], 3))
+    assert sorted(travels) == sorted([round(gap, 3)] + [travel for travel in STRIKE_AFTER if gap - travel >= 0.2])
+
+
+def test_a_ball_too_slow_to_destroy_the_pig_meets_it_sooner():
+    # R with the pig 1.5 units further along a longer surface: the ball reaches it, too
+    # slowly. The pig (and the world beyond) comes back to where the ball rolls fastest,
+    # and the ball then strikes it harder.
+    s = satisfier("R")
+    pig, surface = s.objects["pig"], s.objects["surface"]
+    longer = attrs.evolve(surface, x=surface.x + 0.75, scale_x=surface.scale_x + 1.5 / PLATFORM_BASE)
+    s.level = s.with_objects({"pig": attrs.evolve(pig, x=pig.x + 1.5), "surface": longer})
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    assert best.fidelity.matched == 3  # it hit the pig; the destroy is missing
+    destroy = s.scenario.interactions[3]
+    offered = [(d, level) for d, level in s.strengthen(destroy, 3, best) if "moves fastest" in d]
+    assert len(offered) == 1
+    description, level = offered[0]
+    after = {o.name: o for o in level.objects}
+    assert s.objects["pig"].x - after["pig"].x > 1.0 and after["rBlock"] == s.objects["rBlock"]
+    s.level = level
+    assert max(a.fidelity.score for a in s.attempts()) > best.fidelity.score
