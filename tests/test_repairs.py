@@ -550,10 +550,11 @@ def test_what_rests_on_a_shortened_support_may_rest_anywhere_on_it_in_later_chec
     # not move, now stands on another part of it. Every check after that failed (SFR lost
     # its layouts at the slide into the faller: no repair there passed).
     s = satisfier("S")
-    target = s.first_target().name
+    target = s.first_target()
     proposals = list(s.expose(s.scenario.interactions[0]))
     assert proposals, "S's placed support reaches out to the left of sBlock"
     s.adopt(proposals[0][1])
+    assert s.objects[target.name] == target  # the target stays; its support got shorter
     assert s.consistent(s.level)
 
 

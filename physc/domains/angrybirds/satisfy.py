@@ -587,11 +587,11 @@ class Satisfier:
         trace = attempt.trace
         if heading is None or attacker not in objects or target not in objects or attacker not in trace.names:
             return
-        moves = [j for j, t in enumerate(self.scenario.interactions[:index]) if t.name in ("roll", "slide") and t.objects[0] == attacker]
-        if not moves or len(attempt.fidelity.times) < index:
+        motion = self.last_motion(attacker, index)
+        if motion is None or len(attempt.fidelity.times) < index:
             return
         sign = 1.0 if heading == "right" else -1.0
-        since = attempt.fidelity.times[moves[-1]] + SETTLE_MOTION
+        since = attempt.fidelity.times[motion[0]] + SETTLE_MOTION
         until = attempt.fidelity.times[index - 1]  # when it hit the target
         rows = trace.states[int(since / trace.dt) : int(until / trace.dt) + 1, trace.index(attacker), :]
         rows = rows[~np.isnan(rows[:, 0])]
@@ -638,12 +638,16 @@ class Satisfier:
             yield from self.swap(hitter, "circle", f"{declared.name}({mover}): its hitter {hitter} a larger circle")
         yield from self.bring_closer(mover, surface, declared.directions[0])
 
-    def motion_before(self, name: str, index: int) -> str | None:
-        """How `name` last moved (roll or slide) before interaction `index`, if it did."""
-        return next((t.name for t in reversed(self.scenario.interactions[:index]) if t.name in ("roll", "slide") and t.objects[0] == name), None)
+    def last_motion(self, name: str, index: int) -> tuple[int, str] | None:
+        """Where in the sequence and how (roll or slide) `name` last moved before
+        interaction `index`, if it did."""
+        moves = [(j, t.name) for j, t in enumerate(self.scenario.interactions[:index]) if t.name in ("roll", "slide") and t.objects[0] == name]
+        return moves[-1] if moves else None
 
     def push_off(self, declared, index: int):
-        """fall(a, b) did not happen: a lighter faller, a heavier hitter, a at the edge."""
+        """fall(a, b) did not happen: a lighter faller; a heavier hitter, or a faster one
+        (an ice square for a slider, a larger circle for a ball); a at the edge; the edge
+        brought to a (`to_the_edge`)."""
         faller = declared.objects[0]
         yield from self.material(faller, "ice", f"fall({faller}): of ice, lighter")
         yield from self.material(faller, "wood", f"fall({faller}): of wood, lighter than stone, tougher than ice")
@@ -654,7 +658,7 @@ class Satisfier:
             # A hitter that slides or rolls into the faller may arrive too slowly to push it
             # off: an ice square slides faster and further than a wooden triangle, and a
             # large circle carries more than a small one.
-            motion = self.motion_before(hitter, index)
+            motion = (self.last_motion(hitter, index) or (None, None))[1]
             if motion == "slide":
                 yield from self.swap(hitter, "squareHole", f"fall({faller}): its hitter {hitter} an ice square, sliding faster", "ice")
             elif motion == "roll":
@@ -698,13 +702,13 @@ class Satisfier:
     def to_the_edge(self, faller: str, hitter: str, support: str, pushed: str, index: int):
         """The faller's support ends at it (`ledge_ends_at`), where it is or, when its
         hitter rolls or slides a long way to it and arrives too slowly to push it off,
-        nearer the hitter, so that it is struck after about a unit of motion (enough to
-        tell the roll or slide), at more speed; the fall then comes down elsewhere, and
+        nearer the hitter, so that it is struck after STRIKE_AFTER units of motion (enough
+        to tell the roll or slide), at more speed; the fall then comes down elsewhere, and
         what it should land on is brought under it in turn (`drop_over`)."""
         objects = self.objects
         sign = 1.0 if pushed == "right" else -1.0
         shifts = [0.0]
-        if hitter in objects and self.motion_before(hitter, index) is not None:
+        if hitter in objects and self.last_motion(hitter, index) is not None:
             gap = _along(objects[faller], sign)[0] - _along(objects[hitter], sign)[1]
             shifts += [-sign * (gap - travel) for travel in STRIKE_AFTER if gap - travel >= 0.2]
         for dx in shifts:
