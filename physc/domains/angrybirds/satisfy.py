@@ -83,6 +83,8 @@ BACKS = (0.9, 1.3, 1.8, 2.4, 3.0)  # how far back along the bird's flight an obs
 FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targets only
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 SHORTCUTS_LEFT = 3  # shortcuts no platform stops, after which the guard ends
+GUARD_LIFTS = (0.0, 0.45)  # units a shortcut's platform is also tried raised along its length (of OBSTACLE_LENGTH)
+GUARDED_TOUCHES = 3  # a shortcut is blocked before one of the first this many objects the bird touches
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
@@ -793,10 +795,12 @@ class Satisfier:
                 return True
         return False
 
-    def obstacles_across(self, trace: Trace, target: str, before: float | None = None, backs=BACKS, length: float = OBSTACLE_LENGTH):
+    def obstacles_across(self, trace: Trace, target: str, before: float | None = None, backs=BACKS, length: float = OBSTACLE_LENGTH, lifts=(0.0,)):
         """(name, level) with a platform across the bird's flight, a little before it first
         touches `target` (after `before`, if given): further back at each try (`backs`:
-        how far along the flight, in units)."""
+        how far along the flight, in units), and at each place centred on the flight or
+        raised along its own length by each of `lifts` (units; the flight still crosses it,
+        and its lower end stays out of the way of what moves below)."""
         bird = trace.states[:, trace.index(BIRD), :]
         hit_time = next((c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target} and (before is None or c.time >= before)), None)
         if hit_time is None:
@@ -813,11 +817,16 @@ class Satisfier:
                 continue
             angle = math.degrees(math.atan2(vy, vx)) + 90.0  # across the flight
             angle = (angle + 90) % 180 - 90
+            up = (math.cos(math.radians(angle)), math.sin(math.radians(angle)))
+            if up[1] < 0:
+                up = (-up[0], -up[1])
             name = f"obstacle{len(self.obstacles) + 1}"
-            platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
-            candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
-            if self.consistent(candidate):
-                yield name, candidate
+            for lift in lifts:
+                cx, cy = x + lift * up[0], y + lift * up[1]
+                platform = LevelObject("Platform", "Platform", round(cx, 5), round(cy, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
+                candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
+                if self.consistent(candidate):
+                    yield name, candidate
 
     def adopt(self, level: Level) -> None:
         """Make `level` the current one, registering any obstacle it adds."""
@@ -895,8 +904,11 @@ class Satisfier:
             accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
-            touched = next((c for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)), None)
-            offered = () if touched is None else self.obstacles_across(accident.trace, touched.b if touched.a == BIRD else touched.a)
+            # Across the flight before the first thing it touches, or else before the next
+            # ones: a shot that grazes the solution's own target on its way (a high shot over
+            # a sliding block, into the block it should push) is blocked only further on.
+            touched = list(dict.fromkeys(c.b if c.a == BIRD else c.a for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)))
+            offered = (candidate for name in touched[:GUARDED_TOUCHES] for candidate in self.obstacles_across(accident.trace, name, lifts=GUARD_LIFTS))
             for _, candidate in offered:
                 if self.simulate(solution.shot, candidate).fidelity.valid and self.robustness(solution, candidate)[0] >= self.accept:
                     self.adopt(candidate)
