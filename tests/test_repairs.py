@@ -4,6 +4,7 @@ first target, turn a bounce surface over, block shortcuts."""
 from __future__ import annotations
 
 import itertools
+import math
 
 import attrs
 import pytest
@@ -91,15 +92,22 @@ def _guarded(monkeypatch, blocks: list[str]):
     assert shortcut is not None  # a shot at the pig solves the bare layout
     pending = [attrs.evolve(shortcut, label=label) for label in ("first", "second", "third")[: len(blocks)]]
     asked: list[list[str]] = []
+    calls = {"across": 0}  # obstacles_across calls for the current shortcut
 
     def accidental_shot(target, skip=()):
         asked.append(list(skip))
+        calls["across"] = 0
         return pending.pop(0) if pending else None
 
     offered = iter(blocks)
     platforms: dict[str, object] = {}
 
-    def obstacles_across(trace, target, before=None):
+    def obstacles_across(trace, target, before=None, **_):
+        # One platform per shortcut (the guard asks again for the further objects the
+        # bird touches: nothing more there).
+        calls["across"] += 1
+        if calls["across"] > 1:
+            return
         kind = next(offered)
         name = f"obstacle{len(s.obstacles) + 1}"
         obj = satisfy.LevelObject("Platform", "Platform", 20.0 + 3 * len(platforms), 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
@@ -615,3 +623,43 @@ def test_a_ball_too_slow_to_destroy_the_pig_meets_it_sooner():
     assert s.objects["pig"].x - after["pig"].x > 1.0 and after["rBlock"] == s.objects["rBlock"]
     s.level = level
     assert max(a.fidelity.score for a in s.attempts()) > best.fidelity.score
+
+
+def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monkeypatch):
+    # SFR seed 2: a high shot grazes the sliding block (the solution's own target, where the
+    # intended shot passes too) on its way into the faller. Platforms are tried before each
+    # of the first three objects the bird touches, centred on the flight and raised.
+    from types import SimpleNamespace
+
+    from physc.domains.angrybirds.satisfy import GUARD_LIFTS, GUARDED_TOUCHES
+
+    s = satisfier("R", seed=7)
+    solution = s.working(s.attempts())[0]
+    touches = [("bird", "ground"), ("rBlock", "bird"), ("bird", "rBlock"), ("bird", "surface"), ("pig", "surface"), ("bird", "pig"), ("bird", "support_rBlock")]
+    trace = SimpleNamespace(contacts=[SimpleNamespace(a=a, b=b, time=0.1 * k) for k, (a, b) in enumerate(touches)])
+    shortcut = Attempt("pig.c, low", solution.shot, trace, None)
+    pending = [shortcut]
+    asked = []
+    monkeypatch.setattr(s, "accidental_shot", lambda target, skip=(): pending.pop(0) if pending else None)
+
+    def obstacles_across(trace, target, before=None, **options):
+        asked.append((target, options.get("lifts")))
+        return iter(())
+
+    monkeypatch.setattr(s, "obstacles_across", obstacles_across)
+    s.guard_accidents(solution)
+    assert GUARDED_TOUCHES == 3 and asked == [(name, GUARD_LIFTS) for name in ("rBlock", "surface", "pig")]
+
+
+def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
+    s = satisfier("R")
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    first = s.first_target().name
+    offered = list(s.obstacles_across(best.trace, first, backs=(1.3,), lifts=(0.0, 0.45)))
+    assert len(offered) == 2
+    centred, raised = ({o.name: o for o in level.objects}[name] for name, level in offered)
+    assert raised.rotation == centred.rotation
+    dx, dy = raised.x - centred.x, raised.y - centred.y
+    assert abs(math.hypot(dx, dy) - 0.45) < 1e-3 and dy > 0
+    along = math.radians(centred.rotation)
+    assert abs(dx * math.sin(along) - dy * math.cos(along)) < 1e-3  # along the platform's own length
