@@ -11,7 +11,7 @@ import pytest
 import numpy as np
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, extent
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, extent
 from physc.domains.angrybirds.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
 from physc.domains.angrybirds.satisfy import STRIKE_AFTER, Attempt, Satisfier, _placed, _span
@@ -120,6 +120,7 @@ def _guarded(monkeypatch, blocks: list[str]):
 
     monkeypatch.setattr(s, "accidental_shot", accidental_shot)
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
+    monkeypatch.setattr(s, "roof_over", lambda name: iter(()))
     monkeypatch.setattr(s, "robustness", robustness)
     unguarded = s.level
     s.guard_accidents(solution)
@@ -628,7 +629,8 @@ def test_a_ball_too_slow_to_destroy_the_pig_meets_it_sooner():
 def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monkeypatch):
     # SFR seed 2: a high shot grazes the sliding block (the solution's own target, where the
     # intended shot passes too) on its way into the faller. Platforms are tried before each
-    # of the first three objects the bird touches, centred on the flight and raised.
+    # of the first three objects the bird touches, centred on the flight and raised, then a
+    # roof over it.
     from types import SimpleNamespace
 
     from physc.domains.angrybirds.satisfy import GUARD_LIFTS, GUARDED_TOUCHES
@@ -646,9 +648,15 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
         asked.append((target, options.get("lifts")))
         return iter(())
 
+    def roof_over(name):
+        asked.append((name, "roof"))
+        return iter(())
+
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
+    monkeypatch.setattr(s, "roof_over", roof_over)
     s.guard_accidents(solution)
-    assert GUARDED_TOUCHES == 3 and asked == [(name, GUARD_LIFTS) for name in ("rBlock", "surface", "pig")]
+    assert GUARDED_TOUCHES == 3
+    assert asked == [(name, kind) for name in ("rBlock", "surface", "pig") for kind in (GUARD_LIFTS, "roof")]
 
 
 def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
@@ -663,3 +671,18 @@ def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
     assert abs(math.hypot(dx, dy) - 0.45) < 1e-3 and dy > 0
     along = math.radians(centred.rotation)
     assert abs(dx * math.sin(along) - dy * math.cos(along)) < 1e-3  # along the platform's own length
+
+
+def test_a_roof_goes_just_above_a_block_and_beyond_it():
+    from physc.domains.angrybirds.satisfy import ROOF_GAP
+
+    s = satisfier("RF")
+    offered = list(s.roof_over("fBlock"))
+    assert len(offered) == 1
+    name, level = offered[0]
+    roof, block = {o.name: o for o in level.objects}[name], s.objects["fBlock"]
+    assert roof.rotation == 0.0 and roof.element == "Platform"
+    assert abs((roof.y - PLATFORM_THICKNESS / 2) - (block.y + extent(block)[1] / 2) - ROOF_GAP) < 1e-4
+    left, right = _span(roof)
+    assert left <= _span(block)[0] - 0.3 + 1e-4 and right >= _span(block)[1] + 0.3 - 1e-4
+    assert list(s.roof_over("surface")) == []  # not over a platform

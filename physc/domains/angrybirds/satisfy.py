@@ -84,6 +84,7 @@ FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targ
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 SHORTCUTS_LEFT = 3  # shortcuts no platform stops, after which the guard ends
 GUARD_LIFTS = (0.0, 0.45)  # units a shortcut's platform is also tried raised along its length (of OBSTACLE_LENGTH)
+ROOF_GAP = 0.3  # a roof against shortcuts from above is this far clear of the block under it
 GUARDED_TOUCHES = 3  # a shortcut is blocked before one of the first this many objects the bird touches
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
@@ -904,18 +905,42 @@ class Satisfier:
             accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
-            # Across the flight before the first thing it touches, or else before the next
-            # ones: a shot that grazes the solution's own target on its way (a high shot over
-            # a sliding block, into the block it should push) is blocked only further on.
-            touched = list(dict.fromkeys(c.b if c.a == BIRD else c.a for c in accident.trace.contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)))
-            offered = (candidate for name in touched[:GUARDED_TOUCHES] for candidate in self.obstacles_across(accident.trace, name, lifts=GUARD_LIFTS))
-            for _, candidate in offered:
+            for _, candidate in self.shortcut_blocks(accident):
                 if self.simulate(solution.shot, candidate).fidelity.valid and self.robustness(solution, candidate)[0] >= self.accept:
                     self.adopt(candidate)
                     placed += 1
                     break
             else:
                 unblocked.append(accident.label)
+
+    def shortcut_blocks(self, accident: Attempt):
+        """(name, level) with a platform that might stop a shortcut: across its flight
+        before the first thing the bird touches, or else before the next ones (a shot that
+        grazes the solution's own target on its way, a high shot over a sliding block into
+        the block it should push, is blocked only further on); after the platforms across
+        the flight to each, a roof over it (a high shot that knocks a block off its ledge
+        comes down on it from above)."""
+        contacts = accident.trace.contacts
+        touched = list(dict.fromkeys(c.b if c.a == BIRD else c.a for c in contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)))
+        for name in touched[:GUARDED_TOUCHES]:
+            yield from self.obstacles_across(accident.trace, name, lifts=GUARD_LIFTS)
+            yield from self.roof_over(name)
+
+    def roof_over(self, name: str):
+        """(name, level) with a flat platform just above `name` (ROOF_GAP clear of its
+        top), reaching 0.3 beyond it on both sides and at least OBSTACLE_LENGTH long."""
+        obj = self.objects.get(name)
+        if obj is None or obj.element == "Platform":
+            return
+        points = five_points(obj.x, obj.y, *extent(obj), obj.rotation or 0.0)
+        top = max(p.imag for k, p in points.items() if k != "c")
+        left, right = _span(obj)
+        length = max(OBSTACLE_LENGTH, right - left + 0.6)
+        roof = f"obstacle{len(self.obstacles) + 1}"
+        platform = LevelObject("Platform", "Platform", round((left + right) / 2, 5), round(top + ROOF_GAP + PLATFORM_THICKNESS / 2, 5), 0.0, scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=roof)
+        candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
+        if self.consistent(candidate):
+            yield roof, candidate
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
