@@ -70,7 +70,7 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout (a folder for several scenarios)")
     compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
     compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
-    compile_.add_argument("--layouts", type=int, default=40, metavar="N", help="layouts simulation may try per task (default 40)")
+    compile_.add_argument("--layouts", type=int, default=80, metavar="N", help="layouts simulation may try per task (default 80)")
     compile_.add_argument("--time-budget", type=float, default=120.0, metavar="S", help="seconds per task at most (default 120)")
     add_min_robustness(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
