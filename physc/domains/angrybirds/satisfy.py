@@ -823,11 +823,16 @@ class Satisfier:
                 up = (-up[0], -up[1])
             name = f"obstacle{len(self.obstacles) + 1}"
             for lift in lifts:
-                cx, cy = x + lift * up[0], y + lift * up[1]
-                platform = LevelObject("Platform", "Platform", round(cx, 5), round(cy, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
-                candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
-                if self.consistent(candidate):
+                candidate = self.with_platform(name, x + lift * up[0], y + lift * up[1], angle, length)
+                if candidate is not None:
                     yield name, candidate
+
+    def with_platform(self, name: str, x: float, y: float, angle: float, length: float) -> Level | None:
+        """The level with a platform `name` added (centre, angle in degrees, length), if
+        every layout edge still holds and nothing overlaps."""
+        platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
+        candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
+        return candidate if self.consistent(candidate) else None
 
     def adopt(self, level: Level) -> None:
         """Make `level` the current one, registering any obstacle it adds."""
@@ -891,8 +896,8 @@ class Satisfier:
         return None
 
     def guard_accidents(self, solution: Attempt) -> None:
-        """pathObstructed for shortcuts: a platform across the flight of each shot that solves
-        the level without being the solution, before the bird first touches anything; each
+        """pathObstructed for shortcuts: for each shot that solves the level without being the
+        solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof),
         kept only if the solution still realises the sequence and survives the noisy replays
         as often as the robustness check demands. A shortcut that cannot be blocked stays,
         and the next one is tried."""
@@ -937,9 +942,8 @@ class Satisfier:
         left, right = _span(obj)
         length = max(OBSTACLE_LENGTH, right - left + 0.6)
         roof = f"obstacle{len(self.obstacles) + 1}"
-        platform = LevelObject("Platform", "Platform", round((left + right) / 2, 5), round(top + ROOF_GAP + PLATFORM_THICKNESS / 2, 5), 0.0, scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=roof)
-        candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
-        if self.consistent(candidate):
+        candidate = self.with_platform(roof, (left + right) / 2, top + ROOF_GAP + PLATFORM_THICKNESS / 2, 0.0, length)
+        if candidate is not None:
             yield roof, candidate
 
     # ---- robustness ------------------------------------------------------------------------------
