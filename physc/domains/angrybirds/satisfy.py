@@ -354,18 +354,11 @@ class Satisfier:
         cut = min(reach + max(gap, 0.0) / 2, start - 1e-3)
         for overlap in (0.3, 0.8):
             distance = gap + overlap
-            candidate = self.world_beyond(cut, distance, sign)
-            if candidate is not None:
-                yield f"{mover} stopped short of {goal}: the world beyond {distance:.2f} closer", candidate
-                continue
-            # The world cannot come that far (the surface under the cut would get too
-            # short): the goal alone comes back to where the mover stops, along its surface
-            # or with its own support; what came after it is then repaired in its turn.
-            moved = self.move(goal, objects[goal].x - sign * distance, objects[goal].y)
-            if moved is not None:
-                candidate = self.with_objects(moved)
-                if self.consistent(candidate, frozenset(moved)):
-                    yield f"{mover} stopped short of {goal}: {goal} {distance:.2f} closer", candidate
+            back = self.brought_back(goal, cut, distance, sign)
+            if back is not None:
+                whole_world, candidate = back
+                what = "the world beyond" if whole_world else goal
+                yield f"{mover} stopped short of {goal}: {what} {distance:.2f} closer", candidate
 
     def world_beyond(self, cut: float, distance: float, sign: float) -> Level | None:
         """The level with everything beyond `cut` (along the heading `sign`) shifted
@@ -388,6 +381,18 @@ class Satisfier:
             return None
         candidate = self.with_objects(changed)
         return candidate if self.consistent(candidate, frozenset(changed)) else None
+
+    def brought_back(self, goal: str, cut: float, distance: float, sign: float) -> tuple[bool, Level] | None:
+        """`goal` `distance` nearer, against the heading `sign`: with the world beyond `cut`
+        (`world_beyond`), or else, when the world cannot come that far (a surface under the
+        cut would get too short), the goal alone, along its surface or with its own support
+        (what came after it is then repaired in its turn). (whether the world came, the
+        level), or None."""
+        candidate = self.world_beyond(cut, distance, sign)
+        if candidate is not None:
+            return True, candidate
+        candidate = self.moved_level(goal, self.objects[goal].x - sign * distance, self.objects[goal].y)
+        return None if candidate is None else (False, candidate)
 
     def expose(self, declared):
         """The first hit did not happen from an allowed side: the target's own support
@@ -532,6 +537,15 @@ class Satisfier:
             changed[support] = attrs.evolve(s, x=round(s.x + dx, 5), y=round(s.y + dy, 5))
         return changed
 
+    def moved_level(self, name: str, x: float, y: float) -> Level | None:
+        """The level with `name` put at (x, y) as `move` does, if every layout edge still
+        holds there (what moved judged as moved)."""
+        moved = self.move(name, x, y)
+        if moved is None:
+            return None
+        candidate = self.with_objects(moved)
+        return candidate if self.consistent(candidate, frozenset(moved)) else None
+
     def material(self, name: str, material: str, why: str):
         obj = self.objects.get(name)
         if obj is not None and obj.element == "Block" and obj.material != material:
@@ -575,11 +589,9 @@ class Satisfier:
         block = self.objects.get(name)
         if block is None or not any(t.name == "fall" and t.objects[0] == name for t in self.scenario.interactions):
             return
-        moved = self.move(name, block.x, block.y + 1.0)
-        if moved:
-            candidate = self.with_objects(moved)
-            if self.consistent(candidate, frozenset(moved)):
-                yield why, candidate
+        candidate = self.moved_level(name, block.x, block.y + 1.0)
+        if candidate is not None:
+            yield why, candidate
 
     def meet_sooner(self, attacker: str, target: str, attempt: Attempt, index: int):
         """A rolling or sliding attacker reached its target too slowly to destroy it: the
@@ -606,16 +618,11 @@ class Satisfier:
         distance = start - front
         if distance < 0.2:
             return
-        why = f"destroy({attacker}, {target}): {target} {distance:.2f} nearer, where {attacker} moves fastest"
-        candidate = self.world_beyond(front + distance / 2, distance, sign)
-        if candidate is not None:
-            yield why + " (the world beyond with it)", candidate
-            return
-        moved = self.move(target, objects[target].x - sign * distance, objects[target].y)
-        if moved is not None:
-            candidate = self.with_objects(moved)
-            if self.consistent(candidate, frozenset(moved)):
-                yield why, candidate
+        back = self.brought_back(target, front + distance / 2, distance, sign)
+        if back is not None:
+            whole_world, candidate = back
+            with_it = " (the world beyond with it)" if whole_world else ""
+            yield f"destroy({attacker}, {target}): {target} {distance:.2f} nearer, where {attacker} moves fastest{with_it}", candidate
 
     def hitter_of(self, name: str, index: int) -> str | None:
         """The actor of the latest declared hit on `name` before interaction `index`."""
@@ -733,11 +740,9 @@ class Satisfier:
         left, right = _span(target)
         gap = self.parameters.clearance + 0.02
         x = left - width / 2 - gap if heading == "right" else right + width / 2 + gap
-        moved = self.move(mover, x, obj.y)
-        if moved is not None:
-            candidate = self.with_objects(moved)
-            if self.consistent(candidate, frozenset(moved)):
-                yield f"{mover} next to {surface}", candidate
+        candidate = self.moved_level(mover, x, obj.y)
+        if candidate is not None:
+            yield f"{mover} next to {surface}", candidate
 
     def turn(self, name: str, mirror: bool = False):
         """The bounce surface turned a little either way (and, with `mirror`, tilted the
@@ -1053,7 +1058,7 @@ class Satisfier:
                 self.level = saved
                 if trial is not None:
                     better = max(a.fidelity.score for a in trial)
-                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals, futile, description, better > score))
+                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals, futile, better > score))
                     self.repairs.append(description)
                     self.adopt(level)
                     attempts, score, futile = trial, better, set()
@@ -1064,9 +1069,9 @@ class Satisfier:
             else:
                 if not kept:
                     return None
-                level, attempts, repairs, obstacles, proposals, futile, undone, progressed = kept.pop()
+                level, attempts, repairs, obstacles, proposals, futile, progressed = kept.pop()
                 if not progressed:
-                    futile.add(undone)
+                    futile.add(self.repairs[repairs])  # the repair being undone
                 score = max(a.fidelity.score for a in attempts)
                 del self.repairs[repairs:]
                 self.restore(level, obstacles)
