@@ -420,11 +420,10 @@ class Satisfier:
                 yield f"hit({BIRD}, {target}, {side}): {support} no longer shields {target}", candidate
 
     def heading_of(self, mover: str, index: int) -> str | None:
-        """The direction `mover` last rolled or slid in, before interaction `index`."""
-        moves = [t for t in self.scenario.interactions[: index + 1] if t.name in ("roll", "slide") and t.objects[0] == mover]
-        if not moves or moves[-1].directions[0] not in ("left", "right"):
-            return None
-        return moves[-1].directions[0]
+        """The direction `mover` last rolled or slid in, up to interaction `index` (itself included)."""
+        motion = self.last_motion(mover, index + 1)
+        heading = None if motion is None else self.scenario.interactions[motion[0]].directions[0]
+        return heading if heading in ("left", "right") else None
 
     def structure(self, name: str) -> set[str]:
         """`name` with everything joined to it by resting and touching: its supports, the
