@@ -686,3 +686,46 @@ def test_a_roof_goes_just_above_a_block_and_beyond_it():
     left, right = _span(roof)
     assert left <= _span(block)[0] - 0.3 + 1e-4 and right >= _span(block)[1] + 0.3 - 1e-4
     assert list(s.roof_over("surface")) == []  # not over a platform
+
+
+def test_a_ball_that_stopped_short_of_its_surface_gets_its_centre_onto_it():
+    # R with the surface (and the pig on it) 6 units further on, the ball's support longer
+    # to meet it: the ball stopped short. A ball touches a surface only under its centre,
+    # so the surface is brought back to begin behind where the centre got, not its front.
+    s = satisfier("R")
+    best = max(s.attempts(), key=lambda a: a.fidelity.score)
+    roll = next(i for i, t in enumerate(s.scenario.interactions) if t.name == "roll")
+    support = s.support_of["rBlock"]
+    before = s.objects
+    longer = attrs.evolve(before[support], x=before[support].x + 3.0, scale_x=before[support].scale_x + 6.0 / PLATFORM_BASE)
+    s.level = s.with_objects({"surface": attrs.evolve(before["surface"], x=before["surface"].x + 6.0), "pig": attrs.evolve(before["pig"], x=before["pig"].x + 6.0), support: longer})
+    since = best.fidelity.times[roll - 1]
+    path = best.trace.states[int(since / best.trace.dt) :, best.trace.index("rBlock"), 0]
+    centre = float(np.nanmax(path))
+    proposals = list(s.close_gap("rBlock", "surface", best, roll))
+    assert proposals
+    for _, level in proposals:
+        after = {o.name: o for o in level.objects}
+        assert _span(after["surface"])[0] <= centre - 0.3 + 1e-4
+
+
+def test_a_chain_that_ran_out_of_speed_gets_shorter_legs_the_latest_first():
+    # RRR: the third ball stopped short of its surface. The earlier legs (the second ball
+    # rolling into the third, the first into the second) are offered shorter: the world
+    # beyond the gap comes nearer, the mover and what is behind it stay, and a leg stays
+    # long enough to tell the roll.
+    from physc.domains.angrybirds.satisfy import LEG_CUTS, MIN_LEG
+
+    s = satisfier("RRR")
+    before = s.objects
+    roll3 = [i for i, t in enumerate(s.scenario.interactions) if t.name == "roll"][2]
+    offered = [(d, {o.name: o for o in level.objects}) for d, level in s.shorten_legs(roll3)]
+    movers = [d.split()[0] for d, _ in offered]
+    assert movers and movers == sorted(movers, reverse=True)  # rBlock2's leg before rBlock1's
+    for description, after in offered:
+        mover, struck = description.split()[0], description.split()[-1]
+        gap_before = _span(before[struck])[0] - _span(before[mover])[1]
+        gap_after = _span(after[struck])[0] - _span(after[mover])[1]
+        assert round(gap_before - gap_after, 4) in LEG_CUTS and gap_after >= MIN_LEG
+        assert after[mover] == before[mover]
+        assert s.consistent(attrs.evolve(s.level, objects=tuple(after.values())), frozenset(n for n in after if after[n] != before[n]))
