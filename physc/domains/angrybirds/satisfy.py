@@ -51,7 +51,7 @@ import numpy as np
 
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.geometry import overlapping_pair
-from physc.compiler.qsr import FAR, joined
+from physc.compiler.qsr import FAR, ON_LOCATION, joined
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import agent_targets, candidate_shots
 from physc.domains.angrybirds.catalogue import (
@@ -90,7 +90,7 @@ GUARDED_TOUCHES = 3  # a shortcut is blocked before one of the first this many o
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
 FIRMING = (0.15, 0.3, 0.5)  # how much nearer a fragile solution's rolling or sliding blocks' targets are tried
-RESTING = ("MeetN", "MeetDuringW", "MeetDuringE")
+RESTING = tuple(q for on in ON_LOCATION.values() for q in on)  # resting on the left, the centre or the right of a support
 MIN_PLATFORM = 0.64  # a platform the close-the-gap repair shortens stays at least this long
 LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next ends this far behind its centre (of their half-widths)
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
