@@ -673,19 +673,38 @@ def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
     assert abs(dx * math.sin(along) - dy * math.cos(along)) < 1e-3  # along the platform's own length
 
 
+def _roof_gap(s, level, name: str, block: str) -> float:
+    roof = {o.name: o for o in level.objects}[name]
+    assert roof.rotation == 0.0 and roof.element == "Platform"
+    left, right = _span(roof)
+    assert left <= _span(s.objects[block])[0] - 0.3 + 1e-4 and right >= _span(s.objects[block])[1] + 0.3 - 1e-4
+    return (roof.y - PLATFORM_THICKNESS / 2) - (s.objects[block].y + extent(s.objects[block])[1] / 2)
+
+
 def test_a_roof_goes_just_above_a_block_and_beyond_it():
-    from physc.domains.angrybirds.satisfy import ROOF_GAP
+    from physc.domains.angrybirds.satisfy import ROOF_GAPS
 
     s = satisfier("RF")
     offered = list(s.roof_over("fBlock"))
     assert len(offered) == 1
-    name, level = offered[0]
-    roof, block = {o.name: o for o in level.objects}[name], s.objects["fBlock"]
-    assert roof.rotation == 0.0 and roof.element == "Platform"
-    assert abs((roof.y - PLATFORM_THICKNESS / 2) - (block.y + extent(block)[1] / 2) - ROOF_GAP) < 1e-4
-    left, right = _span(roof)
-    assert left <= _span(block)[0] - 0.3 + 1e-4 and right >= _span(block)[1] + 0.3 - 1e-4
+    assert abs(_roof_gap(s, offered[0][1], offered[0][0], "fBlock") - ROOF_GAPS[0]) < 1e-4
     assert list(s.roof_over("surface")) == []  # not over a platform
+
+
+def test_a_block_near_the_top_of_the_area_gets_a_lower_roof():
+    # RF's fBlock raised (with its support) until 0.3 of clearance and a platform no
+    # longer fit under the placement area's top, but 0.15 does.
+    from physc.domains.angrybirds.satisfy import PLACEMENT_AREA, ROOF_GAPS
+
+    s = satisfier("RF")
+    block = s.objects["fBlock"]
+    top = block.y + extent(block)[1] / 2
+    rise = PLACEMENT_AREA.top - top - ROOF_GAPS[1] - PLATFORM_THICKNESS - 0.05
+    moved = s.shift(s.structure("fBlock") if len(s.structure("fBlock")) > 1 else {"fBlock"}, 0.0, rise)
+    s.level = s.with_objects(moved)
+    offered = list(s.roof_over("fBlock"))
+    assert len(offered) == 1
+    assert abs(_roof_gap(s, offered[0][1], offered[0][0], "fBlock") - ROOF_GAPS[1]) < 1e-4
 
 
 def test_a_ball_that_stopped_short_of_its_surface_gets_its_centre_onto_it():

@@ -85,7 +85,7 @@ FURTHER_BACKS = (3.7, 4.5)  # tried next, for the obstruction of restricted targ
 ACCIDENT_OBSTACLES = 3  # platforms that may block shortcuts (solving shots at other objects)
 SHORTCUTS_LEFT = 3  # shortcuts no platform stops, after which the guard ends
 GUARD_LIFTS = (0.0, 0.45)  # units a shortcut's platform is also tried raised along its length (of OBSTACLE_LENGTH)
-ROOF_GAP = 0.3  # a roof against shortcuts from above is this far clear of the block under it
+ROOF_GAPS = (0.3, 0.15)  # a roof against shortcuts from above is this far clear of the block under it (nearer only where 0.3 does not fit)
 GUARDED_TOUCHES = 3  # a shortcut is blocked before one of the first this many objects the bird touches
 CENTRING_STEP = 0.05  # degrees: the release angles around a fragile solution are tried this far apart
 CENTRING_STEPS = 8  # each way (0.4°, four times the noise's σ)
@@ -940,13 +940,16 @@ class Satisfier:
         solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof),
         kept only if the solution still realises the sequence and survives the noisy replays
         as often as the robustness check demands. A shortcut that cannot be blocked stays,
-        and the next one is tried."""
+        and so do the shots at the same object on the same trajectory (they come down the
+        same way: SFR's high shots at the three points of a block at the end of its ledge);
+        the guard goes on with shortcuts at other objects or from the other trajectory."""
         first = self.first_target()
         if first is None:
             return
-        unblocked: list[str] = []  # the shortcuts no platform stops (by the shot's label)
+        unblocked: list[str] = []  # the shots left alone (by label)
+        left_open = 0  # shortcuts no platform stops (by object and trajectory)
         placed = 0
-        while placed < ACCIDENT_OBSTACLES and len(unblocked) < SHORTCUTS_LEFT:
+        while placed < ACCIDENT_OBSTACLES and left_open < SHORTCUTS_LEFT:
             accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
@@ -956,7 +959,14 @@ class Satisfier:
                     placed += 1
                     break
             else:
-                unblocked.append(accident.label)
+                left_open += 1
+                unblocked += [accident.label] + self.same_way(accident.label)
+
+    def same_way(self, label: str) -> list[str]:
+        """The labels of the other shots at the object a shot's `label` names, on its trajectory."""
+        aimed, trajectory = label.partition(".")[0], label.rpartition(", ")[2]
+        obj = self.objects.get(aimed)
+        return [] if obj is None else [other for other, _ in candidate_shots(obj) if other != label and other.endswith(f", {trajectory}")]
 
     def shortcut_blocks(self, accident: Attempt):
         """(name, level) with a platform that might stop a shortcut: across its flight
@@ -972,8 +982,9 @@ class Satisfier:
             yield from self.roof_over(name)
 
     def roof_over(self, name: str):
-        """(name, level) with a flat platform just above `name` (ROOF_GAP clear of its
-        top), reaching 0.3 beyond it on both sides and at least OBSTACLE_LENGTH long."""
+        """(name, level) with a flat platform just above `name` (0.3 clear of its top, or
+        else 0.15: a block near the top of the placement area leaves no room for more),
+        reaching 0.3 beyond it on both sides and at least OBSTACLE_LENGTH long."""
         obj = self.objects.get(name)
         if obj is None or obj.element == "Platform":
             return
@@ -982,9 +993,11 @@ class Satisfier:
         left, right = _span(obj)
         length = max(OBSTACLE_LENGTH, right - left + 0.6)
         roof = f"obstacle{len(self.obstacles) + 1}"
-        candidate = self.with_platform(roof, (left + right) / 2, top + ROOF_GAP + PLATFORM_THICKNESS / 2, 0.0, length)
-        if candidate is not None:
-            yield roof, candidate
+        for gap in ROOF_GAPS:
+            candidate = self.with_platform(roof, (left + right) / 2, top + gap + PLATFORM_THICKNESS / 2, 0.0, length)
+            if candidate is not None:
+                yield roof, candidate
+                return
 
     # ---- robustness ------------------------------------------------------------------------------
     def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
