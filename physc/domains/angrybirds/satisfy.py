@@ -940,16 +940,13 @@ class Satisfier:
         solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof),
         kept only if the solution still realises the sequence and survives the noisy replays
         as often as the robustness check demands. A shortcut that cannot be blocked stays,
-        and so do the shots at the same object on the same trajectory (they come down the
-        same way: SFR's high shots at the three points of a block at the end of its ledge);
-        the guard goes on with shortcuts at other objects or from the other trajectory."""
+        and the next one is tried."""
         first = self.first_target()
         if first is None:
             return
-        unblocked: list[str] = []  # the shots left alone (by label)
-        left_open = 0  # shortcuts no platform stops (by object and trajectory)
+        unblocked: list[str] = []  # the shortcuts no platform stops (by the shot's label)
         placed = 0
-        while placed < ACCIDENT_OBSTACLES and left_open < SHORTCUTS_LEFT:
+        while placed < ACCIDENT_OBSTACLES and len(unblocked) < SHORTCUTS_LEFT:
             accident = self.accidental_shot(first.name, unblocked)
             if accident is None:
                 break
@@ -959,14 +956,7 @@ class Satisfier:
                     placed += 1
                     break
             else:
-                left_open += 1
-                unblocked += [accident.label] + self.same_way(accident.label)
-
-    def same_way(self, label: str) -> list[str]:
-        """The labels of the other shots at the object a shot's `label` names, on its trajectory."""
-        aimed, trajectory = label.partition(".")[0], label.rpartition(", ")[2]
-        obj = self.objects.get(aimed)
-        return [] if obj is None else [other for other, _ in candidate_shots(obj) if other != label and other.endswith(f", {trajectory}")]
+                unblocked.append(accident.label)
 
     def shortcut_blocks(self, accident: Attempt):
         """(name, level) with a platform that might stop a shortcut: across its flight
