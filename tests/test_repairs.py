@@ -748,3 +748,20 @@ def test_a_chain_that_ran_out_of_speed_gets_shorter_legs_the_latest_first():
         assert round(gap_before - gap_after, 4) in LEG_CUTS and gap_after >= MIN_LEG
         assert after[mover] == before[mover]
         assert s.consistent(attrs.evolve(s.level, objects=tuple(after.values())), frozenset(n for n in after if after[n] != before[n]))
+
+
+def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
+    # R seed 7's first layout works without repairs and its solution passes the replays
+    # at once (no centring or firming). It was still chosen for passing them, so fresh
+    # replays (the "confirmation" stream) decide too: here they all fail, and the layout
+    # is given up.
+    s = satisfier("R", seed=7)
+    streams: list[str] = []
+
+    def robustness(attempt, level=None, stream="robustness"):
+        streams.append(stream)
+        return (6 if stream == "robustness" else 0), 6
+
+    monkeypatch.setattr(s, "robustness", robustness)
+    assert s.run() is None
+    assert streams[:2] == ["robustness", "confirmation"]
