@@ -700,7 +700,7 @@ def test_a_block_near_the_top_of_the_area_gets_a_lower_roof():
     block = s.objects["fBlock"]
     top = block.y + extent(block)[1] / 2
     rise = PLACEMENT_AREA.top - top - ROOF_GAPS[1] - PLATFORM_THICKNESS - 0.05
-    moved = s.shift(s.structure("fBlock") if len(s.structure("fBlock")) > 1 else {"fBlock"}, 0.0, rise)
+    moved = s.shift(s.structure("fBlock"), 0.0, rise)  # with its support, if it has one
     s.level = s.with_objects(moved)
     offered = list(s.roof_over("fBlock"))
     assert len(offered) == 1
