@@ -28,6 +28,7 @@ from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
+from physc.compiler.pipeline import LAYOUT_BUDGET, TIME_BUDGET
 from physc.compiler.stages import STAGES
 from physc.files import OutputError
 
@@ -70,8 +71,12 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout (a folder for several scenarios)")
     compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
     compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
-    compile_.add_argument("--layouts", type=int, default=80, metavar="N", help="layouts simulation may try per task (default 80)")
-    compile_.add_argument("--time-budget", type=float, default=120.0, metavar="S", help="seconds per task at most (default 120)")
+    compile_.add_argument(
+        "--layouts", type=int, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
+    )
+    compile_.add_argument(
+        "--time-budget", type=float, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
+    )
     add_min_robustness(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=int, default=0, metavar="N", help="the random seed (default 0)")

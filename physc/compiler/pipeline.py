@@ -27,7 +27,7 @@ from physc.compiler.to_qsr import ToQsr
 from physc.dsl.scenario import ScenarioIR
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
-LAYOUT_BUDGET = 80  # placed layouts that simulation-based satisfaction may try
+LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
 TIME_BUDGET = 120.0  # seconds for generating one task
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
