@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import itertools
 import math
+import random
 
 import attrs
 import pytest
 import numpy as np
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
+from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, extent
 from physc.domains.angrybirds.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
@@ -114,7 +116,7 @@ def _guarded(monkeypatch, blocks: list[str]):
         platforms[kind] = level = attrs.evolve(s.level, objects=s.level.objects + (obj,))
         yield name, level
 
-    def robustness(attempt, level=None):
+    def robustness(attempt, level=None, stream="robustness"):
         judged = s.level if level is None else level  # as the real check: None is the level as it is
         return (0 if judged is platforms.get("fragile") else 6), 6
 
@@ -765,3 +767,25 @@ def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
     monkeypatch.setattr(s, "robustness", robustness)
     assert s.run() is None
     assert streams[:2] == ["robustness", "confirmation"]
+
+
+def test_a_distractor_must_leave_the_solution_passing_the_confirmation_replays_too(monkeypatch):
+    # R seed 2's first layout takes two distractors with this draw. A distractor is kept
+    # for passing the noisy replays, so the confirmation's fresh ones decide too: when they
+    # all fail, none is kept.
+    def solved():
+        s = satisfier("R", seed=2)
+        return s, s.run().attempt
+
+    s, solution = solved()
+    assert distract(s, solution, random.Random(0)) == ["distractor1", "distractor2"]
+    s, solution = solved()
+    streams: list[str] = []
+
+    def robustness(attempt, level=None, stream="robustness"):
+        streams.append(stream)
+        return (6 if stream == "robustness" else 0), 6
+
+    monkeypatch.setattr(s, "robustness", robustness)
+    assert distract(s, solution, random.Random(0)) == []
+    assert "confirmation" in streams

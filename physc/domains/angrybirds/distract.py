@@ -5,7 +5,7 @@ each resting on a support: the ground, or the free part of a horizontal
 platform. None may overlap anything, the level must still stand (nothing moves
 when left alone), and the intended solution must still realise the declared
 sequence with every distractor in place, exactly and in the noisy replays of the
-robustness check; a distractor that breaks any of this is taken away again. Pigs are never distractors: every pig must be
+robustness check and of its confirmation; a distractor that breaks any of this is taken away again. Pigs are never distractors: every pig must be
 destroyed for the task to be solved.
 """
 
@@ -57,7 +57,7 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
                 continue
             if not stability(candidate)[0]:
                 continue  # it would roll or topple on its own
-            if satisfier.robustness(solution, candidate)[0] < satisfier.accept:
+            if not satisfier.holds_up(solution, candidate):
                 continue  # it makes the solution fragile under noise
             if satisfier.solving_shot(obj, candidate) is not None:
                 continue  # a distraction must not be a way to solve the task

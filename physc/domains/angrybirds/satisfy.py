@@ -33,8 +33,9 @@ The solution kept is the first candidate that survives every noisy replay, on th
 level as finally written. A candidate that fails some is first centred in its window
 of working release angles, then firmed up (the targets of rolling and sliding blocks
 brought nearer). Whichever way it came to pass them, it must pass as many fresh
-replays too (a confirmation: it was chosen for passing the first). A
-layout given up as fragile reports the most replays a solution passed (`nearest`), and
+replays too (a confirmation: it was chosen for passing the first), and every
+obstacle, platform against a shortcut and distractor added after it must leave it
+passing both (`holds_up`). A layout given up as fragile reports the most replays a solution passed (`nearest`), and
 the pipeline's fallbacks satisfy it again accepting fewer (`accept`), confirmed likewise.
 """
 
@@ -96,6 +97,7 @@ LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next en
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 LEG_CUTS = (0.5, 1.0)  # units an earlier leg of a chain of rolling or sliding blocks is tried shorter
 MIN_LEG = 0.6  # a block rolls or slides at least this far before it strikes the next
+NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -939,7 +941,7 @@ class Satisfier:
         """pathObstructed for shortcuts: for each shot that solves the level without being the
         solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof),
         kept only if the solution still realises the sequence and survives the noisy replays
-        as often as the robustness check demands. A shortcut that cannot be blocked stays,
+        of both streams as often as it must (`holds_up`). A shortcut that cannot be blocked stays,
         and the next one is tried."""
         first = self.first_target()
         if first is None:
@@ -951,7 +953,7 @@ class Satisfier:
             if accident is None:
                 break
             for _, candidate in self.shortcut_blocks(accident):
-                if self.simulate(solution.shot, candidate).fidelity.valid and self.robustness(solution, candidate)[0] >= self.accept:
+                if self.simulate(solution.shot, candidate).fidelity.valid and self.holds_up(solution, candidate):
                     self.adopt(candidate)
                     placed += 1
                     break
@@ -1002,6 +1004,15 @@ class Satisfier:
             if self.simulate(Shot(angle=angle + noise.gauss(0.0, ANGLE_SIGMA)), noisy).fidelity.valid:
                 passed += 1
         return passed, ROBUSTNESS_REPLAYS
+
+    def holds_up(self, attempt: Attempt, level: Level) -> bool:
+        """Whether the solution in `level` still passes as many noisy replays as it must, in
+        both noise streams (the replays it was chosen for and the confirmation's). A change
+        made after the confirmation (an obstacle, a platform against a shortcut, a
+        distractor) is itself chosen for passing the replays it is checked with: with the
+        same 6 each time, every change kept could break the solution a little more in noise
+        those 6 never draw."""
+        return all(self.robustness(attempt, level, stream)[0] >= self.accept for stream in NOISE_STREAMS)
 
     def centred(self, attempt: Attempt) -> Attempt | None:
         """A solution that noise breaks too often, moved to the middle of the interval of
@@ -1158,7 +1169,7 @@ class Satisfier:
             # too. Six replays passed say little of a solution that noise breaks one time
             # in ten (it passes them half the time); twelve in a row, a quarter.
             if passed >= self.accept:
-                passed = min(passed, self.robustness(chosen, stream="confirmation")[0])
+                passed = min(passed, self.robustness(chosen, stream=NOISE_STREAMS[1])[0])
             if passed >= self.accept:
                 break
             self.nearest = max(self.nearest, passed)
@@ -1168,7 +1179,7 @@ class Satisfier:
         if not self.obstruct(chosen):
             return None
         if len(self.obstacles) > checked:
-            again = self.robustness(chosen)[0]
+            again = min(self.robustness(chosen, stream=stream)[0] for stream in NOISE_STREAMS)
             if again < self.accept:
                 self.nearest = max(self.nearest, again)
                 return None  # the obstacles made the solution fragile
