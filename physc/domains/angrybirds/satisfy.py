@@ -992,7 +992,7 @@ class Satisfier:
                 return
 
     # ---- robustness ------------------------------------------------------------------------------
-    def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = "robustness") -> tuple[int, int]:
+    def robustness(self, attempt: Attempt, level: Level | None = None, stream: str = NOISE_STREAMS[0]) -> tuple[int, int]:
         """How many replays under noise (the evaluation's model) realise the sequence
         (`stream` names the noise drawn: another name, other replays)."""
         noise = random.Random(f"{stream}/{attempt.label}/{attempt.shot.release_angle():.6f}")
