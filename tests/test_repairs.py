@@ -118,7 +118,8 @@ def _guarded(monkeypatch, blocks: list[str]):
 
     def robustness(attempt, level=None, stream="robustness"):
         judged = s.level if level is None else level  # as the real check: None is the level as it is
-        return (0 if judged is platforms.get("fragile") else 6), 6
+        fragile = judged is platforms.get("fragile") or (judged is platforms.get("fragile in fresh noise") and stream == "confirmation")
+        return (0 if fragile else 6), 6
 
     monkeypatch.setattr(s, "accidental_shot", accidental_shot)
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
@@ -137,6 +138,13 @@ def test_a_shortcut_is_blocked_when_the_solution_survives(monkeypatch):
 def test_a_block_that_makes_the_solution_fragile_is_taken_away(monkeypatch):
     s, unguarded, _, _ = _guarded(monkeypatch, ["fragile"])
     assert s.level == unguarded and s.obstacles == [] and "obstacle1" not in s.roles
+
+
+def test_a_block_that_fails_only_the_fresh_replays_is_taken_away_too(monkeypatch):
+    # The platform is chosen for passing the replays it is checked with; the confirmation's
+    # fresh ones decide too.
+    s, unguarded, _, _ = _guarded(monkeypatch, ["fragile in fresh noise"])
+    assert s.level == unguarded and s.obstacles == []
 
 
 def test_a_shortcut_that_cannot_be_blocked_does_not_end_the_guard(monkeypatch):
