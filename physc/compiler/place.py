@@ -105,8 +105,8 @@ class Place:
                 role=b.role,
                 concrete=b.concrete,
                 material=b.material,
-                x=round(centres[b.name][0], PRECISION),
-                y=round(centres[b.name][1], PRECISION),
+                x=round(float(centres[b.name][0]), PRECISION),  # a Python float, not numpy's
+                y=round(float(centres[b.name][1]), PRECISION),
                 rotation=b.geometry.rotation,
                 width=b.geometry.width,
                 height=b.geometry.height,
