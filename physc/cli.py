@@ -28,7 +28,7 @@ from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
-from physc.compiler.pipeline import LAYOUT_BUDGET, TIME_BUDGET
+from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
 from physc.compiler.stages import STAGES
 from physc.files import OutputError
 

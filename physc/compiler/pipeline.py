@@ -21,14 +21,12 @@ from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
-from physc.compiler.task import MIN_ROBUSTNESS, Task
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
 from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.dsl.scenario import ScenarioIR
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
-LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
-TIME_BUDGET = 120.0  # seconds for generating one task
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
 

@@ -7,6 +7,8 @@ import attrs
 # A task whose solution failed some noisy replays of the generator (the domain's
 # robustness_replays; 6 in angrybirds) is a fallback; by default it must pass this many.
 MIN_ROBUSTNESS = 4
+LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
+TIME_BUDGET = 120.0  # seconds for generating one task
 
 
 @attrs.frozen
