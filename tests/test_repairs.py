@@ -760,12 +760,9 @@ def test_a_chain_that_ran_out_of_speed_gets_shorter_legs_the_latest_first():
         assert s.consistent(attrs.evolve(s.level, objects=tuple(after.values())), frozenset(n for n in after if after[n] != before[n]))
 
 
-def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
-    # R seed 7's first layout works without repairs and its solution passes the replays
-    # at once (no centring or firming). It was still chosen for passing them, so fresh
-    # replays (the "confirmation" stream) decide too: here they all fail, and the layout
-    # is given up.
-    s = satisfier("R", seed=7)
+def _only_the_first_replays_pass(monkeypatch, s: Satisfier) -> list[str]:
+    """Make every solution pass the replays it is chosen for and fail the confirmation's
+    fresh ones; the noise streams asked for, in order."""
     streams: list[str] = []
 
     def robustness(attempt, level=None, stream="robustness"):
@@ -773,6 +770,16 @@ def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
         return (6 if stream == "robustness" else 0), 6
 
     monkeypatch.setattr(s, "robustness", robustness)
+    return streams
+
+
+def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
+    # R seed 7's first layout works without repairs and its solution passes the replays
+    # at once (no centring or firming). It was still chosen for passing them, so fresh
+    # replays (the "confirmation" stream) decide too: here they all fail, and the layout
+    # is given up.
+    s = satisfier("R", seed=7)
+    streams = _only_the_first_replays_pass(monkeypatch, s)
     assert s.run() is None
     assert streams[:2] == ["robustness", "confirmation"]
 
@@ -788,12 +795,6 @@ def test_a_distractor_must_leave_the_solution_passing_the_confirmation_replays_t
     s, solution = solved()
     assert distract(s, solution, random.Random(0)) == ["distractor1", "distractor2"]
     s, solution = solved()
-    streams: list[str] = []
-
-    def robustness(attempt, level=None, stream="robustness"):
-        streams.append(stream)
-        return (6 if stream == "robustness" else 0), 6
-
-    monkeypatch.setattr(s, "robustness", robustness)
+    streams = _only_the_first_replays_pass(monkeypatch, s)
     assert distract(s, solution, random.Random(0)) == []
     assert "confirmation" in streams
