@@ -79,27 +79,30 @@ def test_a_bounce_surface_may_be_turned_over():
     assert -round(surface.rotation, 1) not in [round(float(d.split(" to ")[1].rstrip("°")), 1) for d, _ in s.turn("iSurface")]
 
 
-def _guarded(monkeypatch, blocks: list[str]):
+def _guarded(monkeypatch, blocks: list[str], first_touch: str = "pig"):
     """guard_accidents on R (seed 7, whose first layout works without repairs) against a
     shortcut per entry of `blocks`, labelled "first", "second", … and found in that order
-    (the real first shortcut's flight, relabelled); the platform offered across the n-th
-    is `blocks[n]`: "firm" (the solution survives it) or "fragile" (the noisy replays fail
-    with it). Returns the satisfier, the level before, the platforms offered (level by
-    kind) and the `skip` each search for a shortcut was given."""
+    (the real first shortcut's flight, relabelled, its bird touching `first_touch` first);
+    the platform offered across the n-th is `blocks[n]`: "firm" (the solution survives it),
+    "fragile" (the noisy replays fail with it), "fragile in fresh noise" (only the
+    confirmation's do) or "gone round" (the shortcut still solves the level with it).
+    Returns the satisfier, the level before, the platforms offered (level by kind) and the
+    `skip` each search for a shortcut was given."""
     from physc.domains.angrybirds import satisfy
 
     s = satisfier("R", seed=7)
     solution = s.working(s.attempts())[0]
-    shortcut = s.accidental_shot("rBlock")
+    shortcut = next(s.shortcuts("rBlock"), None)
     assert shortcut is not None  # a shot at the pig solves the bare layout
-    pending = [attrs.evolve(shortcut, label=label) for label in ("first", "second", "third")[: len(blocks)]]
+    pending = [attrs.evolve(shortcut, label=label) for label in ("first", "second", "third", "fourth")[: len(blocks)]]
     asked: list[list[str]] = []
     calls = {"across": 0}  # obstacles_across calls for the current shortcut
 
-    def accidental_shot(target, skip=()):
+    def shortcuts(target, skip=()):
         asked.append(list(skip))
-        calls["across"] = 0
-        return pending.pop(0) if pending else None
+        while pending:
+            calls["across"] = 0
+            yield pending.pop(0)
 
     offered = iter(blocks)
     platforms: dict[str, object] = {}
@@ -121,7 +124,9 @@ def _guarded(monkeypatch, blocks: list[str]):
         fragile = judged is platforms.get("fragile") or (judged is platforms.get("fragile in fresh noise") and stream == "confirmation")
         return (0 if fragile else 6), 6
 
-    monkeypatch.setattr(s, "accidental_shot", accidental_shot)
+    monkeypatch.setattr(s, "shortcuts", shortcuts)
+    monkeypatch.setattr(s, "stops", lambda accident, level: level is not platforms.get("gone round"))
+    monkeypatch.setattr(satisfy, "touched", lambda trace: [first_touch])
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
     monkeypatch.setattr(s, "roof_over", lambda name: iter(()))
     monkeypatch.setattr(s, "robustness", robustness)
@@ -150,6 +155,26 @@ def test_a_block_that_fails_only_the_fresh_replays_is_taken_away_too(monkeypatch
 def test_a_shortcut_that_cannot_be_blocked_does_not_end_the_guard(monkeypatch):
     s, _, platforms, asked = _guarded(monkeypatch, ["fragile", "firm"])
     assert asked[:2] == [[], ["first"]]  # the next search leaves the unblocked shortcut out
+    assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
+
+
+def test_a_platform_the_shortcut_gets_past_is_not_kept(monkeypatch):
+    s, unguarded, _, _ = _guarded(monkeypatch, ["gone round"])
+    assert s.level == unguarded and s.obstacles == []
+
+
+def test_the_guard_ends_after_three_shortcuts_it_cannot_block(monkeypatch):
+    from physc.domains.angrybirds.satisfy import SHORTCUTS_LEFT
+
+    assert SHORTCUTS_LEFT == 3
+    s, unguarded, _, _ = _guarded(monkeypatch, ["fragile", "fragile", "fragile", "firm"])
+    assert s.level == unguarded and s.obstacles == []
+
+
+def test_variants_of_the_solution_do_not_end_the_guard(monkeypatch):
+    # Shortcuts whose bird touches the solution's own target first (a shot at another
+    # object that hits it on the way) rarely can be blocked; the others are still looked for.
+    s, _, platforms, _ = _guarded(monkeypatch, ["fragile", "fragile", "fragile", "firm"], first_touch="rBlock")
     assert s.level == platforms["firm"] and s.obstacles == ["obstacle1"]
 
 
@@ -652,7 +677,7 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
     shortcut = Attempt("pig.c, low", solution.shot, trace, None)
     pending = [shortcut]
     asked = []
-    monkeypatch.setattr(s, "accidental_shot", lambda target, skip=(): pending.pop(0) if pending else None)
+    monkeypatch.setattr(s, "shortcuts", lambda target, skip=(): iter([pending.pop(0)] if pending else []))
 
     def obstacles_across(trace, target, before=None, **options):
         asked.append((target, options.get("lifts")))

@@ -137,6 +137,12 @@ def _geometry(obj: LevelObject) -> tuple:
     return (obj.x, obj.y, obj.scale_x, obj.scale_y, obj.rotation)
 
 
+def touched(trace) -> list[str]:
+    """What the bird touches, other than the ground, in the order of first touch."""
+    contacts = trace.contacts
+    return list(dict.fromkeys(c.b if c.a == BIRD else c.a for c in contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)))
+
+
 def _placed(obj: LevelObject, role: str) -> PlacedObject:
     width, height = extent(obj)
     return PlacedObject(obj.name, role, by_prefab(obj.type).name, obj.material, obj.x, obj.y, obj.rotation or 0.0, width, height)
@@ -927,38 +933,59 @@ class Satisfier:
                 yield f"pathObstructed(bird, {target}): {name} across the bird's flight", candidate
 
     # ---- accidental solutions ------------------------------------------------------------------
-    def accidental_shot(self, target: str, skip: Collection[str] = ()) -> Attempt | None:
-        """A shot at a point of interest of a block or pig other than the solution's target
-        that solves the level (the paper's heuristic agent, on all eight points), other
-        than those labelled in `skip`."""
-        for obj in agent_targets(self.level, target):
-            found = self.solving_shot(obj, self.level, skip)
-            if found is not None:
-                return found
-        return None
+    def shortcuts(self, target: str, skip: Collection[str] = ()):
+        """The shots at points of interest of blocks and pigs other than the solution's
+        target that solve the level as it is (the paper's heuristic agent, on all eight
+        points), in the agent's order, other than those labelled in `skip`; lazily."""
+        level = self.level
+        for obj in agent_targets(level, target):
+            yield from self.solving_shots(obj, level, skip)
 
     def guard_accidents(self, solution: Attempt) -> None:
         """pathObstructed for shortcuts: for each shot that solves the level without being the
-        solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof),
-        kept only if the solution still realises the sequence and survives the noisy replays
-        of both streams as often as it must (`holds_up`). A shortcut that cannot be blocked stays,
-        and the next one is tried."""
+        solution, a platform that stops it (`shortcut_blocks`: across its flight, or a roof;
+        with it the shot no longer solves the level: `stops`), kept only if the solution
+        still realises the sequence and survives the noisy replays of both streams as often
+        as it must (`holds_up`); then the search starts again on the level with it. A
+        shortcut that cannot be blocked stays, and the next one is tried; the guard ends
+        after ACCIDENT_OBSTACLES platforms, or after SHORTCUTS_LEFT shortcuts it cannot block
+        that do not go through the solution's target first (those that do are variants of
+        the solution itself, which a platform rarely stops without stopping the solution;
+        they are tried, but do not end the search for the others)."""
         first = self.first_target()
         if first is None:
             return
         unblocked: list[str] = []  # the shortcuts no platform stops (by the shot's label)
+        given_up = 0  # of them, those that do not touch the solution's target first
         placed = 0
-        while placed < ACCIDENT_OBSTACLES and len(unblocked) < SHORTCUTS_LEFT:
-            accident = self.accidental_shot(first.name, unblocked)
-            if accident is None:
-                break
-            for _, candidate in self.shortcut_blocks(accident):
-                if self.simulate(solution.shot, candidate).fidelity.valid and self.holds_up(solution, candidate):
-                    self.adopt(candidate)
+        while placed < ACCIDENT_OBSTACLES:
+            for accident in self.shortcuts(first.name, tuple(unblocked)):
+                if self.block_shortcut(accident, solution):
                     placed += 1
-                    break
-            else:
+                    break  # a new level: its shortcuts are looked for from the start
                 unblocked.append(accident.label)
+                if touched(accident.trace)[:1] != [first.name]:
+                    given_up += 1
+                    if given_up >= SHORTCUTS_LEFT:
+                        return
+            else:
+                return
+
+    def block_shortcut(self, accident: Attempt, solution: Attempt) -> bool:
+        """Adopt the first platform of `shortcut_blocks` that stops the shortcut and leaves
+        the solution working and holding up under noise; whether there was one."""
+        for _, candidate in self.shortcut_blocks(accident):
+            if not self.stops(accident, candidate):
+                continue  # the shortcut goes round it, or through
+            if self.simulate(solution.shot, candidate).fidelity.valid and self.holds_up(solution, candidate):
+                self.adopt(candidate)
+                return True
+        return False
+
+    def stops(self, accident: Attempt, level: Level) -> bool:
+        """Whether the shortcut's shot no longer solves `level`."""
+        self.simulations += 1
+        return not Game(level).simulate(accident.shot, SECONDS, settle_after_solved=0.0).solved
 
     def shortcut_blocks(self, accident: Attempt):
         """(name, level) with a platform that might stop a shortcut: across its flight
@@ -967,9 +994,7 @@ class Satisfier:
         the block it should push, is blocked only further on); after the platforms across
         the flight to each, a roof over it (a high shot that knocks a block off its ledge
         comes down on it from above)."""
-        contacts = accident.trace.contacts
-        touched = list(dict.fromkeys(c.b if c.a == BIRD else c.a for c in contacts if BIRD in (c.a, c.b) and GROUND not in (c.a, c.b)))
-        for name in touched[:GUARDED_TOUCHES]:
+        for name in touched(accident.trace)[:GUARDED_TOUCHES]:
             yield from self.obstacles_across(accident.trace, name, lifts=GUARD_LIFTS)
             yield from self.roof_over(name)
 
@@ -1070,14 +1095,18 @@ class Satisfier:
     def solving_shot(self, obj: LevelObject, level: Level, skip: Collection[str] = ()) -> Attempt | None:
         """A shot at one of obj's points of interest that solves the level, if any (other
         than those labelled in `skip`)."""
+        return next(self.solving_shots(obj, level, skip), None)
+
+    def solving_shots(self, obj: LevelObject, level: Level, skip: Collection[str] = ()):
+        """The shots at obj's points of interest that solve the level (other than those
+        labelled in `skip`), lazily."""
         for label, shot in candidate_shots(obj):
             if label in skip:
                 continue
             self.simulations += 1
             trace = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
             if trace.solved:
-                return Attempt(label, shot, trace, None)
-        return None
+                yield Attempt(label, shot, trace, None)
 
     # ---- the whole step ------------------------------------------------------------------------
     def repaired(self, attempts: list[Attempt]) -> list[Attempt] | None:
