@@ -8,8 +8,8 @@ import math
 import random
 
 import attrs
-import pytest
 import numpy as np
+import pytest
 from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.distract import distract
@@ -665,7 +665,7 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
     # SFR seed 2: a high shot grazes the sliding block (the solution's own target, where the
     # intended shot passes too) on its way into the faller. Platforms are tried before each
     # of the first three objects the bird touches, centred on the flight and raised, then a
-    # roof over it.
+    # roof over it, then level ones across the flight where it comes down.
     from types import SimpleNamespace
 
     from physc.domains.angrybirds.satisfy import GUARD_LIFTS, GUARDED_TOUCHES
@@ -680,7 +680,7 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
     monkeypatch.setattr(s, "shortcuts", lambda target, skip=(): iter([pending.pop(0)] if pending else []))
 
     def obstacles_across(trace, target, before=None, **options):
-        asked.append((target, options.get("lifts")))
+        asked.append((target, "level" if options.get("flat") else options.get("lifts")))
         return iter(())
 
     def roof_over(name):
@@ -691,7 +691,7 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
     monkeypatch.setattr(s, "roof_over", roof_over)
     s.guard_accidents(solution)
     assert GUARDED_TOUCHES == 3
-    assert asked == [(name, kind) for name in ("rBlock", "surface", "pig") for kind in (GUARD_LIFTS, "roof")]
+    assert asked == [(name, kind) for name in ("rBlock", "surface", "pig") for kind in (GUARD_LIFTS, "roof", "level")]
 
 
 def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
@@ -706,6 +706,24 @@ def test_an_obstacle_across_the_flight_may_be_raised_along_its_length():
     assert abs(math.hypot(dx, dy) - 0.45) < 1e-3 and dy > 0
     along = math.radians(centred.rotation)
     assert abs(dx * math.sin(along) - dy * math.cos(along)) < 1e-3  # along the platform's own length
+
+
+def test_a_level_platform_goes_only_across_a_flight_that_comes_down():
+    # SFR seed 28: a high shot lands on the ledge the sliding block slides along and pushes
+    # the faller off; a platform square to that descent reaches down into the slide, a
+    # level one over where the bird lands does not.
+    s = satisfier("R")
+    first = s.first_target().name
+    attempt = next(a for a in s.attempts() if a.shot.trajectory == "high" and any({c.a, c.b} == {"bird", first} for c in a.trace.contacts))
+    offered = list(s.obstacles_across(attempt.trace, first, backs=(1.3,), flat=True))
+    assert offered and all({o.name: o for o in level.objects}[name].rotation == 0.0 for name, level in offered)
+    # The same flight going up: a level platform would lie along it.
+    states = attempt.trace.states.copy()
+    bird = attempt.trace.index("bird")
+    states[:, bird, 4] = np.abs(states[:, bird, 4]) + 0.1
+    rising = attrs.evolve(attempt.trace, states=states)
+    assert list(s.obstacles_across(rising, first, backs=(1.3,), flat=True)) == []
+    assert list(s.obstacles_across(rising, first, backs=(1.3,)))  # square to it, still
 
 
 def _roof_gap(s, level, name: str, block: str) -> float:

@@ -844,12 +844,14 @@ class Satisfier:
                 return True
         return False
 
-    def obstacles_across(self, trace: Trace, target: str, before: float | None = None, backs=BACKS, length: float = OBSTACLE_LENGTH, lifts=(0.0,)):
+    def obstacles_across(self, trace: Trace, target: str, before: float | None = None, backs=BACKS, length: float = OBSTACLE_LENGTH, lifts=(0.0,), flat: bool = False):
         """(name, level) with a platform across the bird's flight, a little before it first
         touches `target` (after `before`, if given): further back at each try (`backs`:
         how far along the flight, in units), and at each place centred on the flight or
         raised along its own length by each of `lifts` (units; the flight still crosses it,
-        and its lower end stays out of the way of what moves below)."""
+        and its lower end stays out of the way of what moves below). `flat`: level instead
+        of square to the flight, where the bird comes down (a lid over where it lands, whose
+        ends do not reach down into what moves below)."""
         bird = trace.states[:, trace.index(BIRD), :]
         hit_time = next((c.time for c in trace.contacts if {c.a, c.b} == {BIRD, target} and (before is None or c.time >= before)), None)
         if hit_time is None:
@@ -864,7 +866,9 @@ class Satisfier:
             x, y, _, vx, vy, _ = bird[step]
             if math.isnan(x):
                 continue
-            angle = math.degrees(math.atan2(vy, vx)) + 90.0  # across the flight
+            if flat and vy >= 0.0:
+                continue  # a level platform stops only a bird that comes down on it
+            angle = 0.0 if flat else math.degrees(math.atan2(vy, vx)) + 90.0  # across the flight
             angle = (angle + 90) % 180 - 90
             up = (math.cos(math.radians(angle)), math.sin(math.radians(angle)))
             if up[1] < 0:
@@ -993,10 +997,13 @@ class Satisfier:
         grazes the solution's own target on its way, a high shot over a sliding block into
         the block it should push, is blocked only further on); after the platforms across
         the flight to each, a roof over it (a high shot that knocks a block off its ledge
-        comes down on it from above)."""
+        comes down on it from above), then level platforms across a flight that comes down
+        (a high shot that lands on the ledge a block slides along and pushes the next block
+        off: square to that flight, a platform reaches down into the slide)."""
         for name in touched(accident.trace)[:GUARDED_TOUCHES]:
             yield from self.obstacles_across(accident.trace, name, lifts=GUARD_LIFTS)
             yield from self.roof_over(name)
+            yield from self.obstacles_across(accident.trace, name, flat=True)
 
     def roof_over(self, name: str):
         """(name, level) with a flat platform just above `name` (0.3 clear of its top, or
