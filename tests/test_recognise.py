@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.recognise import side, violations
+from physc.domains.angrybirds.recognise import recognise, side, violations
 from physc.dsl.scenario import TermIR
-from physc.simulation.trace import Interaction
+from physc.simulation.trace import ContactRecord, Interaction, Trace
 
 
 def test_side_of_the_target():
@@ -75,3 +77,22 @@ def test_a_ball_rolling_into_a_small_pig_hits_it_from_the_left():
     contact = next(c for c in trace.contacts if {c.a, c.b} == {"ball", "pig"})
     vx, vy = contact.relative_velocity if contact.a == "ball" else (-contact.relative_velocity[0], -contact.relative_velocity[1])
     assert side(-vx, -vy) == "above"  # what the contact point's own velocity would have said
+
+
+def _ball_on_a_platform(spin_per_speed: float) -> Trace:
+    """A ball of radius 0.5 moving right at 2 units/s on a platform for 1 s, turning at
+    `spin_per_speed` · 2 / 0.5 rad/s (counter-clockwise positive)."""
+    steps, dt = 50, 0.02
+    states = np.zeros((steps, 1, 6))
+    states[:, 0, 0] = np.arange(steps) * dt * 2.0
+    states[:, 0, 3] = 2.0
+    states[:, 0, 5] = spin_per_speed * 2.0 / 0.5
+    touch = ContactRecord(dt, "ball", "platform", (0.0, -0.5), (0.0, -1.0), (0.0, -0.1), (2.0, -0.1), (0.0, 0.0))
+    return Trace(dt, ("ball",), {"ball": "block", "platform": "platform"}, states, (touch,))
+
+
+def test_a_ball_rolls_only_when_it_turns_the_way_it_moves():
+    rolling = [i.text() for i in recognise(_ball_on_a_platform(-1.0), {"ball": 0.5})]
+    assert rolling == ["roll(ball, platform, right)"]
+    # Backspin of the same magnitude: its contact point slips at twice its speed.
+    assert recognise(_ball_on_a_platform(+1.0), {"ball": 0.5}) == ()

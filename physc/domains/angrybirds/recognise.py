@@ -9,8 +9,11 @@ and names what happened, in the order it happened:
   to b, reversed: of the bodies' centres, see `approach`). Chatter of one pair within
   REHIT seconds is one hit.
 * roll(a, s, d): a touches a surface s (a platform or the ground) while moving at
-  least MOVING and turning so that |ω|·r is within ROLL_SLIP of its speed, for at
-  least MOTION_TIME in all; d is the way it moved.
+  least MOVING and turning the way it moves, so that −ω·r is within ROLL_SLIP of its
+  speed along its heading (ω counter-clockwise: rolling right turns clockwise), for at
+  least MOTION_TIME in all; d is the way it moved. A ball sliding with backspin, as a
+  ball struck by a rolling ball does (the hitter's front turns downwards), is not
+  rolling, however fast it spins.
 * slide(a, s, d): the same, but translating while turning at most SLIDE_SPIN.
 * fall(a, b): a touches nothing for at least FALL_TIME while dropping at least
   FALL_HEIGHT; b is the first thing it touches after. The bird is thrown, not
@@ -39,7 +42,7 @@ from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
 HIT_SPEED = 0.3
 REHIT = 0.1
 MOVING = 0.15
-ROLL_SLIP = 0.3  # | |ω|·r − |v| | <= ROLL_SLIP · |v|
+ROLL_SLIP = 0.3  # | −ω·r − sign(vx)·|v| | <= ROLL_SLIP · |v|
 SLIDE_SPIN = 0.3  # rad/s
 MOTION_TIME = 0.2
 FALL_TIME = 0.2
@@ -179,7 +182,9 @@ def _motion(trace: Trace, intervals, radius) -> list[Interaction]:
             moving = speed >= MOVING
             r = radius.get(mover)
             if r:
-                rolling = moving & (np.abs(spin * r - speed) <= ROLL_SLIP * speed)
+                # The contact point hardly slips: the spin's sense matches the heading.
+                heading = np.sign(rows[:, 3]) * speed
+                rolling = moving & (np.abs(-rows[:, 5] * r - heading) <= ROLL_SLIP * speed)
             else:
                 rolling = np.zeros(len(rows), dtype=bool)
             sliding = moving & (spin <= SLIDE_SPIN) & ~rolling
