@@ -22,7 +22,7 @@ from physc.domains.angrybirds.stability import stability
 # the light-chain materials (seeds 0-11, validation skipped); SRF seed 11 and RRF seed 8
 # (fallbacks: their solutions passed 4 to 5 of the 6 noisy replays) are 8-interaction tasks of
 # a full evaluation, SFR seed 10 the quickest of seeds 0-11 (8 s) since every solution must
-# pass fresh confirmation replays too. RRR generates no task yet.
+# pass fresh confirmation replays too. RRR generates a task for 1 seed in 30, after minutes.
 GENERATED = {
     "SF": 0, "SFTB": 0, "SFLB": 0, "R": 0, "S": 0, "B": 0, "F": 0,
     "RF": 10, "SR": 11, "BF": 11, "FR": 15, "RS": 7, "SRF": 11, "SFR": 10, "RRF": 8,
@@ -39,6 +39,8 @@ def test_paper_scenario_compiles_and_validates(name):
     # Level files carry no names; objects keep their order.
     level = attrs.evolve(written, objects=tuple(attrs.evolve(o, name=n.name) for o, n in zip(written.objects, task.level.objects)))
     assert level == task.level
+    numbers = [getattr(o, f) for o in task.level.objects for f in ("x", "y", "rotation", "scale_x", "scale_y")]
+    assert {type(n) for n in numbers} <= {float, type(None)}  # as the model says: no numpy scalars
     shot = Shot(target=tuple(task.solution.target), trajectory=task.solution.trajectory)
     redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
     trace = Game(level).play(shot, 9.0, restrictions=scenario.restrictions, redirects=redirects)

@@ -16,7 +16,7 @@ import random
 import attrs
 
 from physc.domains.angrybirds.catalogue import extent, shape
-from physc.domains.angrybirds.level import LevelObject
+from physc.domains.angrybirds.level import LevelObject, level_number
 from physc.domains.angrybirds.stability import stability
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
@@ -49,7 +49,7 @@ def distract(satisfier, solution, rng: random.Random) -> list[str]:
             x = rng.uniform(low, high)
             y = top + kind.height / 2 + SKIN
             name = f"distractor{index + 1}"
-            obj = LevelObject("Block", kind.prefab, round(x, 5), round(y, 5), 0.0, material, name=name)
+            obj = LevelObject("Block", kind.prefab, level_number(x), level_number(y), 0.0, material, name=name)
             candidate = attrs.evolve(satisfier.level, objects=satisfier.level.objects + (obj,))
             if not satisfier.consistent(candidate):
                 continue

@@ -10,6 +10,12 @@ from __future__ import annotations
 import attrs
 
 ELEMENTS = ("Block", "Pig", "TNT", "Platform")
+DECIMALS = 5  # as the Phy-Q level editor writes them
+
+
+def level_number(value: float) -> float:
+    """`value` as a level holds it: a Python float (not numpy's) to DECIMALS places, never -0."""
+    return round(float(value), DECIMALS) + 0.0
 
 
 @attrs.frozen

@@ -66,7 +66,7 @@ from physc.domains.angrybirds.fidelity import Fidelity, fidelity
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.layout_rules import OPPOSITE, last_hit_on
-from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.level import Level, LevelObject, level_number
 from physc.domains.angrybirds.noise import ANGLE_SIGMA, ROBUSTNESS_REPLAYS, jitter
 from physc.domains.angrybirds.to_level import level_from_layout
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
@@ -389,10 +389,10 @@ class Satisfier:
             if name == BIRD or far <= cut:
                 continue
             if near >= cut:
-                changed[name] = attrs.evolve(obj, x=round(obj.x - sign * distance, 5))
+                changed[name] = attrs.evolve(obj, x=level_number(obj.x - sign * distance))
             elif obj.element == "Platform" and not obj.rotation and extent(obj)[0] - distance >= MIN_PLATFORM:
                 length = extent(obj)[0] - distance
-                changed[name] = attrs.evolve(obj, x=round(obj.x - sign * distance / 2, 5), scale_x=round(length / PLATFORM_BASE, 5))
+                changed[name] = attrs.evolve(obj, x=level_number(obj.x - sign * distance / 2), scale_x=level_number(length / PLATFORM_BASE))
             else:
                 return None
         if not changed:
@@ -432,7 +432,7 @@ class Satisfier:
             if new_right - new_left < MIN_PLATFORM:
                 continue
             platform = objects[support]
-            changed = {support: attrs.evolve(platform, x=round((new_left + new_right) / 2, 5), scale_x=round((new_right - new_left) / PLATFORM_BASE, 5))}
+            changed = {support: attrs.evolve(platform, x=level_number((new_left + new_right) / 2), scale_x=level_number((new_right - new_left) / PLATFORM_BASE))}
             candidate = self.with_objects(changed)
             if self.consistent(candidate, frozenset({target, support})):
                 yield f"hit({BIRD}, {target}, {side}): {support} no longer shields {target}", candidate
@@ -467,7 +467,7 @@ class Satisfier:
             dy = 0.0
         if abs(dx) < 1e-6 and abs(dy) < 1e-6:
             return None
-        changed = {m: attrs.evolve(objects[m], x=round(objects[m].x + dx, 5), y=round(objects[m].y + dy, 5)) for m in sorted(members)}
+        changed = {m: attrs.evolve(objects[m], x=level_number(objects[m].x + dx), y=level_number(objects[m].y + dy)) for m in sorted(members)}
         if min(o.y - extent(o)[1] / 2 for o in changed.values()) < GROUND_TOP - 1e-6:
             return None
         return changed
@@ -545,13 +545,13 @@ class Satisfier:
         dx, dy = x - obj.x, y - obj.y
         if abs(dx) < 1e-6 and abs(dy) < 1e-6:
             return None
-        changed = {name: attrs.evolve(obj, x=round(x, 5), y=round(y, 5))}
+        changed = {name: attrs.evolve(obj, x=level_number(x), y=level_number(y))}
         support = self.own_support.get(name)
         if support is not None and support in objects:
             s = objects[support]
             if s.y + dy < GROUND_TOP:
                 return None
-            changed[support] = attrs.evolve(s, x=round(s.x + dx, 5), y=round(s.y + dy, 5))
+            changed[support] = attrs.evolve(s, x=level_number(s.x + dx), y=level_number(s.y + dy))
         return changed
 
     def moved_level(self, name: str, x: float, y: float) -> Level | None:
@@ -581,7 +581,7 @@ class Satisfier:
         old = extent(obj)
         new_shape = shape(concrete)
         y = obj.y - old[1] / 2 + new_shape.height / 2  # keep the bottom where it rests
-        candidate = self.with_objects({name: attrs.evolve(obj, type=new_shape.prefab, y=round(y, 5), material=material or obj.material)})
+        candidate = self.with_objects({name: attrs.evolve(obj, type=new_shape.prefab, y=level_number(y), material=material or obj.material)})
         if self.consistent(candidate):
             yield why, candidate
 
@@ -700,7 +700,7 @@ class Satisfier:
             x = right - width / 2 - 0.02 if pushed == "right" else left + width / 2 + 0.02
             if abs(x - block.x) < 0.05:
                 continue
-            candidate = self.with_objects({faller: attrs.evolve(block, x=round(x, 5))})
+            candidate = self.with_objects({faller: attrs.evolve(block, x=level_number(x))})
             if self.consistent(candidate, frozenset({faller})):
                 yield f"fall({faller}): at the {pushed} edge of {support}", candidate
             yield from self.to_the_edge(faller, hit.objects[0], support, pushed, index)
@@ -721,9 +721,9 @@ class Satisfier:
         new_left, new_right = (left, b_right + 0.02) if pushed == "right" else (b_left - 0.02, right)
         if new_right - new_left < MIN_PLATFORM or b_left < left or b_right > right or (right - new_right) + (new_left - left) < 0.1:
             return None
-        changed = {support: attrs.evolve(platform, x=round((new_left + new_right) / 2, 5), scale_x=round((new_right - new_left) / PLATFORM_BASE, 5))}
+        changed = {support: attrs.evolve(platform, x=level_number((new_left + new_right) / 2), scale_x=level_number((new_right - new_left) / PLATFORM_BASE))}
         if dx:
-            changed[faller] = attrs.evolve(block, x=round(block.x + dx, 5))
+            changed[faller] = attrs.evolve(block, x=level_number(block.x + dx))
         return changed
 
     def to_the_edge(self, faller: str, hitter: str, support: str, pushed: str, index: int):
@@ -882,7 +882,7 @@ class Satisfier:
     def with_platform(self, name: str, x: float, y: float, angle: float, length: float) -> Level | None:
         """The level with a platform `name` added (centre, angle in degrees, length), if
         every layout edge still holds and nothing overlaps."""
-        platform = LevelObject("Platform", "Platform", round(x, 5), round(y, 5), round(angle, 3), scale_x=round(length / PLATFORM_BASE, 5), scale_y=round(PLATFORM_THICKNESS / PLATFORM_BASE, 5), name=name)
+        platform = LevelObject("Platform", "Platform", level_number(x), level_number(y), round(angle, 3), scale_x=level_number(length / PLATFORM_BASE), scale_y=level_number(PLATFORM_THICKNESS / PLATFORM_BASE), name=name)
         candidate = attrs.evolve(self.level, objects=self.level.objects + (platform,))
         return candidate if self.consistent(candidate) else None
 
