@@ -81,3 +81,34 @@ def test_records_of_a_changed_scenario_or_time_budget_are_made_again(tmp_path):
     source.write_text(changed)
     run = run_physc("eval", source, "--tasks", "1", "--time-budget", "59", "--out", out)
     assert run.status == 0 and "resuming" not in run.stderr
+
+
+def test_records_made_by_other_code_are_made_again(tmp_path, monkeypatch):
+    from physc.evaluation import run as evaluation_run
+
+    assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
+    assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path).stderr.count("resuming: 1 of 1") == 1
+    monkeypatch.setattr(evaluation_run, "code_fingerprint", lambda domain: "edited")
+    run = run_physc("eval", SF, "--tasks", "1", "--out", tmp_path)
+    assert run.status == 0 and "resuming" not in run.stderr
+    (record,) = records(tmp_path).values()
+    assert record["settings"]["code"] == "edited"
+
+
+def test_the_code_fingerprint_follows_python_source_only(tmp_path):
+    from physc.evaluation.run import code_fingerprint, source_fingerprint
+
+    package = tmp_path / "plugin"
+    (package / "sub").mkdir(parents=True)
+    (package / "__init__.py").write_text("X = 1\n")
+    (package / "sub" / "rules.py").write_text("Y = 2\n")
+    before = source_fingerprint(package)
+    (package / "README.md").write_text("notes")
+    assert source_fingerprint(package) == before
+    (package / "sub" / "rules.py").write_text("Y = 3\n")
+    edited = source_fingerprint(package)
+    assert edited != before
+    (package / "sub" / "rules.py").rename(package / "rules.py")  # same content, elsewhere
+    assert source_fingerprint(package) != edited
+    assert source_fingerprint(package / "__init__.py") != source_fingerprint(package)  # one module's file
+    assert code_fingerprint("angrybirds") == code_fingerprint("angrybirds")

@@ -4,14 +4,17 @@ Each task is one (scenario, seed) pair, seed = base seed + index. Its record is
 appended to DIR/records.jsonl as soon as it is done (one JSON object a line,
 flushed), so a killed run resumes where it stopped: tasks with a record are not
 done again, unless the record was made with other settings (the generation settings,
-the scenario as written, physc's version): those are made again. A task's record
+the scenario as written, the source code of physc and of the scenario's domain plugin):
+those are made again. A task's record
 depends only on its scenario and seed, never on the process that made it, so the
 results do not depend on --jobs.
 """
 
 from __future__ import annotations
 
+import functools
 import hashlib
+import importlib.util
 import json
 import random
 import time
@@ -24,7 +27,7 @@ from physc import __version__
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
-from physc.domains import load_domain
+from physc.domains import installed_domains, load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
 from physc.files import ensure_folder
@@ -41,6 +44,7 @@ class Job:
     time_budget: float
     min_robustness: int = MIN_ROBUSTNESS  # see Pipeline
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
+    code: str = ""  # of the code that generates and measures it (code_fingerprint)
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -50,7 +54,13 @@ class Job:
     def settings(self) -> dict:
         """What a task's record depends on besides its key: a record made with other
         settings is stale."""
-        return {"time_budget": self.time_budget, "min_robustness": self.min_robustness, "scenario": self.fingerprint, "physc": __version__}
+        return {
+            "time_budget": self.time_budget,
+            "min_robustness": self.min_robustness,
+            "scenario": self.fingerprint,
+            "physc": __version__,
+            "code": self.code,
+        }
 
 
 def scenario_fingerprint(scenario) -> str:
@@ -58,6 +68,37 @@ def scenario_fingerprint(scenario) -> str:
     written: spans, the file's path, layout and comments do not count)."""
     data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.eq)
     return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()[:16]
+
+
+def source_fingerprint(where: Path) -> str:
+    """A hash of the Python source at `where`, a module's file or a package's folder:
+    every .py file's path (relative to the folder) and content. Anything else (docs,
+    caches, data) does not count."""
+    files, folder = ([where], where.parent) if where.is_file() else (sorted(where.rglob("*.py")), where)
+    digest = hashlib.sha256()
+    for path in files:
+        digest.update(path.relative_to(folder).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+@functools.cache
+def code_fingerprint(domain: str) -> str:
+    """A hash of the code a task of `domain` depends on: physc's own source and, for a
+    domain that a third-party package brings, that package's. Records made by other code
+    are made again, so a run resumed after an edit to the generator never mixes old
+    tasks with new ones."""
+    packages = {"physc"}
+    entry_point = installed_domains().get(domain)
+    if entry_point is not None:
+        packages.add(entry_point.module.split(".")[0])
+    parts = []
+    for package in sorted(packages):
+        spec = importlib.util.find_spec(package)
+        if spec is None:
+            continue
+        where = list(spec.submodule_search_locations or []) or ([spec.origin] if spec.has_location else [])
+        parts += [f"{package}:{source_fingerprint(Path(place))}" for place in where]
+    return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:16]
 
 
 def evaluate(job: Job) -> dict:
@@ -115,8 +156,10 @@ def jobs_for(
             problems.append((path, analysis, errors))
             continue
         for scenario in analysis.scenarios:
-            fingerprint = scenario_fingerprint(scenario)
-            jobs += [Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint) for index in range(tasks)]
+            fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain)
+            jobs += [
+                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code) for index in range(tasks)
+            ]
     return jobs, problems
 
 
