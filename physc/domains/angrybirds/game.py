@@ -191,9 +191,8 @@ class Game:
         `values`: the state of each body, NaN for the bodies already gone (no test holds for NaN)."""
         if self.spent and not self.spent.isdisjoint(alive):
             return True
-        left, right = self.rules.world_left, self.rules.world_right
         for v in values:
-            if v[0] < left or v[0] > right:
+            if self._outside(v[0]):
                 return True
         if BIRD in alive and time >= self._bird_checked_from:
             _, _, _, vx, vy, _ = values[0]  # the bird, if any, is the first body
@@ -207,14 +206,18 @@ class Game:
 
     def _gone(self, name: str, x: float, vx: float, vy: float, time: float, damage) -> tuple | None:
         """Why `name` leaves the level now (the kind of destruction and by whom), if it does."""
-        rules = self.rules
         if name in self.spent:
             return ("damage", self._last_attacker(damage, name))
-        if not rules.world_left <= x <= rules.world_right:
+        if self._outside(x):
             return ("out of world", None)
         if name == BIRD and self._bird_done(vx, vy, time):
             return ("removed", None)
         return None
+
+    def _outside(self, x: float) -> bool:
+        """Whether `x` lies beyond the level's left or right edge (never for NaN: a body
+        already gone)."""
+        return x < self.rules.world_left or x > self.rules.world_right
 
     def _bird_done(self, vx: float, vy: float, time: float) -> bool:
         rules = self.rules
