@@ -16,6 +16,7 @@ from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, extent
 from physc.domains.angrybirds.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
+from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.satisfy import STRIKE_AFTER, Attempt, Satisfier, _placed, _span
 
 
@@ -330,6 +331,27 @@ def test_offending_shots_are_watched_for_the_whole_flight():
     offending = s.offending_shot(restriction)
     assert offending is not None and offending.shot.trajectory == "high"
     assert min(v.interaction.time for v in offending.trace.violations) > 4.0
+
+
+def test_an_agent_shot_is_simulated_once_per_level():
+    """The obstruction's check and the shortcut guard try the same shots on the same level:
+    one simulation each; the same level with other names is flown anew."""
+    s = satisfier("F")
+    restriction = next(r for r in s.scenario.restrictions if r.name == "cannotHit" and r.objects[1] == "pig")
+    pig = s.objects["pig"]
+    shots = [shot for _, shot in candidate_shots(pig)]
+    count = s.simulations
+    first = s.offending_shot(restriction)
+    tried = s.simulations - count
+    assert 0 < tried <= len(shots)
+    again = s.offending_shot(restriction)
+    assert s.simulations - count == tried and (first is None) == (again is None)
+    list(s.solving_shots(pig, s.level))
+    assert s.simulations - count == len(shots)  # only the shots not flown yet
+    renamed = attrs.evolve(s.level, objects=tuple(attrs.evolve(o, name=o.name + "_") for o in s.level.objects))
+    assert renamed == s.level  # names do not count in a level's equality ...
+    s.flight(renamed, shots[0])
+    assert s.simulations - count == len(shots) + 1  # ... but a flight records them
 
 
 def test_obstacles_across_go_further_back_and_shorter_when_asked():

@@ -181,7 +181,11 @@ class Game:
     def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, **options) -> Trace:
         """Simulate, then recognise the interactions and check the restrictions
         (`redirects`: the declared bounces, see recognise.violations)."""
-        trace = self.simulate(shot, seconds, **options)
+        return self.judged(self.simulate(shot, seconds, **options), restrictions, redirects)
+
+    def judged(self, trace: Trace, restrictions=(), redirects=None) -> Trace:
+        """`trace`, a simulation of this level, with the interactions recognised in it and
+        the restrictions it violates (what `play` adds to `simulate`)."""
         interactions = recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 

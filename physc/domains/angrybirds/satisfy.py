@@ -175,6 +175,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
+        self._flights: tuple = (None, {})  # (level key, {shot: trace}): see `flight`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
     # ---- the level ---------------------------------------------------------------------
@@ -189,6 +190,20 @@ class Satisfier:
             shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
         )
         return Attempt("", shot, trace, fidelity(self.scenario, trace))
+
+    def flight(self, level: Level, shot: Shot) -> Trace:
+        """The level played with `shot` for SECONDS, ending once it is solved: an agent's
+        shot, as the obstruction's check and the shortcut guard both try them. Simulated
+        once per level and shot (the guard tries, on the same level, the shots the
+        obstruction has just tried; only the current level's flights are kept)."""
+        key = (level, tuple(o.name for o in level.objects))  # a level's equality ignores names
+        if self._flights[0] != key:
+            self._flights = (key, {})
+        flights = self._flights[1]
+        if shot not in flights:
+            self.simulations += 1
+            flights[shot] = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
+        return flights[shot]
 
     def first_target(self) -> LevelObject | None:
         first = self.scenario.interactions[0]
@@ -826,8 +841,7 @@ class Satisfier:
         if obj is None:
             return None
         for label, shot in candidate_shots(obj):
-            self.simulations += 1
-            trace = Game(self.level).play(shot, SECONDS, restrictions=(restriction,), redirects=self.redirects, settle_after_solved=0.0)
+            trace = Game(self.level).judged(self.flight(self.level, shot), (restriction,), self.redirects)
             if trace.violations:
                 return Attempt(label, shot, trace, None)
         return None
@@ -1110,8 +1124,7 @@ class Satisfier:
         for label, shot in candidate_shots(obj):
             if label in skip:
                 continue
-            self.simulations += 1
-            trace = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
+            trace = self.flight(level, shot)
             if trace.solved:
                 yield Attempt(label, shot, trace, None)
 
