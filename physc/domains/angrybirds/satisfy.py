@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import math
 import random
-from collections import Counter
+from collections import Counter, OrderedDict
 from collections.abc import Collection, Sequence
 
 import attrs
@@ -74,6 +74,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
+PLAYED_KEPT = 256  # simulations of the sequence the satisfier keeps (see Satisfier.simulate), ~300 KB each
 REPAIR_ROUNDS = 16  # simulated repair proposals per layout (per 4 interactions for longer chains)
 SCREEN = 4  # a repair proposal is first simulated with the shots that came nearest so far
 PLACES = 14  # places tried per liesOnPath repair
@@ -176,6 +177,7 @@ class Satisfier:
         self.obstacles: list[str] = []
         self.simulations = 0
         self._flights: tuple = (None, {})  # (level key, {shot: trace}): see `flight`
+        self._played: OrderedDict = OrderedDict()  # (level key, shot) -> Attempt: see `simulate`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
     # ---- the level ---------------------------------------------------------------------
@@ -185,11 +187,23 @@ class Satisfier:
 
     # ---- simulation ---------------------------------------------------------------------
     def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
+        """The level (the current one unless given) played with `shot`, judged against the
+        scenario. The last PLAYED_KEPT are kept: the repair search meets the same proposal
+        again after backtracking, a few dozen simulations later."""
+        level = level or self.level
+        key = (level, tuple(o.name for o in level.objects), shot)  # a level's equality ignores names
+        played = self._played.get(key)
+        if played is not None:
+            self._played.move_to_end(key)
+            return played
         self.simulations += 1
-        trace = Game(level or self.level).play(
+        trace = Game(level).play(
             shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
         )
-        return Attempt("", shot, trace, fidelity(self.scenario, trace))
+        played = self._played[key] = Attempt("", shot, trace, fidelity(self.scenario, trace))
+        if len(self._played) > PLAYED_KEPT:
+            self._played.popitem(last=False)
+        return played
 
     def flight(self, level: Level, shot: Shot) -> Trace:
         """The level played with `shot` for SECONDS, ending once it is solved: an agent's
