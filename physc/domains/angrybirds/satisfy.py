@@ -74,7 +74,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
-PLAYED_KEPT = 256  # simulations of the sequence the satisfier keeps (see Satisfier.simulate), ~300 KB each
+KEPT_SIMULATIONS = 256  # the satisfier's last simulations, kept (see Satisfier.kept), ~300 KB each
 REPAIR_ROUNDS = 16  # simulated repair proposals per layout (per 4 interactions for longer chains)
 SCREEN = 4  # a repair proposal is first simulated with the shots that came nearest so far
 PLACES = 14  # places tried per liesOnPath repair
@@ -176,8 +176,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
-        self._flights: tuple = (None, {})  # (level key, {shot: trace}): see `flight`
-        self._played: OrderedDict = OrderedDict()  # (level key, shot) -> Attempt: see `simulate`
+        self._kept: OrderedDict = OrderedDict()  # the last simulations: see `kept`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
     # ---- the level ---------------------------------------------------------------------
@@ -188,36 +187,36 @@ class Satisfier:
     # ---- simulation ---------------------------------------------------------------------
     def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
         """The level (the current one unless given) played with `shot`, judged against the
-        scenario. The last PLAYED_KEPT are kept: the repair search meets the same proposal
-        again after backtracking, a few dozen simulations later."""
+        scenario (the repair search meets the same proposal again after backtracking, a
+        few dozen simulations later: see `kept`)."""
         level = level or self.level
-        key = (level, tuple(o.name for o in level.objects), shot)  # a level's equality ignores names
-        played = self._played.get(key)
-        if played is not None:
-            self._played.move_to_end(key)
-            return played
-        self.simulations += 1
-        trace = Game(level).play(
-            shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
-        )
-        played = self._played[key] = Attempt("", shot, trace, fidelity(self.scenario, trace))
-        if len(self._played) > PLAYED_KEPT:
-            self._played.popitem(last=False)
-        return played
+
+        def play() -> Attempt:
+            trace = Game(level).play(
+                shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
+            )
+            return Attempt("", shot, trace, fidelity(self.scenario, trace))
+
+        return self.kept("play", level, shot, play)
 
     def flight(self, level: Level, shot: Shot) -> Trace:
         """The level played with `shot` for SECONDS, ending once it is solved: an agent's
-        shot, as the obstruction's check and the shortcut guard both try them. Simulated
-        once per level and shot (the guard tries, on the same level, the shots the
-        obstruction has just tried; only the current level's flights are kept)."""
-        key = (level, tuple(o.name for o in level.objects))  # a level's equality ignores names
-        if self._flights[0] != key:
-            self._flights = (key, {})
-        flights = self._flights[1]
-        if shot not in flights:
-            self.simulations += 1
-            flights[shot] = Game(level).simulate(shot, SECONDS, settle_after_solved=0.0)
-        return flights[shot]
+        shot, as the obstruction's check and the shortcut guard both try them (the guard
+        tries, on the same level, the shots the obstruction has just tried: see `kept`)."""
+        return self.kept("flight", level, shot, lambda: Game(level).simulate(shot, SECONDS, settle_after_solved=0.0))
+
+    def kept(self, kind: str, level: Level, shot: Shot, simulated):
+        """`simulated()`, the `kind` of simulation of `level` with `shot`, run once while it
+        is among the last KEPT_SIMULATIONS asked for."""
+        key = (kind, level, tuple(o.name for o in level.objects), shot)  # a level's equality ignores names
+        if key in self._kept:
+            self._kept.move_to_end(key)
+            return self._kept[key]
+        self.simulations += 1
+        result = self._kept[key] = simulated()
+        if len(self._kept) > KEPT_SIMULATIONS:
+            self._kept.popitem(last=False)
+        return result
 
     def first_target(self) -> LevelObject | None:
         first = self.scenario.interactions[0]
