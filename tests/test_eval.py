@@ -59,7 +59,9 @@ def test_records_made_with_other_settings_are_made_again(tmp_path):
     (record,) = records(tmp_path).values()
     assert record["min_robustness"] == 6 and record["robustness"] == [6, 6]
     header, row = (tmp_path / "results.csv").read_text().splitlines()[:2]
-    assert header.endswith(",min_robustness,robustness") and row.endswith(",6,6/6")
+    assert header.endswith(",min_robustness,robustness,layouts_tried,simulations")
+    assert row.endswith(f",6,6/6,{record['layouts_tried']},{record['simulations']}") and record["layouts_tried"] >= 1
+    assert record["simulations"] >= sum(why["simulations"] for why in record["given_up"].values())
 
 
 def test_records_of_a_changed_scenario_or_time_budget_are_made_again(tmp_path):

@@ -99,3 +99,29 @@ def test_a_fragile_chain_compiles_as_a_fallback(tmp_path):
     assert data["robustness"] == [4, 6] and data["validated"] is True
     floor = run_physc(*args, "--min-robustness", "5", "-q", "-o", tmp_path / "five.xml")
     assert floor.status == 3 and "passed 4 of 6 noisy replays (--min-robustness 4 accepts such a one)" in floor.stderr
+
+
+def test_the_task_counts_why_layouts_were_given_up():
+    class Reasons(Scripted):
+        def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+            index = len(self.calls)
+            self.calls.append(accept)
+            if index == 3:
+                parts = Parts(None, None, "", None, (6, 6), (), (), ())
+                return Outcome(True, 5, parts)
+            return Outcome(False, 10 + index, given_up="too fragile" if index == 1 else "not realised")
+
+    task = generate(Reasons([]), 4)
+    assert task.layouts_tried == 4 and task.simulations == 10 + 11 + 12 + 5
+    assert task.given_up == {"not realised": {"layouts": 2, "simulations": 22}, "too fragile": {"layouts": 1, "simulations": 11}}
+
+
+def test_a_failure_names_the_reasons_most_frequent_first():
+    class Reasons(Scripted):
+        def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+            self.calls.append(accept)
+            return Outcome(False, 1, given_up="not realised" if len(self.calls) % 2 == 0 else "broken")
+
+    with pytest.raises(Infeasible) as failure:
+        generate(Reasons([]), 4, layouts=5)
+    assert "; given up: 3 × broken, 2 × not realised" in failure.value.message

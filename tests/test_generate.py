@@ -102,3 +102,22 @@ def test_several_scenarios_into_folders(tmp_path):
 def test_infeasible_scenario_exits_3():
     run = run_physc("compile", EXAMPLES / "infeasible" / "E0801_fall_from_below.phys", "-q", "--color", "never")
     assert run.status == 3 and run.stdout == "" and "error[E0801]" in run.stderr
+
+
+def test_the_task_says_why_earlier_layouts_were_given_up(tmp_path):
+    # SRF seed 3: its first layout's repairs never realise the sequence; the second works.
+    task = tmp_path / "srf.json"
+    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "SRF", "--seed", "3", "--no-validate", "--task", task, "-o", tmp_path / "l.xml")
+    assert run.status == 0, run.stderr
+    data = json.loads(task.read_text())
+    assert data["layouts_tried"] == 2
+    assert list(data["given_up"]) == ["the sequence was not realised"]
+    given_up = data["given_up"]["the sequence was not realised"]
+    assert given_up["layouts"] == 1 and 0 < given_up["simulations"] < data["simulations"]
+    assert "2 layouts (given up: 1 × the sequence was not realised)" in run.stderr
+
+
+def test_a_failure_says_why_its_layouts_were_given_up():
+    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "RRR", "--layouts", "2", "-q", "--color", "never")
+    assert run.status == 3
+    assert "(2 layouts, " in run.stderr and "; given up: 2 × the sequence was not realised" in run.stderr

@@ -14,6 +14,7 @@ from physc.commands.common import (
     reporter,
 )
 from physc.compiler.stages import StageError, Unit, stage
+from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.files import ensure_folder, write_atomic
 from physc.suggest import did_you_mean
@@ -53,6 +54,12 @@ def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | 
     if not many:
         return path
     return str(ensure_folder(path) / f"{name}.{suffix}")
+
+
+def _layouts(task) -> str:
+    """How many layouts were tried, and why those before the one used were given up."""
+    tried = f"{task.layouts_tried} {'layout' if task.layouts_tried == 1 else 'layouts'}"
+    return f"{tried} (given up: {given_up_summary(task.given_up)})" if task.given_up else tried
 
 
 def _robustness(robustness) -> str:
@@ -135,7 +142,7 @@ def cmd_compile(args) -> int:
             print(
                 f"[{index}/{len(selected)}] {ir.name}: {checked_text}; solution {value.solution.aimed_at}; "
                 f"{_robustness(value.robustness)}; "
-                f"{value.layouts_tried} layouts, {value.simulations} simulations, {value.seconds['total']:.2f} s",
+                f"{_layouts(value)}, {value.simulations} simulations, {value.seconds['total']:.2f} s",
                 file=sys.stderr,
                 flush=True,
             )

@@ -21,7 +21,7 @@ from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task, given_up_summary
 from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.dsl.scenario import ScenarioIR
@@ -121,22 +121,20 @@ class Pipeline:
                 return simulations, result, layout
         return None
 
-    def explained(self, failure: Infeasible, nearest: int) -> Infeasible:
-        """The failure, with the most robust fragile solution found and what would accept it."""
-        if not nearest:
-            return failure
-        hint = (
-            f"--min-robustness {nearest} accepts such a one"
-            if nearest < self.min_robustness
-            else "tried again as a fallback, it failed"
-        )
-        return Infeasible(
-            failure.stage,
-            f"{failure.message}; the most robust solution found passed {nearest} of "
-            f"{self.domain.robustness_replays} noisy replays ({hint})",
-            tried=failure.tried,
-            budget=failure.budget,
-        )
+    def explained(self, failure: Infeasible, nearest: int, given_up: dict) -> Infeasible:
+        """The failure, with why the layouts were given up, the most robust fragile solution
+        found and what would accept it."""
+        message = failure.message
+        if given_up:
+            message += f"; given up: {given_up_summary(given_up)}"
+        if nearest:
+            hint = (
+                f"--min-robustness {nearest} accepts such a one"
+                if nearest < self.min_robustness
+                else "tried again as a fallback, it failed"
+            )
+            message += f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} noisy replays ({hint})"
+        return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)
 
     @functools.cached_property
     def task(self) -> Task:
@@ -147,6 +145,7 @@ class Pipeline:
         layouts = simulations = 0
         fragile: list[tuple[int, int, ConcreteLayout]] = []  # (-replays passed, order, layout)
         nearest = 0  # most noisy replays passed by a solution given up as too fragile
+        given_up: dict[str, dict[str, int]] = {}  # why → layouts, simulations (Task.given_up)
         clock = time.perf_counter()
         placements = self.placements()
         while True:
@@ -172,6 +171,9 @@ class Pipeline:
                 failure, used = None, placed.layout
                 break
             nearest = max(nearest, result.nearest)
+            why = given_up.setdefault(getattr(result, "given_up", "") or "not said", {"layouts": 0, "simulations": 0})
+            why["layouts"] += 1
+            why["simulations"] += result.simulations
             if result.nearest >= self.min_robustness:
                 fragile.append((-result.nearest, layouts, placed.layout))
             if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
@@ -189,7 +191,7 @@ class Pipeline:
             fallback = self.fallback(fragile, started)
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
-                raise self.explained(failure, nearest)
+                raise self.explained(failure, nearest, given_up)
             simulated, result, used = fallback
             simulations += simulated
         # The domain's own stages after satisfaction (angrybirds: distract, validate), if it
@@ -215,5 +217,6 @@ class Pipeline:
             layouts_tried=layouts,
             conjunctions_tried=used.conjunctions_tried,
             simulations=simulations,
+            given_up=given_up,
             seconds={k: round(v, 4) for k, v in seconds.items()},
         )

@@ -38,4 +38,14 @@ class Task:
     layouts_tried: int
     conjunctions_tried: int
     simulations: int
+    # Why the layouts tried before the one used were given up (the domain's words) →
+    # {"layouts": how many, "simulations": what they cost}; the fallbacks' second tries are not counted.
+    given_up: dict
     seconds: dict  # stage → time spent
+
+
+def given_up_summary(given_up: dict) -> str:
+    """`Task.given_up` in words, most frequent reason first: "66 × the sequence was not
+    realised, 9 × the solution was too fragile"."""
+    ranked = sorted(given_up.items(), key=lambda item: (-item[1]["layouts"], item[0]))
+    return ", ".join(f"{counts['layouts']} × {why}" for why, counts in ranked)

@@ -40,7 +40,7 @@ METRICS = (
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
-    "min_robustness", "robustness",
+    "min_robustness", "robustness", "layouts_tried", "simulations",
 )
 
 

@@ -122,7 +122,14 @@ def evaluate(job: Job) -> dict:
     except Infeasible as error:
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return record
-    record.update(generated=True, generation_seconds=round(time.perf_counter() - started, 4), robustness=list(task.robustness))
+    record.update(
+        generated=True,
+        generation_seconds=round(time.perf_counter() - started, 4),
+        robustness=list(task.robustness),
+        layouts_tried=task.layouts_tried,
+        simulations=task.simulations,
+        given_up=task.given_up,
+    )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = measure.stability(task.level)
     replay = measure.intended(task.level, task.solution, scenario, rng)

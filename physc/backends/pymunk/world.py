@@ -171,7 +171,7 @@ class PymunkWorld:
         if out is None:
             out = table[rows]
         else:
-            table.take(rows, axis=0, out=out)
+            table.take(rows, 0, out)  # positional: numpy's keywords cost more than the copy here
         if absent is not None:
             out[absent] = np.nan
         return out

@@ -13,6 +13,9 @@ from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.satisfy import Satisfier
 from physc.domains.angrybirds.stability import stability
+
+UNSTABLE = "the level did not stand"
+NOT_VALIDATED = "validation failed"
 from physc.dsl.scenario import ScenarioIR
 
 
@@ -34,6 +37,7 @@ class Outcome:
     simulations: int
     parts: Parts | None = None
     nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
+    given_up: str = ""  # why the layout was given up, when it was
     seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfy
 
 
@@ -44,9 +48,9 @@ def satisfy(
     satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept)
     found = satisfier.run()
     if found is None:
-        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest)
+        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up)
     if not stability(satisfier.level)[0]:
-        return Outcome(False, satisfier.simulations)  # the task does not stand
+        return Outcome(False, satisfier.simulations, given_up=UNSTABLE)
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).
@@ -58,7 +62,7 @@ def satisfy(
     if validate:
         final = satisfier.simulate(attempt.shot)
         if not final.fidelity.valid:
-            return Outcome(False, satisfier.simulations)
+            return Outcome(False, satisfier.simulations, given_up=NOT_VALIDATED)
         validated, trace = True, final.trace
     seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
     shot = attempt.shot

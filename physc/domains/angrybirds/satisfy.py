@@ -98,7 +98,15 @@ LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next en
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 LEG_CUTS = (0.5, 1.0)  # units an earlier leg of a chain of rolling or sliding blocks is tried shorter
 MIN_LEG = 0.6  # a block rolls or slides at least this far before it strikes the next
-NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
+NOISE_STREAMS = ("robustness", "confirmation")
+# Why the satisfier gives a layout up, in the order of its steps.
+NOT_REACHED = "no shot reaches the first target"
+NOT_REALISED = "the sequence was not realised"
+FRAGILE = "the solution was too fragile"
+NOT_OBSTRUCTED = "a forbidden hit could not be blocked"
+OBSTRUCTED_FRAGILE = "the obstacles made the solution fragile"
+BROKEN = "the finished level broke the solution"
+GIVEN_UP = (NOT_REACHED, NOT_REALISED, FRAGILE, NOT_OBSTRUCTED, OBSTRUCTED_FRAGILE, BROKEN)  # the replays a solution is chosen for, and the fresh ones that confirm it
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -176,6 +184,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
+        self.given_up = ""  # why `run` gave the layout up (one of GIVEN_UP), when it did
         self._kept: OrderedDict = OrderedDict()  # the last simulations: see `kept`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
@@ -1206,10 +1215,10 @@ class Satisfier:
         and guard against shortcuts."""
         attempts = self.attempts()
         if not attempts:
-            return None
+            return self.give_up(NOT_REACHED)
         attempts = self.repaired(attempts)
         if attempts is None:
-            return None
+            return self.give_up(NOT_REALISED)
         working = self.working(attempts)
         # The first working candidate that noise does not break, or else its shot moved
         # to the middle of its window of working angles, or the world around it firmed up,
@@ -1236,20 +1245,24 @@ class Satisfier:
                 break
             self.nearest = max(self.nearest, passed)
         else:
-            return None
+            return self.give_up(FRAGILE)
         checked = len(self.obstacles)
         if not self.obstruct(chosen):
-            return None
+            return self.give_up(NOT_OBSTRUCTED)
         if len(self.obstacles) > checked:
             again = min(self.robustness(chosen, stream=stream)[0] for stream in NOISE_STREAMS)
             if again < self.accept:
                 self.nearest = max(self.nearest, again)
-                return None  # the obstacles made the solution fragile
+                return self.give_up(OBSTRUCTED_FRAGILE)
         self.guard_accidents(chosen)
         final = self.simulate(chosen.shot)
         if not final.fidelity.valid:
-            return None
+            return self.give_up(BROKEN)
         return Satisfied(self.level, attrs.evolve(final, label=chosen.label), (passed, total), tuple(self.repairs), tuple(self.obstacles), self.simulations)
+
+    def give_up(self, why: str) -> None:
+        """`run`'s answer for a layout given up: None, with the reason kept in `given_up`."""
+        self.given_up = why
 
     @staticmethod
     def working(attempts: list[Attempt]) -> list[Attempt]:
