@@ -26,6 +26,7 @@ def test_smoke_run_writes_the_report(tmp_path):
     assert any(n.startswith("task_SF_") for n in names)
     report = (tmp_path / "results.md").read_text()
     assert "| Intended solvability (10 noisy replays) | " in report and "(1.00 ± 0.00)" in report
+    assert "| Layouts tried per task | 1.00 ± 0.00 |" in report  # SF's first layouts work
     summary = json.loads((tmp_path / "results.json").read_text())
     assert summary["interactions"]["2"]["generated"] == 2
     (first, second) = records(tmp_path).values()
@@ -115,3 +116,24 @@ def test_the_code_fingerprint_follows_python_source_only(tmp_path):
     assert source_fingerprint(package / "__init__.py") != source_fingerprint(package)  # one module's file
     # The built-in domain is physc's own code: nothing beyond physc's source counts.
     assert code_fingerprint("angrybirds") == code_fingerprint("no such domain")
+
+
+def test_the_report_says_where_the_simulations_went():
+    from physc.evaluation import report
+
+    def record(scenario, layouts, simulations, given_up):
+        return {"scenario": scenario, "interactions": 8, "generated": True, "robustness": [6, 6], "layouts_tried": layouts, "simulations": simulations, "given_up": given_up}
+
+    records = [
+        record("SRF", 3, 100, {"the sequence was not realised": {"layouts": 2, "simulations": 60}}),
+        record("SFR", 2, 300, {"the solution was too fragile": {"layouts": 1, "simulations": 30}}),
+        {"scenario": "RRR", "interactions": 8, "generated": False, "reason": "no layout"},
+        record("SF", 1, 10, {}) | {"interactions": 2},
+    ]
+    summary = report.summarise(records)
+    eight = summary["interactions"][8]
+    assert eight["layouts_tried"] == (2.5, 0.5) and eight["simulations"] == (200, 100)
+    assert eight["given_up"] == {"the sequence was not realised": 0.15, "the solution was too fragile": 0.075}
+    text = report.markdown(summary, "physc eval", 1.0)
+    assert "| Simulations per task | 10 ± 0 | 200 ± 100 |" in text
+    assert "| Simulations on layouts given up: the sequence was not realised | 0.0 % | 15.0 % |" in text

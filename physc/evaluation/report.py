@@ -70,11 +70,49 @@ def summarise(records: list[dict]) -> dict:
         out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
         for metric, _, _ in METRICS:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None])
+        out |= effort(made)
         return out
 
     scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
     counts = {count: stats(rows) for count, rows in sorted(group("interactions").items())}
     return {"scenarios": scenarios, "interactions": counts, "paper": PAPER}
+
+
+def effort(made: list[dict]) -> dict:
+    """What the generated tasks cost (records that carry it): layouts and simulations per task,
+    and the share of the simulations spent on layouts given up, per reason (the task's `given_up`)."""
+    rows = [r for r in made if "given_up" in r]
+    total = sum(r["simulations"] for r in rows)
+    shares: dict[str, float] = {}
+    for r in rows:
+        for why, counts in r["given_up"].items():
+            shares[why] = shares.get(why, 0.0) + (counts["simulations"] / total if total else 0.0)
+    return {
+        "layouts_tried": mean_sd([r["layouts_tried"] for r in rows]),
+        "simulations": mean_sd([r["simulations"] for r in rows]),
+        "given_up": dict(sorted(shares.items(), key=lambda item: -item[1])),
+    }
+
+
+def _effort_lines(summary: dict, counts: list, names: dict) -> list[str]:
+    """The report's table of what generation cost, when the records carry it."""
+    rows = summary["interactions"]
+    if not any(rows[c]["layouts_tried"] for c in counts):
+        return []
+    reasons = list(dict.fromkeys(why for c in counts for why in rows[c]["given_up"]))
+    lines = ["", "## What generation cost (generated tasks)", ""]
+    lines.append("| | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")
+    lines.append("|---|" + "---|" * len(counts))
+    lines.append("| Layouts tried per task | " + " | ".join(fmt(rows[c]["layouts_tried"]) for c in counts) + " |")
+    lines.append("| Simulations per task | " + " | ".join(_whole(rows[c]["simulations"]) for c in counts) + " |")
+    for why in reasons:
+        cells = [f"{100 * rows[c]['given_up'].get(why, 0.0):.1f} %" for c in counts]
+        lines.append(f"| Simulations on layouts given up: {why} | " + " | ".join(cells) + " |")
+    return lines
+
+
+def _whole(pair) -> str:
+    return "–" if pair is None else f"{pair[0]:,.0f} ± {pair[1]:,.0f}"
 
 
 def _generated(row: dict) -> str:
@@ -98,6 +136,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
             cells.append(f"{ours} ({fmt(paper)})" if paper else ours)
         lines.append(f"| {title} | " + " | ".join(cells) + " |")
     lines.append("| Tasks generated | " + " | ".join(_generated(summary["interactions"][c]) for c in counts) + " |")
+    lines += _effort_lines(summary, counts, names)
     lines += ["", "## Per scenario", ""]
     header = ["scenario", "interactions", "generated"] + [title for _, title, _ in METRICS]
     lines.append("| " + " | ".join(header) + " |")
