@@ -19,12 +19,9 @@ import platform
 import statistics
 import time
 
-from physc.backends import BodySpec, Circle
-from physc.domains.angrybirds.catalogue import shape
-from physc.domains.angrybirds.game import BIRD, Game
+from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.world import BIRD_REST
 
 MATERIALS = ("wood", "stone", "ice")
 
@@ -61,9 +58,7 @@ def measure_engine(shot, seconds: float, repeat: int) -> list[float]:
     for _ in range(repeat):
         start = time.perf_counter()
         world = game.build()
-        bird = BodySpec(BIRD, Circle(shape("redBird").width / 2), *BIRD_REST, mass=rules.bird_mass, friction=rules.bird_friction, bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag)
-        world.add(bird)
-        world.set_velocity(BIRD, *shot.velocity())
+        game.launch(world, shot)
         for _ in range(steps):
             world.step(rules.dt)
             world.begun()

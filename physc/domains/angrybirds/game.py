@@ -97,6 +97,14 @@ class Game:
             self.material[obj.name] = _material(obj) if kind == "block" else ""
         return world
 
+    def launch(self, world, shot: Shot) -> None:
+        """Put the bird into `world` (built by `build`) at the slingshot, flying as `shot` sends it."""
+        rules = self.rules
+        bird = BodySpec(BIRD, Circle(shape("redBird").width / 2), *BIRD_REST, mass=rules.bird_mass, friction=rules.bird_friction, bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag)
+        world.add(bird)
+        world.set_velocity(BIRD, *shot.velocity())
+        self.kinds[BIRD] = "bird"
+
     # ---- playing ----------------------------------------------------------------------
     def simulate(
         self,
@@ -120,10 +128,7 @@ class Game:
             invulnerable = 0.0 if shot is not None else rules.invulnerable_seconds
         dynamic = [o.name for o in self.level.objects if self.kinds[o.name] != "platform"]
         if shot is not None:
-            bird = BodySpec(BIRD, Circle(shape("redBird").width / 2), *BIRD_REST, mass=rules.bird_mass, friction=rules.bird_friction, bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag)
-            world.add(bird)
-            world.set_velocity(BIRD, *shot.velocity())
-            self.kinds[BIRD] = "bird"
+            self.launch(world, shot)
             dynamic = [BIRD] + dynamic
         index = {name: i for i, name in enumerate(dynamic)}
         steps = int(round(seconds / rules.dt))

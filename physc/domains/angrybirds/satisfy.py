@@ -98,15 +98,14 @@ LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next en
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 LEG_CUTS = (0.5, 1.0)  # units an earlier leg of a chain of rolling or sliding blocks is tried shorter
 MIN_LEG = 0.6  # a block rolls or slides at least this far before it strikes the next
-NOISE_STREAMS = ("robustness", "confirmation")
-# Why the satisfier gives a layout up, in the order of its steps.
+NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
+# Why the satisfier gives a layout up (`Satisfier.given_up`), in the order of its steps.
 NOT_REACHED = "no shot reaches the first target"
 NOT_REALISED = "the sequence was not realised"
 FRAGILE = "the solution was too fragile"
 NOT_OBSTRUCTED = "a forbidden hit could not be blocked"
 OBSTRUCTED_FRAGILE = "the obstacles made the solution fragile"
 BROKEN = "the finished level broke the solution"
-GIVEN_UP = (NOT_REACHED, NOT_REALISED, FRAGILE, NOT_OBSTRUCTED, OBSTRUCTED_FRAGILE, BROKEN)  # the replays a solution is chosen for, and the fresh ones that confirm it
 SETTLE_MOTION = 0.3  # a roll, slide or fall lasts this long before its target may stand in the way
 
 
@@ -184,7 +183,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
-        self.given_up = ""  # why `run` gave the layout up (one of GIVEN_UP), when it did
+        self.given_up = ""  # why `run` gave the layout up (NOT_REACHED … BROKEN), when it did
         self._kept: OrderedDict = OrderedDict()  # the last simulations: see `kept`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
