@@ -14,6 +14,7 @@ import sys
 from typing import Sequence
 
 from physc import __version__
+from physc.commands import arguments
 from physc.commands.check import cmd_check
 from physc.commands.common import (
     EXIT_INTERNAL,
@@ -72,16 +73,16 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
     compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
     compile_.add_argument(
-        "--layouts", type=int, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
+        "--layouts", type=arguments.count, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
     )
     compile_.add_argument(
-        "--time-budget", type=float, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
+        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
     )
     add_min_robustness(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
-    compile_.add_argument("--seed", type=int, default=0, metavar="N", help="the random seed (default 0)")
+    compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
-        "--budget", type=int, default=50_000, metavar="N", help="clause choices the layout search may try (default 50000)"
+        "--budget", type=arguments.count, default=50_000, metavar="N", help="clause choices the layout search may try (default 50000)"
     )
     compile_.add_argument("--format", choices=("json", "dot", "xml"), help="json (default), dot (Graphviz, for graph stages), xml (levels)")
     compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")

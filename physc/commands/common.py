@@ -50,9 +50,11 @@ def summary(errors: int, warnings: int, files: int) -> str:
 
 
 def add_min_robustness(parser) -> None:
+    from physc.commands.arguments import count
+
     parser.add_argument(
         "--min-robustness",
-        type=int,
+        type=count,
         default=MIN_ROBUSTNESS,
         metavar="K",
         help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
@@ -61,6 +63,11 @@ def add_min_robustness(parser) -> None:
     )
 
 
-def check_min_robustness(value: int) -> None:
-    if value < 1:
-        raise UsageError("--min-robustness takes a whole number of at least 1")
+def check_min_robustness(value: int, domain) -> None:
+    """--min-robustness counts the domain's noisy replays: more than there are cannot be passed."""
+    replays = getattr(domain, "robustness_replays", None)
+    if replays is not None and value > replays:
+        raise UsageError(
+            f"--min-robustness takes a whole number from 1 to {replays} (the noisy replays of domain "
+            f"'{domain.name}'), not {value}"
+        )

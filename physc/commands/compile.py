@@ -77,7 +77,6 @@ def cmd_compile(args) -> int:
     from physc.dsl.frontend import analyze
     from physc.serialize import to_data
 
-    check_min_robustness(args.min_robustness)
     try:
         chosen = stage(args.emit)
     except StageError as error:
@@ -114,10 +113,16 @@ def cmd_compile(args) -> int:
     if status:
         return status
     checked = {s.name: s for s in analysis.scenarios}
+    domains = {}
+    for scenario in selected:
+        name = checked[scenario.name.text].domain
+        if name not in domains:
+            domains[name] = load_domain(name)
+            check_min_robustness(args.min_robustness, domains[name])
     outputs, failures = [], []
     for index, scenario in enumerate(selected, 1):
         ir = checked[scenario.name.text]
-        domain = load_domain(ir.domain)
+        domain = domains[ir.domain]
         pipeline = Pipeline(
             domain,
             ir,

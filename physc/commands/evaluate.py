@@ -8,6 +8,7 @@ import time
 from pathlib import Path
 
 from physc import diagnostics
+from physc.commands import arguments
 from physc.commands.common import (
     EXIT_OK,
     UsageError,
@@ -59,11 +60,11 @@ class _Progress:
 
 def cmd_eval(args) -> int:
     from physc.evaluation.report import write
+    from physc.domains import load_domain
     from physc.evaluation.run import jobs_for, run
 
-    if args.tasks < 1 or args.jobs < 1:
-        raise UsageError("--tasks and --jobs take a whole number of at least 1")
-    check_min_robustness(args.min_robustness)
+    if args.seed + args.tasks - 1 > arguments.MAX_SEED:
+        raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
     jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness)
     if problems:
         report = reporter(args)
@@ -74,6 +75,8 @@ def cmd_eval(args) -> int:
         jobs = [j for j in jobs if j.scenario in args.scenario]
         if not jobs:
             raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
+    for name in sorted({job.domain for job in jobs}):
+        check_min_robustness(args.min_robustness, load_domain(name))
     folder = Path(args.out)
     started = time.perf_counter()
     records = run(jobs, folder, args.jobs, _Progress(args.quiet))
@@ -90,10 +93,10 @@ def add_command(commands, common) -> None:
     parser = commands.add_parser("eval", parents=[common], help="generate tasks and measure them like the paper's results table")
     parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each is evaluated")
     parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
-    parser.add_argument("--tasks", type=int, default=30, metavar="N", help="tasks per scenario (default 30)")
-    parser.add_argument("--jobs", type=int, default=1, metavar="N", help="processes (default 1); results do not depend on it")
-    parser.add_argument("--seed", type=int, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
-    parser.add_argument("--time-budget", type=float, default=300.0, metavar="S", help="seconds per task at most (default 300)")
+    parser.add_argument("--tasks", type=arguments.count, default=30, metavar="N", help="tasks per scenario (default 30)")
+    parser.add_argument("--jobs", type=arguments.count, default=1, metavar="N", help="processes (default 1); results do not depend on it")
+    parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
+    parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds per task at most (default 300)")
     add_min_robustness(parser)
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")

@@ -10,24 +10,20 @@ from __future__ import annotations
 
 import json
 
+from physc.commands import arguments
 from physc.commands.common import EXIT_OK, UsageError, reporter
 from physc.diagnostics import Diagnostic, SourceText
 from physc.files import read_input, write_atomic
 
 
-def parse_shot(text: str | None, angle: float | None):
+def parse_shot(point: tuple[float, float, str] | None, angle: float | None):
+    """The Shot of --shot (already checked by arguments.shot) or --angle, or None."""
     from physc.domains.angrybirds.launch import Shot
 
-    if text is None:
+    if point is None:
         return None if angle is None else Shot(angle=angle)
-    parts = [p.strip() for p in text.split(",")]
-    trajectory = parts[2] if len(parts) == 3 else "low"
-    if len(parts) not in (2, 3) or trajectory not in ("low", "high"):
-        raise UsageError(f"--shot takes X,Y or X,Y,low or X,Y,high, not '{text}'")
-    try:
-        return Shot(target=(float(parts[0]), float(parts[1])), trajectory=trajectory)
-    except ValueError:
-        raise UsageError(f"--shot takes numbers: X,Y[,low|high], not '{text}'") from None
+    x, y, trajectory = point
+    return Shot(target=(x, y), trajectory=trajectory)
 
 
 def load_level(args):
@@ -157,9 +153,12 @@ def add_commands(commands, common) -> None:
     def level_arguments(parser):
         parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
         shot = parser.add_mutually_exclusive_group()
-        shot.add_argument("--shot", metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory; write --shot=-9,0.5 for a negative X")
-        shot.add_argument("--angle", type=float, metavar="DEG", help="shoot at a release angle (degrees)")
-        parser.add_argument("--seconds", type=float, default=10.0, metavar="S", help="simulated time at most (default 10)")
+        shot.add_argument("--shot", type=arguments.shot, metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory; write --shot=-9,0.5 for a negative X")
+        shot.add_argument("--angle", type=arguments.angle, metavar="DEG", help="shoot at a release angle (degrees)")
+        parser.add_argument(
+            "--seconds", type=arguments.seconds, default=10.0, metavar="S",
+            help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
+        )
         parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")
         parser.add_argument("--backend", default="pymunk", help="the physics backend (default pymunk)")
 

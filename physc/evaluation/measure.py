@@ -57,8 +57,10 @@ def intended(level: Level, solution, scenario, rng: random.Random) -> dict:
     }
 
 
-def accidental(level: Level, solution_target: str) -> tuple[float, int]:
-    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it."""
+def accidental(level: Level, solution_target: str) -> tuple[float | None, int]:
+    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it,
+    and the number of plays. None when the agent found no play (no point of interest within
+    reach): a fraction of nothing is not 0, and must not pull a mean down."""
     plays = solved = 0
     for obj in agent_targets(level, solution_target):
         points = points_of_interest(obj)
@@ -70,4 +72,4 @@ def accidental(level: Level, solution_target: str) -> tuple[float, int]:
                 plays += 1
                 trace = Game(level).simulate(Shot(target=(x, y), trajectory=trajectory), SECONDS, settle_after_solved=0.0)
                 solved += trace.solved
-    return (solved / plays if plays else 0.0), plays
+    return (solved / plays if plays else None), plays

@@ -51,6 +51,12 @@ def mean_sd(values) -> tuple[float, float] | None:
     return statistics.mean(values), statistics.pstdev(values) if len(values) > 1 else 0.0
 
 
+def measured(record: dict, metric: str) -> bool:
+    """Whether the record has a figure for the metric: accidental solvability needs at least
+    one play of the agent (records written before it was None for no play say 0.0)."""
+    return metric != "accidental" or record.get("agent_plays") != 0
+
+
 def fmt(pair) -> str:
     return "–" if pair is None else f"{pair[0]:.2f} ± {pair[1]:.2f}"
 
@@ -69,7 +75,8 @@ def summarise(records: list[dict]) -> dict:
         fallbacks = sum(1 for r in made if r.get("robustness") and r["robustness"][0] < r["robustness"][1])
         out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
         for metric, _, _ in METRICS:
-            out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None])
+            out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
+        out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
         return out
 
@@ -136,6 +143,9 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
             cells.append(f"{ours} ({fmt(paper)})" if paper else ours)
         lines.append(f"| {title} | " + " | ".join(cells) + " |")
     lines.append("| Tasks generated | " + " | ".join(_generated(summary["interactions"][c]) for c in counts) + " |")
+    unplayed = [summary["interactions"][c].get("no_agent_play", 0) for c in counts]
+    if any(unplayed):
+        lines.append("| Tasks where the agent found no play (no accidental solvability) | " + " | ".join(map(str, unplayed)) + " |")
     lines += _effort_lines(summary, counts, names)
     lines += ["", "## Per scenario", ""]
     header = ["scenario", "interactions", "generated"] + [title for _, title, _ in METRICS]

@@ -45,6 +45,7 @@ class Job:
     min_robustness: int = MIN_ROBUSTNESS  # see Pipeline
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
     code: str = ""  # of the code that generates and measures it (code_fingerprint)
+    domain: str = ""  # the scenario's domain
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -142,7 +143,7 @@ def evaluate(job: Job) -> dict:
         intended_noisy=replay["noisy_solved"],
         fidelity_exact=replay["exact_faithful"],
         fidelity_noisy=replay["noisy_faithful"],
-        accidental=round(accidental, 5),
+        accidental=None if accidental is None else round(accidental, 5),
         agent_plays=plays,
         trace=replay["trace"],
         solution=to_data(task.solution),
@@ -165,7 +166,8 @@ def jobs_for(
         for scenario in analysis.scenarios:
             fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain)
             jobs += [
-                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code) for index in range(tasks)
+                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain)
+                for index in range(tasks)
             ]
     return jobs, problems
 

@@ -1,0 +1,103 @@
+"""Typed command-line values: every numeric option is checked where it is parsed.
+
+Each function here is an argparse `type=`: it turns the text of an option into its
+value or raises `argparse.ArgumentTypeError` with a sentence saying what the option
+takes, so a careless argument (`--seconds nan`, `--layouts -5`, `--shot=1e999,0`) ends
+as a usage error, exit status 2, before any work starts. The limits are the ones the
+README documents.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+MAX_SECONDS = 60.0  # simulated seconds of one play at most (memory grows with it)
+MAX_COORDINATE = 1000.0  # |x|, |y| of a shot's target point, in level units
+MAX_SEED = 2**63 - 1
+MAX_COUNT = 10**9  # any count option: more is a typo, never a plan
+MAX_TIME_BUDGET = 7 * 24 * 3600.0  # a week
+
+
+def _finite(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"'{text}' is not a finite number")
+    return value
+
+
+def _whole(text: str) -> int:
+    try:
+        return int(text, 10)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+
+
+def seconds(text: str) -> float:
+    """Simulated seconds: more than 0 and at most MAX_SECONDS."""
+    value = _finite(text)
+    if not 0 < value <= MAX_SECONDS:
+        raise argparse.ArgumentTypeError(f"takes seconds more than 0 and at most {MAX_SECONDS:g}, not {text}")
+    return value
+
+
+def time_budget(text: str) -> float:
+    """Wall-clock seconds per task: more than 0 and at most a week."""
+    value = _finite(text)
+    if not 0 < value <= MAX_TIME_BUDGET:
+        raise argparse.ArgumentTypeError(f"takes seconds more than 0 and at most {MAX_TIME_BUDGET:g} (a week), not {text}")
+    return value
+
+
+def count(text: str) -> int:
+    """A whole number of at least 1 (layouts, tasks, jobs, clause choices)."""
+    value = _whole(text)
+    if not 1 <= value <= MAX_COUNT:
+        raise argparse.ArgumentTypeError(f"takes a whole number from 1 to {MAX_COUNT:,}, not {text}")
+    return value
+
+
+def seed(text: str) -> int:
+    """A random seed: a whole number from 0 to 2**63 - 1."""
+    value = _whole(text)
+    if not 0 <= value <= MAX_SEED:
+        raise argparse.ArgumentTypeError(f"takes a whole number from 0 to 2**63 - 1, not {text}")
+    return value
+
+
+def angle(text: str) -> float:
+    """A release angle in degrees, from -90 to 90 (the slingshot shoots to the right)."""
+    value = _finite(text)
+    if not -90 <= value <= 90:
+        raise argparse.ArgumentTypeError(f"takes degrees from -90 to 90, not {text}")
+    return value
+
+
+def shot(text: str) -> tuple[float, float, str]:
+    """X,Y[,low|high]: a target point within MAX_COORDINATE and a trajectory."""
+    parts = [p.strip() for p in text.split(",")]
+    trajectory = parts[2] if len(parts) == 3 else "low"
+    if len(parts) not in (2, 3) or trajectory not in ("low", "high"):
+        raise argparse.ArgumentTypeError(f"takes X,Y or X,Y,low or X,Y,high, not '{text}'")
+    point = []
+    for part in parts[:2]:
+        value = _finite(part)
+        if abs(value) > MAX_COORDINATE:
+            raise argparse.ArgumentTypeError(f"takes coordinates from -{MAX_COORDINATE:g} to {MAX_COORDINATE:g}, not {part}")
+        point.append(value)
+    return point[0], point[1], trajectory
+
+
+def min_robustness(replays: int):
+    """--min-robustness: a whole number from 1 to the domain's noisy replays."""
+
+    def parse(text: str) -> int:
+        value = _whole(text)
+        if not 1 <= value <= replays:
+            raise argparse.ArgumentTypeError(f"takes a whole number from 1 to {replays} (the noisy replays), not {text}")
+        return value
+
+    return parse
