@@ -13,11 +13,12 @@ import os
 import sys
 from typing import Sequence
 
-from physc import __version__
+from physc import __version__, budget
 from physc.commands import arguments
 from physc.commands.check import cmd_check
 from physc.commands.common import (
     EXIT_INTERNAL,
+    EXIT_INTERRUPTED,
     EXIT_OK,
     EXIT_USAGE,
     Parser,
@@ -110,7 +111,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"physc {args.command}: error: {error}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
-        return 130
+        budget.stopped()
+        print("physc: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     except BrokenPipeError:
         # The reader went away (`physc … | head`): not an error of ours.
         devnull = os.open(os.devnull, os.O_WRONLY)

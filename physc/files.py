@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import errno
 import os
+import stat
 import tempfile
 from pathlib import Path
 
@@ -41,18 +43,65 @@ def ensure_folder(path: str | os.PathLike) -> Path:
     return folder
 
 
-def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
-    """Write to a temporary file beside `path`, then rename it into place (OutputError
-    when that cannot be done; nothing half-written is left)."""
+def check_output(path: str | os.PathLike, folder: bool = False) -> None:
+    """Fail now, before any work, if `path` cannot be written (OutputError): a missing
+    or unwritable folder, a directory where a file is wanted (or the reverse), something
+    that is neither a file nor a device or FIFO to write to. A path that does not exist
+    yet is fine where its folder takes new files."""
+    target = Path(os.path.realpath(path))  # a symlink is written through
+    if folder:
+        if target.exists() and not target.is_dir():
+            raise OutputError(path, NotADirectoryError(errno.ENOTDIR, "it is not a folder"))
+        parent = target
+        while not parent.exists():
+            parent = parent.parent
+        _check_folder(path, parent)
+        return
+    if target.is_dir():
+        raise OutputError(path, IsADirectoryError(errno.EISDIR, "it is a directory"))
+    if target.exists() and not target.is_file():
+        mode = target.stat().st_mode
+        if not (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+            raise OutputError(path, OSError(errno.EINVAL, "it is neither a file nor a device or FIFO"))
+        if not os.access(target, os.W_OK):
+            raise OutputError(path, PermissionError(errno.EACCES, "Permission denied"))
+        return
+    if not target.parent.is_dir():
+        raise OutputError(path, FileNotFoundError(errno.ENOENT, f"no folder {target.parent}"))
+    _check_folder(path, target.parent)
+
+
+def _check_folder(path, folder: Path) -> None:
+    """Whether a file can be made in `folder` (tried: permissions alone say nothing to root
+    on a read-only file system)."""
     try:
-        _write_atomic(path, data)
+        descriptor, temporary = tempfile.mkstemp(prefix=".physc-check.", dir=folder)
+    except OSError as error:
+        raise OutputError(path, error) from None
+    os.close(descriptor)
+    os.unlink(temporary)
+
+
+def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
+    """Write `data` to `path` whole or not at all (OutputError when that cannot be done):
+    a regular file by a temporary file beside it renamed into place; through a symlink to
+    its target; a device or FIFO (`/dev/stdout`, a pipe) in place, never replaced."""
+    payload = data.encode("utf-8") if isinstance(data, str) else data
+    target = Path(os.path.realpath(path))
+    try:
+        if target.exists() and not target.is_file() and not target.is_dir():
+            mode = target.stat().st_mode
+            if not (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+                raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
+            with open(target, "wb") as handle:
+                handle.write(payload)
+            return
+        _write_atomic(target, payload)
     except OSError as error:
         raise OutputError(path, error) from None
 
 
-def _write_atomic(path, data) -> None:
-    target = Path(path)
-    payload = data.encode("utf-8") if isinstance(data, str) else data
+def _write_atomic(target: Path, payload: bytes) -> None:
     descriptor, temporary = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent or ".")
     try:
         with os.fdopen(descriptor, "wb") as handle:

@@ -30,7 +30,13 @@ def test_smoke_run_writes_the_report(tmp_path):
     summary = json.loads((tmp_path / "results.json").read_text())
     assert summary["interactions"]["2"]["generated"] == 2
     (first, second) = records(tmp_path).values()
-    assert first["stable"] and first["generated"] and 0 <= first["accidental"] <= 1
+    assert first["stable"] and first["generated"]
+    # SF seed 0: the agent finds no point of interest in reach, so no play and no figure
+    # (a fraction of nothing is not 0, and must not pull the mean down).
+    assert first["agent_plays"] == 0 and first["accidental"] is None
+    assert second["agent_plays"] > 0 and 0 <= second["accidental"] <= 1
+    assert summary["interactions"]["2"]["accidental"] == [second["accidental"], 0.0]
+    assert "| Tasks where the agent found no play (no accidental solvability) | 1 |" in report
 
 
 def test_results_do_not_depend_on_jobs(tmp_path):

@@ -12,6 +12,7 @@ from physc.compiler.task import MIN_ROBUSTNESS
 from physc.diagnostics import Diagnostic
 
 EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
+EXIT_INTERRUPTED = 130  # Ctrl-C: 128 + SIGINT, as shells report it
 
 
 class UsageError(Exception):

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import json
+import os
 import sys
 
-from physc import diagnostics
+from physc import budget, diagnostics
 from physc.commands.common import (
     EXIT_INFEASIBLE,
     EXIT_OK,
@@ -16,7 +17,8 @@ from physc.commands.common import (
 from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
-from physc.files import ensure_folder, write_atomic
+from physc.compiler.infeasible import CLAUSE_BUDGET, LAYOUT_BUDGET, PLACEMENT_BUDGET, TIME_BUDGET, readable
+from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
 
@@ -32,12 +34,11 @@ def _infeasible(error, scenario) -> Diagnostic:
             else:
                 notes.append(Label(scenario.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
     code = "E0802" if error.budget else "E0801"
-    tried = f"; {error.tried} conjunctions tried" if error.tried else ""
-    help_text = (
-        "these layout constraints cannot all hold: change or remove one of the terms they come from"
-        if error.conflicts
-        else "try another --seed or a larger --budget, or simplify the scenario"
-    )
+    tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
+    if error.conflicts:
+        help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
+    else:
+        help_text = BUDGET_HELP.get(error.budget, "try another --seed, or simplify the scenario")
     return Diagnostic(
         code,
         f"no task for scenario '{scenario.name.text}': {error.message} (stage {error.stage}{tried})",
@@ -47,6 +48,17 @@ def _infeasible(error, scenario) -> Diagnostic:
     )
 
 
+# What would help when a budget ran out (Infeasible.budget names it).
+BUDGET_HELP = {
+    CLAUSE_BUDGET: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
+    LAYOUT_BUDGET: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
+    TIME_BUDGET: "the time ran out: allow more with --time-budget, or try another --seed",
+    PLACEMENT_BUDGET: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
+}
+PROGRESS_EVERY = 5.0  # seconds between progress lines
+FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}
+
+
 def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | None:
     """A file path; with several scenarios, `path` is a folder and the file is NAME.suffix."""
     if path is None:
@@ -54,6 +66,22 @@ def _destination(path: str | None, many: bool, name: str, suffix: str) -> str | 
     if not many:
         return path
     return str(ensure_folder(path) / f"{name}.{suffix}")
+
+
+def _check_outputs(args, many: bool, level_files: bool) -> None:
+    """Every output path is checked before the work starts. With several scenarios, each
+    of -o (levels), --task and --png names a folder that gets one NAME.xml/.json/.png per
+    scenario; a file's name there is a mistake, not a folder to make."""
+    for option, path in (("-o", args.output), ("--task", args.task), ("--png", args.png)):
+        if path is None:
+            continue
+        folder = many and (option != "-o" or level_files)
+        if folder and (os.path.isfile(path) or (not os.path.exists(path) and path.lower().endswith(FILE_SUFFIXES[option]))):
+            raise UsageError(
+                f"several scenarios make several files: {option} must name a folder (each file is named after its "
+                f"scenario), not the file '{path}'; or choose one scenario with -s NAME"
+            )
+        check_output(path, folder=folder)
 
 
 def _layouts(task) -> str:
@@ -66,6 +94,24 @@ def _robustness(robustness) -> str:
     passed, total = robustness
     text = f"{passed} of {total} noisy replays"
     return text if passed == total else text + " (a fallback: --min-robustness)"
+
+
+def _progress(prefix: str):
+    """A progress line on stderr every PROGRESS_EVERY seconds of a long generation: layouts
+    tried, simulations, and how far the best simulation got."""
+    shown = [0.0]
+
+    def show(progress) -> None:
+        if progress.seconds - shown[0] >= PROGRESS_EVERY:
+            shown[0] = progress.seconds
+            print(
+                f"{prefix}: {progress.layouts} layouts tried, {progress.simulations} simulations, {progress.seconds:.0f} s; "
+                f"best so far: {progress.best} of {progress.interactions} interactions in order",
+                file=sys.stderr,
+                flush=True,
+            )
+
+    return show
 
 
 def cmd_compile(args) -> int:
@@ -113,6 +159,9 @@ def cmd_compile(args) -> int:
     if status:
         return status
     checked = {s.name: s for s in analysis.scenarios}
+    if chosen.name == "level" and many and not args.output:
+        raise UsageError("several scenarios make several levels: name a folder with -o")
+    _check_outputs(args, many, chosen.name == "level")
     domains = {}
     for scenario in selected:
         name = checked[scenario.name.text].domain
@@ -133,12 +182,18 @@ def cmd_compile(args) -> int:
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
+            progress=None if args.quiet else _progress(f"[{index}/{len(selected)}] {ir.name}"),
         )
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
-            value = chosen.run(Unit(scenario, ir), pipeline)
+            with budget.interruptible(), budget.deadline(args.time_budget):
+                value = chosen.run(Unit(scenario, ir), pipeline)
         except Infeasible as error:
+            failures.append(_infeasible(error, scenario))
+            continue
+        except budget.OutOfTime:
+            error = Infeasible(chosen.name, f"the time budget of {args.time_budget:g} s ran out", budget=TIME_BUDGET)
             failures.append(_infeasible(error, scenario))
             continue
         outputs.append((ir.name, domain, value))
@@ -171,8 +226,6 @@ def cmd_compile(args) -> int:
                 write_atomic(_destination(args.output, many, name, "xml"), text)
             elif not many:
                 sys.stdout.write(text)
-        if many and not args.output and outputs:
-            raise UsageError("several scenarios make several levels: name a folder with -o")
         return EXIT_INFEASIBLE if failures else EXIT_OK
     if fmt == "dot":
         text = "".join(value.to_dot() for _, _, value in outputs)

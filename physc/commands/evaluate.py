@@ -9,6 +9,7 @@ from pathlib import Path
 
 from physc import diagnostics
 from physc.commands import arguments
+from physc.files import check_output
 from physc.commands.common import (
     EXIT_OK,
     UsageError,
@@ -65,6 +66,7 @@ def cmd_eval(args) -> int:
 
     if args.seed + args.tasks - 1 > arguments.MAX_SEED:
         raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
+    check_output(args.out, folder=True)
     jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness)
     if problems:
         report = reporter(args)

@@ -10,10 +10,11 @@ from __future__ import annotations
 
 import json
 
+from physc import budget
 from physc.commands import arguments
 from physc.commands.common import EXIT_OK, UsageError, reporter
 from physc.diagnostics import Diagnostic, SourceText
-from physc.files import read_input, write_atomic
+from physc.files import check_output, read_input, write_atomic
 
 
 def parse_shot(point: tuple[float, float, str] | None, angle: float | None):
@@ -74,8 +75,12 @@ def _play(args):
     if level is None:
         return None, None, status
     shot = parse_shot(args.shot, args.angle)
+    if shot is not None and not level.has_birds:
+        help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
+        return None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
-        trace = _game(args, level).play(shot, args.seconds)
+        with budget.interruptible():
+            trace = _game(args, level).play(shot, args.seconds)
     except Unreachable as error:
         raise UsageError(str(error)) from None
     return level, shot, trace
@@ -134,6 +139,7 @@ def cmd_render(args) -> int:
 
     if not args.output.lower().endswith((".png", ".svg")):
         raise UsageError("-o must name a .png or .svg file")
+    check_output(args.output)
     if args.shot is None and args.angle is None:
         level, status = load_level(args)
         if level is None:

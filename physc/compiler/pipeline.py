@@ -16,6 +16,10 @@ import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.dimension_graphs import DimensionGraphs
+from physc import budget
+from physc.compiler.infeasible import LAYOUT_BUDGET as LAYOUTS_RAN_OUT
+from physc.compiler.infeasible import PLACEMENT_BUDGET as PLACEMENTS_RAN_OUT
+from physc.compiler.infeasible import TIME_BUDGET as TIME_RAN_OUT
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
@@ -28,6 +32,17 @@ from physc.dsl.scenario import ScenarioIR
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
+
+
+@attrs.frozen
+class Progress:
+    """How a generation is doing, after each layout given up."""
+
+    layouts: int
+    simulations: int
+    seconds: float
+    best: int  # most interactions of the sequence realised, in order, in one simulation
+    interactions: int
 
 
 @attrs.frozen
@@ -48,6 +63,7 @@ class Pipeline:
         time_budget: float = TIME_BUDGET,
         source: str = "",
         min_robustness: int = MIN_ROBUSTNESS,
+        progress=None,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -63,6 +79,9 @@ class Pipeline:
         # them: no fallbacks.
         self.min_robustness = min_robustness
         self.rng = random.Random(seed)
+        # Called after each layout given up, with a Progress: long generations say how
+        # they are doing instead of one line for minutes.
+        self.progress = progress
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -94,7 +113,7 @@ class Pipeline:
                         f"{consistent} consistent conjunctions were found, but no placement kept the objects "
                         "apart and the bird's targets in reach",
                         tried=graphs.conjunctions_tried,
-                        budget=True,
+                        budget=PLACEMENTS_RAN_OUT,
                     )
         except Infeasible as error:
             if consistent and not error.budget:
@@ -107,44 +126,60 @@ class Pipeline:
             raise
         raise AssertionError("the search ends by raising Infeasible")
 
-    def fallback(self, fragile: list, started: float):
+    def fallback(self, fragile: list):
         """No solution survived every noisy replay: the layouts given up as fragile, most
         robust first, satisfied again accepting min_robustness replays. (simulations, the
         outcome, its layout) of the first that succeeds, or None."""
         simulations = 0
         for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
-            if time.perf_counter() - started > self.time_budget:
-                break
             result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
             simulations += result.simulations
             if result.satisfied:
                 return simulations, result, layout
         return None
 
-    def explained(self, failure: Infeasible, nearest: int, given_up: dict) -> Infeasible:
-        """The failure, with why the layouts were given up, the most robust fragile solution
-        found and what would accept it."""
+    def _out_of_time(self, layouts: int, started: float) -> Infeasible:
+        return Infeasible(
+            "satisfy",
+            f"the time budget of {self.time_budget:g} s ran out after {layouts} "
+            f"{'layout' if layouts == 1 else 'layouts'} ({time.perf_counter() - started:.1f} s)",
+            budget=TIME_RAN_OUT,
+        )
+
+    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0) -> Infeasible:
+        """The failure, with why the layouts were given up, how far the best simulation got,
+        the most robust fragile solution found and what would accept it."""
         message = failure.message
+        if best:
+            message += f"; the best simulation realised {best} of the {len(self.scenario.interactions)} interactions in order"
         if given_up:
             message += f"; given up: {given_up_summary(given_up)}"
         if nearest:
-            hint = (
-                f"--min-robustness {nearest} accepts such a one"
-                if nearest < self.min_robustness
-                else "tried again as a fallback, it failed"
-            )
+            if nearest < self.min_robustness:
+                hint = f"--min-robustness {nearest} accepts such a one"
+            elif failure.budget == TIME_RAN_OUT:
+                hint = "no time was left to try it again as a fallback"
+            else:
+                hint = "tried again as a fallback, it failed"
             message += f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} noisy replays ({hint})"
         return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)
 
     @functools.cached_property
     def task(self) -> Task:
         """Generate the task: layouts one after another until simulation-based
-        satisfaction succeeds, within the budgets of layouts and time."""
+        satisfaction succeeds, within the budgets of layouts and time. The time budget
+        covers everything, the fallbacks included: the work stops at its next stopping
+        point (a simulated step, a clause choice) once the time is spent."""
+        with budget.deadline(self.time_budget):
+            return self._generate()
+
+    def _generate(self) -> Task:
         started = time.perf_counter()
         seconds = {"layout": 0.0, "satisfy": 0.0}
         layouts = simulations = 0
         fragile: list[tuple[int, int, ConcreteLayout]] = []  # (-replays passed, order, layout)
         nearest = 0  # most noisy replays passed by a solution given up as too fragile
+        best = 0  # most interactions of the sequence realised, in order, in any simulation
         given_up: dict[str, dict[str, int]] = {}  # why → layouts, simulations (Task.given_up)
         clock = time.perf_counter()
         placements = self.placements()
@@ -161,12 +196,21 @@ class Pipeline:
                     budget=error.budget,
                 )
                 break
+            except budget.OutOfTime:
+                failure = self._out_of_time(layouts, started)
+                break
             layouts += 1
             seconds["layout"] += time.perf_counter() - clock
             clock = time.perf_counter()
-            result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
-            seconds["satisfy"] += time.perf_counter() - clock
+            try:
+                result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
+            except budget.OutOfTime:
+                failure = self._out_of_time(layouts, started)
+                break
+            finally:
+                seconds["satisfy"] += time.perf_counter() - clock
             simulations += result.simulations
+            best = max(best, getattr(result, "best", 0))
             if result.satisfied:
                 failure, used = None, placed.layout
                 break
@@ -176,22 +220,27 @@ class Pipeline:
             why["simulations"] += result.simulations
             if result.nearest >= self.min_robustness:
                 fragile.append((-result.nearest, layouts, placed.layout))
-            if layouts >= self.layout_budget or time.perf_counter() - started > self.time_budget:
+            if self.progress is not None:
+                self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
+            if layouts >= self.layout_budget:
                 failure = Infeasible(
                     "satisfy",
                     f"no layout realised the sequence in simulation within the budget "
                     f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
                     tried=placed.layout.conjunctions_tried,
-                    budget=True,
+                    budget=LAYOUTS_RAN_OUT,
                 )
                 break
             clock = time.perf_counter()
         if failure is not None:
             clock = time.perf_counter()
-            fallback = self.fallback(fragile, started)
+            try:
+                fallback = None if failure.budget == TIME_RAN_OUT else self.fallback(fragile)
+            except budget.OutOfTime:
+                failure, fallback = self._out_of_time(layouts, started), None
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
-                raise self.explained(failure, nearest, given_up)
+                raise self.explained(failure, nearest, given_up, best)
             simulated, result, used = fallback
             simulations += simulated
         # The domain's own stages after satisfaction (angrybirds: distract, validate), if it

@@ -27,7 +27,8 @@ from physc.compiler.dimension_graphs import (
     new_systems,
     relation_constraints,
 )
-from physc.compiler.infeasible import Infeasible
+from physc import budget
+from physc.compiler.infeasible import CLAUSE_BUDGET, Infeasible, readable
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
@@ -90,6 +91,7 @@ class ToDimensionGraphs:
                     nodes += 1
                     if nodes > self.node_budget:
                         raise _BudgetSpent()
+                    budget.check()
                     constraints = clause_constraints(clause, relation, bodies, parameters)
                     try:
                         following = _apply(current, constraints)
@@ -118,9 +120,9 @@ class ToDimensionGraphs:
             except _BudgetSpent:
                 raise Infeasible(
                     self.name,
-                    f"the search budget ran out after {tried} of {dnf.size} conjunctions",
+                    f"the search budget ran out after {readable(tried)} of {readable(dnf.size)} conjunctions",
                     tried=tried,
-                    budget=True,
+                    budget=CLAUSE_BUDGET,
                 ) from None
         if found:
             raise Infeasible(
@@ -131,7 +133,7 @@ class ToDimensionGraphs:
         conflicts = self.explain(dnf, bodies)
         raise Infeasible(
             self.name,
-            f"no conjunction of the {dnf.size} is consistent (shapes drawn {SHAPE_DRAWS} times)",
+            f"no conjunction of the {readable(dnf.size)} is consistent (shapes drawn {SHAPE_DRAWS} times)",
             conflicts=conflicts,
             tried=tried,
         )
@@ -140,16 +142,17 @@ class ToDimensionGraphs:
         """A minimal set of layout edges whose QSRs cannot all hold (deletion-based)."""
         parameters = self.domain.layout_parameters
         systems, _ = self.base(bodies)
-        budget = [self.node_budget]
+        left = [self.node_budget]
 
         def feasible(clauses: list[QsrClause]) -> bool:
             def walk(depth, current):
                 if depth == len(clauses):
                     return True
                 for relation in clauses[depth].relations:
-                    budget[0] -= 1
-                    if budget[0] < 0:
+                    left[0] -= 1
+                    if left[0] < 0:
                         raise _BudgetSpent()
+                    budget.check()
                     try:
                         following = _apply(current, clause_constraints(clauses[depth], relation, bodies, parameters))
                     except Inconsistent:

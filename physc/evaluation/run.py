@@ -27,6 +27,7 @@ from physc import __version__
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
+from physc import budget
 from physc.domains import installed_domains, load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
@@ -152,6 +153,12 @@ def evaluate(job: Job) -> dict:
     return record
 
 
+def interruptible_evaluate(job: Job) -> dict:
+    """`evaluate`, stopping promptly on Ctrl-C (see physc.budget), in a worker or not."""
+    with budget.interruptible():
+        return evaluate(job)
+
+
 def jobs_for(
     files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS
 ) -> tuple[list[Job], list]:
@@ -210,11 +217,18 @@ def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict
 
         if workers <= 1:
             for job in todo:
-                keep(evaluate(job))
+                keep(interruptible_evaluate(job))
         else:
-            with ProcessPoolExecutor(max_workers=workers) as pool:
-                for future in as_completed([pool.submit(evaluate, job) for job in todo]):
+            pool = ProcessPoolExecutor(max_workers=workers)
+            try:
+                for future in as_completed([pool.submit(interruptible_evaluate, job) for job in todo]):
                     keep(future.result())
+            except BaseException:
+                # Ctrl-C reached the workers too (one process group): they stop at their next
+                # stopping point; the jobs not started are dropped, not run.
+                pool.shutdown(wait=True, cancel_futures=True)
+                raise
+            pool.shutdown()
     if progress:
         progress.stop()
     return [records[job.key] for job in jobs if job.key in records]

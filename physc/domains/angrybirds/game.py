@@ -15,6 +15,7 @@ import math
 import attrs
 import numpy as np
 
+from physc import budget
 from physc.backends import BodySpec, Circle, Polygon, load_backend
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
@@ -139,6 +140,7 @@ class Game:
         resting_since = None
         solved_at = None
         for step in range(steps):
+            budget.check()  # Ctrl-C and the time budget stop a simulation between steps
             world.step(rules.dt)
             time = (step + 1) * rules.dt
             for event in world.begun():

@@ -38,6 +38,7 @@ class Outcome:
     parts: Parts | None = None
     nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
     given_up: str = ""  # why the layout was given up, when it was
+    best: int = 0  # most interactions of the sequence realised, in order, in one simulation
     seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfy
 
 
@@ -48,9 +49,9 @@ def satisfy(
     satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept)
     found = satisfier.run()
     if found is None:
-        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up)
+        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up, best=satisfier.best)
     if not stability(satisfier.level)[0]:
-        return Outcome(False, satisfier.simulations, given_up=UNSTABLE)
+        return Outcome(False, satisfier.simulations, given_up=UNSTABLE, best=satisfier.best)
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).
@@ -62,7 +63,7 @@ def satisfy(
     if validate:
         final = satisfier.simulate(attempt.shot)
         if not final.fidelity.valid:
-            return Outcome(False, satisfier.simulations, given_up=NOT_VALIDATED)
+            return Outcome(False, satisfier.simulations, given_up=NOT_VALIDATED, best=satisfier.best)
         validated, trace = True, final.trace
     seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
     shot = attempt.shot
@@ -77,4 +78,4 @@ def satisfy(
         obstacles=found.obstacles,
         distractors=tuple(distractors),
     )
-    return Outcome(True, satisfier.simulations, parts, seconds=seconds)
+    return Outcome(True, satisfier.simulations, parts, seconds=seconds, best=satisfier.best)

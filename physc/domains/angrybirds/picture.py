@@ -90,10 +90,12 @@ def draw_level(level: Level, title: str = "", paths=None, supports=frozenset(), 
 
 
 def save(figure, fmt: str = "png") -> bytes:
-    """The figure as PNG or SVG bytes, without timestamps (same figure, same bytes)."""
+    """The figure as PNG or SVG bytes, without timestamps (same figure, same bytes; SVG's
+    clip-path and glyph ids are random unless salted)."""
     buffer = io.BytesIO()
     metadata = {"Software": None} if fmt == "png" else {"Date": None, "Creator": None}
-    figure.savefig(buffer, format=fmt, metadata=metadata)
+    with plt.rc_context({"svg.hashsalt": "physc"}):
+        figure.savefig(buffer, format=fmt, metadata=metadata)
     plt.close(figure)
     return buffer.getvalue()
 

@@ -183,6 +183,7 @@ class Satisfier:
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
         self.simulations = 0
+        self.best = 0  # most interactions of the sequence realised, in order, in one play
         self.given_up = ""  # why `run` gave the layout up (NOT_REACHED … BROKEN), when it did
         self._kept: OrderedDict = OrderedDict()  # the last simulations: see `kept`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
@@ -205,7 +206,9 @@ class Satisfier:
             )
             return Attempt("", shot, trace, fidelity(self.scenario, trace))
 
-        return self.kept("play", level, shot, play)
+        attempt = self.kept("play", level, shot, play)
+        self.best = max(self.best, attempt.fidelity.matched)
+        return attempt
 
     def flight(self, level: Level, shot: Shot) -> Trace:
         """The level played with `shot` for SECONDS, ending once it is solved: an agent's

@@ -1,0 +1,117 @@
+"""Stopping points for long work: the time budget and Ctrl-C, checked cooperatively.
+
+Long work (a search over conjunctions, simulations step by step) calls `check()` at
+points where stopping is safe. Two things stop it there:
+
+* the **deadline** of the innermost `deadline(seconds)` block: `check()` raises
+  `OutOfTime`, so a budget is kept to within one stopping point (a simulated step, a
+  clause choice) instead of one whole layout or one whole simulation;
+* **Ctrl-C**: inside `interruptible()` SIGINT only records the request, and the next
+  `check()` raises KeyboardInterrupt. Raised at once instead, it could land inside a
+  callback of the physics engine (cffi prints "Exception ignored" and the run goes on)
+  or between an engine call and its bookkeeping. Outside such a block SIGINT raises at
+  once, as Python's default does.
+
+Nothing here is specific to a domain or an engine.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+import time
+
+
+class OutOfTime(Exception):
+    """The time budget of the innermost `deadline` block ran out."""
+
+    def __init__(self, seconds: float):
+        super().__init__(f"the time budget of {seconds:g} s ran out")
+        self.seconds = seconds
+
+
+_deadlines: list[tuple[float, float]] = []  # (monotonic end, budget in seconds), innermost last
+_interrupted = False
+_stopping = False  # a KeyboardInterrupt is on its way up: further Ctrl-Cs add nothing
+_polling = 0  # depth of interruptible() blocks
+
+
+def check() -> None:
+    """Stop here if Ctrl-C was pressed or the innermost deadline has passed."""
+    if _interrupted:
+        _raise_interrupt()
+    if _deadlines:
+        end, seconds = _deadlines[-1]
+        if time.monotonic() > end:
+            raise OutOfTime(seconds)
+
+
+def remaining() -> float:
+    """Seconds left before the innermost deadline (infinite without one)."""
+    if not _deadlines:
+        return float("inf")
+    return _deadlines[-1][0] - time.monotonic()
+
+
+@contextlib.contextmanager
+def deadline(seconds: float):
+    """Work inside the block raises OutOfTime at its next `check()` after `seconds`
+    (or after an enclosing block's deadline, whichever comes first)."""
+    end = time.monotonic() + seconds
+    if _deadlines and _deadlines[-1][0] < end:
+        end, seconds = _deadlines[-1]
+    _deadlines.append((end, seconds))
+    try:
+        yield
+    finally:
+        _deadlines.pop()
+
+
+def _raise_interrupt() -> None:
+    global _interrupted, _stopping
+    _interrupted = False
+    _stopping = True
+    raise KeyboardInterrupt
+
+
+def _on_sigint(signum, frame) -> None:
+    global _interrupted
+    if _stopping:
+        return  # pressed again while stopping: raising now could land in a finaliser
+    if _polling:
+        _interrupted = True
+    else:
+        raise KeyboardInterrupt
+
+
+def stopped() -> None:
+    """The interrupt has reached the top: ignore Ctrl-C from now on (the process is about
+    to exit; one more KeyboardInterrupt during shutdown would only print a traceback)."""
+    global _stopping
+    _stopping = False
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+@contextlib.contextmanager
+def interruptible():
+    """Inside the block Ctrl-C is a request that the next `check()` honours (and the
+    block's end, if no check came). In the main thread only; elsewhere a no-op."""
+    global _polling
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.getsignal(signal.SIGINT)
+    installed = previous in (signal.default_int_handler, _on_sigint)
+    if installed:
+        signal.signal(signal.SIGINT, _on_sigint)
+    _polling += 1
+    try:
+        yield
+    finally:
+        _polling -= 1
+        if installed and not _polling and not _stopping:
+            signal.signal(signal.SIGINT, previous)
+        if _interrupted and not _polling:
+            _raise_interrupt()
