@@ -68,8 +68,13 @@ _CODES = [
     ErrorCode("E0901", "error", "a level file that is not a Science Birds level"),
     ErrorCode("E0902", "error", "a level object with a missing or malformed attribute"),
     ErrorCode("E0903", "error", "a level object or bird of an unknown type"),
+    ErrorCode("E0904", "error", "a level number outside its documented range"),
+    ErrorCode("E0905", "error", "a block whose material is missing or unknown"),
+    ErrorCode("E0906", "error", "a level file larger than physc reads"),
+    ErrorCode("E0907", "error", "a shot asked for on a level without birds"),
     ErrorCode("E0801", "error", "the layout constraints of a scenario cannot hold together", exit_status=3),
     ErrorCode("E0802", "error", "the search budget ran out before a layout was found", exit_status=3),
+    ErrorCode("E0803", "error", "a scenario larger than the layout search takes", exit_status=3),
 ]
 
 CODES: dict[str, ErrorCode] = {entry.code: entry for entry in _CODES}

@@ -8,18 +8,16 @@ import sys
 
 import pytest
 
-from conftest import EXAMPLES, SHARED
+from conftest import EXAMPLES, SCIENCEBIRDS
 
 CASES = [
     ["compile", str(EXAMPLES / "paper" / "15_RRF.phys"), "--emit", "layout", "--seed", "3"],
-    ["trace", str(SHARED / "data" / "sciencebirds" / "phyq-templates" / "3_6_7_1.xml"), "--shot=-3.5,-0.8,high", "--seconds", "6"],
+    ["trace", str(SCIENCEBIRDS / "phyq-templates" / "3_6_7_1.xml"), "--shot=-3.5,-0.8,high", "--seconds", "6"],
 ]
 
 
 @pytest.mark.parametrize("arguments", CASES, ids=["compile", "trace"])
 def test_output_does_not_depend_on_hash_seed(arguments):
-    if not (SHARED / "data").exists() and arguments[0] == "trace":
-        pytest.skip("shared/data is not beside the repository")
     outputs = set()
     for seed in ("0", "1", "12345"):
         environment = dict(os.environ, PYTHONHASHSEED=seed)

@@ -2,7 +2,9 @@
 
 The model keeps what a file says and nothing else: an attribute that is absent
 stays `None` (so `material=""` and no material at all are told apart), and
-numbers are floats. Import → emit → import gives an equal model.
+numbers are floats. Import → emit → import gives an equal model. The one
+reading that is not literal is the game's own: a <TNT> or <Platform> is its
+prefab whatever its `type` says, so `<TNT type="">` has the type TNT here.
 """
 
 from __future__ import annotations
@@ -47,3 +49,8 @@ class Level:
     birds: tuple[str, ...] = ("BirdRed",)
     slingshot: tuple[float, float] = (-12.0, -2.5)
     objects: tuple[LevelObject, ...] = ()
+
+    @property
+    def has_birds(self) -> bool:
+        """Whether there is a bird to shoot (a level without one can still be watched standing)."""
+        return bool(self.birds)

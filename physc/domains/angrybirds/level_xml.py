@@ -1,10 +1,13 @@
 """Reading and writing Science Birds level files.
 
 The importer takes real files as they are: they declare utf-16 but are plain
-ASCII (or UTF-8) without a byte-order mark, which `ElementTree.parse` rejects;
-the text is decoded first (UTF-16 when it really is, by its byte-order mark) and
-parsed from a string. Problems are `LevelError`s with a code and a position,
-never Python exceptions from the XML library.
+ASCII (or UTF-8) without a byte-order mark; the text is decoded first (UTF-16
+when it really is, by its byte-order mark), the declaration blanked out, and the
+text parsed. The parser is lxml's, hardened: no DTD loaded, no entity resolved, no
+network, libxml2's limits on depth and entity amplification; a DOCTYPE is refused
+(a level file has no use for one), and the file's size is checked before parsing.
+lxml also gives each element's line, so every problem is a `LevelError` with a
+code and a position (level_checks.py), never a Python exception.
 
 The emitter writes the exact format of the game's loader with a jinja2 template:
 fixed element order, one element per line, no comments, numbers with a '.' and
@@ -15,108 +18,134 @@ from __future__ import annotations
 
 import functools
 import re
-import xml.etree.ElementTree as ElementTree
 from importlib import resources
 
 import jinja2
 import numpy as np
+from lxml import etree
 
-from physc.domains.angrybirds.catalogue import BIRD_PREFABS, BY_PREFAB
+from physc.domains.angrybirds.catalogue import BY_PREFAB
 from physc.domains.angrybirds.level import ELEMENTS, Camera, Level, LevelObject
+from physc.domains.angrybirds.level_checks import MAX_BODIES, MAX_CAMERA_WIDTH, MAX_WIDTH, LevelError, Source, check_size
 from physc.suggest import did_you_mean
 
+__all__ = ["LevelError", "decode", "emit_level", "parse_level", "read_level"]
 
-class LevelError(Exception):
-    """An unusable level file: `code` is a physc diagnostic code, `line` 1-based or None."""
-
-    def __init__(self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None):
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.line = line
-        self.column = column
-        self.help = help
+_DECLARATION = re.compile(r"^\s*<\?xml[^>]*\?>")
+CAMERA_WIDTHS = f"camera widths are from 0 to {MAX_CAMERA_WIDTH:g}"
 
 
 def decode(data: bytes) -> str:
+    """The text of a level file's bytes: UTF-16 by its byte-order mark, else UTF-8 (ASCII)."""
+    check_size(data)
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):
-        return data.decode("utf-16")
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError:
+            raise LevelError("E0901", "the level file starts as UTF-16 but is not valid UTF-16") from None
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as error:
         raise LevelError("E0901", f"the level file is neither UTF-8 nor UTF-16 (byte 0x{data[error.start]:02x})") from None
 
 
-def _number(element, attribute, required=True):
-    text = element.get(attribute)
-    if text is None:
-        if required:
-            raise LevelError("E0902", f"<{element.tag}> has no '{attribute}' attribute")
-        return None
+def _parser() -> etree.XMLParser:
+    """lxml's parser, made safe for files nobody here wrote: nothing outside the text is read."""
+    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False)
+
+
+def _tree(text: str):
+    """The root element of `text`; E0901 for anything but a plain, well-formed document."""
+    # The declaration (utf-16 in real files) only labels characters already decoded, and lxml
+    # refuses it in a str: it becomes spaces, so that lines and columns stay those of the file.
+    body = _DECLARATION.sub(lambda m: re.sub(r"[^\n]", " ", m.group()), text, count=1)
     try:
-        return float(text)
-    except ValueError:
-        raise LevelError("E0902", f"<{element.tag}> {attribute}=\"{text}\" is not a number") from None
+        root = etree.fromstring(body, _parser())
+    except etree.XMLSyntaxError as error:
+        line, column = error.position if error.position else (None, None)
+        reason = re.sub(r", line \d+, column \d+$", "", error.msg or str(error)).strip()
+        raise LevelError("E0901", f"the level file is not well-formed XML: {reason}", line, column or None) from None
+    except ValueError as error:  # lxml's refusal of characters XML does not allow
+        raise LevelError("E0901", f"the level file is not well-formed XML: {error}") from None
+    if root.getroottree().docinfo.doctype:
+        found = text.find("<!DOCTYPE")
+        line = None if found < 0 else text.count("\n", 0, found) + 1
+        raise LevelError(
+            "E0901",
+            "the level file has a DOCTYPE; level files have no DTD or entities, and physc reads none",
+            line,
+            None if found < 0 else found - (text.rfind("\n", 0, found) + 1) + 1,
+            help="remove the <!DOCTYPE …> declaration",
+        )
+    if root.tag != "Level":
+        raise LevelError("E0901", f"the root element is <{root.tag}>, not <Level>", root.sourceline)
+    return root
+
+
+def _children(element, tag: str):
+    """The child elements named `tag` (comments and processing instructions skipped)."""
+    return [child for child in element if child.tag == tag]
 
 
 def parse_level(text: str) -> Level:
-    # The declaration (utf-16 in real files) only labels bytes we have already decoded.
-    body = re.sub(r"^\s*<\?xml[^>]*\?>", "", text, count=1)
-    try:
-        root = ElementTree.fromstring(body)
-    except ElementTree.ParseError as error:
-        line, column = error.position
-        offset = text.count("\n", 0, len(text) - len(body))  # the removed declaration's lines
-        reason = re.sub(r": line \d+, column \d+$", "", error.msg)
-        raise LevelError("E0901", f"the level file is not well-formed XML: {reason}", line + offset, column + 1) from None
-    if root.tag != "Level":
-        raise LevelError("E0901", f"the root element is <{root.tag}>, not <Level>")
-    camera_element = root.find("Camera")
+    """The level a file's text describes, every value checked (level_checks.py)."""
+    check_size(text)
+    root = _tree(text)
+    source = Source(text)
     camera = Camera()
+    camera_element = root.find("Camera")
     if camera_element is not None:
         camera = Camera(
-            _number(camera_element, "x"),
-            _number(camera_element, "y"),
-            _number(camera_element, "minWidth"),
-            _number(camera_element, "maxWidth"),
+            source.coordinate(camera_element, "x"),
+            source.coordinate(camera_element, "y"),
+            source.bounded(camera_element, "minWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
+            source.bounded(camera_element, "maxWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
         )
     score = root.find("Score")
-    birds = tuple(b.get("type", "") for b in root.iter("Bird"))
-    for bird in birds:
-        if bird not in BIRD_PREFABS:
-            raise LevelError("E0903", f"unknown bird type '{bird}'", help=did_you_mean(bird, BIRD_PREFABS))
+    birds = tuple(source.bird_type(bird) for bird in root.iter("Bird"))
     sling = root.find("Slingshot")
-    slingshot = (-12.0, -2.5) if sling is None else (_number(sling, "x"), _number(sling, "y"))
+    slingshot = (-12.0, -2.5) if sling is None else (source.coordinate(sling, "x"), source.coordinate(sling, "y"))
+    width = 2.0
+    if root.get("width") is not None:
+        width = source.number(root, "width")
+        if not 0 < width <= MAX_WIDTH:
+            raise source.error("E0904", f"<Level> width=\"{root.get('width')}\" is out of range: more than 0 and at most {MAX_WIDTH:g}", root, "width")
     objects = []
-    container = root.find("GameObjects")
     counts: dict[str, int] = {}
+    container = root.find("GameObjects")
     for element in container if container is not None else ():
+        if not isinstance(element.tag, str):
+            continue  # a comment or a processing instruction
         if element.tag not in ELEMENTS:
-            raise LevelError("E0903", f"unknown game object <{element.tag}>", help=did_you_mean(element.tag, ELEMENTS))
-        prefab = element.get("type", "TNT" if element.tag == "TNT" else "")
-        found = BY_PREFAB.get(prefab)
-        if found is None or found.kind in ("bird", "ground"):
-            known = [p for p, s in BY_PREFAB.items() if s.kind not in ("bird", "ground") and p]
-            raise LevelError("E0903", f"unknown object type '{prefab}'", help=did_you_mean(prefab, known))
+            raise source.error("E0903", f"unknown game object <{element.tag}>", element, help=did_you_mean(element.tag, ELEMENTS) or f"game objects are {', '.join(f'<{e}>' for e in ELEMENTS)}")
+        if len(objects) == MAX_BODIES:
+            raise source.error(
+                "E0906",
+                f"the level has more than {MAX_BODIES} game objects, the most physc plays",
+                element,
+                help="the largest real levels have a few dozen (docs/angrybirds.md: the limit keeps a play within a minute and 2 GB)",
+            )
+        prefab = source.object_type(element)
+        found = BY_PREFAB[prefab]
         base = "platform" if found.kind == "platform" else found.name
         counts[base] = counts.get(base, 0) + 1
         objects.append(
             LevelObject(
                 element=element.tag,
                 type=prefab,
-                x=_number(element, "x"),
-                y=_number(element, "y"),
-                rotation=_number(element, "rotation", required=False),
-                material=element.get("material"),
-                scale_x=_number(element, "scaleX", required=False),
-                scale_y=_number(element, "scaleY", required=False),
+                x=source.coordinate(element, "x"),
+                y=source.coordinate(element, "y"),
+                rotation=source.rotation(element),
+                material=source.material(element),
+                scale_x=source.scale(element, "scaleX"),
+                scale_y=source.scale(element, "scaleY"),
                 name=f"{base}{counts[base]}",
             )
         )
     return Level(
-        width=_number(root, "width", required=False) or 2.0,
+        width=width,
         camera=camera,
-        high_score=None if score is None else _number(score, "highScore"),
+        high_score=None if score is None else source.number(score, "highScore"),
         birds=birds,
         slingshot=slingshot,
         objects=tuple(objects),
@@ -124,6 +153,7 @@ def parse_level(text: str) -> Level:
 
 
 def read_level(data: bytes) -> Level:
+    """The level of a file's bytes, as `physc simulate` reads it."""
     return parse_level(decode(data))
 
 
