@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import json
 
-from conftest import SHARED, run_physc
+from conftest import SCIENCEBIRDS, run_physc
 
-ONE_PIG = SHARED / "data" / "sciencebirds" / "phyq-templates" / "1_1_1_1.xml"
+ONE_PIG = SCIENCEBIRDS / "phyq-templates" / "1_1_1_1.xml"
 
 
 def test_simulate(tmp_path):

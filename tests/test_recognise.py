@@ -96,3 +96,24 @@ def test_a_ball_rolls_only_when_it_turns_the_way_it_moves():
     assert rolling == ["roll(ball, platform, right)"]
     # Backspin of the same magnitude: its contact point slips at twice its speed.
     assert recognise(_ball_on_a_platform(+1.0), {"ball": 0.5}) == ()
+
+
+def _sliding_trace(surface: str, normal: tuple[float, float]) -> Trace:
+    """A block moving right at 1 unit/s without turning for 1 s, touching `surface` from the
+    start, the contact's normal pointing from the surface to the block as given."""
+    steps = 50
+    states = np.zeros((steps, 1, 6))
+    states[:, 0, 0] = np.arange(steps) * 0.02
+    states[:, 0, 3] = 1.0
+    contact = ContactRecord(0.02, surface, "block", (0.0, 0.0), normal, (0.0, 0.0), (1.0, 0.0), (0.0, 0.0))
+    return Trace(0.02, ("block",), {"block": "block", surface: "platform"}, states, contacts=(contact,))
+
+
+def test_sliding_counts_on_a_surfaces_upper_side_only():
+    assert [i.text() for i in recognise(_sliding_trace("floor", (0.0, 1.0)), {})] == ["slide(block, floor, right)"]
+    # The platform at the block's top edge: the block slides along its underside.
+    assert recognise(_sliding_trace("ceiling", (0.0, -1.0)), {}) == ()
+    # Against a platform's end (a wall), and on a slope of 40° (still a surface).
+    assert recognise(_sliding_trace("wall", (1.0, 0.0)), {}) == ()
+    slope = (math.sin(math.radians(40)), math.cos(math.radians(40)))
+    assert [i.text() for i in recognise(_sliding_trace("slope", slope), {})] == ["slide(block, slope, right)"]

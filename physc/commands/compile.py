@@ -17,7 +17,14 @@ from physc.commands.common import (
 from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
-from physc.compiler.infeasible import CLAUSE_BUDGET, LAYOUT_BUDGET, PLACEMENT_BUDGET, TIME_BUDGET, readable
+from physc.compiler.infeasible import (
+    CLAUSE_BUDGET,
+    LAYOUT_BUDGET,
+    PLACEMENT_BUDGET,
+    SIZE_LIMIT,
+    TIME_BUDGET,
+    readable,
+)
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
@@ -33,7 +40,7 @@ def _infeasible(error, scenario) -> Diagnostic:
                 notes.append(Label(why.span, f"{edge.text()} comes from {why.rule} `{why.text}`"))
             else:
                 notes.append(Label(scenario.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
-    code = "E0802" if error.budget else "E0801"
+    code = "E0803" if error.budget == SIZE_LIMIT else "E0802" if error.budget else "E0801"
     tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
     if error.conflicts:
         help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
@@ -54,6 +61,7 @@ BUDGET_HELP = {
     LAYOUT_BUDGET: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
     TIME_BUDGET: "the time ran out: allow more with --time-budget, or try another --seed",
     PLACEMENT_BUDGET: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
+    SIZE_LIMIT: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
 }
 PROGRESS_EVERY = 5.0  # seconds between progress lines
 FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}

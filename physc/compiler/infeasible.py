@@ -13,6 +13,7 @@ CLAUSE_BUDGET = "--budget"  # clause choices of the layout search, per shape dra
 LAYOUT_BUDGET = "--layouts"  # placed layouts that simulation may try
 TIME_BUDGET = "--time-budget"  # seconds for the whole generation
 PLACEMENT_BUDGET = "placement"  # consistent conjunctions placement may try (no option)
+SIZE_LIMIT = "size"  # the scenario is larger than the layout search takes (E0803)
 
 
 class Infeasible(Exception):

@@ -28,9 +28,14 @@ from physc.compiler.dimension_graphs import (
     relation_constraints,
 )
 from physc import budget
-from physc.compiler.infeasible import CLAUSE_BUDGET, Infeasible, readable
+from physc.compiler.infeasible import CLAUSE_BUDGET, SIZE_LIMIT, Infeasible, readable
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
+# The most interactions the search takes. Its memory grows with the square of the bodies
+# times the depth (a copy of both axes' distance matrices per clause on the path) and each
+# clause choice costs the square of the bodies: a 64-interaction chain ends its search in
+# about 35 s and 140 MB, a 200-interaction one ran for minutes at 2 GB (docs/generation.md).
+MAX_INTERACTIONS = 64
 DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
 SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up, if no conjunction is consistent
 MAX_SHAPE_DRAWS = 120  # draws in all while consistent conjunctions are found and still asked for
@@ -67,6 +72,13 @@ class ToDimensionGraphs:
         return systems, constraints
 
     def run(self, dnf: QsrDnf, graph, scenario, rng: random.Random) -> Iterator[DimensionGraphs]:
+        if len(scenario.interactions) > MAX_INTERACTIONS:
+            raise Infeasible(
+                self.name,
+                f"the scenario has {len(scenario.interactions)} interactions; the layout search takes at most "
+                f"{MAX_INTERACTIONS} (its time and memory grow with the cube of the interactions)",
+                budget=SIZE_LIMIT,
+            )
         parameters = self.domain.layout_parameters
         tried = rejected = found = 0
         for draw in range(MAX_SHAPE_DRAWS):

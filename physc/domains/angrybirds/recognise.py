@@ -15,6 +15,9 @@ and names what happened, in the order it happened:
   ball struck by a rolling ball does (the hitter's front turns downwards), is not
   rolling, however fast it spins.
 * slide(a, s, d): the same, but translating while turning at most SLIDE_SPIN.
+  Rolling and sliding count on a surface's upper side only: the contact normal points
+  up from s into a within MAX_TILT (60°) of the vertical (the steepest generated slope is
+  40°), so a block pushed along a platform's underside slides on nothing.
 * fall(a, b): a touches nothing for at least FALL_TIME while dropping at least
   FALL_HEIGHT; b is the first thing it touches after. The bird is thrown, not
   falling: its flight is not a fall.
@@ -49,6 +52,8 @@ FALL_TIME = 0.2
 FALL_HEIGHT = 0.4
 BOUNCE_TIME = 0.2
 BOUNCE_SPEED = 1.0
+MAX_TILT = 60.0  # degrees from the vertical: a surface steeper than this is a wall
+UPWARD = math.cos(math.radians(MAX_TILT))
 STATIC = ("platform", "ground")
 ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4}
 
@@ -158,13 +163,29 @@ def approach(trace: Trace, contact: ContactRecord, actor: str, target: str) -> t
 
 def _on_surfaces(trace: Trace, intervals):
     """(mover, surface, the mover's state index, contact spans) for each dynamic body
-    touching a static surface."""
+    touching a static surface from above: the spans whose contact normal, at the contact's
+    beginning, points up from the surface into the mover within MAX_TILT of the vertical.
+    A block pressed against a platform's underside or its end is not on it."""
+    normals = {}
+    for c in trace.contacts:
+        normals.setdefault((frozenset((c.a, c.b)), c.time), c)
     for pair, spans in intervals.items():
         names = sorted(pair)
         surfaces = [n for n in names if trace.kinds.get(n) in STATIC]
         movers = [n for n in names if n in trace.names]
         if len(surfaces) == 1 and len(movers) == 1:
-            yield movers[0], surfaces[0], trace.index(movers[0]), spans
+            above = [span for span in spans if _from_above(normals.get((pair, span[0])), surfaces[0])]
+            if above:
+                yield movers[0], surfaces[0], trace.index(movers[0]), above
+
+
+def _from_above(contact: ContactRecord | None, surface: str) -> bool:
+    """Whether the contact's normal, turned to point from the surface into the other body,
+    is within MAX_TILT of straight up (no record: the contact began before the trace)."""
+    if contact is None:
+        return True
+    upward = contact.normal[1] if contact.a == surface else -contact.normal[1]
+    return upward >= UPWARD
 
 
 def _motion(trace: Trace, intervals, radius) -> list[Interaction]:
