@@ -9,14 +9,17 @@ import tempfile
 from pathlib import Path
 
 
-def read_input(path: str, what: str = "the input") -> tuple[bytes | None, str | None]:
-    """(the bytes, None), or (None, why they cannot be read); '-' is standard input."""
+def read_input(path: str, what: str = "the input", limit: int | None = None) -> tuple[bytes | None, str | None]:
+    """(the bytes, None), or (None, why they cannot be read); '-' is standard input. With a
+    `limit`, at most that many bytes are read (a caller that gets `limit` bytes knows the
+    input is at least that large, without holding a file of any size in memory)."""
     try:
         if path == "-":
             import sys
 
-            return sys.stdin.buffer.read(), None
-        return Path(path).read_bytes(), None
+            return sys.stdin.buffer.read(-1 if limit is None else limit), None
+        with open(path, "rb") as handle:
+            return handle.read(-1 if limit is None else limit), None
     except IsADirectoryError:
         return None, f"cannot read {what}: it is a directory"
     except FileNotFoundError:

@@ -29,15 +29,21 @@ def parse_shot(point: tuple[float, float, str] | None, angle: float | None):
 
 def load_level(args):
     """The level of args.level, or None after reporting why not (the exit status is returned too)."""
-    from physc.domains.angrybirds.level_xml import LevelError, read_level
+    from physc.domains.angrybirds.level_checks import MAX_LEVEL_BYTES
+    from physc.domains.angrybirds.level_xml import LevelError, decode, read_level
 
-    data, problem = read_input(args.level, "the level")
+    data, problem = read_input(args.level, "the level", limit=MAX_LEVEL_BYTES + 1)
     if data is None:
         return None, _fail(args, Diagnostic("E0001", problem))
+    if len(data) > MAX_LEVEL_BYTES:
+        return None, _fail(args, Diagnostic("E0906", f"the level file is larger than physc reads ({MAX_LEVEL_BYTES:,} bytes)"))
     try:
         return read_level(data), 0
     except LevelError as error:
-        text = data.decode("utf-8", "replace")
+        try:
+            text = decode(data)  # as the level was read, so that lines and columns match
+        except LevelError:
+            text = data.decode("utf-8", "replace")
         source = SourceText(args.level, text)
         span = None
         if error.line is not None and error.line <= source.line_count:
