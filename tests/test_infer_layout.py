@@ -1,19 +1,8 @@
-"""infer-layout: the layout graphs of the paper's scenarios."""
+"""infer-layout: the layout graphs of the paper's scenarios (golden dumps: test_golden_stages.py)."""
 
 from __future__ import annotations
 
-import pytest
-
-from conftest import GOLDEN, check_golden
 from middle_end import pipeline
-from physc.serialize import dumps
-
-
-@pytest.mark.parametrize("name, number", [("S", 6), ("RS", 9)])
-def test_golden_layout_graphs_of_the_papers_figure(name, number):
-    graph = pipeline(name).layout_graph
-    check_golden(GOLDEN / "layout_graph" / f"{number:02d}_{name}.json", dumps(graph))
-    check_golden(GOLDEN / "layout_graph" / f"{number:02d}_{name}.dot", graph.to_dot())
 
 
 def edges(name):

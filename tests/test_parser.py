@@ -1,4 +1,4 @@
-"""Parsing: golden AST dumps, the two scenario forms, the paper's own table."""
+"""Parsing: the two scenario forms, the paper's own table (golden AST dumps: test_golden_stages.py)."""
 
 from __future__ import annotations
 
@@ -6,12 +6,10 @@ import re
 
 import pytest
 
-from conftest import EXAMPLES, GOLDEN, SHARED, check_golden
+from conftest import EXAMPLES, SHARED
 from physc.dsl import ast
 from physc.dsl.parser import parse_text
-from physc.serialize import dumps
 
-EXAMPLE_FILES = sorted((EXAMPLES / "paper").glob("*.phys")) + [EXAMPLES / "objects.phys"]
 BLOCK_FILES = sorted((EXAMPLES / "paper").glob("[0-9][0-9]_*.phys"))
 
 
@@ -19,11 +17,6 @@ def parse_file(path):
     result = parse_text(path.read_text(encoding="utf-8"), str(path))
     assert result.diagnostics == ()
     return result.file
-
-
-@pytest.mark.parametrize("path", EXAMPLE_FILES, ids=lambda p: p.name)
-def test_golden_ast(path):
-    check_golden(GOLDEN / "ast" / f"{path.stem}.json", dumps(parse_file(path).scenarios))
 
 
 def test_sixteen_paper_scenarios_in_block_form():
