@@ -13,9 +13,7 @@ from __future__ import annotations
 import math
 
 import attrs
-import numpy as np
 
-from physc import budget
 from physc.backends import BodySpec, Circle, Polygon, load_backend
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
@@ -29,13 +27,8 @@ from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.recognise import recognise, violations
 from physc.domains.angrybirds.rules import RULES, Rules
 from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
-from physc.simulation.trace import (
-    ContactRecord,
-    DamageRecord,
-    DestructionRecord,
-    SeparationRecord,
-    Trace,
-)
+from physc.simulation.run import RunRules, run
+from physc.simulation.trace import ContactRecord, DamageRecord, Trace
 
 BIRD = "bird"
 GROUND = "ground"
@@ -47,7 +40,10 @@ def _material(obj: LevelObject) -> str:
     return obj.material if obj.material in MATERIAL else "wood"
 
 
-class Game:
+class Game(RunRules):
+    """A Science Birds level played: its bodies, the shot, and the game's rules as the hooks
+    of the generic run loop (physc.simulation.run)."""
+
     def __init__(self, level: Level, backend=None, rules: Rules = RULES):
         self.level = level
         self.backend = backend or load_backend()
@@ -131,59 +127,50 @@ class Game:
         if shot is not None:
             self.launch(world, shot)
             dynamic = [BIRD] + dynamic
-        index = {name: i for i, name in enumerate(dynamic)}
-        steps = int(round(seconds / rules.dt))
-        states = np.full((steps, len(dynamic), 6), np.nan)
-        contacts, separations, damage, destructions = [], [], [], []
-        alive = set(dynamic)
-        pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
-        resting_since = None
-        solved_at = None
-        for step in range(steps):
-            budget.check()  # Ctrl-C and the time budget stop a simulation between steps
-            world.step(rules.dt)
-            time = (step + 1) * rules.dt
-            for event in world.begun():
-                record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
-                contacts.append(record)
-                if time > invulnerable:
-                    self._damage(world, record, damage, time)
-            for a, b in world.ended():
-                separations.append(SeparationRecord(time, a, b))
-            row = world.states(dynamic, out=states[step])  # NaN for the bodies already gone
-            values = row.tolist()  # (plain floats are quicker to test than a small array)
-            if self._removals(values, alive, time):
-                # Destruction: by damage, by leaving the level; birds at rest or too old go.
-                # In `dynamic` order: the order of removals must not depend on string hashing,
-                # and a TNT's blast changes the state of what is read after it.
-                row[:] = np.nan
-                for name in [n for n in dynamic if n in alive]:
-                    x, y, angle, vx, vy, w = world.state(name)
-                    gone = self._gone(name, x, vx, vy, time, damage)
-                    if gone:
-                        if self.kinds[name] == "tnt" and gone[0] == "damage":
-                            self._explode(world, name, alive, damage, time)
-                        destructions.append(DestructionRecord(time, name, gone[0], gone[1]))
-                        world.remove(name)
-                        alive.discard(name)
-                    else:
-                        row[index[name]] = (x, y, angle, vx, vy, w)
-                values = row.tolist()
-            if settle_after_solved is not None and pigs:
-                if solved_at is None and not any(p in alive for p in pigs):
-                    solved_at = time
-                if solved_at is not None and time - solved_at >= settle_after_solved and not self._falling(values, dynamic):
-                    states = states[: step + 1]
-                    break
-            if stop_at_rest:
-                if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > STILL_SPEED for _, _, _, vx, vy, w in values):
-                    resting_since = None
-                elif resting_since is None:
-                    resting_since = time
-                elif time - resting_since >= 0.3:
-                    states = states[: step + 1]
-                    break
-        return Trace(rules.dt, tuple(dynamic), dict(self.kinds), states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions), pigs)
+        # This run's settings and state, read by the hooks below.
+        self._invulnerable = invulnerable
+        self._dynamic = dynamic
+        self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
+        self._settle_after_solved, self._solved_at = settle_after_solved, None
+        self._stop_at_rest, self._resting_since = stop_at_rest, None
+        recorded = run(world, dynamic, self, seconds, rules.dt)
+        return Trace(
+            rules.dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
+            recorded.damage, recorded.destructions, self._pigs,
+        )
+
+    # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
+    def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
+        if time > self._invulnerable:
+            self._damage(world, contact, damage, time)
+
+    def removals_due(self, values: list, alive: set, time: float) -> bool:
+        return self._removals(values, alive, time)
+
+    def gone(self, name: str, state: tuple, time: float, damage: list) -> tuple | None:
+        x, _, _, vx, vy, _ = state
+        return self._gone(name, x, vx, vy, time, damage)
+
+    def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
+        if self.kinds[name] == "tnt" and cause == "damage":
+            self._explode(world, name, alive, damage, time)
+
+    def finished(self, values: list, alive: set, time: float) -> bool:
+        """With `settle_after_solved`, that long after the last pig is destroyed, once nothing
+        is falling; with `stop_at_rest`, 0.3 s after everything came to rest (the bird gone)."""
+        if self._settle_after_solved is not None and self._pigs:
+            if self._solved_at is None and not any(p in alive for p in self._pigs):
+                self._solved_at = time
+            if self._solved_at is not None and time - self._solved_at >= self._settle_after_solved and not self._falling(values, self._dynamic):
+                return True
+        if self._stop_at_rest:
+            if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > STILL_SPEED for _, _, _, vx, vy, w in values):
+                self._resting_since = None
+            elif self._resting_since is None:
+                self._resting_since = time
+            elif time - self._resting_since >= 0.3:
+                return True
+        return False
 
     def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, **options) -> Trace:
         """Simulate, then recognise the interactions and check the restrictions
