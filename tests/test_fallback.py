@@ -10,9 +10,10 @@ import pytest
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
 from physc.compiler.infeasible import Infeasible
-from physc.compiler.pipeline import FALLBACKS, Pipeline
+from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains.angrybirds.generate import Outcome, Parts
+from physc.generation.layout_loop import FALLBACKS
 
 
 class Scripted:

@@ -1,0 +1,178 @@
+"""The layout loop: placed layouts, one after another, until one gives a task.
+
+Generation is a search over layouts. For each layout the placement passes offer, the
+domain's `satisfy` (today's strategy: place, simulate, repair) says whether it gives
+a task, and if not, why it was given up and how robust its best solution was. The
+loop keeps the budgets (`--layouts`, and `--time-budget` through `physc.budget`),
+counts what each layout cost and why it was given up, reports progress, and when the
+budget ends without a robust task, tries the most robust fragile layouts again as
+fallbacks (`--min-robustness`). Nothing here depends on a domain.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterator
+
+import attrs
+
+from physc import budget
+from physc.compiler.infeasible import LAYOUT_BUDGET, TIME_BUDGET, Infeasible
+from physc.compiler.task import given_up_summary
+
+FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
+
+
+@attrs.frozen
+class Progress:
+    """How a generation is doing, after each layout given up."""
+
+    layouts: int
+    simulations: int
+    seconds: float
+    best: int  # most interactions of the sequence realised, in order, in one simulation
+    interactions: int
+
+
+@attrs.frozen
+class Generated:
+    """The outcome of the layout loop: the domain's satisfied outcome, the layout it
+    came from, and what the search cost."""
+
+    outcome: object  # the domain's satisfy() result, satisfied
+    layout: object  # the ConcreteLayout it came from
+    layouts: int
+    simulations: int
+    given_up: dict  # why → {"layouts": n, "simulations": n}
+    seconds: dict  # "layout" (placement), "satisfy", and the domain's own stages
+
+
+@attrs.define
+class LayoutLoop:
+    domain: object
+    scenario: object
+    rng: object
+    validate: bool
+    layout_budget: int
+    time_budget: float
+    # Noisy replays a solution must pass at least (see Pipeline): fragile layouts that
+    # passed this many are fallbacks.
+    min_robustness: int
+    progress: Callable[[Progress], None] | None = None
+
+    def run(self, placements: Iterator) -> Generated:
+        """Satisfy the placed layouts in turn (`placements` yields objects with a
+        `layout`); Infeasible when none gives a task within the budgets."""
+        started = time.perf_counter()
+        seconds = {"layout": 0.0, "satisfy": 0.0}
+        layouts = simulations = 0
+        fragile: list[tuple[int, int, object]] = []  # (-replays passed, order, layout)
+        nearest = 0  # most noisy replays passed by a solution given up as too fragile
+        best = 0  # most interactions of the sequence realised, in order, in any simulation
+        given_up: dict[str, dict[str, int]] = {}
+        clock = time.perf_counter()
+        while True:
+            try:
+                placed = next(placements)
+            except Infeasible as error:
+                if not layouts:
+                    raise
+                failure = Infeasible(
+                    "satisfy",
+                    f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
+                    tried=error.tried,
+                    budget=error.budget,
+                )
+                break
+            except budget.OutOfTime:
+                failure = self._out_of_time(layouts, started)
+                break
+            layouts += 1
+            seconds["layout"] += time.perf_counter() - clock
+            clock = time.perf_counter()
+            try:
+                result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
+            except budget.OutOfTime:
+                failure = self._out_of_time(layouts, started)
+                break
+            finally:
+                seconds["satisfy"] += time.perf_counter() - clock
+            simulations += result.simulations
+            best = max(best, getattr(result, "best", 0))
+            if result.satisfied:
+                failure, used = None, placed.layout
+                break
+            nearest = max(nearest, result.nearest)
+            why = given_up.setdefault(getattr(result, "given_up", "") or "not said", {"layouts": 0, "simulations": 0})
+            why["layouts"] += 1
+            why["simulations"] += result.simulations
+            if result.nearest >= self.min_robustness:
+                fragile.append((-result.nearest, layouts, placed.layout))
+            if self.progress is not None:
+                self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
+            if layouts >= self.layout_budget:
+                failure = Infeasible(
+                    "satisfy",
+                    f"no layout realised the sequence in simulation within the budget "
+                    f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
+                    tried=placed.layout.conjunctions_tried,
+                    budget=LAYOUT_BUDGET,
+                )
+                break
+            clock = time.perf_counter()
+        if failure is not None:
+            clock = time.perf_counter()
+            try:
+                fallback = None if failure.budget == TIME_BUDGET else self.fallback(fragile)
+            except budget.OutOfTime:
+                failure, fallback = self._out_of_time(layouts, started), None
+            seconds["satisfy"] += time.perf_counter() - clock
+            if fallback is None:
+                raise self.explained(failure, nearest, given_up, best)
+            simulated, result, used = fallback
+            simulations += simulated
+        # The domain's own stages after satisfaction (angrybirds: distract, validate), if it
+        # times them, counted apart from it.
+        for stage, spent in getattr(result, "seconds", {}).items():
+            seconds["satisfy"] -= spent
+            seconds[stage] = spent
+        seconds["total"] = time.perf_counter() - started
+        return Generated(result, used, layouts, simulations, given_up, seconds)
+
+    def fallback(self, fragile: list):
+        """No solution survived every noisy replay: the layouts given up as fragile, most
+        robust first, satisfied again accepting min_robustness replays. (simulations, the
+        outcome, its layout) of the first that succeeds, or None."""
+        simulations = 0
+        for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
+            result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
+            simulations += result.simulations
+            if result.satisfied:
+                return simulations, result, layout
+        return None
+
+    def _out_of_time(self, layouts: int, started: float) -> Infeasible:
+        return Infeasible(
+            "satisfy",
+            f"the time budget of {self.time_budget:g} s ran out after {layouts} "
+            f"{'layout' if layouts == 1 else 'layouts'} ({time.perf_counter() - started:.1f} s)",
+            budget=TIME_BUDGET,
+        )
+
+    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0) -> Infeasible:
+        """The failure, with how far the best simulation got, why the layouts were given up,
+        the most robust fragile solution found and what would accept it."""
+        message = failure.message
+        if best:
+            message += f"; the best simulation realised {best} of the {len(self.scenario.interactions)} interactions in order"
+        if given_up:
+            message += f"; given up: {given_up_summary(given_up)}"
+        if nearest:
+            if nearest < self.min_robustness:
+                hint = f"--min-robustness {nearest} accepts such a one"
+            elif failure.budget == TIME_BUDGET:
+                hint = "no time was left to try it again as a fallback"
+            else:
+                hint = "tried again as a fallback, it failed"
+            message += f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} noisy replays ({hint})"
+        return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)
