@@ -163,8 +163,11 @@ class LayoutLoop:
         """The failure, with how far the best simulation got, why the layouts were given up,
         the most robust fragile solution found and what would accept it."""
         message = failure.message
+        interactions = self.scenario.interactions
         if best:
-            message += f"; the best simulation realised {best} of the {len(self.scenario.interactions)} interactions in order"
+            message += f"; the best simulation realised {best} of the {len(interactions)} interactions in order"
+            if best < len(interactions):
+                message += f" (never `{interactions[best].text}` after them)"
         if given_up:
             message += f"; given up: {given_up_summary(given_up)}"
         if nearest:
