@@ -24,3 +24,18 @@ def did_you_mean(word: str, candidates: Iterable[str]) -> str | None:
     quoted = [f"'{c}'" for c in found]
     listed = quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " or " + quoted[-1]
     return f"did you mean {listed}?"
+
+
+# Letters whose English names start with a vowel sound ("an f", "an r"), for abbreviations such as `rBlock`.
+_VOWEL_LETTER_NAMES = set("aefhilmnorsx")
+
+
+def article(word: str) -> str:
+    """'a' or 'an' for `word`: by its first letter's name for an abbreviation such as `rBlock`
+    (a lower-case letter then an upper-case one, read letter by letter: "an rBlock"), else by its
+    first letter ("a surface", "an inclinedSurface")."""
+    if not word:
+        return "a"
+    if len(word) > 1 and word[0].islower() and word[1].isupper():
+        return "an" if word[0] in _VOWEL_LETTER_NAMES else "a"
+    return "an" if word[0].lower() in "aeiou" else "a"

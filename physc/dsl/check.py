@@ -22,10 +22,17 @@ from physc.domains.vocabulary import (
     Vocabulary,
 )
 from physc.dsl import ast
+from physc.dsl.fixes import Use, fit_help, fresh_name, latest, moving_help
 from physc.dsl.fmt import format_term
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
+from physc.dsl.sequence import SequenceChecks
 from physc.gc_pause import gc_paused
-from physc.suggest import did_you_mean
+from physc.suggest import article, did_you_mean
+
+# 'Did you mean' for an unknown object compares it with every object of the scenario. Past this
+# many comparisons in one scenario only the vocabulary's spellings are offered, so that a huge
+# scenario full of unknown names stays linear (a real one needs a few hundred).
+SUGGESTION_COMPARISONS = 100_000
 
 
 @attrs.frozen
@@ -93,7 +100,20 @@ class _Resolved:
     direction_span: Span | None
 
 
-class _ScenarioChecker:
+@attrs.frozen
+class _Names:
+    """The object names of a scenario, declared or used, known or not (for `in`)."""
+
+    objects: dict
+    unknown: set
+
+    def __contains__(self, name: str) -> bool:
+        return name in self.objects or name in self.unknown
+
+
+class _ScenarioChecker(SequenceChecks):
+    """Checks one scenario: its objects and terms here, its sequence in `SequenceChecks`."""
+
     def __init__(self, scenario: ast.Scenario, domain: str, vocabulary: Vocabulary, path: str):
         self.scenario = scenario
         self.domain = domain
@@ -102,6 +122,17 @@ class _ScenarioChecker:
         self.diagnostics: list[Diagnostic] = []
         self.objects: dict[str, _Object] = {}
         self.unknown: set[str] = set()
+        self.uses: dict[str, list[Use]] = {}  # every (term, parameter) an object appears as
+        # E0203 for a parameter's object term: (diagnostic index, object, term asked for); the help
+        # is written once every use of the object is known (fixes.fit_help).
+        self.misfits: list[tuple[int, _Object, str]] = []
+        # E0203 for a static object where one that moves is needed: (diagnostic index, position in
+        # the sequence or None, parameter, object); the help names an object in motion there.
+        self.immobile: list[tuple] = []
+        self.position: int | None = None  # of the interaction being resolved
+        self.helps: dict[int, str] = {}
+        self.fresh_names: dict[str, str] = {}
+        self.comparisons = 0
 
     def error(self, code, message, span, help=None, notes=()):
         self.diagnostics.append(Diagnostic(code, message, span, help=help, notes=tuple(notes)))
@@ -169,7 +200,11 @@ class _ScenarioChecker:
         term = self.vocabulary.term_of_name(name.text)
         if term is None:
             self.unknown.add(name.text)
-            suggestion = did_you_mean(name.text, [*self.vocabulary.spellings, *self.objects])
+            self.comparisons += len(self.objects)
+            pool = [*self.vocabulary.spellings]
+            if self.comparisons <= SUGGESTION_COMPARISONS:
+                pool += self.objects
+            suggestion = did_you_mean(name.text, pool)
             how = f"declare it in `objects {{ {name.text}: <term> }}`"
             self.error(
                 "E0301",
@@ -268,28 +303,67 @@ class _ScenarioChecker:
 
     def check_fit(self, signature, parameter, found: _Object, name: ast.Name) -> bool:
         vocabulary = self.vocabulary
+        self.uses.setdefault(found.name, []).append((signature, parameter))
         if parameter.dynamic and found.static:
+            self.immobile.append((len(self.diagnostics), self.position, parameter, found.name))
             self.error(
                 "E0203",
                 f"'{signature.name}' expects a dynamic object as '{parameter.name}', "
-                f"but '{found.name}' is a {found.term}, which never moves",
+                f"but '{found.name}' is {article(found.term)} {found.term}, which never moves",
                 name.span,
             )
             return False
         if parameter.fits and not vocabulary.fits(found.concrete, parameter.fits):
             fits = vocabulary.object_term(parameter.fits)
-            use = fits.abbreviation or fits.name
+            self.misfits.append((len(self.diagnostics), found, parameter.fits))
             self.error(
                 "E0203",
-                f"'{signature.name}' expects {fits.noun or fits.name}, but '{found.name}' is a {found.term}",
+                f"'{signature.name}' expects {fits.noun or fits.name}, "
+                f"but '{found.name}' is {article(found.term)} {found.term}",
                 name.span,
-                help=f"declare it as `{found.name}: {fits.name}` or use an {use}"
-                if not found.declared
-                else f"declare it with a concrete object that {fits.name} allows: "
-                + " | ".join(fits.concrete),
             )
             return False
         return True
+
+    def explain_immobile(self, item, movers: dict[str, None]) -> None:
+        """The help of an E0203 for a static object where a moving one is needed: an object in
+        motion at that point of the sequence that fits (`movers`, in the order they started)."""
+        index, _, parameter, name = item
+        vocabulary = self.vocabulary
+
+        def fits(other: str) -> bool:
+            found = self.objects[other]
+            return other != name and not found.static and (not parameter.fits or vocabulary.fits(found.concrete, parameter.fits))
+
+        def calm(other: str) -> bool:
+            return fits(other) and not vocabulary.fits(self.objects[other].concrete, vocabulary.goal)
+
+        mover = latest(movers, calm) or latest(movers, fits)
+        self.helps[index] = moving_help(vocabulary, parameter, mover, self.fresh)
+
+    def fresh(self, base: str) -> str:
+        """A name for a new object that no object of the scenario has (remembered per base)."""
+        if base not in self.fresh_names:
+            self.fresh_names[base] = fresh_name(base, _Names(self.objects, self.unknown))
+        return self.fresh_names[base]
+
+    def explain(self) -> None:
+        """Write the help texts that needed the whole scenario: E0203 for an object term (every use
+        of the object must be known) and for a static object outside the sequence."""
+        written: dict[tuple[str, str], str] = {}
+        for index, found, fits in self.misfits:
+            key = (found.name, fits)
+            if key not in written:
+                declared = found.term if found.declared else None
+                term = self.vocabulary.object_term(fits)
+                written[key] = fit_help(self.vocabulary, found.name, declared, term, self.uses[found.name], self.fresh)
+            self.helps[index] = written[key]
+        players = {o.name: None for o in self.objects.values() if self.vocabulary.fits(o.concrete, self.vocabulary.player)}
+        for item in self.immobile:
+            if item[0] not in self.helps:
+                self.explain_immobile(item, players)
+        for index, help_text in self.helps.items():
+            self.diagnostics[index] = attrs.evolve(self.diagnostics[index], help=help_text)
 
     def resolve_directions(self, signature, parameter, argument) -> tuple[str, ...] | None:
         vocabulary = self.vocabulary
@@ -330,133 +404,20 @@ class _ScenarioChecker:
         order = [d for p in parameter.directions for d in vocabulary.expand(p)]
         return tuple(d for d in dict.fromkeys(order) if d in chosen)
 
-    # ---- causality, goals, restrictions -------------------------------------
-    def check_causality(self, interactions: list[_Resolved | None]) -> None:
-        vocabulary = self.vocabulary
-        players = {o.name for o in self.objects.values() if vocabulary.fits(o.concrete, vocabulary.player)}
-        in_motion = set(players)
-        destroyed: dict[str, Span] = {}
-        seen: set[tuple[str, tuple[str, ...]]] = set()
-        # Once an interaction fails to resolve, what it would have set in motion,
-        # hit or destroyed is unknown: later causal errors would be guesses.
-        complete = True
-        for index, resolved in enumerate(interactions):
-            if resolved is None:
-                complete = False
-                continue
-            signature = resolved.signature
-            for obj, span in zip(resolved.objects, resolved.object_spans):
-                if obj in destroyed:
-                    self.error(
-                        "E0405",
-                        f"'{obj}' takes part in '{signature.name}' after it was destroyed",
-                        span,
-                        notes=[Label(destroyed[obj], f"'{obj}' is destroyed here")],
-                    )
-            for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
-                if not parameter.acts:
-                    continue
-                if obj not in in_motion:
-                    in_motion.add(obj)  # report each object once
-                else:
-                    continue
-                if index == 0 and obj not in players:
-                    self.error(
-                        "E0401",
-                        f"the first interaction must be performed by the {vocabulary.player} "
-                        f"(the player's only action), but here '{obj}' acts",
-                        span,
-                        help=f"start the sequence with the {vocabulary.player}, "
-                        f"e.g. hit({vocabulary.player}, {obj}, left)",
-                    )
-                elif complete:
-                    self.error(
-                        "E0402",
-                        f"'{obj}' acts in '{signature.name}' before anything set it in motion",
-                        span,
-                        help=f"add an earlier interaction that sets it in motion, e.g. hit(x, {obj}, left)",
-                    )
-            if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
-                pair = ", ".join(resolved.objects)
-                self.error(
-                    "E0403",
-                    f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'",
-                    resolved.node.span,
-                    help=f"add `{signature.requires}({pair}, any)` before it",
-                )
-            for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
-                if parameter.moves:
-                    in_motion.add(obj)
-                if parameter.destroys:
-                    destroyed.setdefault(obj, resolved.node.span)
-            seen.add((signature.name, resolved.objects[:2]))
-        goal = vocabulary.goal
-        for obj in self.objects.values() if complete else ():
-            if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in destroyed:
-                continue
-            if not obj.used:
-                continue
-            self.error(
-                "E0404",
-                f"the {goal} '{obj.name}' is never destroyed (a task is solved when every {goal} is destroyed)",
-                obj.span,
-                help=f"add `> destroy(x, {obj.name})` after an interaction that hits it",
-            )
-
-    def apply_restrictions(self, interactions, restrictions) -> dict[int, tuple[str, ...]]:
-        """Narrow interaction directions; report restrictions that contradict the sequence."""
-        narrowed = {i: r.directions for i, r in enumerate(interactions) if r is not None}
-        # A restriction on how a reaches b constrains a's direct approach: the
-        # interactions a performs before anything redirects it (e.g. a bounce).
-        redirected: set[str] = set()
-        direct: dict[int, bool] = {}
-        for index, interaction in enumerate(interactions):
-            if interaction is None:
-                continue
-            direct[index] = interaction.objects[0] not in redirected
-            for parameter, obj in zip(interaction.signature.object_parameters, interaction.objects):
-                if parameter.redirects:
-                    redirected.add(obj)
-        for restriction in restrictions:
-            if restriction is None:
-                continue
-            signature = restriction.signature
-            for index, interaction in enumerate(interactions):
-                if interaction is None:
-                    continue
-                name = interaction.signature.name
-                same_pair = interaction.objects[:2] == restriction.objects[:2]
-                if signature.narrows == name and same_pair and direct[index]:
-                    left = tuple(d for d in narrowed[index] if d not in restriction.directions)
-                    if not left:
-                        self.error(
-                            "E0501",
-                            f"'{restriction.node.name.text}' forbids every direction "
-                            f"that this '{name}' allows ({', '.join(narrowed[index])})",
-                            interaction.direction_span or interaction.node.span,
-                            help="allow more directions in the interaction or fewer in the restriction",
-                            notes=[Label(restriction.node.span, "the restriction")],
-                        )
-                    narrowed[index] = left
-                elif signature.forbids == name and interaction.objects[:1] == restriction.objects[:1]:
-                    self.error(
-                        "E0502",
-                        f"'{restriction.node.name.text}({restriction.objects[0]})' forbids this '{name}'",
-                        interaction.node.span,
-                        help="remove the restriction or the interaction",
-                        notes=[Label(restriction.node.span, "the restriction")],
-                    )
-        return narrowed
-
     # ---- the whole scenario ------------------------------------------------
     def run(self) -> ScenarioIR | None:
         for declaration in self.scenario.objects:
             self.declare(declaration)
-        interactions = [self.resolve_term(t, INTERACTION) for t in self.scenario.interactions]
+        interactions = []
+        for position, term in enumerate(self.scenario.interactions):
+            self.position = position
+            interactions.append(self.resolve_term(term, INTERACTION))
+        self.position = None
         restrictions = [self.resolve_term(t, RESTRICTION) for t in self.scenario.restrictions]
         if self.scenario.interactions:
-            self.check_causality(interactions)
+            self.check_causality(interactions, restrictions)
         narrowed = self.apply_restrictions(interactions, restrictions)
+        self.explain()
         for obj in self.objects.values():
             if obj.declared and not obj.used:
                 self.diagnostics.append(

@@ -1,0 +1,180 @@
+"""The fixes that the static checks' help texts propose, worked out so that they keep the scenario valid.
+
+A help text that says "declare it as `pig: surface`" is worse than none when the pig must stay a pig
+for a later `destroy`. So the fix for an object that does not fit a parameter looks at every use of
+the object in the scenario: a declaration is proposed only if one concrete object satisfies all of
+them; otherwise the help proposes a separate object, named so that it clashes with no name of the
+scenario. Like the checks, nothing here knows a domain word: it reads term signatures and the
+vocabulary's object terms.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Container, Sequence
+
+from physc.domains.vocabulary import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
+from physc.suggest import article
+
+Use = tuple[TermSignature, Parameter]
+Fresh = Callable[[str], str]  # a name for a new object, from a base such as `surface`
+
+
+def fresh_name(base: str, taken: Container[str]) -> str:
+    """`base`, or `base2`, `base3`, … : the first that no object of the scenario is called."""
+    if base not in taken:
+        return base
+    number = 2
+    while f"{base}{number}" in taken:
+        number += 1
+    return f"{base}{number}"
+
+
+def noun(term: ObjectTerm) -> str:
+    """How a help text names an object of the term: its noun ("a surface"), else "a <name>"."""
+    return term.noun or f"{article(term.name)} {term.name}"
+
+
+def _admits(vocabulary: Vocabulary, parameter: Parameter, concrete: str) -> bool:
+    if parameter.fits and concrete not in vocabulary.object_term(parameter.fits).concrete:
+        return False
+    return not (parameter.dynamic and vocabulary.concrete(concrete).static)
+
+
+def allowed_concrete(vocabulary: Vocabulary, uses: Sequence[Use]) -> tuple[str, ...]:
+    """The concrete objects that satisfy every use at once (in the vocabulary's order)."""
+    return tuple(
+        c.name for c in vocabulary.concrete_objects if all(_admits(vocabulary, p, c.name) for _, p in uses)
+    )
+
+
+def _declaration(vocabulary: Vocabulary, name: str, allowed: tuple[str, ...], fits: ObjectTerm) -> str:
+    """`name: term`, with a term whose concrete objects all lie in `allowed` (the one the failed
+    parameter asks for first, then the largest), else the asked-for term narrowed to `allowed`."""
+    candidates = [t for t in vocabulary.object_terms if set(t.concrete) <= set(allowed)]
+    if fits in candidates:
+        return f"{name}: {fits.name}"
+    if candidates:
+        best = max(candidates, key=lambda t: len(t.concrete))
+        return f"{name}: {best.name}"
+    return f"{name}: {fits.name} = {' | '.join(c for c in fits.concrete if c in allowed)}"
+
+
+def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> str:
+    """Help for an object that no declaration can make fit all its uses: name another object here."""
+    other = fresh(fits.abbreviation or fits.name)
+    why = ""
+    for signature, parameter in uses:
+        if not any(_admits(vocabulary, parameter, c) for c in fits.concrete):
+            needs = noun(vocabulary.object_term(parameter.fits)) if parameter.fits else "an object that moves"
+            why = f": '{signature.name}' needs it as {needs}"
+            break
+    return f"use a separate object here, e.g. `{other}` ({noun(fits)}); '{name}' cannot also be {noun(fits)}{why}"
+
+
+def fit_help(vocabulary: Vocabulary, name: str, declared_term: str | None, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> str:
+    """Help for an object `name` that does not fit a parameter asking for `fits`.
+
+    `declared_term` is the term of its declaration (None when its name typed it), `uses` every
+    (term, parameter) it appears as in the scenario; `fresh(base)` names a new object (fresh_name).
+    """
+    allowed = allowed_concrete(vocabulary, uses)
+    if declared_term is not None:
+        declared = vocabulary.object_term(declared_term)
+        narrowed = [c for c in declared.concrete if c in allowed]
+        if narrowed:
+            return f"declare it as `{name}: {declared.name} = {' | '.join(narrowed)}`"
+        if allowed:
+            return f"declare it as `{_declaration(vocabulary, name, allowed, fits)}`"
+        return _separate(vocabulary, name, fits, uses, fresh)
+    if allowed:
+        other = fresh(fits.abbreviation or fits.name)
+        return f"declare it as `{_declaration(vocabulary, name, allowed, fits)}` or use {article(other)} {other}"
+    return _separate(vocabulary, name, fits, uses, fresh)
+
+
+def latest(movers: dict[str, None], accept: Callable[[str], bool], limit: int = 64) -> str | None:
+    """The object set in motion last (`movers` in the order they started) that `accept`s, among the
+    last `limit` of them: a bound that keeps the help texts of a huge scenario linear."""
+    for count, name in enumerate(reversed(movers)):
+        if count == limit:
+            break
+        if accept(name):
+            return name
+    return None
+
+
+def moving_help(vocabulary: Vocabulary, parameter: Parameter, mover: str | None, fresh: Fresh) -> str:
+    """Help for a static object where an object that moves is needed: `mover` (in motion there,
+    fitting the parameter), else a new object of the term the parameter asks for, else the player's."""
+    if mover is not None:
+        other = mover
+    elif parameter.fits:
+        fits = vocabulary.object_term(parameter.fits)
+        other = fresh(fits.abbreviation or fits.name)
+    else:
+        other = vocabulary.player
+    return f"use an object that moves here, e.g. `{other}`"
+
+
+def _mover(vocabulary: Vocabulary) -> TermSignature | None:
+    """The interaction by which one object sets another in motion (angrybirds: hit)."""
+    for signature in vocabulary.terms:
+        parameters = signature.object_parameters
+        if signature.kind == INTERACTION and len(parameters) == 2 and parameters[0].acts and parameters[1].moves:
+            return signature
+    return None
+
+
+def _destroyer(vocabulary: Vocabulary) -> TermSignature | None:
+    """The interaction that destroys its second object (angrybirds: destroy)."""
+    for signature in vocabulary.terms:
+        parameters = signature.object_parameters
+        if signature.kind == INTERACTION and len(parameters) == 2 and parameters[1].destroys:
+            return signature
+    return None
+
+
+def call(vocabulary: Vocabulary, signature: TermSignature, objects: Sequence[str], every_direction: bool = False) -> str:
+    """A term as written: `hit(bird, rBlock, left)`; with `every_direction`, the alias that
+    allows them all where the parameter has one (`any`)."""
+    arguments = list(objects)
+    parameter = signature.direction_parameter
+    if parameter is not None and parameter.directions:
+        alias = next((d for d in parameter.directions if d in vocabulary.direction_aliases), None)
+        arguments.append(alias if every_direction and alias else parameter.directions[0])
+    return f"{signature.name}({', '.join(arguments)})"
+
+
+def start_help(vocabulary: Vocabulary, obj: str) -> str:
+    """Help for a sequence that starts with another object than the player's (E0401)."""
+    player = vocabulary.player
+    mover = _mover(vocabulary)
+    example = f", e.g. {call(vocabulary, mover, (player, obj))}" if mover else ""
+    return f"start the sequence with the {player}{example}"
+
+
+def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> str:
+    """Help for an object that acts before anything set it in motion (E0402): an earlier
+    interaction in which `actor`, an object already in motion, sets it in motion."""
+    mover = _mover(vocabulary)
+    if mover is None or actor is None:
+        return "add an earlier interaction that sets it in motion"
+    return f"add an earlier interaction that sets it in motion, e.g. `{call(vocabulary, mover, (actor, obj))}`"
+
+
+def destroy_help(vocabulary: Vocabulary, goal: str, last, actor: str | None) -> str:
+    """Help for a goal that nothing destroys (E0404): interactions to add at the end of the sequence.
+
+    `last` is the last interaction of the sequence (a resolved term), `actor` an object in motion at
+    its end that may collide with the goal (None: the player's object).
+    """
+    destroyer, mover = _destroyer(vocabulary), _mover(vocabulary)
+    if destroyer is None:
+        return f"add an interaction that destroys '{goal}'"
+    if last is not None and last.signature.name == destroyer.requires and last.objects[1:2] == (goal,):
+        return f"add `> {call(vocabulary, destroyer, (last.objects[0], goal))}` at the end of the interactions"
+    actor = actor or vocabulary.player
+    added = f"> {call(vocabulary, destroyer, (actor, goal))}"
+    if mover is not None and destroyer.requires == mover.name:
+        added = f"> {call(vocabulary, mover, (actor, goal), every_direction=True)} " + added
+    return f"add `{added}` at the end of the interactions"

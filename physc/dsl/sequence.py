@@ -1,0 +1,183 @@
+"""The checks of a scenario's sequence (spec section 5, items 3-5): causality, goals, restrictions.
+
+A mixin of the scenario checker (physc/dsl/check.py), which resolves the terms first; these checks
+read the resolved terms (objects, directions, signatures) and the checker's objects. Every check
+here is linear in the size of the scenario: restrictions find the interactions they are about
+through an index, not by a scan of the sequence each.
+"""
+
+from __future__ import annotations
+
+import heapq
+
+from physc.diagnostics import Label, Span
+from physc.dsl.fixes import destroy_help, latest, motion_help, start_help
+
+
+class SequenceChecks:
+    """Causality, goals and restrictions; mixed into the scenario checker, whose state they read."""
+
+    def check_causality(self, interactions: list, restrictions: list) -> None:
+        vocabulary = self.vocabulary
+        players = {o.name for o in self.objects.values() if vocabulary.fits(o.concrete, vocabulary.player)}
+        in_motion = set(players)
+        # The objects set in motion so far that could act, in the order they started (for help texts).
+        movers: dict[str, None] = dict.fromkeys(sorted(players))
+        destroyed: dict[str, Span] = {}
+
+        def calm(name: str) -> bool:  # a goal that knocks another over is valid, but odd to propose
+            return not vocabulary.fits(self.objects[name].concrete, vocabulary.goal)
+
+        seen: set[tuple[str, tuple[str, ...]]] = set()
+        # Once an interaction fails to resolve, what it would have set in motion,
+        # hit or destroyed is unknown: later causal errors would be guesses.
+        complete = True
+        waiting: dict[int, list] = {}
+        for item in self.immobile:
+            waiting.setdefault(item[1], []).append(item)
+        for index, resolved in enumerate(interactions):
+            for item in waiting.get(index, ()):
+                self.explain_immobile(item, movers)
+            if resolved is None:
+                complete = False
+                continue
+            signature = resolved.signature
+            for obj, span in zip(resolved.objects, resolved.object_spans):
+                if obj in destroyed:
+                    self.error(
+                        "E0405",
+                        f"'{obj}' takes part in '{signature.name}' after it was destroyed",
+                        span,
+                        notes=[Label(destroyed[obj], f"'{obj}' is destroyed here")],
+                    )
+            for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
+                if not parameter.acts:
+                    continue
+                if obj not in in_motion:
+                    in_motion.add(obj)  # report each object once
+                else:
+                    continue
+                if index == 0 and obj not in players:
+                    self.error(
+                        "E0401",
+                        f"the first interaction must be performed by the {vocabulary.player} "
+                        f"(the player's only action), but here '{obj}' acts",
+                        span,
+                        help=start_help(vocabulary, obj),
+                    )
+                elif complete:
+                    self.error(
+                        "E0402",
+                        f"'{obj}' acts in '{signature.name}' before anything set it in motion",
+                        span,
+                        help=motion_help(vocabulary, obj, latest(movers, calm) or latest(movers, bool)),
+                    )
+            if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
+                pair = ", ".join(resolved.objects)
+                self.error(
+                    "E0403",
+                    f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'",
+                    resolved.node.span,
+                    help=f"add `{signature.requires}({pair}, any)` before it",
+                )
+            for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
+                if parameter.moves:
+                    in_motion.add(obj)
+                    if not self.objects[obj].static:
+                        movers.pop(obj, None)
+                        movers[obj] = None
+                if parameter.destroys:
+                    destroyed.setdefault(obj, resolved.node.span)
+                    movers.pop(obj, None)
+            seen.add((signature.name, resolved.objects[:2]))
+        goal = vocabulary.goal
+        last = interactions[-1] if interactions else None
+        unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
+        for obj in self.objects.values() if complete else ():
+            if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in destroyed:
+                continue
+            if not obj.used:
+                continue
+            self.error(
+                "E0404",
+                f"the {goal} '{obj.name}' is never destroyed (a task is solved when every {goal} is destroyed)",
+                obj.span,
+                help=destroy_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable)),
+            )
+
+    def actor_for(self, goal: str, movers: dict[str, None], unhittable: set) -> str | None:
+        """An object in motion at the end of the sequence that may collide with `goal`."""
+
+        def free(name: str) -> bool:
+            return name != goal and (name, goal) not in unhittable
+
+        goals = self.vocabulary.goal
+        return latest(movers, lambda m: free(m) and not self.vocabulary.fits(self.objects[m].concrete, goals)) or latest(
+            movers, free
+        )
+
+    def apply_restrictions(self, interactions, restrictions) -> dict[int, tuple[str, ...]]:
+        """Narrow interaction directions; report restrictions that contradict the sequence."""
+        narrowed = {i: r.directions for i, r in enumerate(interactions) if r is not None}
+        # A restriction on how a reaches b constrains a's direct approach: the
+        # interactions a performs before anything redirects it (e.g. a bounce).
+        redirected: set[str] = set()
+        direct: dict[int, bool] = {}
+        for index, interaction in enumerate(interactions):
+            if interaction is None:
+                continue
+            direct[index] = interaction.objects[0] not in redirected
+            for parameter, obj in zip(interaction.signature.object_parameters, interaction.objects):
+                if parameter.redirects:
+                    redirected.add(obj)
+        # Each restriction meets only the interactions it is about, found by (term, objects): checking
+        # stays linear in the size of the scenario. A repeated restriction adds nothing.
+        by_pair: dict[tuple, list[int]] = {}
+        by_actor: dict[tuple, list[int]] = {}
+        for index, interaction in enumerate(interactions):
+            if interaction is not None:
+                name = interaction.signature.name
+                if direct[index]:
+                    by_pair.setdefault((name, interaction.objects[:2]), []).append(index)
+                by_actor.setdefault((name, interaction.objects[:1]), []).append(index)
+        seen: set[tuple] = set()
+        for restriction in restrictions:
+            if restriction is None:
+                continue
+            signature = restriction.signature
+            key = (signature.name, restriction.objects, restriction.directions)
+            if key in seen:
+                continue
+            seen.add(key)
+            narrowing = by_pair.get((signature.narrows, restriction.objects[:2]), []) if signature.narrows else []
+            forbidden = by_actor.get((signature.forbids, restriction.objects[:1]), []) if signature.forbids else []
+            if forbidden and signature.forbids == signature.narrows:
+                narrowing_set = set(narrowing)
+                forbidden = [i for i in forbidden if i not in narrowing_set]
+            for index, narrows in heapq.merge(((i, True) for i in narrowing), ((i, False) for i in forbidden)):
+                interaction = interactions[index]
+                name = interaction.signature.name
+                if narrows:
+                    if not narrowed[index]:
+                        continue  # already reported: nothing is left to forbid
+                    left = tuple(d for d in narrowed[index] if d not in restriction.directions)
+                    if not left:
+                        self.error(
+                            "E0501",
+                            f"'{restriction.node.name.text}' forbids every direction "
+                            f"that this '{name}' allows ({', '.join(narrowed[index])})",
+                            interaction.direction_span or interaction.node.span,
+                            help="allow more directions in the interaction or fewer in the restriction",
+                            notes=[Label(restriction.node.span, "the restriction")],
+                        )
+                    narrowed[index] = left
+                else:
+                    self.error(
+                        "E0502",
+                        f"'{restriction.node.name.text}({restriction.objects[0]})' forbids this '{name}'",
+                        interaction.node.span,
+                        help="remove the restriction or the interaction",
+                        notes=[Label(restriction.node.span, "the restriction")],
+                    )
+        return narrowed
+
