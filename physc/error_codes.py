@@ -65,6 +65,7 @@ _CODES = [
     ErrorCode("E0603", "error", "a scenario without an interactions section"),
     ErrorCode("E0701", "error", "a domain that is not installed"),
     ErrorCode("E0702", "error", "a domain plugin that fails to load", exit_status=2),
+    ErrorCode("E0703", "error", "a domain that lacks what the command asks of it", exit_status=2),
     ErrorCode("E0901", "error", "a level file that is not a Science Birds level"),
     ErrorCode("E0902", "error", "a level object with a missing or malformed attribute"),
     ErrorCode("E0903", "error", "a level object or bird of an unknown type"),

@@ -1,4 +1,6 @@
-"""Domains are plugins: the example of docs/plugins.md works as written."""
+"""Domains are plugins: the example of docs/plugins.md works as written, the domain
+interface is checked at load (E0702), and a domain that lacks a capability is refused
+clearly when asked for it (E0703)."""
 
 from __future__ import annotations
 
@@ -10,23 +12,45 @@ import pytest
 
 from conftest import ROOT, run_physc
 from physc import domains
+from physc.compiler.stages import BY_NAME
+from physc.domains.base import CAPABILITIES, DEFAULTS, REQUIRED, STAGE_NEEDS, Domain, MissingCapability, missing
+
+PLUGINS = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
+ERRORS = (ROOT / "docs" / "errors.md").read_text(encoding="utf-8")
+SCENARIO = "scenario P {{\n    domain {domain}\n    interactions {{ hit(ball, target, left) > destroy(ball, target) }}\n}}\n"
 
 
 @pytest.fixture
-def phyre_domain(tmp_path, monkeypatch):
-    doc = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
-    code = re.search(r"```python\n# phyre_physc/__init__.py\n(.*?)```", doc, re.S).group(1)
-    package = tmp_path / "phyre_physc"
-    package.mkdir()
-    (package / "__init__.py").write_text(code)
+def install(tmp_path, monkeypatch):
+    """install(name, code): a plugin package `<name>_physc` whose entry point `name` is its DOMAIN."""
     monkeypatch.syspath_prepend(str(tmp_path))
     installed = dict(domains.installed_domains())
-    installed["phyre"] = EntryPoint("phyre", "phyre_physc:DOMAIN", domains.ENTRY_POINT_GROUP)
     monkeypatch.setattr(domains, "installed_domains", lambda: installed)
+    modules = []
+
+    def install(name: str, code: str) -> None:
+        package = tmp_path / f"{name}_physc"
+        package.mkdir()
+        (package / "__init__.py").write_text(code)
+        installed[name] = EntryPoint(name, f"{name}_physc:DOMAIN", domains.ENTRY_POINT_GROUP)
+        modules.append(package.name)
+        domains.load_domain.cache_clear()
+
+    yield install
     domains.load_domain.cache_clear()
-    yield
-    domains.load_domain.cache_clear()
-    sys.modules.pop("phyre_physc", None)
+    for module in modules:
+        sys.modules.pop(module, None)
+
+
+@pytest.fixture
+def phyre_domain(install):
+    install("phyre", re.search(r"```python\n# phyre_physc/__init__.py\n(.*?)```", PLUGINS, re.S).group(1))
+
+
+def write_scenario(tmp_path, domain: str):
+    path = tmp_path / "scenario.phys"
+    path.write_text(SCENARIO.format(domain=domain))
+    return path
 
 
 def test_documented_plugin_domain(phyre_domain, tmp_path):
@@ -44,3 +68,86 @@ def test_documented_plugin_domain(phyre_domain, tmp_path):
 def test_domains_come_from_entry_points():
     assert "angrybirds" in domains.installed_domains()
     assert domains.load_domain("angrybirds").vocabulary.player == "bird"
+
+
+def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(phyre_domain):
+    domain = domains.load_domain("phyre")
+    assert isinstance(domain, Domain)
+    assert missing(domain, STAGE_NEEDS["level"] + ("picture",)) == CAPABILITIES
+    assert domain.reach_targets(None) == [] and domain.reachable(-1e6, 1e6) and domain.robustness_replays is None
+    with pytest.raises(MissingCapability, match="the domain 'phyre' cannot .* it has no picture"):
+        domain.picture(None)
+
+
+def test_a_vocabulary_only_domain_checks_and_refuses_to_generate(phyre_domain, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    write_scenario(tmp_path, "phyre")
+    assert run_physc("check", "scenario.phys").status == 0
+    assert run_physc("compile", "--emit", "scenario", "scenario.phys").status == 0
+    # The default stage, level: what docs/errors.md shows for E0703, exit 2, before any work.
+    command, expected = re.search(r"## E0703.*?```console\n\$ physc (.*?)\n(.*?)```", ERRORS, re.S).groups()
+    run = run_physc(*command.split(), "--color", "never")
+    assert (run.status, run.stderr, run.stdout) == (2, expected, "")
+    run = run_physc("compile", "-q", "--color", "never", "--emit", "layout-graph", "scenario.phys")
+    assert run.status == 2 and "error[E0703]: the domain 'phyre' cannot do what --emit layout-graph needs: it has no layout_rules\n" in run.stderr
+    run = run_physc("compile", "-q", "--color", "never", "--emit", "task", "--png", "task.png", "scenario.phys")
+    assert run.status == 2 and "it has no layout_rules, layout_parameters, concretize, satisfy, picture\n" in run.stderr
+    run = run_physc("eval", "-q", "--color", "never", "scenario.phys", "--out", "results")
+    assert run.status == 2 and "scenario.phys: error[E0703]: the domain 'phyre' cannot do what physc eval needs" in run.stderr
+    assert not (tmp_path / "task.png").exists() and not (tmp_path / "results").exists()
+
+
+DUCK = "class Duck:\n    name = {name!r}\n    description = 'a duck-typed domain'\n{body}\nDOMAIN = Duck(){call}\n"
+VOCABULARY = "    from physc.domains.angrybirds import VOCABULARY as vocabulary\n"
+
+
+@pytest.mark.parametrize(
+    "code, problem",
+    [
+        (DUCK.format(name="duck", body="", call=""), "has no 'vocabulary'"),
+        (
+            "from physc.domains.base import Domain\nclass Duck(Domain):\n    name = 'duck'\nDOMAIN = Duck()\n",
+            "fails to load: Can't instantiate abstract class Duck with abstract methods description, vocabulary",
+        ),
+        (DUCK.format(name="duck", body="    vocabulary = {'bird': 'pig'}", call=""), "has a 'vocabulary' that is a dict, not"),
+        (DUCK.format(name="goose", body=VOCABULARY, call=""), "calls itself 'goose': its 'name' must be its entry point's name, 'duck'"),
+        (DUCK.format(name="duck", body=VOCABULARY, call="\nDOMAIN = Duck"), "names the class 'Duck', not a domain"),
+    ],
+    ids=["duck-without-vocabulary", "subclass-without-description-and-vocabulary", "not-a-vocabulary", "name", "class"],
+)
+def test_a_plugin_that_is_not_a_domain_is_e0702(install, tmp_path, code, problem):
+    install("duck", code)
+    run = run_physc("check", "-q", "--color", "never", write_scenario(tmp_path, "duck"))
+    assert run.status == 2
+    assert f"error[E0702]: the plugin of domain 'duck' (duck_physc:DOMAIN) {problem}" in run.stderr
+    assert "internal error" not in run.stderr
+
+
+def test_duck_typed_plugins_keep_working_without_the_defaults(install, tmp_path):
+    """An object that is not a Domain loads with the required attributes and runs every
+    stage whose hooks it defines itself; it inherits no defaults, so E0703 names them."""
+    hooks = "    from physc.domains.angrybirds import layout_rules\n"
+    install("duck", DUCK.format(name="duck", body=VOCABULARY + hooks, call=""))
+    path = tmp_path / "scenario.phys"
+    path.write_text("scenario SF {\n    domain duck\n    interactions { hit(bird, pig, any) > destroy(bird, pig) }\n}\n")
+    assert run_physc("check", path).status == 0
+    run = run_physc("compile", "--emit", "layout-graph", path)
+    assert run.status == 0 and '"pig"' in run.stdout
+    run = run_physc("compile", "-q", "--color", "never", "--emit", "layout", path)
+    assert run.status == 2
+    assert "the domain 'duck' cannot do what --emit layout needs: it has no layout_parameters, concretize, reach_targets, reachable\n" in run.stderr
+
+
+def test_every_stage_says_what_it_asks_of_a_domain_and_angrybirds_has_it_all():
+    assert list(STAGE_NEEDS) == list(BY_NAME)
+    assert missing(domains.load_domain("angrybirds"), REQUIRED + CAPABILITIES + DEFAULTS) == ()
+
+
+def test_the_interface_is_documented_hook_by_hook():
+    """Every public attribute of Domain is required, a capability or a default, and a row
+    of the table in docs/plugins.md, "The domain interface"."""
+    public = {name for name in dir(Domain) if not name.startswith("_")}
+    assert public == set(REQUIRED + CAPABILITIES + DEFAULTS)
+    section = PLUGINS[PLUGINS.index("## The domain interface") :]
+    rows = re.findall(r"^\| `(\w+)", section, re.M)
+    assert sorted(rows) == sorted(public)

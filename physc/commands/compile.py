@@ -122,6 +122,23 @@ def _progress(prefix: str):
     return show
 
 
+def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnostic]:
+    """E0703 for each scenario whose domain lacks a hook that the stage (and --png of a
+    task) needs: refused before any work, at the scenario's `domain` line."""
+    from physc.domains.base import STAGE_NEEDS, MissingCapability, require
+
+    picture = ("picture",) if args.png and stage_name in ("task", "level") else ()
+    asked = f"--emit {stage_name}" + (" --png" if picture else "")
+    found = []
+    for scenario in selected:
+        try:
+            require(domains[checked[scenario.name.text].domain], STAGE_NEEDS[stage_name] + picture, asked)
+        except MissingCapability as error:
+            span = scenario.domain.span if scenario.domain else scenario.name.span
+            found.append(Diagnostic(error.code, error.message, span, help=error.help))
+    return found
+
+
 def cmd_compile(args) -> int:
     from physc.compiler.infeasible import Infeasible
     from physc.compiler.pipeline import Pipeline
@@ -176,6 +193,10 @@ def cmd_compile(args) -> int:
         if name not in domains:
             domains[name] = load_domain(name)
             check_min_robustness(args.min_robustness, domains[name])
+    lacking = _lacking(args, chosen.name, selected, checked, domains)
+    if lacking:
+        report(args.file, analysis.source, lacking)
+        return diagnostics.exit_status(lacking)
     outputs, failures = [], []
     for index, scenario in enumerate(selected, 1):
         ir = checked[scenario.name.text]

@@ -61,7 +61,9 @@ class _Progress:
 
 def cmd_eval(args) -> int:
     from physc.evaluation.report import write
-    from physc.domains import load_domain
+    from physc.diagnostics import Diagnostic
+    from physc.domains import MissingCapability, load_domain
+    from physc.domains.base import STAGE_NEEDS, require
     from physc.evaluation.run import jobs_for, run
 
     if args.seed + args.tasks - 1 > arguments.MAX_SEED:
@@ -78,7 +80,14 @@ def cmd_eval(args) -> int:
         if not jobs:
             raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
     for name in sorted({job.domain for job in jobs}):
-        check_min_robustness(args.min_robustness, load_domain(name))
+        domain = load_domain(name)
+        try:  # generation needs the domain's capabilities: refused before any work (E0703)
+            require(domain, STAGE_NEEDS["task"], "physc eval")
+        except MissingCapability as error:
+            found = [Diagnostic(error.code, error.message, None, help=error.help)]
+            reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
+            return diagnostics.exit_status(found)
+        check_min_robustness(args.min_robustness, domain)
     folder = Path(args.out)
     started = time.perf_counter()
     records = run(jobs, folder, args.jobs, _Progress(args.quiet))

@@ -1,37 +1,26 @@
 """Domains are plugins, the built-in `angrybirds` included.
 
 A domain is registered under the entry-point group `physc.domains`; the entry
-point names an object with at least `name`, `description` and `vocabulary`
-(a `physc.domains.vocabulary.Vocabulary`). See `docs/plugins.md`.
+point names an instance of a `physc.domains.base.Domain` subclass, whose
+interface (what every domain must say, what generation asks for, the defaults)
+is documented there and in `docs/plugins.md`. `load_domain` checks at load what
+every domain must say (E0702). A duck-typed object that says it loads too, but
+gets none of the base class's defaults: each hook a stage calls must be its own.
 """
 
 from __future__ import annotations
 
 import functools
 from importlib.metadata import EntryPoint, entry_points
-from typing import Protocol
 
+from physc.domains.base import REQUIRED, Domain, DomainError, MissingCapability
 from physc.domains.vocabulary import Vocabulary
 from physc.suggest import did_you_mean
 
+__all__ = ["DEFAULT_DOMAIN", "ENTRY_POINT_GROUP", "Domain", "DomainError", "MissingCapability", "installed_domains", "load_domain"]
+
 ENTRY_POINT_GROUP = "physc.domains"
 DEFAULT_DOMAIN = "angrybirds"
-
-
-class Domain(Protocol):
-    name: str
-    description: str
-    vocabulary: Vocabulary
-
-
-class DomainError(Exception):
-    """A domain is unknown (`code` E0701) or its plugin fails to load (E0702)."""
-
-    def __init__(self, code: str, message: str, help: str | None = None):
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.help = help
 
 
 def installed_domains() -> dict[str, EntryPoint]:
@@ -42,6 +31,8 @@ def installed_domains() -> dict[str, EntryPoint]:
 
 @functools.cache
 def load_domain(name: str) -> Domain:
+    """The installed domain `name`, checked: E0701 when it is not installed, E0702 when
+    its plugin fails to import or is not a domain (see `_not_a_domain`)."""
     installed = installed_domains()
     if name not in installed:
         known = ", ".join(installed) or "none"
@@ -50,17 +41,32 @@ def load_domain(name: str) -> Domain:
             f"the domain '{name}' is not installed",
             did_you_mean(name, installed) or f"installed domains: {known}",
         )
+    plugin = f"the plugin of domain '{name}' ({installed[name].value})"
     try:
         domain = installed[name].load()
     except Exception as error:  # a broken third-party plugin must not crash physc
+        raise DomainError("E0702", f"{plugin} fails to load: {error}") from error
+    problem = _not_a_domain(domain, name)
+    if problem:
         raise DomainError(
             "E0702",
-            f"the plugin of domain '{name}' ({installed[name].value}) fails to load: {error}",
-        ) from error
-    for attribute in ("name", "description", "vocabulary"):
-        if not hasattr(domain, attribute):
-            raise DomainError(
-                "E0702",
-                f"the plugin of domain '{name}' ({installed[name].value}) has no '{attribute}'",
-            )
+            f"{plugin} {problem}",
+            "the entry point names an instance of a physc.domains.base.Domain subclass (docs/plugins.md)",
+        )
     return domain
+
+
+def _not_a_domain(domain, name: str) -> str | None:
+    """What makes the loaded object unfit to be the domain `name`, or None. Checked at
+    load so that a mistake is reported once, naming the plugin, and not as an internal
+    error in the middle of a compilation."""
+    if isinstance(domain, type):
+        return f"names the class '{domain.__name__}', not a domain: write `DOMAIN = {domain.__name__}()` and name that"
+    absent = [attribute for attribute in REQUIRED if not hasattr(domain, attribute)]
+    if absent:
+        return "has no " + " and no ".join(f"'{attribute}'" for attribute in absent)
+    if not isinstance(domain.vocabulary, Vocabulary):
+        return f"has a 'vocabulary' that is a {type(domain.vocabulary).__name__}, not a physc.domains.vocabulary.Vocabulary"
+    if domain.name != name:
+        return f"calls itself '{domain.name}': its 'name' must be its entry point's name, '{name}'"
+    return None

@@ -1,13 +1,20 @@
-"""The angrybirds domain: Science Birds levels (the paper's demonstration domain)."""
+"""The angrybirds domain: Science Birds levels (the paper's demonstration domain).
+
+It has every capability of the domain interface (physc.domains.base.Domain) and
+overrides every default: the bird must reach the first hit's target, a point is in
+reach when a full-stretch shot can pass through it, and a solution is put through 6
+noisy replays.
+"""
 
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.domains.angrybirds import layout_rules, world
 from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
+from physc.domains.base import Domain
 
 
-class AngryBirds:
+class AngryBirds(Domain):
     name = "angrybirds"
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY

@@ -1,0 +1,193 @@
+"""The domain interface: what a domain plugin says, what it can do, and what physc
+assumes where it says nothing (docs/plugins.md, "The domain interface").
+
+A domain subclasses `Domain`, as a dialect subclasses sqlglot's `Dialect`: class
+attributes and methods for what differs, inherited defaults for the rest. Two levels
+of promise:
+
+* **The front end** (`physc check`, `fmt`, `domains`, `compile --emit ast|scenario`)
+  needs `name`, `description` and `vocabulary`. Every domain must say them; they are
+  abstract, so a subclass that forgets one cannot be instantiated, and `load_domain`
+  checks them on any plugin object (E0702).
+* **Generation** needs capabilities: `layout_rules`, `layout_parameters`,
+  `concretize`, `satisfy`, `emit_level`, `picture`. No default could be right for
+  another domain, so the base class has none; a domain that lacks them still loads and
+  checks, and a command that needs one refuses before any work with E0703, naming the
+  domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable` and
+  `robustness_replays` have working defaults.
+"""
+
+from __future__ import annotations
+
+import abc
+from typing import TYPE_CHECKING, Any
+
+from physc.domains.vocabulary import Vocabulary
+
+if TYPE_CHECKING:
+    from physc.compiler.concrete_layout import Body, ConcreteLayout
+    from physc.compiler.dimension_graphs import LayoutParameters
+    from physc.compiler.layout_graph import LayoutGraph
+    from physc.compiler.task import Task
+    from physc.dsl.scenario import ScenarioIR
+
+REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
+CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture")  # no default
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays")  # working defaults
+
+# What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
+# the stages before it, so each includes what they need. `picture` is asked for by
+# `--png` of a task or level.
+_LAYOUT_GRAPH = ("layout_rules",)
+_DIMENSION_GRAPHS = _LAYOUT_GRAPH + ("layout_parameters", "concretize")
+_LAYOUT = _DIMENSION_GRAPHS + ("reach_targets", "reachable")
+_TASK = _LAYOUT + ("satisfy", "robustness_replays")
+STAGE_NEEDS: dict[str, tuple[str, ...]] = {
+    "ast": (),
+    "scenario": (),
+    "layout-graph": _LAYOUT_GRAPH,
+    "qsr": _LAYOUT_GRAPH,
+    "dimension-graphs": _DIMENSION_GRAPHS,
+    "layout": _LAYOUT,
+    "task": _TASK,
+    "level": _TASK + ("emit_level",),
+}
+
+
+class DomainError(Exception):
+    """A domain is unknown (`code` E0701), its plugin fails to load (E0702), or it
+    lacks a capability that was asked for (E0703)."""
+
+    def __init__(self, code: str, message: str, help: str | None = None):
+        super().__init__(message)
+        self.code = code
+        self.message = message
+        self.help = help
+
+
+class MissingCapability(DomainError):
+    """The domain `domain` lacks `hooks`, which `asked` (e.g. "--emit level") needs."""
+
+    def __init__(self, domain: str, hooks: tuple[str, ...], asked: str):
+        names = ", ".join(hooks)
+        super().__init__(
+            "E0703",
+            f"the domain '{domain}' cannot do what {asked} needs: it has no {names}",
+            "its vocabulary alone serves `physc check` and `--emit ast` or `scenario`; what each hook does is in "
+            "docs/plugins.md, \"The domain interface\"",
+        )
+        self.domain = domain
+        self.hooks = hooks
+
+
+def _no_default(function):
+    """Marks a base-class method without a default: a domain that does not override it
+    lacks that capability (`provides` reads the mark)."""
+    function.physc_no_default = True
+    return function
+
+
+def provides(domain: Any, hook: str) -> bool:
+    """Whether `domain` (a `Domain`, or any plugin object) has `hook`: a duck-typed plugin
+    has only what it defines itself, a subclass also the base class's defaults."""
+    if not hasattr(domain, hook):
+        return False
+    value = getattr(domain, hook)
+    if value is None and hook in CAPABILITIES:  # layout_rules, layout_parameters: None is none
+        return False
+    return not getattr(value, "physc_no_default", False)
+
+
+def missing(domain: Any, hooks: tuple[str, ...]) -> tuple[str, ...]:
+    """The hooks of `hooks` that `domain` lacks, in order."""
+    return tuple(hook for hook in hooks if not provides(domain, hook))
+
+
+def require(domain: Any, hooks: tuple[str, ...], asked: str) -> None:
+    """MissingCapability (E0703) unless `domain` has every hook of `hooks`."""
+    lacking = missing(domain, hooks)
+    if lacking:
+        raise MissingCapability(domain.name, lacking, asked)
+
+
+class Domain(abc.ABC):
+    """A domain of physics tasks. Subclass it and set at least `name`, `description`
+    and `vocabulary`; set or override the generation hooks the domain has."""
+
+    # --- the front end: every domain says these --------------------------------
+
+    @property
+    @abc.abstractmethod
+    def name(self) -> str:
+        """What a scenario selects the domain by (`domain phyre`): its entry point's name."""
+
+    @property
+    @abc.abstractmethod
+    def description(self) -> str:
+        """One line for `physc domains`."""
+
+    @property
+    @abc.abstractmethod
+    def vocabulary(self) -> Vocabulary:
+        """The object and interaction terms of `.phys` in this domain: all the static
+        checks need (physc.domains.vocabulary)."""
+
+    # --- generation: capabilities without a default ----------------------------
+
+    layout_rules: Any = None
+    """The layout inference (stage layout-graph): an object whose `infer(scenario)` gives
+    the `LayoutGraph` of the scenario's objects and QSRs, each with its provenance. None:
+    the domain does not lay out."""
+
+    layout_parameters: LayoutParameters | None = None
+    """The distances of the QSRs (clearance, far) and the area objects are placed in
+    (stages dimension-graphs and layout). None: the domain does not place."""
+
+    @_no_default
+    def concretize(self, graph: LayoutGraph, scenario: ScenarioIR, rng) -> dict[str, Body]:
+        """The concrete game object, material and shape of every node of the layout graph,
+        by name (stage dimension-graphs); draws from `rng` only, so a seed gives the same
+        shapes."""
+        raise MissingCapability(self.name, ("concretize",), "placing objects")
+
+    @_no_default
+    def satisfy(self, scenario: ScenarioIR, layout: ConcreteLayout, rng, validate: bool = True, accept: int | None = None):
+        """Make one placed layout a task by simulation (stage task), or say why not. The
+        outcome has `satisfied`, `simulations`, `parts` (level, solution, trace, validated,
+        robustness, repairs, obstacles, distractors), `nearest` (most noisy replays a
+        fragile solution passed) and optionally `given_up`, `best` and `seconds`
+        (docs/plugins.md). `accept=K`: a solution passing K of the noisy replays will do
+        (the fallbacks of --min-robustness)."""
+        raise MissingCapability(self.name, ("satisfy",), "generating a task")
+
+    @_no_default
+    def emit_level(self, level) -> str:
+        """The task's level as the domain's level file (stage level; angrybirds: Science
+        Birds XML)."""
+        raise MissingCapability(self.name, ("emit_level",), "writing a level")
+
+    @_no_default
+    def picture(self, task: Task, fmt: str = "png") -> bytes:
+        """A picture of the generated task, `fmt` "png" or "svg" (`--png` of a task or
+        level). No default: how a level looks is the domain's own; a domain without one
+        says so clearly instead of drawing something wrong."""
+        raise MissingCapability(self.name, ("picture",), "--png")
+
+    # --- generation: working defaults ------------------------------------------
+
+    robustness_replays: int | None = None
+    """The noisy replays `satisfy` puts a solution through; `--min-robustness K` may ask
+    at most this many. None (the default): the domain makes no noisy replays, so
+    --min-robustness has nothing to count and is not checked."""
+
+    def reach_targets(self, scenario: ScenarioIR) -> list[str]:
+        """The objects the player's action must reach directly (angrybirds: the first hit's
+        target); placement gives up a layout that puts none of such an object's points in
+        reach. Default: none, since only the domain knows how its player acts."""
+        return []
+
+    def reachable(self, x: float, y: float) -> bool:
+        """Whether the player's action reaches the point (x, y) (angrybirds: the bird's
+        trajectories). Default: everywhere, a player without a limited reach; placement
+        asks it only about `reach_targets`."""
+        return True
