@@ -8,6 +8,11 @@ specification (section 6)::
         7 |         > roll(fBlock, surface, right)
           |                ^^^^^^
       help: declare it as `fBlock: rollableBlock` or use an rBlock
+
+Rendered text is safe to print: characters that a terminal would act on rather than show
+(control characters, bidirectional overrides) are shown escaped, `\x1b` or `\u202e`, and a long
+source line is shown as a window of at most `MAX_COLUMNS` columns around the caret, cut with `…`.
+`to_json` keeps the exact text.
 """
 
 from __future__ import annotations
@@ -15,6 +20,7 @@ from __future__ import annotations
 import bisect
 import enum
 import re
+import unicodedata
 from typing import Iterable
 
 import attrs
@@ -129,10 +135,15 @@ class SourceText:
         """The 0-based offset of a 1-based line and column."""
         return self._line_starts[line - 1] + max(column - 1, 0)
 
-    def line_text(self, line: int) -> str:
+    def line_bounds(self, line: int) -> tuple[int, int]:
+        """The offsets where a line starts and ends (its newline excluded)."""
         start = self._line_starts[line - 1]
-        end = self.text.find("\n", start)
-        return self.text[start:] if end < 0 else self.text[start:end]
+        end = self._line_starts[line] - 1 if line < len(self._line_starts) else len(self.text)
+        return start, end
+
+    def line_text(self, line: int) -> str:
+        start, end = self.line_bounds(line)
+        return self.text[start:end]
 
     def span(self, start: int, end: int) -> Span:
         return Span(start, end, self._line_starts)
@@ -152,36 +163,127 @@ def _paint(text: str, style, color: bool) -> str:
     return f"{_ANSI[style]}{text}{_ANSI['reset']}" if color else text
 
 
+# ---- safe text --------------------------------------------------------------------------
+# What a terminal acts on instead of showing: C0 and C1 control characters, DEL, the bidirectional
+# controls ("Trojan source") and the line and paragraph separators. A tab is kept (it is shown as
+# it is in the source line and in the caret line, so the caret stays aligned).
+_FORMATTING = "\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069"
+_UNSAFE = re.compile(f"[\x00-\x08\x0a-\x1f{_FORMATTING}]")
+_UNSAFE_IN_MESSAGES = re.compile(f"[\x00-\x08\x0b-\x1f{_FORMATTING}]")  # newlines kept
+MAX_COLUMNS = 120  # the widest source excerpt shown, `…` marks included
+_CONTEXT = 40  # columns shown before the caret when a line is cut
+_LONG_WORD = re.compile(r"\S{121,}")
+
+
+def escaped(char: str) -> str:
+    """How an unsafe character is shown: `\x1b`, `\u202e`."""
+    code = ord(char)
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
+
+def safe(text: str, newlines: bool = False) -> str:
+    """`text` with its unsafe characters escaped (`newlines`: keep line breaks), for a terminal."""
+    pattern = _UNSAFE_IN_MESSAGES if newlines else _UNSAFE
+    return pattern.sub(lambda m: escaped(m.group()), text)
+
+
+def _message(text: str) -> str:
+    """A message or help for the terminal: escaped, and a word of user text longer than a line (a
+    100 KB name) cut in its middle."""
+    text = _LONG_WORD.sub(lambda m: m.group()[:60] + "…" + m.group()[-59:], text)
+    return safe(text, newlines=True)
+
+
+def _shown(char: str) -> tuple[str, int]:
+    """A source character as shown, and the columns it takes."""
+    if char == "\t":
+        return char, 1
+    if _UNSAFE.match(char):
+        text = escaped(char)
+        return text, len(text)
+    if unicodedata.combining(char):
+        return char, 0
+    return char, 2 if unicodedata.east_asian_width(char) in "WF" else 1
+
+
+def _plain(text: str) -> bool:
+    """Whether every character of `text` takes one column and is shown as it is (tabs aside)."""
+    return text.isascii() and not _UNSAFE.search(text)
+
+
+def _width(text: str) -> int:
+    return len(text) if _plain(text) else sum(_shown(c)[1] for c in text)
+
+
+def _walk(text: str, position: int, limit: int, budget: int, step: int) -> tuple[int, int]:
+    """From `position` towards `limit` (step +1 or -1), as far as `budget` columns go; returns the
+    position reached and the columns used. At most 4 × budget characters are looked at."""
+    reach = min(limit, position + budget) if step > 0 else max(limit, position - budget)
+    if _plain(text[min(position, reach) : max(position, reach)]):
+        return reach, abs(reach - position)
+    used = 0
+    looked = 0
+    while position != limit and looked < 4 * budget:
+        width = _shown(text[position if step > 0 else position - 1])[1]
+        if used + width > budget:
+            break
+        used += width
+        position += step
+        looked += 1
+    return position, used
+
+
 def _snippet(source: SourceText, span: Span, style, color: bool) -> list[str]:
-    """The source line of a span with a caret line under the span."""
+    """The source line of a span with a caret line under the span, cut to a window around the caret."""
     if span.line > source.line_count:
         return []
-    text = source.line_text(span.line)
-    start = max(span.column - 1, 0)
-    stop = span.end_column - 1 if span.end_line == span.line else len(text)
-    width = max(stop - start, 1)
-    # Keep tabs so the caret lines up with the displayed source.
-    prefix = "".join("\t" if ch == "\t" else " " for ch in text[:start])
+    text = source.text
+    line_start, line_end = source.line_bounds(span.line)
+    if line_end > line_start and text[line_end - 1] == "\r":  # a CRLF line ending
+        line_end -= 1
+    start = min(max(span.start, line_start), line_end)
+    stop = min(span.end, line_end) if span.end_line == span.line else line_end
+    stop = max(stop, start)
+    low, high = line_start, line_end
+    if line_end - line_start > MAX_COLUMNS or _width(text[low:high]) > MAX_COLUMNS:
+        budget = MAX_COLUMNS - 2  # room for the two marks
+        low, left = _walk(text, start, line_start, _CONTEXT, -1)
+        high, right = _walk(text, start, line_end, budget - left, +1)
+        if high == line_end:  # room left after the end of the line: show more before the caret
+            low, _ = _walk(text, low, line_start, budget - left - right, -1)
+    window = text[low:high]
+    if _plain(window):
+        shown = window
+        caret_prefix = re.sub("[^\t]", " ", text[low:start])
+        caret_width = min(stop, high) - start
+    else:
+        shown = "".join(_shown(c)[0] for c in window)
+        caret_prefix = "".join("\t" if c == "\t" else " " * _shown(c)[1] for c in text[low:start])
+        caret_width = _width(text[start : min(stop, high)])
+    before = "…" if low > line_start else ""
+    after = "…" if high < line_end else ""
+    prefix = (" " if before else "") + caret_prefix
     return [
-        f"{span.line:>5} | {text}",
-        f"      | {prefix}{_paint('^' * width, style, color)}",
+        f"{span.line:>5} | {before}{shown}{after}",
+        f"      | {prefix}{_paint('^' * max(caret_width, 1), style, color)}",
     ]
 
 
 def render(diagnostic: Diagnostic, source: SourceText | None, path: str, color: bool = False) -> str:
     """Render one diagnostic as text, with source lines when the source is known."""
     severity = diagnostic.severity
+    path = safe(path)
     where = f"{path}:{diagnostic.span}" if diagnostic.span else path
     head = _paint(f"{severity.value}[{diagnostic.code}]", severity, color)
-    lines = [f"{_paint(where + ':', 'bold', color)} {head}: {diagnostic.message}"]
+    lines = [f"{_paint(where + ':', 'bold', color)} {head}: {_message(diagnostic.message)}"]
     if source is not None and diagnostic.span is not None:
         lines += _snippet(source, diagnostic.span, severity, color)
     for note in diagnostic.notes:
-        lines.append(f"  {_paint('note', 'note', color)}: {note.message} ({path}:{note.span})")
+        lines.append(f"  {_paint('note', 'note', color)}: {_message(note.message)} ({path}:{note.span})")
         if source is not None:
             lines += _snippet(source, note.span, "note", color)
     if diagnostic.help:
-        lines.append(f"  {_paint('help', 'help', color)}: {diagnostic.help}")
+        lines.append(f"  {_paint('help', 'help', color)}: {_message(diagnostic.help)}")
     return "\n".join(lines)
 
 

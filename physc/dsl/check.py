@@ -31,8 +31,8 @@ from physc.suggest import article, did_you_mean
 
 # 'Did you mean' for an unknown object compares it with every object of the scenario. Past this
 # many comparisons in one scenario only the vocabulary's spellings are offered, so that a huge
-# scenario full of unknown names stays linear (a real one needs a few hundred).
-SUGGESTION_COMPARISONS = 100_000
+# scenario full of unknown names stays linear (a real one needs a few hundred; 20,000 cost ~1 s).
+SUGGESTION_COMPARISONS = 20_000
 
 
 @attrs.frozen
