@@ -310,7 +310,7 @@ def test_attempts_simulates_only_what_is_asked_and_keeps_what_is_done():
     some = s.attempts(only=screened)
     assert [a.label for a in some] == [a.label for a in full if a.label in screened]
     assert s.simulations == SCREEN
-    s._kept.clear()  # `done` alone must spare them
+    s.evaluator.forget()  # `done` alone must spare them
     rest = s.attempts(done=some)
     assert s.simulations == len(full)  # the screened ones are not simulated again
     assert [a.label for a in rest] == [a.label for a in full]

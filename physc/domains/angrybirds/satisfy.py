@@ -43,7 +43,7 @@ from __future__ import annotations
 
 import math
 import random
-from collections import Counter, OrderedDict
+from collections import Counter
 from collections.abc import Collection, Sequence
 
 import attrs
@@ -71,6 +71,7 @@ from physc.domains.angrybirds.noise import ANGLE_SIGMA, ROBUSTNESS_REPLAYS, jitt
 from physc.domains.angrybirds.to_level import level_from_layout
 from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 from physc.dsl.scenario import ScenarioIR
+from physc.generation.evaluator import Evaluator
 from physc.simulation.trace import Trace
 
 SECONDS = 9.0  # simulated time per attempt at most
@@ -182,11 +183,14 @@ class Satisfier:
         self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
         self.repairs: list[str] = []
         self.obstacles: list[str] = []
-        self.simulations = 0
+        self.evaluator = Evaluator(KEPT_SIMULATIONS)
         self.best = 0  # most interactions of the sequence realised, in order, in one play
         self.given_up = ""  # why `run` gave the layout up (NOT_REACHED … BROKEN), when it did
-        self._kept: OrderedDict = OrderedDict()  # the last simulations: see `kept`
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
+
+    @property
+    def simulations(self) -> int:
+        return self.evaluator.simulations
 
     # ---- the level ---------------------------------------------------------------------
     @property
@@ -220,14 +224,7 @@ class Satisfier:
         """`simulated()`, the `kind` of simulation of `level` with `shot`, run once while it
         is among the last KEPT_SIMULATIONS asked for."""
         key = (kind, level, tuple(o.name for o in level.objects), shot)  # a level's equality ignores names
-        if key in self._kept:
-            self._kept.move_to_end(key)
-            return self._kept[key]
-        self.simulations += 1
-        result = self._kept[key] = simulated()
-        if len(self._kept) > KEPT_SIMULATIONS:
-            self._kept.popitem(last=False)
-        return result
+        return self.evaluator.kept(key, simulated)
 
     def first_target(self) -> LevelObject | None:
         first = self.scenario.interactions[0]
@@ -1026,8 +1023,7 @@ class Satisfier:
 
     def stops(self, accident: Attempt, level: Level) -> bool:
         """Whether the shortcut's shot no longer solves `level`."""
-        self.simulations += 1
-        return not Game(level).simulate(accident.shot, SECONDS, settle_after_solved=0.0).solved
+        return not self.evaluator.run(lambda: Game(level).simulate(accident.shot, SECONDS, settle_after_solved=0.0)).solved
 
     def shortcut_blocks(self, accident: Attempt):
         """(name, level) with a platform that might stop a shortcut: across its flight
