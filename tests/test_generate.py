@@ -10,7 +10,7 @@ import pytest
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
 from physc.compiler.pipeline import Pipeline
-from physc.domains.angrybirds.fidelity import fidelity
+from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject

@@ -12,7 +12,7 @@ from physc.compiler.geometry import Geometry, overlap_depth, polygon
 from physc.compiler.infer_layout import InferLayout
 from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
-from physc.domains.angrybirds.fidelity import fidelity
+from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.preferences import choose_concrete
 from physc.domains.angrybirds.satisfy import Attempt, Satisfier
 

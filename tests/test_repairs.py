@@ -14,7 +14,7 @@ from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, extent
-from physc.domains.angrybirds.fidelity import Fidelity
+from physc.simulation.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.satisfy import STRIKE_AFTER, Attempt, Satisfier, _placed, _span

@@ -19,7 +19,7 @@ from __future__ import annotations
 import random
 
 from physc.domains.angrybirds.actions import agent_targets, points_of_interest
-from physc.domains.angrybirds.fidelity import fidelity
+from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level

@@ -62,7 +62,7 @@ from physc.domains.angrybirds.catalogue import (
     extent,
     shape,
 )
-from physc.domains.angrybirds.fidelity import Fidelity, fidelity
+from physc.simulation.fidelity import Fidelity, fidelity
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.layout_rules import OPPOSITE, last_hit_on
