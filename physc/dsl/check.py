@@ -350,6 +350,8 @@ class _ScenarioChecker(SequenceChecks):
     def explain(self) -> None:
         """Write the help texts that needed the whole scenario: E0203 for an object term (every use
         of the object must be known) and for a static object outside the sequence."""
+        if not self.misfits and not self.immobile:
+            return
         written: dict[tuple[str, str], str] = {}
         for index, found, fits in self.misfits:
             key = (found.name, fits)

@@ -36,8 +36,9 @@ class SequenceChecks:
         for item in self.immobile:
             waiting.setdefault(item[1], []).append(item)
         for index, resolved in enumerate(interactions):
-            for item in waiting.get(index, ()):
-                self.explain_immobile(item, movers)
+            if waiting and index in waiting:
+                for item in waiting[index]:
+                    self.explain_immobile(item, movers)
             if resolved is None:
                 complete = False
                 continue
@@ -92,12 +93,14 @@ class SequenceChecks:
             seen.add((signature.name, resolved.objects[:2]))
         goal = vocabulary.goal
         last = interactions[-1] if interactions else None
-        unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
+        unhittable = None
         for obj in self.objects.values() if complete else ():
             if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in destroyed:
                 continue
             if not obj.used:
                 continue
+            if unhittable is None:
+                unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
             self.error(
                 "E0404",
                 f"the {goal} '{obj.name}' is never destroyed (a task is solved when every {goal} is destroyed)",
@@ -121,25 +124,23 @@ class SequenceChecks:
         narrowed = {i: r.directions for i, r in enumerate(interactions) if r is not None}
         # A restriction on how a reaches b constrains a's direct approach: the
         # interactions a performs before anything redirects it (e.g. a bounce).
+        if not any(restrictions):
+            return narrowed
+        # Each restriction meets only the interactions it is about, found by (term, objects): checking
+        # stays linear in the size of the scenario. A repeated restriction adds nothing.
         redirected: set[str] = set()
-        direct: dict[int, bool] = {}
+        by_pair: dict[tuple, list[int]] = {}  # the direct approaches
+        by_actor: dict[tuple, list[int]] = {}
         for index, interaction in enumerate(interactions):
             if interaction is None:
                 continue
-            direct[index] = interaction.objects[0] not in redirected
-            for parameter, obj in zip(interaction.signature.object_parameters, interaction.objects):
+            name, objects = interaction.signature.name, interaction.objects
+            if objects[0] not in redirected:
+                by_pair.setdefault((name, objects[:2]), []).append(index)
+            by_actor.setdefault((name, objects[:1]), []).append(index)
+            for parameter, obj in zip(interaction.signature.object_parameters, objects):
                 if parameter.redirects:
                     redirected.add(obj)
-        # Each restriction meets only the interactions it is about, found by (term, objects): checking
-        # stays linear in the size of the scenario. A repeated restriction adds nothing.
-        by_pair: dict[tuple, list[int]] = {}
-        by_actor: dict[tuple, list[int]] = {}
-        for index, interaction in enumerate(interactions):
-            if interaction is not None:
-                name = interaction.signature.name
-                if direct[index]:
-                    by_pair.setdefault((name, interaction.objects[:2]), []).append(index)
-                by_actor.setdefault((name, interaction.objects[:1]), []).append(index)
         seen: set[tuple] = set()
         for restriction in restrictions:
             if restriction is None:
@@ -154,7 +155,10 @@ class SequenceChecks:
             if forbidden and signature.forbids == signature.narrows:
                 narrowing_set = set(narrowing)
                 forbidden = [i for i in forbidden if i not in narrowing_set]
-            for index, narrows in heapq.merge(((i, True) for i in narrowing), ((i, False) for i in forbidden)):
+            met = [(i, True) for i in narrowing]
+            if forbidden:
+                met = list(heapq.merge(met, [(i, False) for i in forbidden]))
+            for index, narrows in met:
                 interaction = interactions[index]
                 name = interaction.signature.name
                 if narrows:
