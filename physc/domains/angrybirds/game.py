@@ -5,7 +5,7 @@ the bird, and after every physics step applies the rules of Science Birds to the
 contacts the backend reports: damage from the attacker's mass and the relative
 velocity, destruction at life <= 0, removal of objects leaving the level and of
 birds that have come to rest, success when every pig is destroyed. It records
-everything in a Trace; recognising interactions is `recognise.py`'s job.
+everything in a Trace; recognising interactions is physc.simulation.recognise's job.
 """
 
 from __future__ import annotations
@@ -24,15 +24,16 @@ from physc.domains.angrybirds.catalogue import (
 )
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.recognise import recognise, violations
 from physc.domains.angrybirds.rules import RULES, Rules
 from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
+from physc.simulation.recognise import Recogniser, violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.trace import ContactRecord, DamageRecord, Trace
 
 BIRD = "bird"
 GROUND = "ground"
 STILL_SPEED = 0.02  # below this (units/s and rad/s) a body counts as at rest
+RECOGNISER = Recogniser()  # Science Birds' thresholds and kinds are the defaults
 FALLING_SPEED = 0.5  # coming down faster than this (units/s), a body is still falling
 
 
@@ -180,7 +181,7 @@ class Game(RunRules):
     def judged(self, trace: Trace, restrictions=(), redirects=None) -> Trace:
         """`trace`, a simulation of this level, with the interactions recognised in it and
         the restrictions it violates (what `play` adds to `simulate`)."""
-        interactions = recognise(trace, self.radii())
+        interactions = RECOGNISER.recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
     def _removals(self, values: list, alive: set, time: float) -> bool:

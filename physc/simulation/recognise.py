@@ -1,0 +1,308 @@
+"""Recognising the interactions of the `.phys` language in a simulation trace.
+
+Backend- and domain-neutral: a `Recogniser` reads a Trace (poses, velocities, contacts,
+destructions) and names what happened, in the order it happened. Its thresholds are in
+the domain's units and its kinds are the domain's (which bodies are surfaces, which is
+the background, which are thrown); the defaults are Science Birds':
+
+* hit(a, b, d): a contact begins at a relative speed of at least hit_speed; a is
+  the body whose velocity carries it into b (for a static b, the moving one); d
+  is the side of b that was struck (the larger component of a's velocity relative
+  to b, reversed: of the bodies' centres, see `approach`). Chatter of one pair within
+  rehit seconds is one hit.
+* roll(a, s, d): a touches a surface s (a static body of the `surfaces` kinds) while moving at
+  least moving and turning the way it moves, so that −ω·r is within roll_slip of its
+  speed along its heading (ω counter-clockwise: rolling right turns clockwise), for at
+  least motion_time in all; d is the way it moved. A ball sliding with backspin, as a
+  ball struck by a rolling ball does (the hitter's front turns downwards), is not
+  rolling, however fast it spins.
+* slide(a, s, d): the same, but translating while turning at most slide_spin.
+  Rolling and sliding count on a surface's upper side only: the contact normal points
+  up from s into a within max_tilt (60°) of the vertical (the steepest generated slope is
+  40°), so a block pushed along a platform's underside slides on nothing.
+* fall(a, b): a touches nothing for at least fall_time while dropping at least
+  fall_height; b is the first thing it touches after. A thrown body (the bird)
+  is not falling: its flight is not a fall.
+* bounce(a, s, d): a moving object touches a surface s for less than bounce_time
+  and leaves it; d is where its velocity points as it leaves.
+* destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
+
+An interaction equal to the one just before it (one roll over two contact
+intervals, a double hit) is reported once.
+
+cannotHit(a, b, D) is violated by a hit(a, b, d) with d in D on a's direct
+approach (before a bounce the scenario declares redirects it, as in the language's
+static checks; an incidental bounce on some platform does not count);
+cannotFall(a) by any fall(a, …).
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+import numpy as np
+
+from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
+
+MAX_TILT = 60.0  # degrees from the vertical: a surface steeper than this is a wall
+ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4}
+
+
+@attrs.frozen
+class Recogniser:
+    """The recognition of one domain: its thresholds (in its units) and which kinds of body
+    are surfaces, background and thrown. The defaults are Science Birds' (units of the
+    level, seconds); a domain with other units or kinds makes its own."""
+
+    hit_speed: float = 0.3  # a contact is a hit from this approach speed along its normal
+    rehit: float = 0.1  # chatter of one pair within this many seconds is one hit
+    moving: float = 0.15  # units/s: slower is not rolling or sliding
+    roll_slip: float = 0.3  # rolling: | −ω·r − sign(vx)·|v| | <= roll_slip · |v|
+    slide_spin: float = 0.3  # rad/s: sliding turns at most this fast
+    motion_time: float = 0.2  # seconds of rolling or sliding in all
+    fall_time: float = 0.2  # seconds touching nothing
+    fall_height: float = 0.4  # units dropped
+    bounce_time: float = 0.2  # a touch shorter than this that leaves the surface
+    bounce_speed: float = 1.0  # approach speed of a bounce at least
+    max_tilt: float = MAX_TILT
+    surfaces: tuple[str, ...] = ("platform", "ground")  # static kinds things roll, slide, bounce on
+    background: tuple[str, ...] = ("ground",)  # kinds that are never a hit's target
+    thrown: tuple[str, ...] = ("bird",)  # kinds whose flight is not a fall
+
+    @property
+    def upward(self) -> float:
+        """The least upward component of a surface's normal (cos max_tilt)."""
+        return math.cos(math.radians(self.max_tilt))
+
+    def recognise(self, trace: Trace, radius: dict[str, float]) -> tuple[Interaction, ...]:
+        """The interactions of a trace; `radius` gives the rolling radius of each round body."""
+        found: list[Interaction] = []
+        found += self._hits(trace)
+        intervals = _intervals(trace)
+        found += self._motion(trace, intervals, radius)
+        found += self._falls(trace, intervals)
+        found += self._bounces(trace, intervals)
+        found += [
+            Interaction("destroy", (d.by, d.name), None, d.time)
+            for d in trace.destructions
+            if d.cause == "damage" and d.by is not None
+        ]
+        ordered = sorted(found, key=lambda i: (round(i.time, 6), ORDER[i.name]))
+        # One roll over two contact intervals, or a double hit, is one interaction.
+        out = []
+        for interaction in ordered:
+            if out and (out[-1].name, out[-1].objects, out[-1].direction) == (interaction.name, interaction.objects, interaction.direction):
+                continue
+            out.append(interaction)
+        return tuple(out)
+
+    def _hits(self, trace: Trace) -> list[Interaction]:
+        kinds = trace.kinds
+        last: dict[tuple[str, str], float] = {}
+        out = []
+        for c in trace.contacts:
+            # An impact: the approach along the contact normal, not sliding across a
+            # flush junction onto the next platform.
+            if abs(c.relative_velocity[0] * c.normal[0] + c.relative_velocity[1] * c.normal[1]) < self.hit_speed:
+                continue
+            static_a, static_b = kinds.get(c.a) in self.surfaces, kinds.get(c.b) in self.surfaces
+            if static_a and static_b:
+                continue
+            rv = c.relative_velocity
+            if static_a:
+                actor, target = c.b, c.a
+            elif static_b:
+                actor, target = c.a, c.b
+            else:
+                push_a = c.velocity_a[0] * rv[0] + c.velocity_a[1] * rv[1]
+                push_b = -(c.velocity_b[0] * rv[0] + c.velocity_b[1] * rv[1])
+                actor, target = (c.a, c.b) if push_a >= push_b else (c.b, c.a)
+            if kinds.get(target) in self.background:
+                continue
+            key = (actor, target)
+            if key in last and c.time - last[key] <= self.rehit:
+                last[key] = c.time
+                continue
+            last[key] = c.time
+            # The side the actor comes from: against its velocity relative to the target
+            # (the contact normal of a glancing touch on a rounded pig would say less).
+            vx, vy = approach(trace, c, actor, target)
+            out.append(Interaction("hit", (actor, target), side(-vx, -vy), c.time))
+        return out
+
+    def _on_surfaces(self, trace: Trace, intervals):
+        """(mover, surface, the mover's state index, contact spans) for each dynamic body
+        touching a static surface from above: the spans whose contact normal, at the contact's
+        beginning, points up from the surface into the mover within MAX_TILT of the vertical.
+        A block pressed against a platform's underside or its end is not on it."""
+        normals = {}
+        for c in trace.contacts:
+            normals.setdefault((frozenset((c.a, c.b)), c.time), c)
+        for pair, spans in intervals.items():
+            names = sorted(pair)
+            surfaces = [n for n in names if trace.kinds.get(n) in self.surfaces]
+            movers = [n for n in names if n in trace.names]
+            if len(surfaces) == 1 and len(movers) == 1:
+                above = [span for span in spans if self._from_above(normals.get((pair, span[0])), surfaces[0])]
+                if above:
+                    yield movers[0], surfaces[0], trace.index(movers[0]), above
+
+    def _from_above(self, contact: ContactRecord | None, surface: str) -> bool:
+        """Whether the contact's normal, turned to point from the surface into the other body,
+        is within MAX_TILT of straight up (no record: the contact began before the trace)."""
+        if contact is None:
+            return True
+        upward = contact.normal[1] if contact.a == surface else -contact.normal[1]
+        return upward >= self.upward
+
+    def _motion(self, trace: Trace, intervals, radius) -> list[Interaction]:
+        out = []
+        dt = trace.dt
+        for mover, surface, index, spans in self._on_surfaces(trace, intervals):
+            for begin, end in spans:
+                # State row k holds the time (k + 1) · dt.
+                rows = trace.states[int(round(begin / dt)) - 1 : int(round(min(end, trace.duration) / dt)) - 1, index]
+                rows = rows[~np.isnan(rows[:, 0])]
+                if not len(rows):
+                    continue
+                speed = np.hypot(rows[:, 3], rows[:, 4])
+                spin = np.abs(rows[:, 5])
+                moving = speed >= self.moving
+                r = radius.get(mover)
+                if r:
+                    # The contact point hardly slips: the spin's sense matches the heading.
+                    heading = np.sign(rows[:, 3]) * speed
+                    rolling = moving & (np.abs(-rows[:, 5] * r - heading) <= self.roll_slip * speed)
+                else:
+                    rolling = np.zeros(len(rows), dtype=bool)
+                sliding = moving & (spin <= self.slide_spin) & ~rolling
+                for name, frames in (("roll", rolling), ("slide", sliding)):
+                    if frames.sum() * dt >= self.motion_time:
+                        first = int(np.argmax(frames))
+                        direction = "right" if rows[frames, 3].sum() > 0 else "left"
+                        out.append(Interaction(name, (mover, surface), direction, begin + first * dt))
+        return out
+
+    def _falls(self, trace: Trace, intervals) -> list[Interaction]:
+        out = []
+        dt = trace.dt
+        touching = _touching(trace, intervals)
+        airborne_all = ~touching & ~np.isnan(trace.states[:, :, 0])
+        for index, name in enumerate(trace.names):
+            if trace.kinds.get(name) in self.thrown:
+                continue
+            airborne = np.concatenate([airborne_all[:, index], [False]])
+            edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne]).astype(int)))
+            for start, stop in zip(edges[::2], edges[1::2]):
+                duration = (stop - start) * dt
+                drop = trace.states[start, index, 1] - trace.states[stop - 1, index, 1]
+                if duration < self.fall_time or drop < self.fall_height:
+                    continue
+                landed = (stop + 1) * dt
+                landing = next(
+                    (c.b if c.a == name else c.a for c in trace.contacts if name in (c.a, c.b) and c.time >= landed - dt * 1.5),
+                    None,
+                )
+                if landing is not None:
+                    out.append(Interaction("fall", (name, landing), None, (start + 1) * dt))
+        return out
+
+    def _bounces(self, trace: Trace, intervals) -> list[Interaction]:
+        out = []
+        dt = trace.dt
+        for mover, surface, index, spans in self._on_surfaces(trace, intervals):
+            pair = frozenset((mover, surface))
+            for begin, end in spans:
+                if end - begin >= self.bounce_time or end >= trace.duration:
+                    continue
+                incoming = next((c for c in trace.contacts if c.time == begin and {c.a, c.b} == pair), None)
+                after = int(round(end / dt))
+                if incoming is None or incoming.speed < self.bounce_speed or after >= trace.steps:
+                    continue
+                vx, vy = trace.states[after, index, 3:5]
+                if np.isnan(vx):
+                    continue
+                out.append(Interaction("bounce", (mover, surface), side(vx, vy), end))
+        return out
+
+
+def side(dx: float, dy: float) -> str:
+    """The side (of a target) that a direction from its contact towards the actor points to."""
+    if abs(dx) >= abs(dy):
+        return "right" if dx > 0 else "left"
+    return "above" if dy > 0 else "below"
+
+
+def _intervals(trace: Trace) -> dict[frozenset, list[list[float]]]:
+    """Contact intervals per pair: [begin, end] (end = separation, destruction or the end)."""
+    ends = {d.name: d.time for d in trace.destructions}
+    open_: dict[frozenset, list[float]] = {}
+    out: dict[frozenset, list[list[float]]] = {}
+    events = [(c.time, 0, c.a, c.b) for c in trace.contacts] + [(s.time, 1, s.a, s.b) for s in trace.separations]
+    for time, kind, a, b in sorted(events, key=lambda e: (e[0], e[1])):
+        pair = frozenset((a, b))
+        if kind == 0 and pair not in open_:
+            open_[pair] = [time, math.inf]
+            out.setdefault(pair, []).append(open_[pair])
+        elif kind == 1 and pair in open_:
+            open_.pop(pair)[1] = time
+    for pair, interval in open_.items():
+        interval[1] = min([trace.duration] + [ends[n] for n in pair if n in ends])
+    return out
+
+
+def approach(trace: Trace, contact: ContactRecord, actor: str, target: str) -> tuple[float, float]:
+    """The actor's velocity relative to the target's, of their centres, in the step
+    before the contact began. Not the contact points' velocities: the front of a
+    rolling ball turns downwards, so a ball rolling into a block at its side would
+    seem to come from above. (The contact points' when a body's state is unknown.)"""
+    step = int(round(contact.time / trace.dt)) - 2  # state row k holds the time (k + 1) · dt
+    velocities = []
+    for name in (actor, target):
+        if name not in trace.names:
+            velocities.append((0.0, 0.0))  # a platform or the ground: static
+            continue
+        row = trace.states[step, trace.index(name)] if step >= 0 else None
+        if row is None or math.isnan(row[3]):
+            rv = contact.relative_velocity
+            return rv if actor == contact.a else (-rv[0], -rv[1])
+        velocities.append((float(row[3]), float(row[4])))
+    (ax, ay), (tx, ty) = velocities
+    return ax - tx, ay - ty
+
+
+def _touching(trace: Trace, intervals) -> np.ndarray:
+    """(steps, bodies): whether each dynamic body touches anything at each step."""
+    touching = np.zeros((trace.steps, len(trace.names)), dtype=bool)
+    index = {name: i for i, name in enumerate(trace.names)}
+    for pair, spans in intervals.items():
+        for name in pair:
+            if name in index:
+                for begin, end in spans:
+                    first = max(int(round(begin / trace.dt)) - 1, 0)
+                    last = min(int(math.ceil(end / trace.dt)) - 1, trace.steps)
+                    touching[first:last, index[name]] = True
+    return touching
+
+
+def violations(interactions, restrictions, redirects=None) -> tuple[Violation, ...]:
+    """Restrictions (TermIR-like: name, objects, directions) broken by the interactions.
+
+    `redirects` are the (object, surface) pairs of the bounces the scenario declares:
+    only such a bounce ends an object's direct approach (an incidental bounce on some
+    platform does not lift `cannotHit`). None: every bounce redirects (no scenario)."""
+    out = []
+    redirected_at: dict[str, float] = {}
+    for i in interactions:
+        if i.name == "bounce" and (redirects is None or tuple(i.objects) in redirects):
+            redirected_at.setdefault(i.objects[0], i.time)
+    for restriction in restrictions:
+        for i in interactions:
+            if restriction.name == "cannotHit" and i.name == "hit" and i.objects == tuple(restriction.objects[:2]):
+                direct = i.time < redirected_at.get(i.objects[0], math.inf)
+                if direct and i.direction in restriction.directions:
+                    out.append(Violation(restriction.text or f"cannotHit({', '.join(restriction.objects)})", i))
+            elif restriction.name == "cannotFall" and i.name == "fall" and i.objects[0] == restriction.objects[0]:
+                out.append(Violation(restriction.text or f"cannotFall({restriction.objects[0]})", i))
+    return tuple(sorted(out, key=lambda v: v.interaction.time))
