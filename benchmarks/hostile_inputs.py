@@ -5,7 +5,7 @@ Makes the inputs of issue 30 in a temporary folder and runs physc on each under
 memory (maximum resident set size) against the targets, 60 s and 2 GB:
 
 * a scenario of 200 interactions (a chain of slides), compiled with the defaults;
-* one 5 MB scenario (a chain of some 60,000 interactions), checked;
+* one 5 MB scenario (a chain of 80,000 interactions), checked;
 * 5,000 repeated restrictions in scenario R, compiled with --time-budget 10;
 * a level of 5,000 blocks at one spot, simulated for 10 s;
 * a billion-laughs level (entity expansion), simulated;
@@ -51,7 +51,7 @@ def level(objects: str, prolog: str = "") -> str:
 def inputs(folder: Path) -> dict[str, list[str]]:
     """name → the physc command line, with its input written into `folder`."""
     (folder / "long200.phys").write_text(chain(200))
-    big = chain(60_000)
+    big = chain(80_000)
     (folder / "big.phys").write_text(big)
     rolling = (ROOT / "examples" / "paper" / "04_R.phys").read_text()
     repeated = rolling.replace("cannotFall(rBlock)", "cannotFall(rBlock)\n" + "        cannotHit(bird, pig, any)\n" * 5000)
