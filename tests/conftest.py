@@ -15,7 +15,6 @@ from physc.cli import main
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
 GOLDEN = Path(__file__).resolve().parent / "golden"
-SHARED = ROOT.parent / "shared"  # the project's workspace beside a checkout (the paper's source); absent in a clone
 # Real Science Birds levels kept with the tests (tests/data/sciencebirds/README.md says whence).
 SCIENCEBIRDS = Path(__file__).resolve().parent / "data" / "sciencebirds"
 TEMPLATES = sorted((SCIENCEBIRDS / "phyq-templates").glob("*.xml"))
