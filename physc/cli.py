@@ -32,6 +32,7 @@ from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
 from physc.compiler.stages import STAGES
+from physc.diagnostics import safe
 from physc.files import OutputError
 
 
@@ -108,7 +109,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return args.run(args)
     except (UsageError, OutputError) as error:
-        print(f"physc {args.command}: error: {error}", file=sys.stderr)
+        print(f"physc {args.command}: error: {safe(str(error))}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
         budget.stopped()
@@ -123,7 +124,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.traceback:
             raise
         print(
-            f"physc: internal error: {type(error).__name__}: {error}\n"
+            f"physc: internal error: {type(error).__name__}: {safe(str(error))}\n"
             "This is a bug in physc. Please report it with the input that caused it; "
             "run again with --traceback for the details.",
             file=sys.stderr,

@@ -90,3 +90,10 @@ def test_eval_seeds_stay_in_range(tmp_path):
 def test_a_valid_limit_is_accepted(level):
     run = run_physc("simulate", level, "--seconds", "0.5", "--shot=2,-3.26")
     assert run.status == 0, run.stderr
+
+
+def test_a_value_with_control_characters_is_echoed_escaped(level):
+    run = run_physc("simulate", level, "--seconds", "\x1b[31m1")
+    assert run.status == 2 and "\x1b" not in run.stderr and "'\\x1b[31m1' is not a number" in run.stderr
+    run = run_physc("compile", SCENARIO, "--layouts", "\x00")
+    assert run.status == 2 and "\x00" not in run.stderr

@@ -22,7 +22,7 @@ class UsageError(Exception):
 class Parser(argparse.ArgumentParser):
     def error(self, message):  # argparse's own errors: usage, exit 2
         self.print_usage(sys.stderr)
-        print(f"{self.prog}: error: {message}", file=sys.stderr)
+        print(f"{self.prog}: error: {diagnostics.safe(message)}", file=sys.stderr)  # the value as typed: escaped
         raise SystemExit(EXIT_USAGE)
 
 

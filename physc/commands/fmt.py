@@ -33,12 +33,12 @@ def cmd_fmt(args) -> int:
         if args.check:
             if formatted != analysis.source.text:
                 changed.append(path)
-                print(f"would reformat {path}", file=sys.stderr)
+                print(f"would reformat {diagnostics.safe(str(path))}", file=sys.stderr)
         elif args.write:
             if formatted != analysis.source.text:
                 write_atomic(path, formatted)
                 changed.append(path)
-                print(f"reformatted {path}", file=sys.stderr)
+                print(f"reformatted {diagnostics.safe(str(path))}", file=sys.stderr)
         else:
             sys.stdout.write(formatted)
     if args.check and changed:
