@@ -7,7 +7,10 @@ as `benchmarks/generation.py` runs it. Prints, per scenario, the layouts tried p
 task (median, mean), the simulations per task, and, summed over the generated tasks, the
 share of the layouts and of the simulations that went to layouts given up for each reason
 (the task's `given_up`) and to the layout used. Failed seeds are counted apart (their
-reasons are in their E0802 message, not in a task).
+reasons are in their E0802 message, not in a task). Last, over every seed (failed ones
+included), where the layouts given up because the sequence was not realised stopped: how
+many of them got k interactions of the chain, in order, in their best simulation (the
+interaction after those k is where the chain broke).
 """
 
 from __future__ import annotations
@@ -18,12 +21,30 @@ import statistics
 from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
+from physc.domains.angrybirds.satisfy import NOT_REALISED
 from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 USED = "(the layout used, fallbacks' second tries included)"
+
+
+class Watched:
+    """The domain, with every layout's outcome noted: (why it was given up, how many
+    interactions its best simulation realised in order)."""
+
+    def __init__(self, domain):
+        self.domain = domain
+        self.outcomes: list[tuple[str, int]] = []
+
+    def __getattr__(self, name):
+        return getattr(self.domain, name)
+
+    def satisfy(self, *args, **kwargs):
+        result = self.domain.satisfy(*args, **kwargs)
+        self.outcomes.append(("" if result.satisfied else result.given_up, result.best))
+        return result
 
 
 def main() -> None:
@@ -40,9 +61,10 @@ def main() -> None:
         scenario = scenarios[name]
         layouts, simulations, failed = [], [], 0
         by_reason: dict[str, list[int]] = {}  # reason → [layouts, simulations]
+        watched = Watched(domain)
         for seed in range(args.seeds):
             try:
-                task = Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
+                task = Pipeline(watched, scenario, seed, time_budget=args.time_budget).task
             except Infeasible:
                 failed += 1
                 continue
@@ -57,8 +79,10 @@ def main() -> None:
             used = by_reason.setdefault(USED, [0, 0])
             used[0] += 1
             used[1] += task.simulations - spent
+        stopped = [best for why, best in watched.outcomes if why == NOT_REALISED]
         if not layouts:
             print(f"\n{name}: no task in {args.seeds} seeds")
+            _chain_breaks(scenario, stopped)
             continue
         print(
             f"\n{name} ({len(scenario.interactions)} interactions): {len(layouts)} of {args.seeds} seeds generated"
@@ -70,6 +94,18 @@ def main() -> None:
         total_simulations = sum(entry[1] for entry in by_reason.values())
         for why, (n, sims) in sorted(by_reason.items(), key=lambda item: -item[1][1]):
             print(f"  {100 * n / total_layouts:5.1f} % of layouts, {100 * sims / total_simulations:5.1f} % of simulations: {why}", flush=True)
+        _chain_breaks(scenario, stopped)
+
+
+def _chain_breaks(scenario, stopped: list[int]) -> None:
+    """Where the layouts whose sequence was never realised broke the chain."""
+    if not stopped:
+        return
+    print(f"  {len(stopped)} layouts given up as not realised, by the interactions their best simulation realised:")
+    for k in range(len(scenario.interactions)):
+        n = stopped.count(k)
+        if n:
+            print(f"    {k} then not `{scenario.interactions[k].text}`: {n} ({100 * n / len(stopped):.0f} %)", flush=True)
 
 
 if __name__ == "__main__":
