@@ -180,7 +180,8 @@ def plot(summary: dict, metric: str, title: str, paper_key: str | None) -> bytes
     axes.set_xticks([2, 4, 6, 8])
     axes.set_xlabel("interactions in the scenario")
     axes.set_title(title, fontsize=10)
-    axes.legend(fontsize=8)
+    if ours or paper_key:  # nothing drawn (no task had a figure): no legend to show
+        axes.legend(fontsize=8)
     figure.tight_layout()
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", metadata={"Software": None})
