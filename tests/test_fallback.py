@@ -12,8 +12,8 @@ from middle_end import DOMAIN, paper_scenarios
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
-from physc.domains.angrybirds.generate import Outcome, Parts
 from physc.generation.layout_loop import FALLBACKS
+from physc.generation.outcome import Outcome, Parts
 
 
 class Scripted:

@@ -152,12 +152,11 @@ class Domain(abc.ABC):
 
     @_no_default
     def satisfy(self, scenario: ScenarioIR, layout: ConcreteLayout, rng, validate: bool = True, accept: int | None = None):
-        """Make one placed layout a task by simulation (stage task), or say why not. The
-        outcome has `satisfied`, `simulations`, `parts` (level, solution, trace, validated,
-        robustness, repairs, obstacles, distractors), `nearest` (most noisy replays a
-        fragile solution passed) and optionally `given_up`, `best` and `seconds`
-        (docs/plugins.md). `accept=K`: a solution passing K of the noisy replays will do
-        (the fallbacks of --min-robustness)."""
+        """Make one placed layout a task by simulation (stage task), or say why not: a
+        physc.generation.outcome.Outcome (satisfied, simulations, the task's Parts, and for
+        a layout given up: why, how far it got, the most noisy replays a fragile solution
+        passed; docs/plugins.md). `accept=K`: a solution passing K of the noisy replays will
+        do (the fallbacks of --min-robustness)."""
         raise MissingCapability(self.name, ("satisfy",), "generating a task")
 
     @_no_default

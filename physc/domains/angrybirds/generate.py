@@ -5,41 +5,17 @@ from __future__ import annotations
 import random
 import time
 
-import attrs
-
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.task import Solution
 from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.satisfy import Satisfier
 from physc.domains.angrybirds.stability import stability
+from physc.dsl.scenario import ScenarioIR
+from physc.generation.outcome import Outcome, Parts
 
 UNSTABLE = "the level did not stand"
 NOT_VALIDATED = "validation failed"
-from physc.dsl.scenario import ScenarioIR
-
-
-@attrs.frozen
-class Parts:
-    level: object
-    solution: Solution
-    trace: str
-    validated: bool | None
-    robustness: tuple[int, int]
-    repairs: tuple[str, ...]
-    obstacles: tuple[str, ...]
-    distractors: tuple[str, ...]
-
-
-@attrs.frozen
-class Outcome:
-    satisfied: bool
-    simulations: int
-    parts: Parts | None = None
-    nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
-    given_up: str = ""  # why the layout was given up, when it was
-    best: int = 0  # most interactions of the sequence realised, in order, in one simulation
-    seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfy
 
 
 def satisfy(

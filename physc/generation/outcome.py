@@ -1,0 +1,37 @@
+"""What a strategy answers for one placed layout: a task's parts, or why not.
+
+`Domain.satisfy` returns an `Outcome`; the layout loop reads it to count simulations,
+note why a layout was given up and how far it got, keep fragile layouts for the
+fallbacks, and, when it is satisfied, make the task from its `Parts`.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.compiler.task import Solution
+
+
+@attrs.frozen
+class Parts:
+    """The parts of a task that a satisfied layout gives (see Task)."""
+
+    level: object  # the domain's level
+    solution: Solution
+    trace: str  # the interactions the solution realises, in .phys syntax
+    validated: bool | None  # None when validation was skipped
+    robustness: tuple[int, int]  # noisy replays passed, run
+    repairs: tuple[str, ...]
+    obstacles: tuple[str, ...]
+    distractors: tuple[str, ...]
+
+
+@attrs.frozen
+class Outcome:
+    satisfied: bool
+    simulations: int  # simulations run for this layout
+    parts: Parts | None = None  # when satisfied
+    nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
+    given_up: str = ""  # why the layout was given up, when it was
+    best: int = 0  # most interactions of the sequence realised, in order, in one simulation
+    seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the domain's stages after satisfaction
