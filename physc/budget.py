@@ -33,8 +33,9 @@ class OutOfTime(Exception):
 
 _deadlines: list[tuple[float, float]] = []  # (monotonic end, budget in seconds), innermost last
 _interrupted = False
-_stopping = False  # a KeyboardInterrupt is on its way up: further Ctrl-Cs add nothing
+_stopping_since: float | None = None  # when a KeyboardInterrupt of ours began its way up
 _polling = 0  # depth of interruptible() blocks
+STOPPING = 2.0  # seconds after an interrupt during which Ctrl-C again adds nothing
 
 
 def check() -> None:
@@ -45,13 +46,6 @@ def check() -> None:
         end, seconds = _deadlines[-1]
         if time.monotonic() > end:
             raise OutOfTime(seconds)
-
-
-def remaining() -> float:
-    """Seconds left before the innermost deadline (infinite without one)."""
-    if not _deadlines:
-        return float("inf")
-    return _deadlines[-1][0] - time.monotonic()
 
 
 @contextlib.contextmanager
@@ -69,16 +63,18 @@ def deadline(seconds: float):
 
 
 def _raise_interrupt() -> None:
-    global _interrupted, _stopping
+    global _interrupted, _stopping_since
     _interrupted = False
-    _stopping = True
+    _stopping_since = time.monotonic()
     raise KeyboardInterrupt
 
 
 def _on_sigint(signum, frame) -> None:
-    global _interrupted
-    if _stopping:
-        return  # pressed again while stopping: raising now could land in a finaliser
+    global _interrupted, _stopping_since
+    if _stopping_since is not None:
+        if time.monotonic() - _stopping_since < STOPPING:
+            return  # pressed again while stopping: raising now could land in a finaliser
+        _stopping_since = None  # long since handled (a REPL, a benchmark): as before
     if _polling:
         _interrupted = True
     else:
@@ -86,12 +82,19 @@ def _on_sigint(signum, frame) -> None:
 
 
 def stopped() -> None:
-    """The interrupt has reached the top: ignore Ctrl-C from now on (the process is about
-    to exit; one more KeyboardInterrupt during shutdown would only print a traceback)."""
-    global _stopping
-    _stopping = False
+    """The interrupt has reached the top and the process is about to exit: ignore Ctrl-C
+    from now on (one more KeyboardInterrupt during shutdown would only print a traceback)."""
+    global _stopping_since
+    _stopping_since = None
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def ignore_in_workers() -> None:
+    """A worker process's initializer: Ctrl-C reaches every process of the terminal's group,
+    and the parent stops the workers itself (a worker interrupted mid-job would print a
+    traceback of its own)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 @contextlib.contextmanager
@@ -111,7 +114,9 @@ def interruptible():
         yield
     finally:
         _polling -= 1
-        if installed and not _polling and not _stopping:
+        # While an interrupt of ours is on its way up, _on_sigint stays: it ignores a second
+        # Ctrl-C for STOPPING seconds, then raises as Python's own handler does.
+        if installed and not _polling and _stopping_since is None and not _interrupted:
             signal.signal(signal.SIGINT, previous)
         if _interrupted and not _polling:
             _raise_interrupt()

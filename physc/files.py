@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import errno
 import os
+import re
 import stat
 import tempfile
 from pathlib import Path
@@ -46,41 +47,65 @@ def ensure_folder(path: str | os.PathLike) -> Path:
     return folder
 
 
+# Paths that name one of this process's open descriptors: written to that descriptor,
+# where it is (`-o /dev/stdout >> log` appends; a rename would replace the log).
+_DESCRIPTOR = re.compile(r"^/(?:dev/fd|proc/self/fd|proc/%d/fd)/(\d+)$" % os.getpid())
+_STANDARD = {"/dev/stdin": 0, "/dev/stdout": 1, "/dev/stderr": 2}
+
+
+def _descriptor(path) -> int | None:
+    text = os.fspath(path)
+    if text in _STANDARD:
+        return _STANDARD[text]
+    match = _DESCRIPTOR.match(text)
+    return int(match.group(1)) if match else None
+
+
+def _in_place(mode: int) -> bool:
+    """Whether a path of this mode is written where it is: a device or a FIFO."""
+    return stat.S_ISCHR(mode) or stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)
+
+
 def check_output(path: str | os.PathLike, folder: bool = False) -> None:
     """Fail now, before any work, if `path` cannot be written (OutputError): a missing
     or unwritable folder, a directory where a file is wanted (or the reverse), something
     that is neither a file nor a device or FIFO to write to. A path that does not exist
     yet is fine where its folder takes new files."""
+    try:
+        _check_output(path, folder)
+    except OSError as error:  # a name too long, a folder we may not look into
+        raise OutputError(path, error) from None
+
+
+def _check_output(path, folder: bool) -> None:
+    if not folder and _descriptor(path) is not None:
+        return  # written where it is; an error then is the writer's to report
     target = Path(os.path.realpath(path))  # a symlink is written through
     if folder:
         if target.exists() and not target.is_dir():
-            raise OutputError(path, NotADirectoryError(errno.ENOTDIR, "it is not a folder"))
+            raise NotADirectoryError(errno.ENOTDIR, "it is not a folder")
         parent = target
         while not parent.exists():
             parent = parent.parent
-        _check_folder(path, parent)
+        _check_folder(parent)
         return
     if target.is_dir():
-        raise OutputError(path, IsADirectoryError(errno.EISDIR, "it is a directory"))
+        raise IsADirectoryError(errno.EISDIR, "it is a directory")
     if target.exists() and not target.is_file():
-        mode = target.stat().st_mode
-        if not (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
-            raise OutputError(path, OSError(errno.EINVAL, "it is neither a file nor a device or FIFO"))
+        if not _in_place(target.stat().st_mode):
+            raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
         if not os.access(target, os.W_OK):
-            raise OutputError(path, PermissionError(errno.EACCES, "Permission denied"))
+            raise PermissionError(errno.EACCES, "Permission denied")
         return
     if not target.parent.is_dir():
-        raise OutputError(path, FileNotFoundError(errno.ENOENT, f"no folder {target.parent}"))
-    _check_folder(path, target.parent)
+        raise FileNotFoundError(errno.ENOENT, f"no folder {target.parent}")
+    _check_folder(target.parent)
 
 
-def _check_folder(path, folder: Path) -> None:
+def _check_folder(folder: Path) -> None:
     """Whether a file can be made in `folder` (tried: permissions alone say nothing to root
     on a read-only file system)."""
-    try:
-        descriptor, temporary = tempfile.mkstemp(prefix=".physc-check.", dir=folder)
-    except OSError as error:
-        raise OutputError(path, error) from None
+    descriptor, temporary = tempfile.mkstemp(prefix=".physc-check.", dir=folder)
     os.close(descriptor)
     os.unlink(temporary)
 
@@ -88,13 +113,19 @@ def _check_folder(path, folder: Path) -> None:
 def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
     """Write `data` to `path` whole or not at all (OutputError when that cannot be done):
     a regular file by a temporary file beside it renamed into place; through a symlink to
-    its target; a device or FIFO (`/dev/stdout`, a pipe) in place, never replaced."""
+    its target; a device, FIFO or one of our own descriptors (`/dev/stdout`) in place,
+    never replaced."""
     payload = data.encode("utf-8") if isinstance(data, str) else data
-    target = Path(os.path.realpath(path))
     try:
+        descriptor = _descriptor(path)
+        if descriptor is not None:
+            view = memoryview(payload)
+            while view:
+                view = view[os.write(descriptor, view):]
+            return
+        target = Path(os.path.realpath(path))
         if target.exists() and not target.is_file() and not target.is_dir():
-            mode = target.stat().st_mode
-            if not (stat.S_ISCHR(mode) or stat.S_ISFIFO(mode)):
+            if not _in_place(target.stat().st_mode):
                 raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
             with open(target, "wb") as handle:
                 handle.write(payload)
@@ -114,7 +145,7 @@ def _write_atomic(target: Path, payload: bytes) -> None:
         if target.exists():
             os.chmod(temporary, target.stat().st_mode & 0o777)
         else:
-            os.chmod(temporary, 0o644)
+            os.chmod(temporary, 0o666 & ~_umask())  # as open() would have made it
         os.replace(temporary, target)
     except BaseException:
         try:
@@ -122,3 +153,9 @@ def _write_atomic(target: Path, payload: bytes) -> None:
         except FileNotFoundError:
             pass
         raise
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask

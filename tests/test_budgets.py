@@ -21,12 +21,10 @@ def test_deadline_raises_at_the_next_check(monkeypatch):
         budget.check()
         now[0] = 104.9
         budget.check()
-        assert budget.remaining() == pytest.approx(0.1)
         now[0] = 105.1
         with pytest.raises(budget.OutOfTime, match="5 s"):
             budget.check()
     budget.check()  # no deadline outside the block
-    assert budget.remaining() == float("inf")
 
 
 def test_an_inner_deadline_cannot_outlast_the_outer(monkeypatch):

@@ -58,3 +58,30 @@ def test_ctrl_c_stops_a_simulation(tmp_path):
     if status == 0:
         pytest.skip("the play ended before the signal")
     assert status == 130 and "Traceback" not in err and waited < 3.0
+
+
+def test_ctrl_c_stops_an_eval_with_workers(tmp_path):
+    # Workers ignore the signal; the parent ends them and keeps the records made so far.
+    status, waited, err = _interrupted(
+        ["eval", str(RRR), "--tasks", "4", "--jobs", "2", "--time-budget", "60", "--out", "out", "-q"], 2.0, tmp_path, repeats=2
+    )
+    assert status == 130, err
+    assert "Traceback" not in err and "Exception ignored" not in err
+    assert waited < 3.0
+
+
+def test_a_second_interrupt_long_after_the_first_is_not_ignored():
+    """In a process that goes on after an interrupt (a REPL, a benchmark), Ctrl-C works again."""
+    import os
+
+    from physc import budget
+
+    with pytest.raises(KeyboardInterrupt):
+        with budget.interruptible():
+            os.kill(os.getpid(), signal.SIGINT)
+            budget.check()
+    budget._stopping_since -= budget.STOPPING  # as if it were long ago
+    with pytest.raises(KeyboardInterrupt):
+        os.kill(os.getpid(), signal.SIGINT)
+        time.sleep(0.5)  # the handler runs between bytecodes
+    signal.signal(signal.SIGINT, signal.default_int_handler)

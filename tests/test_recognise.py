@@ -9,7 +9,8 @@ import numpy as np
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.simulation.recognise import Recogniser, side, violations
+from physc.domains.angrybirds.game import RECOGNISER
+from physc.simulation.recognise import side, violations
 from physc.dsl.scenario import TermIR
 from physc.simulation.trace import ContactRecord, Interaction, Trace
 
@@ -92,10 +93,10 @@ def _ball_on_a_platform(spin_per_speed: float) -> Trace:
 
 
 def test_a_ball_rolls_only_when_it_turns_the_way_it_moves():
-    rolling = [i.text() for i in Recogniser().recognise(_ball_on_a_platform(-1.0), {"ball": 0.5})]
+    rolling = [i.text() for i in RECOGNISER.recognise(_ball_on_a_platform(-1.0), {"ball": 0.5})]
     assert rolling == ["roll(ball, platform, right)"]
     # Backspin of the same magnitude: its contact point slips at twice its speed.
-    assert Recogniser().recognise(_ball_on_a_platform(+1.0), {"ball": 0.5}) == ()
+    assert RECOGNISER.recognise(_ball_on_a_platform(+1.0), {"ball": 0.5}) == ()
 
 
 def _sliding_trace(surface: str, normal: tuple[float, float]) -> Trace:
@@ -110,10 +111,10 @@ def _sliding_trace(surface: str, normal: tuple[float, float]) -> Trace:
 
 
 def test_sliding_counts_on_a_surfaces_upper_side_only():
-    assert [i.text() for i in Recogniser().recognise(_sliding_trace("floor", (0.0, 1.0)), {})] == ["slide(block, floor, right)"]
+    assert [i.text() for i in RECOGNISER.recognise(_sliding_trace("floor", (0.0, 1.0)), {})] == ["slide(block, floor, right)"]
     # The platform at the block's top edge: the block slides along its underside.
-    assert Recogniser().recognise(_sliding_trace("ceiling", (0.0, -1.0)), {}) == ()
+    assert RECOGNISER.recognise(_sliding_trace("ceiling", (0.0, -1.0)), {}) == ()
     # Against a platform's end (a wall), and on a slope of 40° (still a surface).
-    assert Recogniser().recognise(_sliding_trace("wall", (1.0, 0.0)), {}) == ()
+    assert RECOGNISER.recognise(_sliding_trace("wall", (1.0, 0.0)), {}) == ()
     slope = (math.sin(math.radians(40)), math.cos(math.radians(40)))
-    assert [i.text() for i in Recogniser().recognise(_sliding_trace("slope", slope), {})] == ["slide(block, slope, right)"]
+    assert [i.text() for i in RECOGNISER.recognise(_sliding_trace("slope", slope), {})] == ["slide(block, slope, right)"]

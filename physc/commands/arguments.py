@@ -54,9 +54,27 @@ def time_budget(text: str) -> float:
 
 def count(text: str) -> int:
     """A whole number of at least 1 (layouts, tasks, jobs, clause choices)."""
+    return _within(text, MAX_COUNT)
+
+
+MAX_JOBS = 1024  # processes: each is forked when the pool starts
+MAX_TASKS = 100_000  # tasks per scenario of one evaluation
+
+
+def jobs(text: str) -> int:
+    """--jobs: processes, from 1 to MAX_JOBS."""
+    return _within(text, MAX_JOBS)
+
+
+def tasks(text: str) -> int:
+    """--tasks: tasks per scenario, from 1 to MAX_TASKS."""
+    return _within(text, MAX_TASKS)
+
+
+def _within(text: str, most: int) -> int:
     value = _whole(text)
-    if not 1 <= value <= MAX_COUNT:
-        raise argparse.ArgumentTypeError(f"takes a whole number from 1 to {MAX_COUNT:,}, not {text}")
+    if not 1 <= value <= most:
+        raise argparse.ArgumentTypeError(f"takes a whole number from 1 to {most:,}, not {text}")
     return value
 
 
@@ -89,15 +107,3 @@ def shot(text: str) -> tuple[float, float, str]:
             raise argparse.ArgumentTypeError(f"takes coordinates from -{MAX_COORDINATE:g} to {MAX_COORDINATE:g}, not {part}")
         point.append(value)
     return point[0], point[1], trajectory
-
-
-def min_robustness(replays: int):
-    """--min-robustness: a whole number from 1 to the domain's noisy replays."""
-
-    def parse(text: str) -> int:
-        value = _whole(text)
-        if not 1 <= value <= replays:
-            raise argparse.ArgumentTypeError(f"takes a whole number from 1 to {replays} (the noisy replays), not {text}")
-        return value
-
-    return parse

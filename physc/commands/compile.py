@@ -17,14 +17,7 @@ from physc.commands.common import (
 from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
-from physc.compiler.infeasible import (
-    CLAUSE_BUDGET,
-    LAYOUT_BUDGET,
-    PLACEMENT_BUDGET,
-    SIZE_LIMIT,
-    TIME_BUDGET,
-    readable,
-)
+from physc.compiler.infeasible import Exhausted, readable
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
@@ -40,7 +33,7 @@ def _infeasible(error, scenario) -> Diagnostic:
                 notes.append(Label(why.span, f"{edge.text()} comes from {why.rule} `{why.text}`"))
             else:
                 notes.append(Label(scenario.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
-    code = "E0803" if error.budget == SIZE_LIMIT else "E0802" if error.budget else "E0801"
+    code = "E0803" if error.budget is Exhausted.SIZE else "E0802" if error.budget else "E0801"
     tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
     if error.conflicts:
         help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
@@ -57,11 +50,11 @@ def _infeasible(error, scenario) -> Diagnostic:
 
 # What would help when a budget ran out (Infeasible.budget names it).
 BUDGET_HELP = {
-    CLAUSE_BUDGET: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
-    LAYOUT_BUDGET: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
-    TIME_BUDGET: "the time ran out: allow more with --time-budget, or try another --seed",
-    PLACEMENT_BUDGET: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
-    SIZE_LIMIT: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
+    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
+    Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
+    Exhausted.TIME: "the time ran out: allow more with --time-budget, or try another --seed",
+    Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
+    Exhausted.SIZE: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
 }
 PROGRESS_EVERY = 5.0  # seconds between progress lines
 FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}
@@ -102,6 +95,20 @@ def _robustness(robustness) -> str:
     passed, total = robustness
     text = f"{passed} of {total} noisy replays"
     return text if passed == total else text + " (a fallback: --min-robustness)"
+
+
+def _picture_format(path: str) -> str:
+    """svg for a path ending .svg; png otherwise (and for a folder of several scenarios)."""
+    return "svg" if path.lower().endswith(".svg") else "png"
+
+
+def _picture(value, stage: str, domain, path: str) -> bytes:
+    """The picture of a layout or a task, as --png asks."""
+    if stage == "layout":
+        from physc.domains.angrybirds.picture import render
+
+        return render(value, _picture_format(path))
+    return domain.picture(value, _picture_format(path))
 
 
 def _progress(prefix: str):
@@ -216,13 +223,16 @@ def cmd_compile(args) -> int:
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
+            # The picture (a simulation of the solution's paths) is part of the work: within
+            # the time budget, and where Ctrl-C stops it safely.
             with budget.interruptible(), budget.deadline(args.time_budget):
                 value = chosen.run(Unit(scenario, ir), pipeline)
+                picture = _picture(value, chosen.name, domain, args.png) if args.png else None
         except Infeasible as error:
             failures.append(_infeasible(error, scenario))
             continue
         except budget.OutOfTime:
-            error = Infeasible(chosen.name, f"the time budget of {args.time_budget:g} s ran out", budget=TIME_BUDGET)
+            error = Infeasible(chosen.name, f"the time budget of {args.time_budget:g} s ran out", budget=Exhausted.TIME)
             failures.append(_infeasible(error, scenario))
             continue
         outputs.append((ir.name, domain, value))
@@ -235,15 +245,8 @@ def cmd_compile(args) -> int:
                 file=sys.stderr,
                 flush=True,
             )
-        if args.png:
-            png = _destination(args.png, many, ir.name, "png")
-            picture_format = "svg" if png.lower().endswith(".svg") else "png"
-            if chosen.name == "layout":
-                from physc.domains.angrybirds.picture import render
-
-                write_atomic(png, render(value, picture_format))
-            else:
-                write_atomic(png, domain.picture(value, picture_format))
+        if picture is not None:
+            write_atomic(_destination(args.png, many, ir.name, _picture_format(args.png)), picture)
         if args.task:
             write_atomic(_destination(args.task, many, ir.name, "json"), json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n")
     if failures:

@@ -13,7 +13,7 @@ import json
 from physc import budget
 from physc.commands import arguments
 from physc.commands.common import EXIT_OK, UsageError, reporter
-from physc.diagnostics import Diagnostic, SourceText
+from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
 
@@ -117,7 +117,7 @@ def cmd_simulate(args) -> int:
         )
         return EXIT_OK
     what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
-    print(f"{args.level}: {len(level.objects)} objects, {len(pigs)} pigs; {what}")
+    print(f"{safe(args.level)}: {len(level.objects)} objects, {len(pigs)} pigs; {what}")
     verdict = "solved" if trace.solved else "not solved"
     print(f"after {trace.duration:.2f} s: {len(destroyed)} of {len(pigs)} pigs destroyed: {verdict}")
     for d in trace.destructions:
@@ -133,7 +133,7 @@ def cmd_trace(args) -> int:
     if args.json:
         print(json.dumps([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions], indent=2))
         return EXIT_OK
-    print(f"# {args.level}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
+    print(f"# {safe(args.level)}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
     for index, interaction in enumerate(trace.interactions):
         prefix = "> " if index else ""
         print(f"{prefix}{interaction.text():<40} # t = {interaction.time:.2f} s")

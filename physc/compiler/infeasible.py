@@ -2,26 +2,30 @@
 
 from __future__ import annotations
 
+import enum
 import math
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:  # the CLI imports this module; networkx is not needed to name the type
     from physc.compiler.layout_graph import LayoutEdge
 
-# The budgets a search can run out of, by the option that sets each (`Infeasible.budget`).
-CLAUSE_BUDGET = "--budget"  # clause choices of the layout search, per shape draw
-LAYOUT_BUDGET = "--layouts"  # placed layouts that simulation may try
-TIME_BUDGET = "--time-budget"  # seconds for the whole generation
-PLACEMENT_BUDGET = "placement"  # consistent conjunctions placement may try (no option)
-SIZE_LIMIT = "size"  # the scenario is larger than the layout search takes (E0803)
+class Exhausted(enum.Enum):
+    """What ran out before a task was found (`Infeasible.budget`); the value is the option
+    that sets it, where there is one."""
+
+    CLAUSES = "--budget"  # clause choices of the layout search, per shape draw
+    LAYOUTS = "--layouts"  # placed layouts that simulation may try
+    TIME = "--time-budget"  # seconds for the whole generation
+    PLACEMENTS = "placement"  # consistent conjunctions placement may try (no option)
+    SIZE = "size"  # the scenario is larger than the layout search takes (E0803)
 
 
 class Infeasible(Exception):
-    """No task can be generated: the constraints conflict (`budget` None) or a budget ran
-    out first (`budget` names it: one of the *_BUDGET names above). `conflicts` are the
+    """No task can be generated: the constraints conflict (`budget` None) or something
+    ran out first (`budget` says what: an Exhausted). `conflicts` are the
     layout edges that cannot hold together, each with the source terms it comes from."""
 
-    def __init__(self, stage: str, message: str, conflicts: tuple[LayoutEdge, ...] = (), tried: int = 0, budget: str | None = None):
+    def __init__(self, stage: str, message: str, conflicts: tuple[LayoutEdge, ...] = (), tried: int = 0, budget: Exhausted | None = None):
         super().__init__(message)
         self.stage = stage
         self.message = message

@@ -16,8 +16,7 @@ import attrs
 from physc import budget
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.dimension_graphs import DimensionGraphs
-from physc.compiler.infeasible import PLACEMENT_BUDGET as PLACEMENTS_RAN_OUT
-from physc.compiler.infeasible import Infeasible
+from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
@@ -99,7 +98,7 @@ class Pipeline:
                         f"{consistent} consistent conjunctions were found, but no placement kept the objects "
                         "apart and the bird's targets in reach",
                         tried=graphs.conjunctions_tried,
-                        budget=PLACEMENTS_RAN_OUT,
+                        budget=Exhausted.PLACEMENTS,
                     )
         except Infeasible as error:
             if consistent and not error.budget:

@@ -28,7 +28,7 @@ from physc.compiler.dimension_graphs import (
     relation_constraints,
 )
 from physc import budget
-from physc.compiler.infeasible import CLAUSE_BUDGET, SIZE_LIMIT, Infeasible, readable
+from physc.compiler.infeasible import Exhausted, Infeasible, readable
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 # The most interactions the search takes. Its memory grows with the square of the bodies
@@ -77,7 +77,7 @@ class ToDimensionGraphs:
                 self.name,
                 f"the scenario has {len(scenario.interactions)} interactions; the layout search takes at most "
                 f"{MAX_INTERACTIONS} (its time and memory grow with the cube of the interactions)",
-                budget=SIZE_LIMIT,
+                budget=Exhausted.SIZE,
             )
         parameters = self.domain.layout_parameters
         tried = rejected = found = 0
@@ -134,7 +134,7 @@ class ToDimensionGraphs:
                     self.name,
                     f"the search budget ran out after {readable(tried)} of {readable(dnf.size)} conjunctions",
                     tried=tried,
-                    budget=CLAUSE_BUDGET,
+                    budget=Exhausted.CLAUSES,
                 ) from None
         if found:
             raise Infeasible(

@@ -448,11 +448,17 @@ class ReadResult:
     diagnostics: tuple[Diagnostic, ...] = ()
 
 
+MAX_SOURCE_BYTES = 64 * 1024 * 1024  # a .phys file at most (the front end takes 5 MB in ~10 s)
+
+
 def read_source(path: str) -> ReadResult:
-    """Read a file as UTF-8 (a leading byte-order mark is dropped); '-' is standard input."""
-    data, problem = read_input(path)
+    """Read a file as UTF-8 (a leading byte-order mark is dropped); '-' is standard input.
+    At most MAX_SOURCE_BYTES are read: a larger input (or /dev/zero) is refused, not held."""
+    data, problem = read_input(path, limit=MAX_SOURCE_BYTES + 1)
     if data is None:
         return ReadResult(None, (Diagnostic("E0001", problem),))
+    if len(data) > MAX_SOURCE_BYTES:
+        return ReadResult(None, (Diagnostic("E0001", f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads"),))
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as error:

@@ -15,10 +15,11 @@ from __future__ import annotations
 import functools
 import hashlib
 import importlib.util
+import multiprocessing
 import json
 import random
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
 import attrs
@@ -154,7 +155,7 @@ def evaluate(job: Job) -> dict:
 
 
 def interruptible_evaluate(job: Job) -> dict:
-    """`evaluate`, stopping promptly on Ctrl-C (see physc.budget), in a worker or not."""
+    """`evaluate`, stopping promptly on Ctrl-C (see physc.budget): the sequential run."""
     with budget.interruptible():
         return evaluate(job)
 
@@ -219,13 +220,21 @@ def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict
             for job in todo:
                 keep(interruptible_evaluate(job))
         else:
-            pool = ProcessPoolExecutor(max_workers=workers)
+            # Workers ignore Ctrl-C; on an interrupt (or any error) here they are ended at
+            # once: only this process writes records, so nothing is left half-written.
+            pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)) or 1, initializer=budget.ignore_in_workers)
             try:
-                for future in as_completed([pool.submit(interruptible_evaluate, job) for job in todo]):
-                    keep(future.result())
+                with budget.interruptible():
+                    futures = [pool.submit(evaluate, job) for job in todo]
+                    pending = set(futures)
+                    while pending:
+                        done, pending = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
+                        for future in done:
+                            keep(future.result())
+                        budget.check()
             except BaseException:
-                # Ctrl-C reached the workers too (one process group): they stop at their next
-                # stopping point; the jobs not started are dropped, not run.
+                for process in multiprocessing.active_children():
+                    process.terminate()
                 pool.shutdown(wait=True, cancel_futures=True)
                 raise
             pool.shutdown()

@@ -17,7 +17,7 @@ from collections.abc import Callable, Iterator
 import attrs
 
 from physc import budget
-from physc.compiler.infeasible import LAYOUT_BUDGET, TIME_BUDGET, Infeasible
+from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
@@ -116,14 +116,14 @@ class LayoutLoop:
                     f"no layout realised the sequence in simulation within the budget "
                     f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
                     tried=placed.layout.conjunctions_tried,
-                    budget=LAYOUT_BUDGET,
+                    budget=Exhausted.LAYOUTS,
                 )
                 break
             clock = time.perf_counter()
         if failure is not None:
             clock = time.perf_counter()
             try:
-                fallback = None if failure.budget == TIME_BUDGET else self.fallback(fragile)
+                fallback = None if failure.budget is Exhausted.TIME else self.fallback(fragile)
             except budget.OutOfTime:
                 failure, fallback = self._out_of_time(layouts, started), None
             seconds["satisfy"] += time.perf_counter() - clock
@@ -156,7 +156,7 @@ class LayoutLoop:
             "satisfy",
             f"the time budget of {self.time_budget:g} s ran out after {layouts} "
             f"{'layout' if layouts == 1 else 'layouts'} ({time.perf_counter() - started:.1f} s)",
-            budget=TIME_BUDGET,
+            budget=Exhausted.TIME,
         )
 
     def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0) -> Infeasible:
@@ -173,7 +173,7 @@ class LayoutLoop:
         if nearest:
             if nearest < self.min_robustness:
                 hint = f"--min-robustness {nearest} accepts such a one"
-            elif failure.budget == TIME_BUDGET:
+            elif failure.budget is Exhausted.TIME:
                 hint = "no time was left to try it again as a fallback"
             else:
                 hint = "tried again as a fallback, it failed"

@@ -3,7 +3,7 @@
 Backend- and domain-neutral: a `Recogniser` reads a Trace (poses, velocities, contacts,
 destructions) and names what happened, in the order it happened. Its thresholds are in
 the domain's units and its kinds are the domain's (which bodies are surfaces, which is
-the background, which are thrown); the defaults are Science Birds':
+the background, which are thrown). Below, in Science Birds' terms and thresholds:
 
 * hit(a, b, d): a contact begins at a relative speed of at least hit_speed; a is
   the body whose velocity carries it into b (for a static b, the moving one); d
@@ -51,24 +51,24 @@ ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4}
 
 @attrs.frozen
 class Recogniser:
-    """The recognition of one domain: its thresholds (in its units) and which kinds of body
-    are surfaces, background and thrown. The defaults are Science Birds' (units of the
-    level, seconds); a domain with other units or kinds makes its own."""
+    """The recognition of one domain: its thresholds (in its units: lengths, seconds) and
+    which kinds of body are surfaces, background and thrown. Each domain makes its own
+    (Science Birds': physc.domains.angrybirds.game.RECOGNISER)."""
 
-    hit_speed: float = 0.3  # a contact is a hit from this approach speed along its normal
-    rehit: float = 0.1  # chatter of one pair within this many seconds is one hit
-    moving: float = 0.15  # units/s: slower is not rolling or sliding
-    roll_slip: float = 0.3  # rolling: | −ω·r − sign(vx)·|v| | <= roll_slip · |v|
-    slide_spin: float = 0.3  # rad/s: sliding turns at most this fast
-    motion_time: float = 0.2  # seconds of rolling or sliding in all
-    fall_time: float = 0.2  # seconds touching nothing
-    fall_height: float = 0.4  # units dropped
-    bounce_time: float = 0.2  # a touch shorter than this that leaves the surface
-    bounce_speed: float = 1.0  # approach speed of a bounce at least
+    hit_speed: float  # a contact is a hit from this approach speed along its normal
+    rehit: float  # chatter of one pair within this many seconds is one hit
+    moving: float  # slower (length/s) is not rolling or sliding
+    roll_slip: float  # rolling: | −ω·r − sign(vx)·|v| | <= roll_slip · |v|
+    slide_spin: float  # rad/s: sliding turns at most this fast
+    motion_time: float  # seconds of rolling or sliding in all
+    fall_time: float  # seconds touching nothing
+    fall_height: float  # length dropped
+    bounce_time: float  # a touch shorter than this that leaves the surface
+    bounce_speed: float  # approach speed of a bounce at least
+    surfaces: tuple[str, ...]  # static kinds things roll, slide, bounce on
+    background: tuple[str, ...] = ()  # kinds that are never a hit's target
+    thrown: tuple[str, ...] = ()  # kinds whose flight is not a fall
     max_tilt: float = MAX_TILT
-    surfaces: tuple[str, ...] = ("platform", "ground")  # static kinds things roll, slide, bounce on
-    background: tuple[str, ...] = ("ground",)  # kinds that are never a hit's target
-    thrown: tuple[str, ...] = ("bird",)  # kinds whose flight is not a fall
 
     @property
     def upward(self) -> float:

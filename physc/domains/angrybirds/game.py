@@ -33,7 +33,12 @@ from physc.simulation.trace import ContactRecord, DamageRecord, Trace
 BIRD = "bird"
 GROUND = "ground"
 STILL_SPEED = 0.02  # below this (units/s and rad/s) a body counts as at rest
-RECOGNISER = Recogniser()  # Science Birds' thresholds and kinds are the defaults
+# Science Birds' recognition: thresholds in level units and seconds, and its kinds.
+RECOGNISER = Recogniser(
+    hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2,
+    fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
+    surfaces=("platform", "ground"), background=("ground",), thrown=("bird",),
+)
 FALLING_SPEED = 0.5  # coming down faster than this (units/s), a body is still falling
 
 
