@@ -85,7 +85,7 @@ class LayoutLoop:
                 )
                 break
             except budget.OutOfTime:
-                failure = self._out_of_time(layouts, started)
+                failure = self._out_of_time(layouts)
                 break
             layouts += 1
             seconds["layout"] += time.perf_counter() - clock
@@ -93,7 +93,7 @@ class LayoutLoop:
             try:
                 result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
             except budget.OutOfTime:
-                failure = self._out_of_time(layouts, started)
+                failure = self._out_of_time(layouts)
                 break
             finally:
                 seconds["satisfy"] += time.perf_counter() - clock
@@ -113,8 +113,7 @@ class LayoutLoop:
             if layouts >= self.layout_budget:
                 failure = Infeasible(
                     "satisfy",
-                    f"no layout realised the sequence in simulation within the budget "
-                    f"({layouts} layouts, {time.perf_counter() - started:.1f} s)",
+                    f"no layout realised the sequence in simulation within the budget ({layouts} layouts)",
                     tried=placed.layout.conjunctions_tried,
                     budget=Exhausted.LAYOUTS,
                 )
@@ -125,7 +124,7 @@ class LayoutLoop:
             try:
                 fallback = None if failure.budget is Exhausted.TIME else self.fallback(fragile)
             except budget.OutOfTime:
-                failure, fallback = self._out_of_time(layouts, started), None
+                failure, fallback = self._out_of_time(layouts), None
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
                 raise self.explained(failure, nearest, given_up, best)
@@ -151,11 +150,10 @@ class LayoutLoop:
                 return simulations, result, layout
         return None
 
-    def _out_of_time(self, layouts: int, started: float) -> Infeasible:
+    def _out_of_time(self, layouts: int) -> Infeasible:
         return Infeasible(
             "satisfy",
-            f"the time budget of {self.time_budget:g} s ran out after {layouts} "
-            f"{'layout' if layouts == 1 else 'layouts'} ({time.perf_counter() - started:.1f} s)",
+            f"the time budget of {self.time_budget:g} s ran out after {layouts} {'layout' if layouts == 1 else 'layouts'}",
             budget=Exhausted.TIME,
         )
 
