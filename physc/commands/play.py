@@ -96,7 +96,7 @@ def cmd_simulate(args) -> int:
     level, shot, trace = _play(args)
     if level is None:
         return trace
-    pigs = list(trace.pigs)
+    pigs = list(trace.goal)
     destroyed = [d for d in trace.destructions if d.name in pigs]
     if args.json:
         print(

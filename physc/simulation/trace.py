@@ -86,7 +86,8 @@ class Trace:
     separations: tuple[SeparationRecord, ...] = ()
     damage: tuple[DamageRecord, ...] = ()
     destructions: tuple[DestructionRecord, ...] = ()
-    pigs: tuple[str, ...] = ()
+    goal: tuple[str, ...] = ()  # the bodies the domain's goal is about (angrybirds: the pigs)
+    solved: bool = False  # whether the domain's goal was met (angrybirds: every pig destroyed)
     interactions: tuple[Interaction, ...] = ()
     violations: tuple[Violation, ...] = ()
 
@@ -101,10 +102,6 @@ class Trace:
     @property
     def destroyed(self) -> set[str]:
         return {d.name for d in self.destructions}
-
-    @property
-    def solved(self) -> bool:
-        return bool(self.pigs) and set(self.pigs) <= self.destroyed
 
     def index(self, name: str) -> int:
         return self.names.index(name)

@@ -142,8 +142,13 @@ class Game(RunRules):
         recorded = run(world, dynamic, self, seconds, rules.dt)
         return Trace(
             rules.dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
-            recorded.damage, recorded.destructions, self._pigs,
+            recorded.damage, recorded.destructions, self._pigs, self._solved(recorded),
         )
+
+    def _solved(self, recorded) -> bool:
+        """Science Birds' goal: every pig destroyed (a level without pigs is never solved)."""
+        destroyed = {d.name for d in recorded.destructions}
+        return bool(self._pigs) and set(self._pigs) <= destroyed
 
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
     def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
