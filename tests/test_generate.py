@@ -114,4 +114,5 @@ def test_the_task_says_why_earlier_layouts_were_given_up(tmp_path):
 def test_a_failure_says_why_its_layouts_were_given_up():
     run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "RRR", "--layouts", "2", "-q", "--color", "never")
     assert run.status == 3
-    assert "(2 layouts, " in run.stderr and "; given up: 2 × the sequence was not realised" in run.stderr
+    assert "within the budget (2 layouts)" in run.stderr and "; given up: 2 × the sequence was not realised" in run.stderr
+    assert "in order (never `" in run.stderr  # how far the best simulation got, and where it stopped

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 
 from conftest import GENERATED, TEMPLATES
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level_xml import read_level
 from physc.domains.angrybirds.rules import Rules
+from physc.simulation.stability import largest_shift
 
 # Templates that do not stand, and why (docs/angrybirds.md, "Stability of the Phy-Q templates").
 UNSTABLE_BY_DESIGN = {"2_4_1_1"}  # its three circles start 0.15 inside their platform
@@ -17,11 +17,7 @@ ROLL_OFF_ROUND = {"3_5_1_1", "3_5_5_1", "3_6_7_1", "3_7_4_1", "3_7_5_1", "3_8_2_
 
 def moved(path, circles):
     trace = Game(read_level(path.read_bytes()), rules=Rules(circles=circles)).simulate(None, 10.0, stop_at_rest=False)
-    states = trace.states
-    if not states.shape[1]:
-        return 0.0, trace.destructions
-    shift = np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1])
-    return float(np.nanmax(shift)), trace.destructions
+    return largest_shift(trace), trace.destructions
 
 
 @pytest.mark.parametrize("circles, expected", [("phyq", UNSTABLE_BY_DESIGN), ("round", UNSTABLE_BY_DESIGN | ROLL_OFF_ROUND)])
