@@ -49,7 +49,7 @@ def ensure_folder(path: str | os.PathLike) -> Path:
 
 # Paths that name one of this process's open descriptors: written to that descriptor,
 # where it is (`-o /dev/stdout >> log` appends; a rename would replace the log).
-_DESCRIPTOR = re.compile(r"^/(?:dev/fd|proc/self/fd|proc/%d/fd)/(\d+)$" % os.getpid())
+_DESCRIPTOR = re.compile(r"^/(?:dev/fd|proc/self/fd|proc/(\d+)/fd)/(\d+)$")
 _STANDARD = {"/dev/stdin": 0, "/dev/stdout": 1, "/dev/stderr": 2}
 
 
@@ -58,12 +58,20 @@ def _descriptor(path) -> int | None:
     if text in _STANDARD:
         return _STANDARD[text]
     match = _DESCRIPTOR.match(text)
-    return int(match.group(1)) if match else None
+    if match is None or (match.group(1) is not None and int(match.group(1)) != os.getpid()):
+        return None
+    return int(match.group(2))
 
 
-def _in_place(mode: int) -> bool:
-    """Whether a path of this mode is written where it is: a device or a FIFO."""
-    return stat.S_ISCHR(mode) or stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode)
+def _in_place(target: Path) -> bool:
+    """Whether `target` (resolved) is written where it is: an existing device, FIFO or
+    socket. OSError for something that exists and is neither that, a file nor a folder."""
+    if not target.exists() or target.is_file() or target.is_dir():
+        return False
+    mode = target.stat().st_mode
+    if stat.S_ISCHR(mode) or stat.S_ISFIFO(mode) or stat.S_ISSOCK(mode):
+        return True
+    raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
 
 
 def check_output(path: str | os.PathLike, folder: bool = False) -> None:
@@ -91,9 +99,7 @@ def _check_output(path, folder: bool) -> None:
         return
     if target.is_dir():
         raise IsADirectoryError(errno.EISDIR, "it is a directory")
-    if target.exists() and not target.is_file():
-        if not _in_place(target.stat().st_mode):
-            raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
+    if _in_place(target):
         if not os.access(target, os.W_OK):
             raise PermissionError(errno.EACCES, "Permission denied")
         return
@@ -124,9 +130,7 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
                 view = view[os.write(descriptor, view):]
             return
         target = Path(os.path.realpath(path))
-        if target.exists() and not target.is_file() and not target.is_dir():
-            if not _in_place(target.stat().st_mode):
-                raise OSError(errno.EINVAL, "it is neither a file nor a device or FIFO")
+        if _in_place(target):
             with open(target, "wb") as handle:
                 handle.write(payload)
             return

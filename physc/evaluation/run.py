@@ -15,8 +15,8 @@ from __future__ import annotations
 import functools
 import hashlib
 import importlib.util
-import multiprocessing
 import json
+import multiprocessing
 import random
 import time
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -24,11 +24,10 @@ from pathlib import Path
 
 import attrs
 
-from physc import __version__
+from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
-from physc import budget
 from physc.domains import installed_domains, load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
@@ -154,10 +153,24 @@ def evaluate(job: Job) -> dict:
     return record
 
 
-def interruptible_evaluate(job: Job) -> dict:
-    """`evaluate`, stopping promptly on Ctrl-C (see physc.budget): the sequential run."""
-    with budget.interruptible():
-        return evaluate(job)
+def _in_workers(todo: list[Job], workers: int, keep) -> None:
+    """Evaluate the jobs in worker processes, keeping each record as it comes. Workers ignore
+    Ctrl-C; on an interrupt (or any error) here they are ended at once: only this process
+    writes records, so nothing is left half-written."""
+    pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)) or 1, initializer=budget.ignore_in_workers)
+    try:
+        pending = {pool.submit(evaluate, job) for job in todo}
+        while pending:
+            done, pending = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
+            for future in done:
+                keep(future.result())
+            budget.check()
+    except BaseException:
+        for process in multiprocessing.active_children():
+            process.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+        raise
+    pool.shutdown()
 
 
 def jobs_for(
@@ -216,28 +229,12 @@ def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict
             if progress:
                 progress.advance(record)
 
-        if workers <= 1:
-            for job in todo:
-                keep(interruptible_evaluate(job))
-        else:
-            # Workers ignore Ctrl-C; on an interrupt (or any error) here they are ended at
-            # once: only this process writes records, so nothing is left half-written.
-            pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)) or 1, initializer=budget.ignore_in_workers)
-            try:
-                with budget.interruptible():
-                    futures = [pool.submit(evaluate, job) for job in todo]
-                    pending = set(futures)
-                    while pending:
-                        done, pending = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
-                        for future in done:
-                            keep(future.result())
-                        budget.check()
-            except BaseException:
-                for process in multiprocessing.active_children():
-                    process.terminate()
-                pool.shutdown(wait=True, cancel_futures=True)
-                raise
-            pool.shutdown()
+        with budget.interruptible():  # Ctrl-C stops the work at its next stopping point
+            if workers <= 1:
+                for job in todo:
+                    keep(evaluate(job))
+            else:
+                _in_workers(todo, workers, keep)
     if progress:
         progress.stop()
     return [records[job.key] for job in jobs if job.key in records]

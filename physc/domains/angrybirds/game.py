@@ -155,13 +155,6 @@ class Game(RunRules):
         if time > self._invulnerable:
             self._damage(world, contact, damage, time)
 
-    def removals_due(self, values: list, alive: set, time: float) -> bool:
-        return self._removals(values, alive, time)
-
-    def gone(self, name: str, state: tuple, time: float, damage: list) -> tuple | None:
-        x, _, _, vx, vy, _ = state
-        return self._gone(name, x, vx, vy, time, damage)
-
     def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":
             self._explode(world, name, alive, damage, time)
@@ -194,8 +187,8 @@ class Game(RunRules):
         interactions = RECOGNISER.recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
-    def _removals(self, values: list, alive: set, time: float) -> bool:
-        """Whether anything may leave the level this step (what does is `_gone`'s to say):
+    def removals_due(self, values: list, alive: set, time: float) -> bool:
+        """Whether anything may leave the level this step (what does is `gone`'s to say):
         a body whose life is spent, one outside the level, the bird at rest or too old.
         `values`: the state of each body, NaN for the bodies already gone (no test holds for NaN)."""
         if self.spent and not self.spent.isdisjoint(alive):
@@ -214,8 +207,10 @@ class Game(RunRules):
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
         return any(v[4] < -FALLING_SPEED for v, name in zip(values, dynamic) if name != BIRD)
 
-    def _gone(self, name: str, x: float, vx: float, vy: float, time: float, damage) -> tuple | None:
-        """Why `name` leaves the level now (the kind of destruction and by whom), if it does."""
+    def gone(self, name: str, state: tuple, time: float, damage: list) -> tuple | None:
+        """Why `name` (its state: x, y, angle, vx, vy, ω) leaves the level now (the kind of
+        destruction and by whom), if it does."""
+        x, _, _, vx, vy, _ = state
         if name in self.spent:
             return ("damage", self._last_attacker(damage, name))
         if self._outside(x):
