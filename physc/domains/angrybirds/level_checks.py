@@ -24,10 +24,10 @@ game parses the name as an enumeration (case-sensitive) and fails on anything el
 
 from __future__ import annotations
 
-import bisect
 import math
 import re
 
+from physc.diagnostics import SourceText
 from physc.domains.angrybirds.catalogue import BIRD_PREFABS, BY_PREFAB, MATERIALS
 from physc.suggest import did_you_mean
 
@@ -83,13 +83,13 @@ class Source:
 
     def __init__(self, text: str):
         self.text = text
-        self.line_starts = [0] + [m.end() for m in re.finditer("\n", text)]
+        self.source = SourceText("", text)  # its line index
 
     def position(self, element, attribute: str | None = None) -> tuple[int | None, int | None]:
         line = getattr(element, "sourceline", None)
-        if line is None or not 1 <= line <= len(self.line_starts):
+        if line is None or not 1 <= line <= self.source.line_count:
             return None, None
-        end = self.line_starts[line] if line < len(self.line_starts) else len(self.text)
+        end = self.source.line_bounds(line)[1] + 1
         start = self.text.rfind(f"<{element.tag}", 0, end)
         if start < 0:
             return line, None
@@ -98,8 +98,8 @@ class Source:
             found = re.compile(rf"\s{re.escape(attribute)}\s*=").search(self.text, start, tag_end if tag_end >= 0 else end)
             if found:
                 start = found.start() + 1
-        line = bisect.bisect_right(self.line_starts, start)
-        return line, start - self.line_starts[line - 1] + 1
+        where = self.source.span(start, start)
+        return where.line, where.column
 
     def error(self, code: str, message: str, element, attribute: str | None = None, help: str | None = None) -> LevelError:
         return LevelError(code, message, *self.position(element, attribute), help=help)
