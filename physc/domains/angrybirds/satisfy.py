@@ -42,6 +42,7 @@ the pipeline's fallbacks satisfy it again accepting fewer (`accept`), confirmed 
 from __future__ import annotations
 
 import math
+import os
 import random
 from collections import Counter
 from collections.abc import Collection, Sequence
@@ -99,6 +100,7 @@ LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next en
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 LEG_CUTS = (0.5, 1.0)  # units an earlier leg of a chain of rolling or sliding blocks is tried shorter
 MIN_LEG = 0.6  # a block rolls or slides at least this far before it strikes the next
+STRATEGY = os.environ.get("PHYSC_STRATEGY", "repair")  # TEMPORARY while measuring
 NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
 # Why the satisfier gives a layout up (`Satisfier.given_up`), in the order of its steps.
 NOT_REACHED = "no shot reaches the first target"
@@ -158,8 +160,9 @@ def _placed(obj: LevelObject, role: str) -> PlacedObject:
 
 
 class Satisfier:
-    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS):
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS, strategy: str = STRATEGY):
         self.domain = domain
+        self.strategy = strategy
         # Noisy replays (of ROBUSTNESS_REPLAYS) a solution must pass. Fewer than all of them
         # only for a fallback. The fresh replays of the confirmation must pass as many.
         self.accept = accept
@@ -482,7 +485,9 @@ class Satisfier:
     def structure(self, name: str) -> set[str]:
         """`name` with everything joined to it by resting and touching: its supports, the
         platforms joined to them, and what rests on any of those (not the ground)."""
-        return set(nx.node_connected_component(self.joints, name)) if name in self.joints else {name}
+        if name not in self.joints:
+            return {name}
+        return set(nx.node_connected_component(self.joints, name)) & set(self.objects)  # of the scene (a stage's holds less)
 
     def move_structure(self, name: str, x: float, y: float, actor: str) -> dict[str, LevelObject] | None:
         """The objects changed by putting `name`'s centre at (x, y) together with its whole
@@ -495,10 +500,11 @@ class Satisfier:
         obj = objects[name]
         return self.shift(members, x - obj.x, y - obj.y)
 
-    def shift(self, members: set[str], dx: float, dy: float) -> dict[str, LevelObject] | None:
+    def shift(self, members: set[str], dx: float, dy: float, objects: dict | None = None) -> dict[str, LevelObject] | None:
         """The objects changed by moving `members` together by (dx, dy): only sideways if
-        any of them rests on the ground; None if that leaves nothing to do or sinks one."""
-        objects = self.objects
+        any of them rests on the ground; None if that leaves nothing to do or sinks one.
+        Of `objects` (by name) if given, else of the current level."""
+        objects = self.objects if objects is None else objects
         if members & self.on_ground:
             dy = 0.0
         if abs(dx) < 1e-6 and abs(dy) < 1e-6:
@@ -1211,12 +1217,17 @@ class Satisfier:
         """Repair the layout until a candidate realises the sequence, then keep the first
         working candidate that noise does not break, obstruct what the restrictions forbid
         and guard against shortcuts."""
-        attempts = self.attempts()
-        if not attempts:
-            return self.give_up(NOT_REACHED)
-        attempts = self.repaired(attempts)
-        if attempts is None:
-            return self.give_up(NOT_REALISED)
+        if self.strategy == "sequential":
+            attempts = self.built()
+            if attempts is None:
+                return self.give_up(NOT_REALISED)
+        else:
+            attempts = self.attempts()
+            if not attempts:
+                return self.give_up(NOT_REACHED)
+            attempts = self.repaired(attempts)
+            if attempts is None:
+                return self.give_up(NOT_REALISED)
         working = self.working(attempts)
         # The first working candidate that noise does not break, or else its shot moved
         # to the middle of its window of working angles, or the world around it firmed up,
@@ -1257,6 +1268,20 @@ class Satisfier:
         if not final.fidelity.valid:
             return self.give_up(BROKEN)
         return Satisfied(self.level, attrs.evolve(final, label=chosen.label), (passed, total), tuple(self.repairs), tuple(self.obstacles), self.simulations)
+
+    def built(self) -> list[Attempt] | None:
+        """The sequential strategy (physc/generation/sequential.py): the chain built stage by
+        stage along its simulation; the attempts that realise it on the level built, or None."""
+        from physc.domains.angrybirds.build import AngryBirdsChain
+        from physc.generation.sequential import Sequential
+
+        self.search = Sequential(AngryBirdsChain(self))
+        found = self.search.run()
+        if found is None:
+            return None
+        self.adopt(found.scene)
+        self.repairs.extend(found.steps)
+        return list(found.attempts)
 
     def give_up(self, why: str) -> None:
         """`run`'s answer for a layout given up: None, with the reason kept in `given_up`."""
