@@ -12,6 +12,7 @@ from physc.commands.common import (
     EXIT_OK,
     UsageError,
     check_min_robustness,
+    check_strategy,
     reporter,
 )
 from physc.compiler.stages import StageError, Unit, stage
@@ -200,6 +201,7 @@ def cmd_compile(args) -> int:
         if name not in domains:
             domains[name] = load_domain(name)
             check_min_robustness(args.min_robustness, domains[name])
+            check_strategy(args.strategy, domains[name])
     lacking = _lacking(args, chosen.name, selected, checked, domains)
     if lacking:
         report(args.file, analysis.source, lacking)
@@ -218,6 +220,7 @@ def cmd_compile(args) -> int:
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
+            strategy=args.strategy,
             progress=None if args.quiet else _progress(f"[{index}/{len(selected)}] {ir.name}"),
         )
         if generating and not args.quiet:

@@ -174,6 +174,12 @@ class Domain(abc.ABC):
 
     # --- generation: working defaults ------------------------------------------
 
+    strategies: tuple[str, ...] = ()
+    """The ways `satisfy` can make a layout a task, by name, the default first (`--strategy
+    NAME`; angrybirds: "sequential", the chain built along its simulation with
+    physc.generation.sequential, and "repair"). Empty (the default): one way, unnamed;
+    `satisfy` is then never passed a strategy."""
+
     robustness_replays: int | None = None
     """The noisy replays `satisfy` puts a solution through; `--min-robustness K` may ask
     at most this many. None (the default): the domain makes no noisy replays, so

@@ -59,6 +59,14 @@ class LayoutLoop:
     # passed this many are fallbacks.
     min_robustness: int
     progress: Callable[[Progress], None] | None = None
+    strategy: str | None = None  # one of the domain's `strategies`; None: its default
+
+    def satisfy(self, layout, accept: int | None = None):
+        """The domain's `satisfy` of one layout, with the strategy if one was chosen."""
+        options = {} if self.strategy is None else {"strategy": self.strategy}
+        if accept is not None:
+            options["accept"] = accept
+        return self.domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
 
     def run(self, placements: Iterator) -> Generated:
         """Satisfy the placed layouts in turn (`placements` yields objects with a
@@ -91,7 +99,7 @@ class LayoutLoop:
             seconds["layout"] += time.perf_counter() - clock
             clock = time.perf_counter()
             try:
-                result = self.domain.satisfy(self.scenario, placed.layout, self.rng, self.validate)
+                result = self.satisfy(placed.layout)
             except budget.OutOfTime:
                 failure = self._out_of_time(layouts)
                 break
@@ -144,7 +152,7 @@ class LayoutLoop:
         outcome, its layout) of the first that succeeds, or None."""
         simulations = 0
         for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
-            result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, accept=self.min_robustness)
+            result = self.satisfy(layout, accept=self.min_robustness)
             simulations += result.simulations
             if result.satisfied:
                 return simulations, result, layout

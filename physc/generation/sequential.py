@@ -29,7 +29,7 @@ import attrs
 
 from physc import budget
 
-VARIANTS = 10  # variants tried per stage and parent at most
+VARIANTS = 12  # variants tried per stage and parent at most
 BUDGET = 60  # variants simulated per layout at most
 
 

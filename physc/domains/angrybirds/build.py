@@ -32,13 +32,16 @@ import numpy as np
 from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.catalogue import extent
+from physc.domains.angrybirds.layout_rules import OPPOSITE
 from physc.domains.angrybirds.level import Level
 from physc.generation.sequential import ChainBuilder, Stage, State, stages
 
+SCREEN = 4  # shots a change of the first stage is tried with first
 BEAM = 3  # attempts that realise a stage, kept for the next
 STEP = 0.3  # units of travel between the places a target is offered along a path
 PLACES = 6  # places offered along the path of each of the first two attempts
-PROPOSALS = 4  # local repairs offered per stage
+PROPOSALS = 6  # local repairs offered per stage and repaired scene
+REPAIR_DEPTH = 3  # repairs on top of one another
 GAP = 0.02  # between a placed target and the actor that is to meet it
 MOVING = 0.25  # units/s: an actor slower than this is not offered targets further on
 SETTLE_MOTION = 0.3  # s: a roll, slide or fall lasts this long before its target may stand in its way
@@ -55,7 +58,8 @@ class AngryBirdsChain(ChainBuilder):
         self.s = satisfier
         self.interactions = satisfier.scenario.interactions
         self.introduced = self._introduced()
-        self.failed: dict[int, object] = {}  # stage index → the best attempt of a variant that failed
+        self.failed: dict[int, tuple] = {}  # stage index → (the best attempt of a variant that failed, its scene)
+        self.screen: list = []  # the first stage's shots that came nearest, as placed: tried first on its changes
 
     # ---- stages ------------------------------------------------------------------------
     def _introduced(self) -> dict[str, int]:
@@ -103,26 +107,51 @@ class AngryBirdsChain(ChainBuilder):
 
     def realised(self, scene, parent: State, stage: Stage, lead: int = 0):
         level = self.prefix(scene, stage.start)
-        if parent.attempts:
+        if parent.attempts:  # the attempt the variant was made for, then the rest of the beam
             order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
-            shots = [(a.label, a.shot) for a in order]
-        else:
+            shots, screen = [(a.label, a.shot) for a in order], 1
+        else:  # every candidate shot; for a changed scene, those that came nearest before first
             first = self.interactions[0]
             target = next((o for o in level.objects if o.name == first.objects[1]), None) if first.name == "hit" else None
             shots = candidate_shots(target) if target is not None else []
-        good, best = [], None
+            nearest = {a.label for a in self.screen}
+            shots = [c for c in shots if c[0] in nearest] + [c for c in shots if c[0] not in nearest]
+            screen = len(nearest) or len(shots)
+        good, tried = [], []
         for j, (label, shot) in enumerate(shots):
             attempt = attrs.evolve(self.s.simulate(shot, level), label=label)
+            tried.append(attempt)
             if self.reaches(attempt, stage.end):
                 good.append(attempt)
-            elif best is None or attempt.fidelity.score > best.fidelity.score:
-                best = attempt
-            if j == 0 and not good and parent.attempts:
-                break  # the attempt the variant was made for missed it: so will the rest, mostly
-        if best is not None and (stage.index not in self.failed or best.fidelity.score > self.failed[stage.index].fidelity.score):
-            self.failed[stage.index] = best
-        good.sort(key=lambda a: a.fidelity.score, reverse=True)
+            if j + 1 == screen and not good:
+                break  # those most likely to missed it: so will the rest, mostly
+        failed = [a for a in tried if a not in good]
+        if failed:
+            best = max(failed, key=lambda a: a.fidelity.score)
+            if stage.index not in self.failed or best.fidelity.score > self.failed[stage.index][0].fidelity.score:
+                self.failed[stage.index] = (best, scene)
+            if not parent.attempts and not self.screen:
+                self.screen = sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[:SCREEN]
+        good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
         return tuple(good[:BEAM]) or None
+
+    def promise(self, attempt, end: int) -> float:
+        """How well `attempt` sets up the interaction after the first `end`: how far its actor
+        comes down, for a fall, else how fast it moves, after the last of them (the next
+        stage's target is not there yet to be neared)."""
+        if end >= len(self.interactions) or not end:
+            return 0.0
+        actor = self.interactions[end].objects[0]
+        trace = attempt.trace
+        if actor not in trace.names:
+            return 0.0
+        rows = trace.states[int(attempt.fidelity.times[end - 1] / trace.dt) :, trace.index(actor), :]
+        rows = rows[~np.isnan(rows[:, 0])]
+        if not len(rows):
+            return 0.0
+        if self.interactions[end].name == "fall":
+            return float(rows[0, 1] - rows[:, 1].min())
+        return float(np.hypot(rows[:, 3], rows[:, 4]).max())
 
     # ---- variants ------------------------------------------------------------------------
     def variants(self, parent: State, stage: Stage):
@@ -140,27 +169,33 @@ class AngryBirdsChain(ChainBuilder):
                 if scene not in seen:
                     seen.add(scene)
                     yield description, scene, lead
-        yield from self.repairs(full, parent, stage, seen)
+        yield from self.repairs(parent, stage, seen)
 
-    def repairs(self, full: Level, parent: State, stage: Stage, seen: set):
+    def repairs(self, parent: State, stage: Stage, seen: set, depth: int = 0):
         """The repair search's proposals for the first interaction the stage's best failed
-        attempt missed, made on the stage's scene and put back into the whole one."""
-        best = self.failed.get(stage.index)
-        if best is None:
+        attempt missed, made on the stage's scene and put back into the whole one; a
+        proposal that comes nearer, but not all the way, is repaired in turn (up to
+        REPAIR_DEPTH proposals on top of one another)."""
+        if stage.index not in self.failed:
             return
+        best, base = self.failed[stage.index]
         s = self.s
         saved = s.level
-        s.level = self.prefix(full, stage.start)
+        s.level = self.prefix(base, stage.start)
         try:
             proposals = list(itertools.islice(s.distinct(s.proposals([best]), s.level), PROPOSALS))
         finally:
             s.level = saved
         lead = next((j for j, a in enumerate(parent.attempts) if a.label == best.label), 0)
         for description, proposed in proposals:
-            scene = self.merged(full, proposed)
-            if scene not in seen:
-                seen.add(scene)
-                yield description, scene, lead
+            scene = self.merged(base, proposed)
+            if scene in seen:
+                continue
+            seen.add(scene)
+            yield description, scene, lead
+            if depth < REPAIR_DEPTH and self.failed[stage.index][1] is scene:  # nearer: repair it further
+                yield from self.repairs(parent, stage, seen, depth + 1)
+                return
 
     @staticmethod
     def merged(full: Level, part: Level) -> Level:
@@ -210,8 +245,40 @@ class AngryBirdsChain(ChainBuilder):
             if changed is None or not self.clear(trace, first + step, changed, actor, objects):
                 continue
             scene = self.merged(full, attrs.evolve(full, objects=tuple(changed.values())))
-            if self.s.consistent(self.prefix(scene, stage.start), frozenset(changed)):
-                yield f"{declared.text}: {target} on its path, at ({changed[target].x:.2f}, {changed[target].y:.2f})", scene
+            if not self.s.consistent(self.prefix(scene, stage.start), frozenset(changed)):
+                continue
+            where = f"{declared.text}: {target} on its path, at ({changed[target].x:.2f}, {changed[target].y:.2f})"
+            if declared.name == "hit" and self.falls_next(target, k):
+                edged = self.at_edge(scene, declared, stage)
+                if edged is not None:
+                    yield f"{where}, its support ending at it", edged
+            yield where, scene
+
+    def falls_next(self, name: str, k: int) -> bool:
+        """Whether the next interaction after `k` that `name` acts in is a fall."""
+        after = next((t for t in self.interactions[k + 1 :] if t.objects[0] == name), None)
+        return after is not None and after.name == "fall"
+
+    def at_edge(self, scene: Level, declared, stage: Stage) -> Level | None:
+        """`scene` with the support of the hit's target ending just beyond it on the side it
+        is pushed to (the repair search's `ledge_ends_at`), so that the hit pushes it off."""
+        target = declared.objects[1]
+        support = self.s.support_of.get(target)
+        pushed = [d for d in ("left", "right") if OPPOSITE[d] in declared.directions]
+        if support is None or not pushed:
+            return None
+        saved = self.s.level
+        self.s.level = self.prefix(scene, stage.start)
+        try:
+            if support not in self.s.objects:
+                return None
+            changed = self.s.ledge_ends_at(target, support, pushed[0])
+        finally:
+            self.s.level = saved
+        if changed is None:
+            return None
+        edged = self.merged(scene, attrs.evolve(scene, objects=tuple(changed.values())))
+        return edged if self.s.consistent(self.prefix(edged, stage.start), frozenset(changed)) else None
 
     def hit_places(self, declared, objects: dict, target: str, rows, k: int):
         """(row, x, y) of the target touching the actor from a declared side, along its path."""
@@ -220,6 +287,8 @@ class AngryBirdsChain(ChainBuilder):
         wb, hb = extent(objects[target])
         sideways = self.sideways_only(target)
         resting_y = objects[target].y
+        if sideways and "above" in declared.directions:  # where the actor comes down to it
+            yield from self.landings((wa, ha), objects, target, rows, k)
         for step, x, y in self.along(rows):
             for side in declared.directions:
                 if side == "left":
@@ -235,9 +304,7 @@ class AngryBirdsChain(ChainBuilder):
                 if sideways:
                     if side in ("left", "right") and abs(y - resting_y) > (ha + hb) / 2 - 0.05:
                         continue
-                    if side == "above" and y - resting_y < (ha + hb) / 2 - 0.05:
-                        continue
-                    if side == "below":
+                    if side in ("above", "below"):
                         continue
                     py = resting_y
                 yield step, px, py
@@ -245,9 +312,13 @@ class AngryBirdsChain(ChainBuilder):
     def fall_places(self, declared, objects: dict, target: str, rows, k: int):
         """(row, x, y) of the target under where the faller comes down to its top."""
         faller = declared.objects[0]
-        if faller not in objects:
-            return
-        wa, ha = extent(objects[faller])
+        if faller in objects:
+            yield from self.landings(extent(objects[faller]), objects, target, rows, k)
+
+    def landings(self, size: tuple[float, float], objects: dict, target: str, rows, k: int):
+        """(row, x, y) of the target under where a body of `size` first comes down to its top,
+        and a little off it (behind its centre first if the target moves next)."""
+        wa, ha = size
         wb, hb = extent(objects[target])
         top = objects[target].y + hb / 2 + ha / 2
         landing = next(

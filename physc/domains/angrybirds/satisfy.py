@@ -42,7 +42,6 @@ the pipeline's fallbacks satisfy it again accepting fewer (`accept`), confirmed 
 from __future__ import annotations
 
 import math
-import os
 import random
 from collections import Counter
 from collections.abc import Collection, Sequence
@@ -100,7 +99,6 @@ LANDING_SHARES = (0.45, 0.3, 0.6)  # a fall onto a block that is to move next en
 STRIKE_AFTER = (1.6, 1.0)  # units a rolling or sliding hitter travels before it strikes a block to push off
 LEG_CUTS = (0.5, 1.0)  # units an earlier leg of a chain of rolling or sliding blocks is tried shorter
 MIN_LEG = 0.6  # a block rolls or slides at least this far before it strikes the next
-STRATEGY = os.environ.get("PHYSC_STRATEGY", "repair")  # TEMPORARY while measuring
 NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
 # Why the satisfier gives a layout up (`Satisfier.given_up`), in the order of its steps.
 NOT_REACHED = "no shot reaches the first target"
@@ -160,7 +158,7 @@ def _placed(obj: LevelObject, role: str) -> PlacedObject:
 
 
 class Satisfier:
-    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS, strategy: str = STRATEGY):
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS, strategy: str = "sequential"):
         self.domain = domain
         self.strategy = strategy
         # Noisy replays (of ROBUSTNESS_REPLAYS) a solution must pass. Fewer than all of them
