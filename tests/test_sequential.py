@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -155,4 +156,13 @@ def test_an_unknown_strategy_is_a_usage_error(tmp_path, command):
     assert done.returncode == 2
     assert "no such strategy (its strategies: sequential, repair)" in done.stderr
     assert "\x1b" not in done.stderr and "Traceback" not in done.stderr
+    assert not (tmp_path / "l.xml").exists()
+
+
+def test_a_failure_says_what_the_furthest_simulation_shows(tmp_path):
+    done = _compile("compile", str(PAPER / "16_RRR.phys"), "--layouts", "2", "-q", "-o", str(tmp_path / "l.xml"), "--color", "never")
+    assert done.returncode == 3, done.stderr
+    # e.g. "(never `roll(rBlock3, surface3, right)` after them: rBlock3 moved at most 0.21
+    # units/s after `hit(rBlock2, rBlock3, left)`, too slow to roll on surface3)"
+    assert re.search(r"never `[^`]+` after them: (rBlock\d|pig) [^;]*(units/s|did not|damage)", done.stderr), done.stderr
     assert not (tmp_path / "l.xml").exists()

@@ -33,7 +33,7 @@ if TYPE_CHECKING:
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays")  # working defaults
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "strategies")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by

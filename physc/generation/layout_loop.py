@@ -77,6 +77,7 @@ class LayoutLoop:
         fragile: list[tuple[int, int, object]] = []  # (-replays passed, order, layout)
         nearest = 0  # most noisy replays passed by a solution given up as too fragile
         best = 0  # most interactions of the sequence realised, in order, in any simulation
+        stopped = ""  # what the first simulation that got that far shows about the next interaction
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
         while True:
@@ -106,7 +107,8 @@ class LayoutLoop:
             finally:
                 seconds["satisfy"] += time.perf_counter() - clock
             simulations += result.simulations
-            best = max(best, getattr(result, "best", 0))
+            if getattr(result, "best", 0) > best or (getattr(result, "best", 0) == best and not stopped):
+                best, stopped = getattr(result, "best", 0), getattr(result, "stopped", "")
             if result.satisfied:
                 failure, used = None, placed.layout
                 break
@@ -135,7 +137,7 @@ class LayoutLoop:
                 failure, fallback = self._out_of_time(layouts), None
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
-                raise self.explained(failure, nearest, given_up, best)
+                raise self.explained(failure, nearest, given_up, best, stopped)
             simulated, result, used = fallback
             simulations += simulated
         # The domain's own stages after satisfaction (angrybirds: distract, validate), if it
@@ -165,7 +167,7 @@ class LayoutLoop:
             budget=Exhausted.TIME,
         )
 
-    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0) -> Infeasible:
+    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "") -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
         the most robust fragile solution found and what would accept it."""
         message = failure.message
@@ -173,7 +175,7 @@ class LayoutLoop:
         if best:
             message += f"; the best simulation realised {best} of the {len(interactions)} interactions in order"
             if best < len(interactions):
-                message += f" (never `{interactions[best].text}` after them)"
+                message += f" (never `{interactions[best].text}` after them" + (f": {stopped})" if stopped else ")")
         if given_up:
             message += f"; given up: {given_up_summary(given_up)}"
         if nearest:

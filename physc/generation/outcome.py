@@ -34,4 +34,5 @@ class Outcome:
     nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
     given_up: str = ""  # why the layout was given up, when it was
     best: int = 0  # most interactions of the sequence realised, in order, in one simulation
+    stopped: str = ""  # what that simulation shows about the next interaction (physc.simulation.stopped)
     seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the domain's stages after satisfaction

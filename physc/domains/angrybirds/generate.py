@@ -32,9 +32,9 @@ def satisfy(
     satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept, strategy)
     found = satisfier.run()
     if found is None:
-        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up, best=satisfier.best)
+        return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up, best=satisfier.best, stopped=satisfier.stopped)
     if not stability(satisfier.level)[0]:
-        return Outcome(False, satisfier.simulations, given_up=UNSTABLE, best=satisfier.best)
+        return Outcome(False, satisfier.simulations, given_up=UNSTABLE, best=satisfier.best, stopped=satisfier.stopped)
     attempt = found.attempt
     # Re-verifying each distractor belongs to the distraction step itself; --no-validate
     # skips only the final validation below (the paper's evaluation setting).
@@ -46,7 +46,7 @@ def satisfy(
     if validate:
         final = satisfier.simulate(attempt.shot)
         if not final.fidelity.valid:
-            return Outcome(False, satisfier.simulations, given_up=NOT_VALIDATED, best=satisfier.best)
+            return Outcome(False, satisfier.simulations, given_up=NOT_VALIDATED, best=satisfier.best, stopped=satisfier.stopped)
         validated, trace = True, final.trace
     seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
     shot = attempt.shot
@@ -61,4 +61,4 @@ def satisfy(
         obstacles=found.obstacles,
         distractors=tuple(distractors),
     )
-    return Outcome(True, satisfier.simulations, parts, seconds=seconds, best=satisfier.best)
+    return Outcome(True, satisfier.simulations, parts, seconds=seconds, best=satisfier.best, stopped=satisfier.stopped)

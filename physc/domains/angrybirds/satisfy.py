@@ -63,6 +63,7 @@ from physc.domains.angrybirds.catalogue import (
     shape,
 )
 from physc.simulation.fidelity import Fidelity, fidelity
+from physc.simulation.stopped import why_stopped
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.layout_rules import OPPOSITE, last_hit_on
@@ -186,6 +187,7 @@ class Satisfier:
         self.obstacles: list[str] = []
         self.evaluator = Evaluator(KEPT_SIMULATIONS)
         self.best = 0  # most interactions of the sequence realised, in order, in one play
+        self.furthest: Attempt | None = None  # the play that came furthest (by its fidelity's score)
         self.given_up = ""  # why `run` gave the layout up (NOT_REACHED … BROKEN), when it did
         self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
@@ -212,8 +214,15 @@ class Satisfier:
             return Attempt("", shot, trace, fidelity(self.scenario, trace))
 
         attempt = self.kept("play", level, shot, play)
+        if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
+            self.furthest = attempt
         self.best = max(self.best, attempt.fidelity.matched)
         return attempt
+
+    @property
+    def stopped(self) -> str:
+        """What the simulation that came furthest shows about where it stopped."""
+        return "" if self.furthest is None else why_stopped(self.scenario, self.furthest.trace, self.furthest.fidelity)
 
     def flight(self, level: Level, shot: Shot) -> Trace:
         """The level played with `shot` for SECONDS, ending once it is solved: an agent's

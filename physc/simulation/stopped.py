@@ -1,0 +1,63 @@
+"""Why a simulated chain stopped where it did, in words a scenario's author can act on.
+
+When no layout gives a task, the message names the first interaction the best simulation
+never realised. This says what the simulation shows about it: how fast the actor still
+moved, how near it came to its target, how much damage it dealt. For example: "rBlock3
+moved at most 0.21 units/s after `hit(rBlock2, rBlock3, left)`, too slow to roll on
+surface3". It reads only the scenario and the trace, so any domain's traces will do.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from physc.dsl.scenario import ScenarioIR
+from physc.simulation.fidelity import Fidelity
+from physc.simulation.trace import Trace
+
+STRIKE = 0.2  # s before a hit that count for how fast it struck
+
+
+def why_stopped(scenario: ScenarioIR, trace: Trace, fidelity: Fidelity) -> str:
+    """What the trace shows about the first declared interaction it does not realise ("" when
+    it realises them all, or shows nothing useful)."""
+    k = fidelity.matched
+    if k >= len(scenario.interactions):
+        return ""
+    declared = scenario.interactions[k]
+    since = fidelity.times[-1] if fidelity.times else 0.0
+    after = f" after `{scenario.interactions[k - 1].text}`" if k else ""
+    actor = declared.objects[0]
+    if actor not in trace.names:
+        return f"{actor} was gone{after}"
+    rows = trace.states[int(since / trace.dt) :, trace.index(actor), :]
+    rows = rows[~np.isnan(rows[:, 0])]
+    if not len(rows):
+        return f"{actor} was gone{after}"
+    speed = float(np.hypot(rows[:, 3], rows[:, 4]).max())
+    if declared.name == "destroy":  # how fast it struck: from just before the hit
+        target = declared.objects[1]
+        struck = trace.states[max(int((since - STRIKE) / trace.dt), 0) :, trace.index(actor), 3:5]
+        speed = float(np.nanmax(np.hypot(struck[:, 0], struck[:, 1]))) if len(struck) else speed
+        dealt = sum(d.amount for d in trace.damage if d.target == target and d.by == actor and d.time >= since)
+        if dealt:
+            return f"{actor} struck {target} at up to {speed:.2f} units/s{after}, dealing {dealt:.2f} damage: not enough to destroy it"
+        return f"{actor} moved at up to {speed:.2f} units/s{after} but dealt {declared.objects[1]} no damage"
+    if declared.name in ("roll", "slide"):
+        surface = declared.objects[1] if len(declared.objects) > 1 else "its surface"
+        if speed < 1.0:
+            return f"{actor} moved at most {speed:.2f} units/s{after}, too slow to {declared.name} on {surface}"
+        return f"{actor} moved at up to {speed:.2f} units/s{after} but did not {declared.name} on {surface} as declared"
+    if declared.name == "fall":
+        drop = float(rows[0, 1] - rows[:, 1].min())
+        if drop < 0.2:
+            return f"{actor} did not fall{after} (it moved at most {speed:.2f} units/s)"
+        return f"{actor} fell {drop:.2f} units{after} but did not land on {declared.objects[1]}"
+    if len(declared.objects) > 1 and declared.objects[1] in trace.names:
+        target = declared.objects[1]
+        other = trace.states[int(since / trace.dt) :, trace.index(target), :2][: len(rows)]
+        gaps = np.hypot(*(rows[: len(other), :2] - other).T)
+        gaps = gaps[~np.isnan(gaps)]
+        if len(gaps):
+            return f"{actor} came no nearer than {float(gaps.min()):.2f} units (centre to centre) to {target}{after}, moving at up to {speed:.2f} units/s"
+    return f"{actor} moved at up to {speed:.2f} units/s{after}"
