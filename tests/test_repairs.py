@@ -17,7 +17,9 @@ from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS
 from physc.simulation.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
 from physc.domains.angrybirds.actions import candidate_shots
-from physc.domains.angrybirds.satisfy import STRIKE_AFTER, Attempt, Satisfier, _placed, _span
+from physc.domains.angrybirds.attempt import Attempt, _span
+from physc.domains.angrybirds.impetus import STRIKE_AFTER
+from physc.domains.angrybirds.satisfy import Satisfier, _placed
 
 
 def satisfier(name: str, seed: int = 0) -> Satisfier:
@@ -89,7 +91,7 @@ def _guarded(monkeypatch, blocks: list[str], first_touch: str = "pig"):
     confirmation's do) or "gone round" (the shortcut still solves the level with it).
     Returns the satisfier, the level before, the platforms offered (level by kind) and the
     `skip` each search for a shortcut was given."""
-    from physc.domains.angrybirds import satisfy
+    from physc.domains.angrybirds import obstruct
 
     s = satisfier("R", seed=7)
     solution = s.working(s.attempts())[0]
@@ -116,7 +118,7 @@ def _guarded(monkeypatch, blocks: list[str], first_touch: str = "pig"):
             return
         kind = next(offered)
         name = f"obstacle{len(s.obstacles) + 1}"
-        obj = satisfy.LevelObject("Platform", "Platform", 20.0 + 3 * len(platforms), 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
+        obj = obstruct.LevelObject("Platform", "Platform", 20.0 + 3 * len(platforms), 20.0, 0.0, scale_x=1.0, scale_y=0.5, name=name)
         platforms[kind] = level = attrs.evolve(s.level, objects=s.level.objects + (obj,))
         yield name, level
 
@@ -127,7 +129,7 @@ def _guarded(monkeypatch, blocks: list[str], first_touch: str = "pig"):
 
     monkeypatch.setattr(s, "shortcuts", shortcuts)
     monkeypatch.setattr(s, "stops", lambda accident, level: level is not platforms.get("gone round"))
-    monkeypatch.setattr(satisfy, "touched", lambda trace: [first_touch])
+    monkeypatch.setattr(obstruct, "touched", lambda trace: [first_touch])
     monkeypatch.setattr(s, "obstacles_across", obstacles_across)
     monkeypatch.setattr(s, "roof_over", lambda name: iter(()))
     monkeypatch.setattr(s, "robustness", robustness)
@@ -165,7 +167,7 @@ def test_a_platform_the_shortcut_gets_past_is_not_kept(monkeypatch):
 
 
 def test_the_guard_ends_after_three_shortcuts_it_cannot_block(monkeypatch):
-    from physc.domains.angrybirds.satisfy import SHORTCUTS_LEFT
+    from physc.domains.angrybirds.obstruct import SHORTCUTS_LEFT
 
     assert SHORTCUTS_LEFT == 3
     s, unguarded, _, _ = _guarded(monkeypatch, ["fragile", "fragile", "fragile", "firm"])
@@ -200,20 +202,20 @@ def test_the_bird_knocking_a_chain_member_out_of_turn_is_an_intrusion():
 
 
 def test_every_noisy_replay_starts_from_the_level_itself(monkeypatch):
-    from physc.domains.angrybirds import satisfy
+    from physc.domains.angrybirds import robustness
 
     s = satisfier("SF")
     solution = s.attempts()[0]
     seen = []
-    real_jitter = satisfy.jitter
+    real_jitter = robustness.jitter
 
     def recording(level, rng):
         seen.append(level)
         return real_jitter(level, rng)
 
-    monkeypatch.setattr(satisfy, "jitter", recording)
+    monkeypatch.setattr(robustness, "jitter", recording)
     s.robustness(solution)
-    assert len(seen) == satisfy.ROBUSTNESS_REPLAYS and all(level is s.level for level in seen)
+    assert len(seen) == robustness.ROBUSTNESS_REPLAYS and all(level is s.level for level in seen)
 
 
 def test_a_target_on_a_joined_path_moves_with_its_whole_structure():
@@ -364,7 +366,7 @@ def test_obstacles_across_go_further_back_and_shorter_when_asked():
     from physc.domains.angrybirds.catalogue import PLATFORM_BASE
     from physc.domains.angrybirds.game import Game
     from physc.domains.angrybirds.level import Level, LevelObject
-    from physc.domains.angrybirds.satisfy import OBSTACLE_LENGTH, SHORT_OBSTACLE
+    from physc.domains.angrybirds.obstruct import OBSTACLE_LENGTH, SHORT_OBSTACLE
     from physc.domains.angrybirds.world import GROUND_TOP
 
     s = satisfier("F")
@@ -692,7 +694,7 @@ def test_a_shortcut_is_blocked_before_the_further_objects_the_bird_touches(monke
     # roof over it, then level ones across the flight where it comes down.
     from types import SimpleNamespace
 
-    from physc.domains.angrybirds.satisfy import GUARD_LIFTS, GUARDED_TOUCHES
+    from physc.domains.angrybirds.obstruct import GUARD_LIFTS, GUARDED_TOUCHES
 
     s = satisfier("R", seed=7)
     solution = s.working(s.attempts())[0]
@@ -759,7 +761,7 @@ def _roof_gap(s, level, name: str, block: str) -> float:
 
 
 def test_a_roof_goes_just_above_a_block_and_beyond_it():
-    from physc.domains.angrybirds.satisfy import ROOF_GAPS
+    from physc.domains.angrybirds.obstruct import ROOF_GAPS
 
     s = satisfier("RF")
     offered = list(s.roof_over("fBlock"))
@@ -771,7 +773,8 @@ def test_a_roof_goes_just_above_a_block_and_beyond_it():
 def test_a_block_near_the_top_of_the_area_gets_a_lower_roof():
     # RF's fBlock raised (with its support) until 0.3 of clearance and a platform no
     # longer fit under the placement area's top, but 0.15 does.
-    from physc.domains.angrybirds.satisfy import PLACEMENT_AREA, ROOF_GAPS
+    from physc.domains.angrybirds.obstruct import ROOF_GAPS
+    from physc.domains.angrybirds.world import PLACEMENT_AREA
 
     s = satisfier("RF")
     block = s.objects["fBlock"]
@@ -810,7 +813,7 @@ def test_a_chain_that_ran_out_of_speed_gets_shorter_legs_the_latest_first():
     # rolling into the third, the first into the second) are offered shorter: the world
     # beyond the gap comes nearer, the mover and what is behind it stay, and a leg stays
     # long enough to tell the roll.
-    from physc.domains.angrybirds.satisfy import LEG_CUTS, MIN_LEG
+    from physc.domains.angrybirds.repairs import LEG_CUTS, MIN_LEG
 
     s = satisfier("RRR")
     before = s.objects
