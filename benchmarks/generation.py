@@ -1,6 +1,6 @@
-"""Generation: success rate and time per task for the paper's 16 scenarios.
+"""Generation: success rate and time per task for the paper's 16 scenarios (or another file's).
 
-    python benchmarks/generation.py [--seeds 30] [--scenarios SF,R,...] [--time-budget 20] [--strategy sequential|repair]
+    python benchmarks/generation.py [--seeds 30] [--scenarios SF,R,...] [--time-budget 20] [--file F]
 
 For every scenario and seed 0..N-1, `physc compile` end to end (validated), on one
 core. Prints, per scenario and per interaction count (2, 4, 6, 8, as the paper
@@ -32,15 +32,15 @@ def main() -> None:
     parser.add_argument("--seeds", type=int, default=30)
     parser.add_argument("--scenarios", default="")
     parser.add_argument("--time-budget", type=float, default=20.0)
-    parser.add_argument("--strategy", choices=("sequential", "repair"), default="sequential")
+    parser.add_argument("--file", default=str(PAPER), help="the scenarios (default: the paper's 16; examples/beyond/all.beyond.phys: ours)")
     args = parser.parse_args()
     domain = load_domain("angrybirds")
-    scenarios = analyze(str(PAPER)).scenarios
+    scenarios = analyze(args.file).scenarios
     wanted = set(args.scenarios.split(",")) if args.scenarios else None
     by_count: dict[int, list[float]] = {}
     simulations_by_count: dict[int, list[int]] = {}
     stages_by_count: dict[int, dict[str, float]] = {}
-    print(f"machine: {platform.machine()}, Python {platform.python_version()}; seeds 0-{args.seeds - 1}; time budget {args.time_budget:g} s; strategy {args.strategy}")
+    print(f"machine: {platform.machine()}, Python {platform.python_version()}; seeds 0-{args.seeds - 1}; time budget {args.time_budget:g} s")
     print(f"{'scenario':<8} {'n':>2} {'generated':>10} {'median s':>9} {'mean±sd s':>12} {'failed s':>9} {'sims':>6}")
     for scenario in scenarios:
         if wanted and scenario.name not in wanted:
@@ -50,7 +50,7 @@ def main() -> None:
         for seed in range(args.seeds):
             start = time.perf_counter()
             try:
-                task = Pipeline(domain, scenario, seed, time_budget=args.time_budget, strategy=args.strategy).task
+                task = Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
                 ok.append(time.perf_counter() - start)
                 simulations.append(task.simulations)
                 stages = stages_by_count.setdefault(count, {})

@@ -24,7 +24,6 @@ from physc.commands.common import (
     Parser,
     UsageError,
     add_min_robustness,
-    add_strategy,
 )
 from physc.commands.compile import cmd_compile
 from physc.commands.domains import cmd_domains
@@ -82,7 +81,6 @@ def build_parser() -> argparse.ArgumentParser:
         "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
     )
     add_min_robustness(compile_)
-    add_strategy(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(

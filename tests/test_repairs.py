@@ -14,7 +14,6 @@ from middle_end import DOMAIN, paper_scenarios, pipeline
 
 from physc.domains.angrybirds.distract import distract
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, extent
-from physc.simulation.fidelity import Fidelity
 from physc.compiler.qsr_evaluate import holds
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.attempt import Attempt, _span
@@ -296,27 +295,16 @@ def test_a_moved_end_of_a_fall_may_be_nearer_than_the_far_gap():
     assert not any(holds(name, placed[far.a], placed[far.b], parameters.clearance, parameters.far) for name in far.alternatives)
     assert s.consistent(level, frozenset(moved))
 
-def test_attempts_simulates_only_what_is_asked_and_keeps_what_is_done():
-    """Screening a repair proposal: the nearest shots first, the rest only if needed."""
-    from physc.domains.angrybirds.satisfy import SCREEN
-
+def test_attempts_of_the_same_level_are_kept_not_simulated_again():
     s = satisfier("R")
     full = s.attempts()
-    screened = Satisfier.most_promising(full)
-    assert len(screened) == SCREEN
-    best = max(a.fidelity.score for a in full)
-    assert full[[a.label for a in full].index(screened[0])].fidelity.score == best
     count = s.simulations
-    assert s.attempts() == full and s.simulations == count  # the same level again: kept, not simulated
-    s = satisfier("R")
-    some = s.attempts(only=screened)
-    assert [a.label for a in some] == [a.label for a in full if a.label in screened]
-    assert s.simulations == SCREEN
-    s.evaluator.forget()  # `done` alone must spare them
-    rest = s.attempts(done=some)
-    assert s.simulations == len(full)  # the screened ones are not simulated again
-    assert [a.label for a in rest] == [a.label for a in full]
-    assert [a.fidelity for a in rest] == [a.fidelity for a in full]  # the same level, the same outcomes
+    assert count == len(full)
+    assert s.attempts() == full and s.simulations == count
+    s.evaluator.forget()
+    again = s.attempts()
+    assert s.simulations == 2 * count
+    assert [a.fidelity for a in again] == [a.fidelity for a in full]  # the same level, the same outcomes
 
 
 def test_offending_shots_are_watched_for_the_whole_flight():
@@ -453,59 +441,6 @@ def test_what_a_repair_moved_may_rest_anywhere_on_its_support_in_later_checks():
     assert not s.consistent(s.with_objects({"pig": attrs.evolve(pig, x=right + 1.0)}))  # off its support
 
 
-def _scripted_search(monkeypatch, tree: dict, outcomes: dict, budget: int = 16):
-    """A satisfier whose levels are told apart by their high score: `tree` maps a level's
-    mark to the (description, mark) proposals made there, `outcomes` a proposed level's
-    mark to the best matched count it gives (negative: no better than before; 4: the whole
-    sequence of R)."""
-    s = satisfier("R")
-    base = s.level
-    marked = {}
-
-    def level(mark):
-        if mark not in marked:
-            extra = () if mark != "obstacle" else (attrs.evolve(base.objects[-1], name="obstacle1"),)
-            marked[mark] = attrs.evolve(base, high_score=float(len(marked) + 1), objects=base.objects + extra)
-        return marked[mark]
-
-    mark_of = {}
-
-    def proposals(attempts):
-        for description, mark in tree.get(mark_of.get(s.level.high_score, "root"), ()):
-            proposed = level(mark)
-            mark_of[proposed.high_score] = mark
-            yield description, proposed
-
-    def attempt(matched: int):
-        fidelity = Fidelity(matched, 4, (), matched == 4, (0.0,) * matched)
-        return [Attempt("c", None, None, fidelity)]
-
-    def screened(attempts, score):
-        matched = outcomes[mark_of[s.level.high_score]]
-        return None if matched < 0 else attempt(matched)
-
-    monkeypatch.setattr(s, "proposals", proposals)
-    monkeypatch.setattr(s, "screened", screened)
-    s.repair_rounds = budget
-    return s, s.repaired(attempt(1)), mark_of
-
-
-def test_a_dead_end_is_undone_and_the_next_proposal_tried(monkeypatch):
-    # Greedily, "a" is kept (it gets one interaction further) and nothing helps after it;
-    # backtracking undoes "a", with the obstacle it added, and "b" realises the sequence.
-    tree = {"root": [("a", "obstacle"), ("b", "b")], "obstacle": [("c", "c")]}
-    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"obstacle": 2, "b": 4, "c": -1})
-    assert attempts is not None and attempts[0].fidelity.valid
-    assert s.repairs == ["b"] and mark_of[s.level.high_score] == "b"
-    assert s.obstacles == [] and "obstacle1" not in s.roles
-
-
-def test_backtracking_stops_at_the_rounds_budget(monkeypatch):
-    tree = {"root": [(f"p{k}", f"p{k}") for k in range(40)]}
-    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {f"p{k}": -1 for k in range(40)}, budget=7)
-    assert attempts is None and len(mark_of) == 7 and s.repairs == []
-
-
 def test_a_block_landing_behind_a_balls_centre_sets_it_rolling():
     """The premise of landing off centre: dead centre moves the ball not at all."""
     from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
@@ -592,18 +527,6 @@ def test_a_stuck_slide_is_offered_a_block_that_slides():
     assert ("SquareHole", "wood") not in [o[1:] for o in square]  # a wooden square tips
     triangle = offered("TriangleHole", "wood")
     assert ("SquareHole", "ice") == triangle[0][1:], triangle[0][0]
-
-
-def test_a_repair_kept_without_progress_that_led_nowhere_is_not_tried_elsewhere(monkeypatch):
-    # Two obstacles across the bird's flight, described alike, each leaving the score as it
-    # was: after the first one's continuations fail, the second is skipped for "b".
-    tree = {"root": [("obstacle", "o1"), ("obstacle", "o2"), ("b", "b")], "o1": [("c", "c")], "o2": [("d", "d")]}
-    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"o1": 1, "o2": 1, "c": -1, "d": 4, "b": 4})
-    assert attempts is not None and s.repairs == ["b"]
-    # A repair that made progress is tried again in its other places.
-    tree = {"root": [("x", "x1"), ("x", "x2")], "x1": [("c", "c")], "x2": [("d", "d")]}
-    s, attempts, mark_of = _scripted_search(monkeypatch, tree, {"x1": 2, "x2": 2, "c": -1, "d": 4})
-    assert attempts is not None and s.repairs == ["x", "d"]
 
 
 def test_the_same_change_proposed_twice_is_simulated_once():
@@ -855,11 +778,11 @@ def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
 
 
 def test_a_distractor_must_leave_the_solution_passing_the_confirmation_replays_too(monkeypatch):
-    # R seed 2's first layout takes two distractors with this draw. A distractor is kept
+    # R seed 1's first layout takes two distractors with this draw. A distractor is kept
     # for passing the noisy replays, so the confirmation's fresh ones decide too: when they
     # all fail, none is kept.
     def solved():
-        s = satisfier("R", seed=2)
+        s = satisfier("R", seed=1)
         return s, s.run().attempt
 
     s, solution = solved()

@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import json
 import re
 import subprocess
 import sys
 from pathlib import Path
 
 import attrs
-import pytest
 
 from physc.generation.sequential import ChainBuilder, Sequential, Stage, State, stages
 
@@ -137,26 +135,6 @@ def test_the_next_target_goes_on_its_actors_simulated_path():
 
 def _compile(*arguments, cwd=None):
     return subprocess.run([sys.executable, "-m", "physc", *arguments], capture_output=True, text=True, cwd=cwd, timeout=300)
-
-
-def test_strategy_is_chosen_and_recorded(tmp_path):
-    task = tmp_path / "t.json"
-    done = _compile("compile", str(PAPER / "01_SF.phys"), "--strategy", "repair", "--task", str(task), "-o", str(tmp_path / "l.xml"), "-q")
-    assert done.returncode == 0, done.stderr
-    assert json.loads(task.read_text())["strategy"] == "repair"
-    done = _compile("compile", str(PAPER / "01_SF.phys"), "--task", str(task), "-o", str(tmp_path / "l.xml"), "-q")
-    assert done.returncode == 0, done.stderr
-    assert json.loads(task.read_text())["strategy"] == "sequential"
-
-
-@pytest.mark.parametrize("command", ["compile", "eval"])
-def test_an_unknown_strategy_is_a_usage_error(tmp_path, command):
-    extra = ["--out", str(tmp_path / "out")] if command == "eval" else ["-o", str(tmp_path / "l.xml")]
-    done = _compile(command, str(PAPER / "01_SF.phys"), "--strategy", "greedy\x1b", *extra)
-    assert done.returncode == 2
-    assert "no such strategy (its strategies: sequential, repair)" in done.stderr
-    assert "\x1b" not in done.stderr and "Traceback" not in done.stderr
-    assert not (tmp_path / "l.xml").exists()
 
 
 def test_a_failure_says_what_the_furthest_simulation_shows(tmp_path):

@@ -64,23 +64,6 @@ def add_min_robustness(parser) -> None:
     )
 
 
-def add_strategy(parser) -> None:
-    parser.add_argument(
-        "--strategy",
-        metavar="NAME",
-        help="how the domain makes a placed layout a task, one of its strategies (angrybirds: sequential, the "
-        "default, builds the chain along its simulation; repair repairs the whole layout); the task records it",
-    )
-
-
-def check_strategy(value: str | None, domain) -> None:
-    """--strategy names one of the domain's strategies."""
-    offered = tuple(getattr(domain, "strategies", ()) or ())
-    if value is not None and value not in offered:
-        names = ", ".join(offered) if offered else "none: it has one way, unnamed"
-        raise UsageError(f"--strategy {diagnostics.safe(value)}: domain '{domain.name}' has no such strategy (its strategies: {names})")
-
-
 def check_min_robustness(value: int, domain) -> None:
     """--min-robustness counts the domain's noisy replays: more than there are cannot be passed."""
     replays = getattr(domain, "robustness_replays", None)

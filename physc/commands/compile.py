@@ -12,7 +12,6 @@ from physc.commands.common import (
     EXIT_OK,
     UsageError,
     check_min_robustness,
-    check_strategy,
     reporter,
 )
 from physc.compiler.stages import StageError, Unit, stage
@@ -201,7 +200,6 @@ def cmd_compile(args) -> int:
         if name not in domains:
             domains[name] = load_domain(name)
             check_min_robustness(args.min_robustness, domains[name])
-            check_strategy(args.strategy, domains[name])
     lacking = _lacking(args, chosen.name, selected, checked, domains)
     if lacking:
         report(args.file, analysis.source, lacking)
@@ -220,7 +218,6 @@ def cmd_compile(args) -> int:
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
-            strategy=args.strategy,
             progress=None if args.quiet else _progress(f"[{index}/{len(selected)}] {ir.name}"),
         )
         if generating and not args.quiet:

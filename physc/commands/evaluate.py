@@ -14,8 +14,6 @@ from physc.commands.common import (
     EXIT_OK,
     UsageError,
     add_min_robustness,
-    add_strategy,
-    check_strategy,
     check_min_robustness,
     reporter,
 )
@@ -71,7 +69,7 @@ def cmd_eval(args) -> int:
     if args.seed + args.tasks - 1 > arguments.MAX_SEED:
         raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
     check_output(args.out, folder=True)
-    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.strategy)
+    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness)
     if problems:
         report = reporter(args)
         for path, analysis, errors in problems:
@@ -90,7 +88,6 @@ def cmd_eval(args) -> int:
             reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
             return diagnostics.exit_status(found)
         check_min_robustness(args.min_robustness, domain)
-        check_strategy(args.strategy, domain)
     folder = Path(args.out)
     started = time.perf_counter()
     records = run(jobs, folder, args.jobs, _Progress(args.quiet))
@@ -112,7 +109,6 @@ def add_command(commands, common) -> None:
     parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
     parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds of generation per task at most (default 300; the measurements after it are not counted)")
     add_min_robustness(parser)
-    add_strategy(parser)
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=cmd_eval)

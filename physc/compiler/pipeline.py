@@ -49,7 +49,6 @@ class Pipeline:
         source: str = "",
         min_robustness: int = MIN_ROBUSTNESS,
         progress=None,
-        strategy: str | None = None,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -68,8 +67,6 @@ class Pipeline:
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
         self.progress = progress
-        # How the domain makes a layout a task (one of its `strategies`); None: its default.
-        self.strategy = strategy
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -122,7 +119,7 @@ class Pipeline:
         time is spent."""
         loop = LayoutLoop(
             self.domain, self.scenario, self.rng, self.validate, self.layout_budget, self.time_budget,
-            self.min_robustness, self.progress, self.strategy,
+            self.min_robustness, self.progress,
         )
         with budget.deadline(self.time_budget):
             generated = loop.run(self.placements())
@@ -146,5 +143,4 @@ class Pipeline:
             simulations=generated.simulations,
             given_up=generated.given_up,
             seconds={k: round(v, 4) for k, v in generated.seconds.items()},
-            strategy=self.strategy or next(iter(getattr(self.domain, "strategies", ()) or ()), None),
         )

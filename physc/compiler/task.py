@@ -42,7 +42,6 @@ class Task:
     # {"layouts": how many, "simulations": what they cost}; the fallbacks' second tries are not counted.
     given_up: dict
     seconds: dict  # stage → time spent
-    strategy: str | None = None  # the domain's strategy that made it (None: a domain with one, unnamed)
 
 
 def given_up_summary(given_up: dict) -> str:

@@ -33,7 +33,7 @@ if TYPE_CHECKING:
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "strategies")  # working defaults
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -173,12 +173,6 @@ class Domain(abc.ABC):
         raise MissingCapability(self.name, ("picture",), "--png")
 
     # --- generation: working defaults ------------------------------------------
-
-    strategies: tuple[str, ...] = ()
-    """The ways `satisfy` can make a layout a task, by name, the default first (`--strategy
-    NAME`; angrybirds: "sequential", the chain built along its simulation with
-    physc.generation.sequential, and "repair"). Empty (the default): one way, unnamed;
-    `satisfy` is then never passed a strategy."""
 
     robustness_replays: int | None = None
     """The noisy replays `satisfy` puts a solution through; `--min-robustness K` may ask

@@ -47,7 +47,6 @@ class Job:
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
     code: str = ""  # of the code that generates and measures it (code_fingerprint)
     domain: str = ""  # the scenario's domain
-    strategy: str | None = None  # the domain's strategy (--strategy); None: its default
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -60,7 +59,6 @@ class Job:
         return {
             "time_budget": self.time_budget,
             "min_robustness": self.min_robustness,
-            "strategy": self.strategy,
             "scenario": self.fingerprint,
             "physc": __version__,
             "code": self.code,
@@ -121,8 +119,7 @@ def evaluate(job: Job) -> dict:
     started = time.perf_counter()
     try:
         task = Pipeline(
-            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness,
-            strategy=job.strategy,
+            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness
         ).task
     except Infeasible as error:
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
@@ -177,7 +174,7 @@ def _in_workers(todo: list[Job], workers: int, keep) -> None:
 
 
 def jobs_for(
-    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS, strategy: str | None = None
+    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS
 ) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs, problems = [], []
@@ -190,7 +187,7 @@ def jobs_for(
         for scenario in analysis.scenarios:
             fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain)
             jobs += [
-                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, strategy)
+                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain)
                 for index in range(tasks)
             ]
     return jobs, problems

@@ -1,7 +1,7 @@
 """The layout loop: placed layouts, one after another, until one gives a task.
 
 Generation is a search over layouts. For each layout the placement passes offer, the
-domain's `satisfy` (today's strategy: place, simulate, repair) says whether it gives
+domain's `satisfy` (angrybirds: the chain built along its simulation) says whether it gives
 a task, and if not, why it was given up and how robust its best solution was. The
 loop keeps the budgets (`--layouts`, and `--time-budget` through `physc.budget`),
 counts what each layout cost and why it was given up, reports progress, and when the
@@ -59,13 +59,10 @@ class LayoutLoop:
     # passed this many are fallbacks.
     min_robustness: int
     progress: Callable[[Progress], None] | None = None
-    strategy: str | None = None  # one of the domain's `strategies`; None: its default
 
     def satisfy(self, layout, accept: int | None = None):
-        """The domain's `satisfy` of one layout, with the strategy if one was chosen."""
-        options = {} if self.strategy is None else {"strategy": self.strategy}
-        if accept is not None:
-            options["accept"] = accept
+        """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a fallback)."""
+        options = {} if accept is None else {"accept": accept}
         return self.domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
 
     def run(self, placements: Iterator) -> Generated:

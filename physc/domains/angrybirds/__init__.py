@@ -62,15 +62,12 @@ class AngryBirds(Domain):
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, title, trace.paths(), supports), fmt)
 
-    strategies = ("sequential", "repair")  # the sequential builder; the repair search it replaces
-
-    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None, strategy: str | None = None):
+    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
         """Simulation-based satisfaction, distractions and validation of one layout; the
-        solution must pass `accept` of the noisy replays (default: all of them); `strategy`
-        one of `strategies` (default: the first)."""
+        solution must pass `accept` of the noisy replays (default: all of them)."""
         from physc.domains.angrybirds.generate import satisfy
 
-        return satisfy(self, scenario, layout, rng, validate, accept, strategy or self.strategies[0])
+        return satisfy(self, scenario, layout, rng, validate, accept)
 
 
 DOMAIN = AngryBirds()

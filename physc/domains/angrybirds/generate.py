@@ -25,11 +25,9 @@ def satisfy(
     rng: random.Random,
     validate: bool,
     accept: int | None = None,
-    strategy: str = "sequential",
 ) -> Outcome:
-    """`accept`: the noisy replays a solution must pass (default: all of them); `strategy`:
-    "sequential" (physc/generation/sequential.py) or "repair" (the repair search)."""
-    satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept, strategy)
+    """`accept`: the noisy replays a solution must pass (default: all of them)."""
+    satisfier = Satisfier(domain, scenario, layout, ROBUSTNESS_REPLAYS if accept is None else accept)
     found = satisfier.run()
     if found is None:
         return Outcome(False, satisfier.simulations, nearest=satisfier.nearest, given_up=satisfier.given_up, best=satisfier.best, stopped=satisfier.stopped)

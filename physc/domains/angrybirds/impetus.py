@@ -14,7 +14,7 @@ where the motion starts, within the concrete objects and materials the scenario 
   support, or the support ending at it (`push_off`, `to_the_edge`).
 
 Offered by `Repairs.proposals` (repairs.py) and judged, like every proposal, by
-simulation in `Satisfier.repaired` (satisfy.py).
+simulation in a stage of the sequential search (build.py).
 """
 
 from __future__ import annotations

@@ -1,8 +1,8 @@
 """The satisfier's repair proposals: where objects go for an interaction to happen.
 
 At the first declared interaction that no candidate shot realises, `proposals` offers
-changed levels, each a guess at what kept it from happening; `Satisfier.repaired`
-(satisfy.py) simulates them and keeps what does better. The proposals here move objects:
+changed levels, each a guess at what kept it from happening; a stage of the sequential
+search (build.py, `AngryBirdsChain.repairs`) simulates them on the stage's scene. The proposals here move objects:
 
 * `liesOnPath(b, a)` (from `hit(a, b, d)` and `fall(a, b)`): b is moved to where
   the simulated paths of a pass most often, placed so that a arrives from an

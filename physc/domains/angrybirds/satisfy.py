@@ -1,15 +1,15 @@
 """Satisfying constraints through simulation (the paper's step 4), for angrybirds.
 
-Given a placed layout, the satisfier simulates the candidate actions and
-measures how much of the declared sequence each realises (`fidelity`). At the
-first declared interaction that no candidate reaches, it repairs the layout.
-A proposal is kept when the best candidate does at least as well with it; when none
-helps, the last one kept is undone and the proposals after it are tried (backtracking).
-Once a candidate realises the whole sequence, the satisfier keeps the first one that
-noise does not break, obstructs what the restrictions forbid and guards against
-shortcuts. `Satisfier` is this module's search and the state it works on; each of its
-other jobs is a mixin in a module of its own (one job each, read and changed apart), whose
-methods are `Satisfier`'s:
+Given a placed layout, the satisfier builds the chain stage by stage along its
+simulation (the generic sequential search, physc/generation/sequential.py, with this
+domain's hooks in build.py), measuring how much of the declared sequence each candidate
+shot realises (`fidelity`). Once a shot realises the whole sequence, the satisfier keeps
+the first one that noise does not break, obstructs what the restrictions forbid and
+guards against shortcuts. (Until issue 31 the chain was made by repairing the whole
+placed layout after simulating it, a search of its own; the repair proposals are now
+the local changes a stage of the sequential search tries: docs/generation.md.)
+`Satisfier` is the state all this works on; each of its jobs is a mixin in a module of
+its own (one job each, read and changed apart), whose methods are `Satisfier`'s:
 
 * attempt.py: `Attempt`, one simulated play, and the outline arithmetic all parts share;
 * placing.py: moving, shifting and shortening objects while the layout holds;
@@ -23,7 +23,6 @@ methods are `Satisfier`'s:
 from __future__ import annotations
 
 from collections import Counter
-from collections.abc import Collection, Sequence
 
 import attrs
 import networkx as nx
@@ -53,8 +52,6 @@ from physc.simulation.stopped import why_stopped
 from physc.simulation.trace import Trace
 
 KEPT_SIMULATIONS = 256  # the satisfier's last simulations, kept (see Satisfier.kept), ~300 KB each
-REPAIR_ROUNDS = 16  # simulated repair proposals per layout (per 4 interactions for longer chains)
-SCREEN = 4  # a repair proposal is first simulated with the shots that came nearest so far
 RESTING = tuple(q for on in ON_LOCATION.values() for q in on)  # resting on the left, the centre or the right of a support
 # Why the satisfier gives a layout up (`Satisfier.given_up`), in the order of its steps.
 NOT_REACHED = "no shot reaches the first target"
@@ -90,9 +87,8 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
     level it works on, simulation, the layout's constraints, the repair search and `run`,
     the whole step."""
 
-    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS, strategy: str = "sequential"):
+    def __init__(self, domain, scenario: ScenarioIR, layout: ConcreteLayout, accept: int = ROBUSTNESS_REPLAYS):
         self.domain = domain
-        self.strategy = strategy
         # Noisy replays (of ROBUSTNESS_REPLAYS) a solution must pass. Fewer than all of them
         # only for a fallback. The fresh replays of the confirmation must pass as many.
         self.accept = accept
@@ -120,7 +116,6 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         self.best = 0  # most interactions of the sequence realised, in order, in one play
         self.furthest: Attempt | None = None  # the play that came furthest (by its fidelity's score)
         self.given_up = ""  # why `run` gave the layout up (NOT_REACHED … BROKEN), when it did
-        self.repair_rounds = max(REPAIR_ROUNDS, 4 * len(scenario.interactions))
 
     @property
     def simulations(self) -> int:
@@ -171,35 +166,12 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         first = self.scenario.interactions[0]
         return self.objects.get(first.objects[1]) if first.name == "hit" else None
 
-    def attempts(self, only: Collection[str] | None = None, done: Sequence[Attempt] = ()) -> list[Attempt]:
-        """Simulate the candidate shots (of them, those labelled `only`; the ones `done`
-        already are not simulated again), in the candidates' order."""
+    def attempts(self) -> list[Attempt]:
+        """Every candidate shot simulated in the current level, in the candidates' order."""
         target = self.first_target()
         if target is None:
             return []
-        known = {a.label: a for a in done}
-        out = []
-        for label, shot in candidate_shots(target):
-            if label in known:
-                out.append(known[label])
-            elif only is None or label in only:
-                out.append(attrs.evolve(self.simulate(shot), label=label))
-        return out
-
-    @staticmethod
-    def most_promising(attempts: Sequence[Attempt]) -> list[str]:
-        """The labels of the SCREEN best attempts (the first in candidate order among equals)."""
-        ranked = sorted(range(len(attempts)), key=lambda i: attempts[i].fidelity.score, reverse=True)
-        return [attempts[i].label for i in ranked[:SCREEN]]
-
-    def screened(self, attempts: Sequence[Attempt], score: tuple) -> list[Attempt] | None:
-        """All candidates in the current level if they do at least as well as `score`, else
-        None. Screening: first only the SCREEN shots that came nearest in `attempts`; the
-        others are simulated only if one of these does as well (most proposals fail)."""
-        trial = self.attempts(only=self.most_promising(attempts))
-        if not trial or max(a.fidelity.score for a in trial) < score:
-            return None
-        return self.attempts(done=trial)
+        return [attrs.evolve(self.simulate(shot), label=label) for label, shot in candidate_shots(target)]
 
     # ---- constraint checks -------------------------------------------------------------------
     def consistent(self, level: Level, moved: frozenset = frozenset()) -> bool:
@@ -242,58 +214,12 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         return overlapping_pair(corners, 1e-4, joined(self.relations)) is None
 
     # ---- the whole step ----------------------------------------------------------------------
-    def repaired(self, attempts: list[Attempt]) -> list[Attempt] | None:
-        """Repair until a candidate realises the sequence, depth first: each proposal is
-        simulated and kept if the best candidate does at least as well as before; when no
-        proposal for the level as it is helps, the last repair kept is undone and the
-        proposals that came after it are tried (backtracking). All proposals tried count
-        against `repair_rounds`. A repair kept without progress (the same score: an obstacle
-        across the bird's flight, say) whose continuations all failed is not worth trying
-        again in another place: proposals described as it was are skipped at that level.
-        The candidates then, or None."""
-        score = max(a.fidelity.score for a in attempts)
-        kept: list[tuple] = []  # per repair kept: the state before it and the proposals left there
-        proposals = self.distinct(self.proposals(attempts), self.level)
-        futile: set[str] = set()  # at this level: repairs kept without progress that led nowhere
-        rounds = 0
-        while not self.working(attempts):
-            if rounds >= self.repair_rounds:
-                return None
-            for description, level in proposals:
-                if description in futile:
-                    continue
-                rounds += 1
-                saved = self.level
-                self.level = level
-                trial = None if description in self.repairs else self.screened(attempts, score)
-                self.level = saved
-                if trial is not None:
-                    better = max(a.fidelity.score for a in trial)
-                    kept.append((saved, attempts, len(self.repairs), len(self.obstacles), proposals, futile, better > score))
-                    self.repairs.append(description)
-                    self.adopt(level)
-                    attempts, score, futile = trial, better, set()
-                    proposals = self.distinct(self.proposals(attempts), self.level)
-                    break
-                if rounds >= self.repair_rounds:
-                    return None
-            else:
-                if not kept:
-                    return None
-                level, attempts, repairs, obstacles, proposals, futile, progressed = kept.pop()
-                if not progressed:
-                    futile.add(self.repairs[repairs])  # the repair being undone
-                score = max(a.fidelity.score for a in attempts)
-                del self.repairs[repairs:]
-                self.restore(level, obstacles)
-        return attempts
-
     @staticmethod
     def distinct(proposals, level: Level):
         """The proposals for `level`, each changed level once: two repairs may propose the
         same change (liesOnPath from above and from below puts a pig on its surface at the
         same place), and a proposal that changes nothing is no repair. Each would be
-        simulated, and count against the repair rounds, for nothing."""
+        simulated, and count against the search's budget, for nothing."""
         seen = {level}
         for description, proposed in proposals:
             if proposed not in seen:
@@ -301,20 +227,12 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
                 yield description, proposed
 
     def run(self) -> Satisfied | None:
-        """Repair the layout until a candidate realises the sequence, then keep the first
+        """Build the chain until a candidate realises the sequence, then keep the first
         working candidate that noise does not break, obstruct what the restrictions forbid
         and guard against shortcuts."""
-        if self.strategy == "sequential":
-            attempts = self.built()
-            if attempts is None:
-                return self.give_up(NOT_REALISED)
-        else:
-            attempts = self.attempts()
-            if not attempts:
-                return self.give_up(NOT_REACHED)
-            attempts = self.repaired(attempts)
-            if attempts is None:
-                return self.give_up(NOT_REALISED)
+        attempts = self.built()
+        if attempts is None:
+            return self.give_up(NOT_REALISED if self.simulations else NOT_REACHED)
         working = self.working(attempts)
         # The first working candidate that noise does not break, or else its shot moved
         # to the middle of its window of working angles, or the world around it firmed up,
@@ -357,7 +275,7 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         return Satisfied(self.level, attrs.evolve(final, label=chosen.label), (passed, total), tuple(self.repairs), tuple(self.obstacles), self.simulations)
 
     def built(self) -> list[Attempt] | None:
-        """The sequential strategy (physc/generation/sequential.py): the chain built stage by
+        """The sequential search (physc/generation/sequential.py): the chain built stage by
         stage along its simulation; the attempts that realise it on the level built, or None."""
         from physc.domains.angrybirds.build import AngryBirdsChain
         from physc.generation.sequential import Sequential
