@@ -63,23 +63,24 @@ class AngryBirdsChain(ChainBuilder):
 
     # ---- stages ------------------------------------------------------------------------
     def _introduced(self) -> dict[str, int]:
+        """The interaction at which each object enters the scene (module docstring)."""
         s = self.s
-        total = len(self.interactions)
-        introduced = {name: total for name in s.objects}
+        introduced = {name: len(self.interactions) for name in s.objects}
         for k, term in enumerate(self.interactions):
             for name in term.objects:
                 if name in introduced:
                     introduced[name] = min(introduced[name], k)
-        pairs = [(a, b) for a, b in s.support_of.items()] + [tuple(pair) for pair in joined(s.relations)]
+        # (earlier, later): `earlier` enters no later than `later`. A support before what rests
+        # on it; two joined platforms together (both ways).
+        before = [(support, a) for a, support in s.support_of.items()]
+        before += [pair for a, b in map(tuple, joined(s.relations)) for pair in ((a, b), (b, a))]
+        before = [(x, y) for x, y in before if x in introduced and y in introduced]
         changed = True
-        while changed:  # what an object rests on, and platforms joined to it, enter no later than it
+        while changed:
             changed = False
-            for a, b in pairs:
-                if a in introduced and b in introduced:
-                    first = min(introduced[a], introduced[b]) if (a, b) not in s.support_of.items() else introduced[a]
-                    for name in ((a, b) if (a, b) not in s.support_of.items() else (b,)):
-                        if introduced[name] > first:
-                            introduced[name], changed = first, True
+            for earlier, later in before:
+                if introduced[earlier] > introduced[later]:
+                    introduced[earlier], changed = introduced[later], True
         return introduced
 
     def stages(self) -> list[Stage]:
