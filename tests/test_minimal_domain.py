@@ -357,6 +357,8 @@ class Minimal(Domain):
     def picture(self, task, fmt: str = "png") -> bytes:
         if fmt != "svg":
             raise MissingCapability(self.name, ("picture",), f"a {fmt} picture (it draws SVG only)")
+        if not hasattr(task, "solution"):
+            raise MissingCapability(self.name, ("picture",), "a picture of a layout (it draws tasks only)")
         trace = simulate(task.level, task.solution.target[0])
         flip = lambda y: 2 - y  # noqa: E731
         shapes = [
@@ -480,5 +482,11 @@ def test_the_command_line_compiles_it_as_an_installed_plugin(tmp_path, monkeypat
         task = json.loads((tmp_path / "task.json").read_text())
         assert (task["domain"], task["trace"], task["validated"]) == ("minimal", expected.trace, True)
         assert (tmp_path / "push.svg").read_bytes().startswith(b"<svg")
+        # What the domain cannot draw is refused as such (E0703), not an internal error.
+        for extra in (["--png", tmp_path / "push.png"], ["--emit", "layout", "--png", tmp_path / "layout.svg"]):
+            out = run_physc("compile", "-q", "--color", "never", source, "-o", tmp_path / "again.json", *extra)
+            assert out.status == 2, out.stderr
+            assert "error[E0703]: the domain 'minimal' cannot do what a" in out.stderr and "Traceback" not in out.stderr
+            assert not (tmp_path / "push.png").exists() and not (tmp_path / "layout.svg").exists()
     finally:
         domains.load_domain.cache_clear()

@@ -17,6 +17,7 @@ from physc.commands.common import (
 from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
+from physc.domains.base import DomainError
 from physc.compiler.infeasible import Exhausted, readable
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
@@ -93,6 +94,8 @@ def _layouts(task) -> str:
 
 def _robustness(robustness) -> str:
     passed, total = robustness
+    if not total:
+        return "no noisy replays (the domain makes none)"
     text = f"{passed} of {total} noisy replays"
     return text if passed == total else text + " (a fallback: --min-robustness)"
 
@@ -102,12 +105,8 @@ def _picture_format(path: str) -> str:
     return "svg" if path.lower().endswith(".svg") else "png"
 
 
-def _picture(value, stage: str, domain, path: str) -> bytes:
-    """The picture of a layout or a task, as --png asks."""
-    if stage == "layout":
-        from physc.domains.angrybirds.picture import render
-
-        return render(value, _picture_format(path))
+def _picture(value, domain, path: str) -> bytes:
+    """The picture of a layout or a task, as --png asks: the domain's own drawing."""
     return domain.picture(value, _picture_format(path))
 
 
@@ -134,7 +133,7 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
     task) needs: refused before any work, at the scenario's `domain` line."""
     from physc.domains.base import STAGE_NEEDS, MissingCapability, require
 
-    picture = ("picture",) if args.png and stage_name in ("task", "level") else ()
+    picture = ("picture",) if args.png and stage_name in ("layout", "task", "level") else ()
     asked = f"--emit {stage_name}" + (" --png" if picture else "")
     found = []
     for scenario in selected:
@@ -204,7 +203,7 @@ def cmd_compile(args) -> int:
     if lacking:
         report(args.file, analysis.source, lacking)
         return diagnostics.exit_status(lacking)
-    outputs, failures = [], []
+    outputs, failures, refused = [], [], []
     for index, scenario in enumerate(selected, 1):
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
@@ -227,13 +226,17 @@ def cmd_compile(args) -> int:
             # the time budget, and where Ctrl-C stops it safely.
             with budget.interruptible(), budget.deadline(args.time_budget):
                 value = chosen.run(Unit(scenario, ir), pipeline)
-                picture = _picture(value, chosen.name, domain, args.png) if args.png else None
+                picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:
             failures.append(_infeasible(error, scenario))
             continue
         except budget.OutOfTime:
             error = Infeasible(chosen.name, f"the time budget of {args.time_budget:g} s ran out", budget=Exhausted.TIME)
             failures.append(_infeasible(error, scenario))
+            continue
+        except DomainError as error:  # the domain cannot do what was asked (a picture format it lacks)
+            span = scenario.domain.span if scenario.domain else scenario.name.span
+            refused.append(Diagnostic(error.code, error.message, span, help=error.help))
             continue
         outputs.append((ir.name, domain, value))
         if generating and not args.quiet:
@@ -249,8 +252,9 @@ def cmd_compile(args) -> int:
             write_atomic(_destination(args.png, many, ir.name, _picture_format(args.png)), picture)
         if args.task:
             write_atomic(_destination(args.task, many, ir.name, "json"), json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n")
-    if failures:
-        report(args.file, analysis.source, failures)
+    if failures or refused:
+        report(args.file, analysis.source, failures + refused)
+    done = diagnostics.exit_status(refused) if refused else EXIT_INFEASIBLE if failures else EXIT_OK
     if chosen.name == "level":
         for name, domain, value in outputs:
             text = domain.emit_level(value.level)
@@ -258,7 +262,7 @@ def cmd_compile(args) -> int:
                 write_atomic(_destination(args.output, many, name, "xml"), text)
             elif not many:
                 sys.stdout.write(text)
-        return EXIT_INFEASIBLE if failures else EXIT_OK
+        return done
     if fmt == "dot":
         text = "".join(value.to_dot() for _, _, value in outputs)
     else:
@@ -269,4 +273,4 @@ def cmd_compile(args) -> int:
             write_atomic(args.output, text)
         else:
             sys.stdout.write(text)
-    return EXIT_INFEASIBLE if failures else EXIT_OK
+    return done

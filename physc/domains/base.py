@@ -41,7 +41,7 @@ DEFAULTS = ("reach_targets", "reachable", "robustness_replays")  # working defau
 _LAYOUT_GRAPH = ("layout_rules",)
 _DIMENSION_GRAPHS = _LAYOUT_GRAPH + ("layout_parameters", "concretize")
 _LAYOUT = _DIMENSION_GRAPHS + ("reach_targets", "reachable")
-_TASK = _LAYOUT + ("satisfy", "robustness_replays")
+_TASK = _LAYOUT + ("satisfy", "robustness_replays")  # `--png` adds "picture" to any stage from layout on
 STAGE_NEEDS: dict[str, tuple[str, ...]] = {
     "ast": (),
     "scenario": (),
@@ -166,10 +166,11 @@ class Domain(abc.ABC):
         raise MissingCapability(self.name, ("emit_level",), "writing a level")
 
     @_no_default
-    def picture(self, task: Task, fmt: str = "png") -> bytes:
-        """A picture of the generated task, `fmt` "png" or "svg" (`--png` of a task or
-        level). No default: how a level looks is the domain's own; a domain without one
-        says so clearly instead of drawing something wrong."""
+    def picture(self, task: Task | ConcreteLayout, fmt: str = "png") -> bytes:
+        """A picture of the generated task, or of a placed layout (`--emit layout`), `fmt`
+        "png" or "svg" (`--png`). No default: how a level looks is the domain's own; a domain
+        without one says so clearly instead of drawing something wrong, and one that cannot
+        draw a format raises MissingCapability (E0703) for it."""
         raise MissingCapability(self.name, ("picture",), "--png")
 
     # --- generation: working defaults ------------------------------------------

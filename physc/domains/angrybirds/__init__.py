@@ -51,11 +51,15 @@ class AngryBirds(Domain):
 
     @staticmethod
     def picture(task, fmt: str = "png") -> bytes:
-        """The task's level with the paths its solution makes, like the paper's figure."""
+        """The task's level with the paths its solution makes, like the paper's figure; a
+        placed layout (`--emit layout --png`) as the level it becomes."""
+        from physc.compiler.concrete_layout import ConcreteLayout
         from physc.domains.angrybirds.game import Game
         from physc.domains.angrybirds.launch import Shot
-        from physc.domains.angrybirds.picture import draw_level, save
+        from physc.domains.angrybirds.picture import draw_level, render, save
 
+        if isinstance(task, ConcreteLayout):
+            return render(task, fmt)
         shot = Shot(target=task.solution.target, trajectory=task.solution.trajectory)
         trace = Game(task.level).simulate(shot, 9.0, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
