@@ -31,12 +31,14 @@ import numpy as np
 
 from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
+from physc.domains.angrybirds.attempt import SECONDS
 from physc.domains.angrybirds.catalogue import extent
 from physc.domains.angrybirds.layout_rules import OPPOSITE
 from physc.domains.angrybirds.level import Level
 from physc.generation.sequential import ChainBuilder, Stage, State, stages
 
 SCREEN = 4  # shots a change of the first stage is tried with first
+STAGE_SECONDS = 6.0  # simulated after the parent's last interaction, for a stage that is not the last
 BEAM = 3  # attempts that realise a stage, kept for the next
 STEP = 0.3  # units of travel between the places a target is offered along a path
 PLACES = 6  # places offered along the path of each of the first two attempts
@@ -119,8 +121,9 @@ class AngryBirdsChain(ChainBuilder):
             shots = [c for c in shots if c[0] in nearest] + [c for c in shots if c[0] not in nearest]
             screen = len(nearest) or len(shots)
         good, tried = [], []
+        seconds = self.horizon(parent, stage)
         for j, (label, shot) in enumerate(shots):
-            attempt = attrs.evolve(self.s.simulate(shot, level), label=label)
+            attempt = attrs.evolve(self.s.simulate(shot, level, seconds), label=label)
             tried.append(attempt)
             if self.reaches(attempt, stage.end):
                 good.append(attempt)
@@ -135,6 +138,15 @@ class AngryBirdsChain(ChainBuilder):
                 self.screen = sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[:SCREEN]
         good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
         return tuple(good[:BEAM]) or None
+
+    def horizon(self, parent: State, stage: Stage) -> float:
+        """How long a stage's scene is simulated: STAGE_SECONDS after the parent's last
+        interaction (its actor's path for the next target is all the next stage reads), the
+        whole run for the last stage, which must meet the goal."""
+        if stage.end >= len(self.interactions):
+            return SECONDS
+        since = max((a.fidelity.times[-1] for a in parent.attempts if a.fidelity.times), default=0.0)
+        return min(SECONDS, since + STAGE_SECONDS)
 
     def promise(self, attempt, end: int) -> float:
         """How well `attempt` sets up the interaction after the first `end`: how far its actor

@@ -127,19 +127,19 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         return {o.name: o for o in self.level.objects}
 
     # ---- simulation --------------------------------------------------------------------------
-    def simulate(self, shot: Shot, level: Level | None = None) -> Attempt:
-        """The level (the current one unless given) played with `shot`, judged against the
-        scenario (the repair search meets the same proposal again after backtracking, a
-        few dozen simulations later: see `kept`)."""
+    def simulate(self, shot: Shot, level: Level | None = None, seconds: float = SECONDS) -> Attempt:
+        """The level (the current one unless given) played with `shot` for `seconds` at most,
+        judged against the scenario (a search meets the same change again after backtracking,
+        a few dozen simulations later: see `kept`)."""
         level = level or self.level
 
         def play() -> Attempt:
             trace = Game(level).play(
-                shot, SECONDS, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
+                shot, seconds, restrictions=self.scenario.restrictions, redirects=self.redirects, settle_after_solved=0.3
             )
             return Attempt("", shot, trace, fidelity(self.scenario, trace))
 
-        attempt = self.kept("play", level, shot, play)
+        attempt = self.kept(f"play {seconds:g}", level, shot, play)
         if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
             self.furthest = attempt
         self.best = max(self.best, attempt.fidelity.matched)
