@@ -85,10 +85,10 @@ def test_cli_refuses_a_floor_below_one(tmp_path):
 
 
 def test_a_fragile_chain_compiles_as_a_fallback(tmp_path):
-    # RS seed 4: none of its first 6 layouts gives a solution that survives all 6 noisy
+    # SR seed 4: none of its first 6 layouts gives a solution that survives all 6 noisy
     # replays; the most robust passes 4 of them.
     paper = EXAMPLES / "paper" / "all.paper.phys"
-    args = ("compile", paper, "-s", "RS", "--seed", "4", "--layouts", "6", "--color", "never")
+    args = ("compile", paper, "-s", "SR", "--seed", "4", "--layouts", "6", "--color", "never")
     strict = run_physc(*args, "--min-robustness", "6", "-q", "-o", tmp_path / "strict.xml")
     assert strict.status == 3 and "passed 4 of 6 noisy replays (--min-robustness 4 accepts such a one)" in strict.stderr
     assert not (tmp_path / "strict.xml").exists()
