@@ -104,8 +104,9 @@ class LayoutLoop:
             finally:
                 seconds["satisfy"] += time.perf_counter() - clock
             simulations += result.simulations
-            if getattr(result, "best", 0) > best or (getattr(result, "best", 0) == best and not stopped):
-                best, stopped = getattr(result, "best", 0), getattr(result, "stopped", "")
+            reached = getattr(result, "best", 0)
+            if reached > best or (reached == best and not stopped):
+                best, stopped = reached, getattr(result, "stopped", "")
             if result.satisfied:
                 failure, used = None, placed.layout
                 break

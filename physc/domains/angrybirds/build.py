@@ -23,6 +23,7 @@ for the variants of a stage, and whether a variant realises it. Here:
 
 from __future__ import annotations
 
+import contextlib
 import itertools
 import math
 
@@ -32,9 +33,10 @@ import numpy as np
 from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.attempt import SECONDS
-from physc.domains.angrybirds.catalogue import extent
+from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.layout_rules import OPPOSITE
 from physc.domains.angrybirds.level import Level
+from physc.domains.angrybirds.repairs import LANDING_SHARES, SETTLE_MOTION
 from physc.generation.sequential import ChainBuilder, Stage, State, stages
 
 SCREEN = 4  # shots a change of the first stage is tried with first
@@ -46,11 +48,9 @@ PROPOSALS = 6  # local repairs offered per stage and repaired scene
 REPAIR_DEPTH = 3  # repairs on top of one another
 GAP = 0.02  # between a placed target and the actor that is to meet it
 MOVING = 0.25  # units/s: an actor slower than this is not offered targets further on
-SETTLE_MOTION = 0.3  # s: a roll, slide or fall lasts this long before its target may stand in its way
 CLEAR = 0.05  # a placed target keeps this far from where the prefix's bodies pass before the hit
 LANDINGS = (0.0, 0.15, -0.15, 0.3, -0.3)  # units off where a fall comes down, tried in turn
-BIRD_RADIUS = 0.17  # what the bird's path must keep clear of
-LANDING_SHARES = (0.45, 0.3, 0.6)  # behind the centre of a block that is to move next (of their half-widths)
+BIRD = shape("redBird")  # the bird is no object of the level: its size, for placing along its path
 
 
 class AngryBirdsChain(ChainBuilder):
@@ -114,8 +114,7 @@ class AngryBirdsChain(ChainBuilder):
             order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
             shots, screen = [(a.label, a.shot) for a in order], 1
         else:  # every candidate shot; for a changed scene, those that came nearest before first
-            first = self.interactions[0]
-            target = next((o for o in level.objects if o.name == first.objects[1]), None) if first.name == "hit" else None
+            target = self.s.first_target(level)
             shots = candidate_shots(target) if target is not None else []
             nearest = {a.label for a in self.screen}
             shots = [c for c in shots if c[0] in nearest] + [c for c in shots if c[0] not in nearest]
@@ -193,15 +192,11 @@ class AngryBirdsChain(ChainBuilder):
             return
         best, base = self.failed[stage.index]
         s = self.s
-        saved = s.level
-        s.level = self.prefix(base, stage.start)
-        try:
+        with self.on_scene(self.prefix(base, stage.start)):
             proposals = list(itertools.islice(s.distinct(s.proposals([best]), s.level), PROPOSALS))
-        finally:
-            s.level = saved
         lead = next((j for j, a in enumerate(parent.attempts) if a.label == best.label), 0)
         for description, proposed in proposals:
-            scene = self.merged(base, proposed)
+            scene = self.merged(base, proposed.objects)
             if scene in seen:
                 continue
             seen.add(scene)
@@ -210,14 +205,25 @@ class AngryBirdsChain(ChainBuilder):
                 yield from self.repairs(parent, stage, seen, depth + 1)
                 return
 
+    @contextlib.contextmanager
+    def on_scene(self, level: Level):
+        """The satisfier's proposals and checks made on `level` (a stage's scene) while in it:
+        they read the satisfier's current level."""
+        saved = self.s.level
+        self.s.level = level
+        try:
+            yield
+        finally:
+            self.s.level = saved
+
     @staticmethod
-    def merged(full: Level, part: Level) -> Level:
-        """`full` with the objects of `part` (a stage's scene, changed) in their place, and
-        what `part` adds."""
-        changed = {o.name: o for o in part.objects}
+    def merged(full: Level, objects) -> Level:
+        """`full` with `objects` (of a stage's scene, changed) in their place by name, and
+        those it lacks added."""
+        changed = {o.name: o for o in objects}
         names = {o.name for o in full.objects}
-        objects = tuple(changed.get(o.name, o) for o in full.objects) + tuple(o for o in part.objects if o.name not in names)
-        return attrs.evolve(full, objects=objects)
+        kept = tuple(changed.get(o.name, o) for o in full.objects)
+        return attrs.evolve(full, objects=kept + tuple(o for o in changed.values() if o.name not in names))
 
     # ---- on the path -------------------------------------------------------------------------
     def movers(self, name: str, objects: dict) -> set[str]:
@@ -257,7 +263,7 @@ class AngryBirdsChain(ChainBuilder):
             changed = self.s.shift(members, x - objects[target].x, y - objects[target].y, objects)
             if changed is None or not self.clear(trace, first + step, changed, actor, objects):
                 continue
-            scene = self.merged(full, attrs.evolve(full, objects=tuple(changed.values())))
+            scene = self.merged(full, changed.values())
             if not self.s.consistent(self.prefix(scene, stage.start), frozenset(changed)):
                 continue
             where = f"{declared.text}: {target} on its path, at ({changed[target].x:.2f}, {changed[target].y:.2f})"
@@ -280,23 +286,17 @@ class AngryBirdsChain(ChainBuilder):
         pushed = [d for d in ("left", "right") if OPPOSITE[d] in declared.directions]
         if support is None or not pushed:
             return None
-        saved = self.s.level
-        self.s.level = self.prefix(scene, stage.start)
-        try:
-            if support not in self.s.objects:
-                return None
-            changed = self.s.ledge_ends_at(target, support, pushed[0])
-        finally:
-            self.s.level = saved
+        with self.on_scene(self.prefix(scene, stage.start)):
+            changed = self.s.ledge_ends_at(target, support, pushed[0]) if support in self.s.objects else None
         if changed is None:
             return None
-        edged = self.merged(scene, attrs.evolve(scene, objects=tuple(changed.values())))
+        edged = self.merged(scene, changed.values())
         return edged if self.s.consistent(self.prefix(edged, stage.start), frozenset(changed)) else None
 
     def hit_places(self, declared, objects: dict, target: str, rows, k: int):
         """(row, x, y) of the target touching the actor from a declared side, along its path."""
         actor = declared.objects[0]
-        wa, ha = extent(objects[actor]) if actor in objects else (0.34, 0.34)
+        wa, ha = extent(objects[actor]) if actor in objects else (BIRD.width, BIRD.height)
         wb, hb = extent(objects[target])
         sideways = self.sideways_only(target)
         resting_y = objects[target].y
@@ -374,7 +374,7 @@ class AngryBirdsChain(ChainBuilder):
             if name == actor:
                 radius, margin = 0.0, 0.0
             else:
-                radius, margin = max(extent(objects[name])) / 2 if name in objects else BIRD_RADIUS, CLEAR
+                radius, margin = max(extent(objects[name])) / 2 if name in objects else BIRD.width / 2, CLEAR
             for obj in changed.values():
                 w, h = extent(obj)
                 dx = np.abs(path[:, 0] - obj.x) - w / 2 - radius - margin

@@ -33,6 +33,7 @@ from physc.compiler.qsr import FAR, ON_LOCATION, joined
 from physc.compiler.qsr_evaluate import five_points, holds
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.attempt import SECONDS, Attempt
+from physc.domains.angrybirds.build import AngryBirdsChain
 from physc.domains.angrybirds.catalogue import by_prefab, extent
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.impetus import Impetus
@@ -47,6 +48,7 @@ from physc.domains.angrybirds.to_level import level_from_layout
 from physc.domains.angrybirds.world import PLACEMENT_AREA
 from physc.dsl.scenario import ScenarioIR
 from physc.generation.evaluator import Evaluator
+from physc.generation.sequential import Sequential
 from physc.simulation.fidelity import fidelity
 from physc.simulation.stopped import why_stopped
 from physc.simulation.trace import Trace
@@ -162,9 +164,11 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
         key = (kind, level, tuple(o.name for o in level.objects), shot)  # a level's equality ignores names
         return self.evaluator.kept(key, simulated)
 
-    def first_target(self) -> LevelObject | None:
+    def first_target(self, level: Level | None = None) -> LevelObject | None:
+        """The target of the first interaction, a hit, in `level` (default: the current one)."""
         first = self.scenario.interactions[0]
-        return self.objects.get(first.objects[1]) if first.name == "hit" else None
+        objects = self.objects if level is None else {o.name: o for o in level.objects}
+        return objects.get(first.objects[1]) if first.name == "hit" else None
 
     def attempts(self) -> list[Attempt]:
         """Every candidate shot simulated in the current level, in the candidates' order."""
@@ -277,9 +281,6 @@ class Satisfier(Repairs, Impetus, Placing, Obstruction, Robustness):
     def built(self) -> list[Attempt] | None:
         """The sequential search (physc/generation/sequential.py): the chain built stage by
         stage along its simulation; the attempts that realise it on the level built, or None."""
-        from physc.domains.angrybirds.build import AngryBirdsChain
-        from physc.generation.sequential import Sequential
-
         self.search = Sequential(AngryBirdsChain(self))
         found = self.search.run()
         if found is None:
