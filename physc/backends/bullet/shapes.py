@@ -1,0 +1,65 @@
+"""The 2-D geometry a 3-D engine needs from a planar body: area, moment about z, whether a
+polygon is a centred axis-aligned rectangle (a box shape is exact and cheaper than a hull),
+and a polygon grown by a skin."""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.backends import Circle, Polygon
+
+
+def area(shape: Circle | Polygon) -> float:
+    if isinstance(shape, Circle):
+        return math.pi * shape.radius**2
+    points = shape.points
+    return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]))) / 2
+
+
+def polar_moment(shape: Circle | Polygon, mass: float) -> float:
+    """The moment of inertia about the centre (the origin of the points), for `mass` spread
+    evenly over the shape."""
+    if isinstance(shape, Circle):
+        return mass * shape.radius**2 / 2
+    points = shape.points
+    numerator = denominator = 0.0
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+        cross = abs(x0 * y1 - x1 * y0)
+        numerator += cross * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
+        denominator += cross
+    return mass * numerator / (6 * denominator) if denominator else 0.0
+
+
+@attrs.frozen
+class Extent:
+    width: float
+    height: float
+    rectangle: bool  # the points are exactly the centred rectangle width × height
+
+    @classmethod
+    def of(cls, points) -> Extent:
+        xs, ys = [x for x, _ in points], [y for _, y in points]
+        width, height = max(xs) - min(xs), max(ys) - min(ys)
+        corners = {(sx * width / 2, sy * height / 2) for sx in (-1, 1) for sy in (-1, 1)}
+        exact = len(points) == 4 and all(any(math.isclose(x, cx, abs_tol=1e-9) and math.isclose(y, cy, abs_tol=1e-9) for cx, cy in corners) for x, y in points)
+        return cls(width, height, exact)
+
+    @staticmethod
+    def grown(points, skin: float) -> list[tuple[float, float]]:
+        """The polygon's vertices pushed out by `skin` along their bisectors (its outline
+        offset by about `skin`: exact for the edges' distance at right angles)."""
+        grown = []
+        n = len(points)
+        for i, (x, y) in enumerate(points):
+            (px, py), (nx, ny) = points[i - 1], points[(i + 1) % n]
+            normals = []
+            for (ax, ay), (bx, by) in (((px, py), (x, y)), ((x, y), (nx, ny))):
+                ex, ey = bx - ax, by - ay
+                length = math.hypot(ex, ey) or 1.0
+                normals.append((ey / length, -ex / length))  # outward for counter-clockwise points
+            mx, my = normals[0][0] + normals[1][0], normals[0][1] + normals[1][1]
+            scale = skin / max((mx * normals[0][0] + my * normals[0][1]), 1e-9)
+            grown.append((x + mx * scale, y + my * scale))
+        return grown

@@ -1,0 +1,281 @@
+"""A pybullet world confined to the level's plane, behind physc's backend interface.
+
+pybullet is a 3-D engine with no planar joint and no linear or angular factors. Each dynamic
+body is therefore a multibody of its own: a fixed, massless base at the origin, a prismatic
+joint along x, one along y and a revolute joint about z, with the body's shape on the last
+link (the mechanism of bullet3's biped2d example). The joints' coordinates *are* the body's
+x, y and angle, so no body can leave the plane or turn out of it, and a state read is one
+`getJointStates` call. The joints' motors are switched off; Box2D's angular damping is the
+revolute joint's damping. Static bodies are plain fixed bodies.
+
+Shapes are extrusions DEPTH deep: boxes for rectangles, convex hulls for other polygons,
+spheres for circles (a sphere's single contact point rolls on a platform as the game's
+circle does; see docs/performance.md for the calibration). Mass is set from the *area*, and
+the inertia about z from the 2-D shape, so they mean what they mean in pymunk whatever the
+depth. Bullet multiplies the friction of two bodies and multiplies their restitution; each
+body gets the square root of its friction (the pair's product is the geometric mean, as
+Box2D's), and its own bounciness against a static body of restitution 1 (exact for every body
+against the static world; between two dynamic bodies Bullet's product is smaller than
+Box2D's larger-of-two: measured and stated in docs/performance.md).
+
+Bullet reports no contact events, only the contact points after a step. Contacts begun and
+ended are the difference of the touching pairs between two steps; a contact's relative
+velocity is taken from the two bodies' velocities read before the step, so it is the
+velocity before the collision was resolved. Each world has its own DIRECT client, with
+deterministic overlapping pairs: same bodies, same steps, same result.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+import pybullet
+
+from physc.backends import BodySpec, Circle, ContactEvent
+from physc.backends.bullet.shapes import Extent, area, polar_moment
+
+DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
+SKIN = 0.01  # polygons grow by this, as pymunk's polygon skin (Box2D's polygon radius)
+SUBSTEPS = 2  # Bullet steps per game step
+ITERATIONS = 10  # the solver's iterations per Bullet step
+ERP = 0.2  # share of a penetration corrected per step (contacts and joints)
+RESTITUTION_THRESHOLD = 0.2  # below this approach speed (units/s) nothing bounces
+SEPARATION = 50  # Bullet steps at most that push initial overlaps apart (see _separate)
+ANCHOR = 0  # Bullet's friction anchors: a resting contact holds its place instead of creeping
+SLOP = 0.005  # overlap left alone (pymunk's and Box2D's linear slop)
+TOUCH = 0.005  # contact points this near (or nearer: negative is overlap) count as touching
+LINK_MASS = 1e-4  # the two carrier links of a planar body (the joints need a mass)
+AXES = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+JOINTS = (0, 1, 2)  # x, y, angle
+BODY_LINK = 2  # the link that carries a planar body's shape
+
+
+class BulletWorld:
+    LINK = BODY_LINK  # the link of a dynamic body that carries its shape
+    def __init__(self, gravity: float):
+        self.client = pybullet.connect(pybullet.DIRECT)
+        self.gravity = gravity
+        pybullet.setGravity(0.0, -gravity, 0.0, physicsClientId=self.client)
+        self.names: list[str] = []
+        self._id: dict[str, int] = {}  # name → Bullet body id
+        self._name_of: dict[int, str] = {}  # every body ever added, removed ones too
+        self._dynamic: dict[str, float] = {}  # dynamic body → mass
+        self._inertia: dict[str, float] = {}
+        self._damping: dict[str, float] = {}  # Box2D angular damping (1/s) of each dynamic body
+        self._extra_gravity: dict[str, float] = {}  # force (y) that makes its gravity scale true
+        self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
+        self._begun: list[ContactEvent] = []
+        self._ended: list[tuple[str, str]] = []
+        self._touching: dict[str, set[str]] = {}
+        self._dt: float | None = None
+
+    def __del__(self):
+        try:
+            pybullet.disconnect(physicsClientId=self.client)
+        except Exception:  # already gone (interpreter shutdown)
+            pass
+
+    # ---- building --------------------------------------------------------------
+    def _shape(self, spec: BodySpec) -> int:
+        if isinstance(spec.shape, Circle):
+            return pybullet.createCollisionShape(pybullet.GEOM_SPHERE, radius=spec.shape.radius, physicsClientId=self.client)
+        box = Extent.of(spec.shape.points)
+        if box.rectangle:
+            half = [box.width / 2 + SKIN, box.height / 2 + SKIN, DEPTH / 2]
+            return pybullet.createCollisionShape(pybullet.GEOM_BOX, halfExtents=half, physicsClientId=self.client)
+        grown = Extent.grown(spec.shape.points, SKIN)
+        vertices = [(x, y, z) for x, y in grown for z in (-DEPTH / 2, DEPTH / 2)]
+        return pybullet.createCollisionShape(pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=self.client)
+
+    def add(self, spec: BodySpec) -> None:
+        c = self.client
+        shape = self._shape(spec)
+        friction = math.sqrt(max(spec.friction, 0.0))
+        if spec.static:
+            quaternion = pybullet.getQuaternionFromEuler((0.0, 0.0, spec.angle))
+            body = pybullet.createMultiBody(0.0, shape, -1, (spec.x, spec.y, 0.0), quaternion, physicsClientId=c)
+            pybullet.changeDynamics(body, -1, lateralFriction=friction, restitution=1.0, physicsClientId=c)
+        else:
+            mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape)
+            inertia = polar_moment(spec.shape, mass)
+            body = self._create_dynamic(spec, shape, friction, mass, inertia)
+            self._dynamic[spec.name] = mass
+            self._inertia[spec.name] = inertia
+            self._damping[spec.name] = spec.angular_damping
+            if spec.gravity_scale != 1.0:
+                self._extra_gravity[spec.name] = -mass * self.gravity * (spec.gravity_scale - 1.0)
+            if self._dt is not None:
+                self._set_damping(spec.name, body)
+        self.names.append(spec.name)
+        self._id[spec.name] = body
+        self._name_of[body] = spec.name
+        self._touching[spec.name] = set()
+
+    def _create_dynamic(self, spec: BodySpec, shape: int, friction: float, mass: float, inertia: float) -> int:
+        """A dynamic body: a planar multibody whose joint coordinates are x, y and the angle."""
+        c = self.client
+        body = pybullet.createMultiBody(
+            0.0, -1, -1, (0.0, 0.0, 0.0),
+            linkMasses=(LINK_MASS, LINK_MASS, mass),
+            linkCollisionShapeIndices=(-1, -1, shape),
+            linkVisualShapeIndices=(-1, -1, -1),
+            linkPositions=((0, 0, 0),) * 3,
+            linkOrientations=((0, 0, 0, 1),) * 3,
+            linkInertialFramePositions=((0, 0, 0),) * 3,
+            linkInertialFrameOrientations=((0, 0, 0, 1),) * 3,
+            linkParentIndices=(0, 1, 2),
+            linkJointTypes=(pybullet.JOINT_PRISMATIC, pybullet.JOINT_PRISMATIC, pybullet.JOINT_REVOLUTE),
+            linkJointAxis=AXES,
+            physicsClientId=c,
+        )
+        for joint, value in zip(JOINTS, (spec.x, spec.y, spec.angle)):
+            pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=c)
+        pybullet.setJointMotorControlArray(body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=c)
+        pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=c)
+        pybullet.changeDynamics(
+            body, BODY_LINK, lateralFriction=friction, restitution=spec.bounciness,
+            localInertiaDiagonal=(inertia, inertia, inertia), frictionAnchor=ANCHOR and not isinstance(spec.shape, Circle), physicsClientId=c,
+        )
+        return body
+
+    def remove(self, name: str) -> None:
+        pybullet.removeBody(self._id.pop(name), physicsClientId=self.client)
+        self.names.remove(name)
+        for table in (self._dynamic, self._inertia, self._damping, self._extra_gravity):
+            table.pop(name, None)
+        # Its contacts end at the next step, as they do in pymunk (separations reported then).
+
+    # ---- running -----------------------------------------------------------------
+    def _configure(self, dt: float) -> None:
+        """The engine's settings for a game step of `dt`, set at the first step."""
+        self._dt = dt
+        pybullet.setPhysicsEngineParameter(
+            fixedTimeStep=dt / SUBSTEPS, numSubSteps=0, numSolverIterations=ITERATIONS,
+            erp=ERP, contactERP=ERP, frictionERP=ERP, contactSlop=SLOP, restitutionVelocityThreshold=RESTITUTION_THRESHOLD,
+            deterministicOverlappingPairs=1, physicsClientId=self.client,
+        )
+        for name in self._dynamic:
+            self._set_damping(name, self._id[name])
+        self._separate()
+
+    def _separate(self) -> None:
+        """Push apart the bodies that start overlapping by more than SLOP, without giving them
+        speed: Bullet's multibody solver corrects an overlap with a velocity that stays (a
+        level's touching blocks would jump apart), where pymunk and Box2D move the bodies
+        apart and keep their velocities. So before the first step, the overlaps are solved
+        in up to SEPARATION Bullet steps without gravity, each followed by setting every
+        dynamic body still again. Levels whose bodies do not overlap are not touched."""
+        c = self.client
+        pybullet.performCollisionDetection(physicsClientId=c)
+        if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
+            return
+        pybullet.setGravity(0.0, 0.0, 0.0, physicsClientId=c)
+        for _ in range(SEPARATION):
+            pybullet.stepSimulation(physicsClientId=c)
+            for name in self._dynamic:
+                self.set_velocity(name, 0.0, 0.0, 0.0)
+            if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
+                break
+        pybullet.setGravity(0.0, -self.gravity, 0.0, physicsClientId=c)
+
+    def _set_damping(self, name: str, body: int) -> None:
+        """Box2D's ω ← ω / (1 + dt·c) each game step, as the revolute joint's damping: Bullet
+        applies ω ← ω (1 − h·d/I) each of its SUBSTEPS steps of h."""
+        c = self._damping[name]
+        if not c:
+            return
+        h = self._dt / SUBSTEPS
+        rate = (1.0 - (1.0 + self._dt * c) ** (-1.0 / SUBSTEPS)) / h
+        pybullet.changeDynamics(body, BODY_LINK, jointDamping=rate * self._inertia[name], physicsClientId=self.client)
+
+    def step(self, dt: float) -> None:
+        if self._dt != dt:
+            self._configure(dt)
+        c = self.client
+        before = {name: self.state(name) for name in self._dynamic}
+        pairs: dict[tuple[int, int], tuple] = {}
+        for _ in range(SUBSTEPS):
+            for name, force in self._extra_gravity.items():
+                position = (*before[name][:2], 0.0)
+                pybullet.applyExternalForce(self._id[name], self.LINK, (0.0, force, 0.0), position, pybullet.WORLD_FRAME, physicsClientId=c)
+            pybullet.stepSimulation(physicsClientId=c)
+            self._after_substep()
+            self._touched(pairs)
+        self._contacts(pairs, before)
+
+    def _after_substep(self) -> None:
+        """What a Bullet step needs after it (nothing: the joints keep the bodies planar)."""
+
+    def _touched(self, pairs: dict[tuple[int, int], tuple]) -> None:
+        """Add the pairs touching in the last Bullet step to `pairs`: a contact point at most
+        TOUCH apart, or one that pushed (Bullet's speculative contacts stop a body short of
+        the other in the step it arrives, and it may bounce off before it ever overlaps)."""
+        for point in pybullet.getContactPoints(physicsClientId=self.client):
+            if point[8] > TOUCH and point[9] <= 0.0:
+                continue
+            key = (point[1], point[2]) if point[1] < point[2] else (point[2], point[1])
+            if key not in pairs:
+                pairs[key] = point
+
+    def _contacts(self, pairs: dict[tuple[int, int], tuple], before: dict[str, tuple]) -> None:
+        """The pairs touching in a game step's Bullet steps; the differences from the last
+        game step as events."""
+        for key in sorted(pairs.keys() - self._pairs.keys()):
+            self._begun.append(self._event(pairs[key], before))
+            a, b = self._name_of[key[0]], self._name_of[key[1]]
+            self._touching[a].add(b)
+            self._touching[b].add(a)
+        for key in sorted(self._pairs.keys() - pairs.keys()):
+            a, b = self._name_of[key[0]], self._name_of[key[1]]
+            self._ended.append((a, b) if self._pairs[key][1] == key[0] else (b, a))
+            self._touching.get(a, set()).discard(b)
+            self._touching.get(b, set()).discard(a)
+        self._pairs = pairs
+
+    def _event(self, point: tuple, before: dict[str, tuple]) -> ContactEvent:
+        a, b = self._name_of[point[1]], self._name_of[point[2]]
+        px, py = point[5][0], point[5][1]
+        va = _velocity_at(before.get(a), px, py)
+        vb = _velocity_at(before.get(b), px, py)
+        normal = point[7]  # on B, pointing from B to A
+        return ContactEvent(a, b, (px, py), (-normal[0], -normal[1]), (va[0] - vb[0], va[1] - vb[1]), va, vb)
+
+    def state(self, name: str):
+        (x, vx, *_), (y, vy, *_), (angle, w, *_) = pybullet.getJointStates(self._id[name], JOINTS, physicsClientId=self.client)
+        return (x, y, angle, vx, vy, w)
+
+    def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
+        if out is None:
+            out = np.empty((len(names), 6))
+        for row, name in enumerate(names):
+            out[row] = self.state(name) if name in self._dynamic else np.nan
+        return out
+
+    def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
+        body, state = self._id[name], self.state(name)
+        for joint, value, velocity in zip(JOINTS, state[:3], (vx, vy, angular)):
+            pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)
+
+    def mass(self, name: str) -> float:
+        return self._dynamic[name]
+
+    def begun(self) -> list[ContactEvent]:
+        events, self._begun = self._begun, []
+        return events
+
+    def ended(self) -> list[tuple[str, str]]:
+        events, self._ended = self._ended, []
+        return events
+
+    def touching(self, name: str) -> set[str]:
+        return set(self._touching.get(name, ()))
+
+
+def _velocity_at(state: tuple | None, px: float, py: float) -> tuple[float, float]:
+    """The velocity of a body's point (px, py): v + ω × r; zero for a static body."""
+    if state is None:
+        return (0.0, 0.0)
+    x, y, _, vx, vy, w = state
+    return (vx - w * (py - y), vy + w * (px - x))
