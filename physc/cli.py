@@ -23,11 +23,13 @@ from physc.commands.common import (
     EXIT_USAGE,
     Parser,
     UsageError,
+    add_backend,
     add_min_robustness,
 )
 from physc.commands.compile import cmd_compile
 from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
+from physc.commands.verify import add_command as add_verify_command
 from physc.commands.fmt import cmd_fmt
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
@@ -81,6 +83,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
     )
     add_min_robustness(compile_)
+    add_backend(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
@@ -92,6 +95,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_play_commands(commands, common)
     add_eval_command(commands, common)
+    add_verify_command(commands, common)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")

@@ -42,3 +42,21 @@ def to_data(value: Any) -> Any:
 
 def dumps(value: Any) -> str:
     return json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n"
+
+
+def from_data(data: Any, classes: dict[str, type]) -> Any:
+    """The IR value that `to_data` made `data` from, for the attrs classes in `classes` (by
+    name, as `node` names them): objects of another node are refused (ValueError), lists
+    become tuples. Reads back what a task file holds (its level, its solution)."""
+    if isinstance(data, dict):
+        if "node" not in data:
+            return {k: from_data(v, classes) for k, v in data.items()}
+        cls = classes.get(data["node"])
+        if cls is None:
+            raise ValueError(f"a '{data['node']}' is not something this file may hold")
+        known = {field.name for field in attrs.fields(cls)}
+        fields = {k: from_data(v, classes) for k, v in data.items() if k != "node" and k in known}
+        return cls(**fields)
+    if isinstance(data, list):
+        return tuple(from_data(v, classes) for v in data)
+    return data

@@ -71,6 +71,17 @@ def tasks(text: str) -> int:
     return _within(text, MAX_TASKS)
 
 
+MAX_REPLAYS = 1000
+
+
+def replays(text: str) -> int:
+    """--replays: noisy replays, from 0 (none) to MAX_REPLAYS."""
+    value = _whole(text)
+    if not 0 <= value <= MAX_REPLAYS:
+        raise argparse.ArgumentTypeError(f"takes a whole number from 0 to {MAX_REPLAYS:,}, not {text}")
+    return value
+
+
 def _within(text: str, most: int) -> int:
     value = _whole(text)
     if not 1 <= value <= most:
@@ -107,3 +118,15 @@ def shot(text: str) -> tuple[float, float, str]:
             raise argparse.ArgumentTypeError(f"takes coordinates from -{MAX_COORDINATE:g} to {MAX_COORDINATE:g}, not {part}")
         point.append(value)
     return point[0], point[1], trajectory
+
+
+def backend(text: str) -> str:
+    """An installed physics backend that loads (loading it now: a missing or broken engine
+    is a usage error before any work, with "did you mean" for a misspelt name)."""
+    from physc.backends import BackendError, load_backend
+
+    try:
+        load_backend(text)
+    except BackendError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
+    return text

@@ -72,3 +72,21 @@ def check_min_robustness(value: int, domain) -> None:
             f"--min-robustness takes a whole number from 1 to {replays} (the noisy replays of domain "
             f"'{domain.name}'), not {value}"
         )
+
+
+def add_backend(parser, verify: bool = True) -> None:
+    """--backend (the engine that simulates) and, with `verify`, --verify-backend (a second
+    engine the task's solution must pass in too)."""
+    from physc.backends import DEFAULT_BACKEND
+    from physc.commands.arguments import backend
+
+    parser.add_argument(
+        "--backend", type=backend, default=DEFAULT_BACKEND, metavar="NAME",
+        help=f"the physics backend that simulates (default {DEFAULT_BACKEND}; bullet is the other built-in one)",
+    )
+    if verify:
+        parser.add_argument(
+            "--verify-backend", type=backend, metavar="NAME",
+            help="a second physics backend (e.g. bullet) in which the task's solution must also solve the level and "
+            "realise the sequence, in its noisy replays too",
+        )

@@ -134,11 +134,12 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
     from physc.domains.base import STAGE_NEEDS, MissingCapability, require
 
     picture = ("picture",) if args.png and stage_name in ("layout", "task", "level") else ()
-    asked = f"--emit {stage_name}" + (" --png" if picture else "")
+    verifying = ("replay",) if args.verify_backend and stage_name in ("task", "level") else ()
+    asked = f"--emit {stage_name}" + (" --png" if picture else "") + (" --verify-backend" if verifying else "")
     found = []
     for scenario in selected:
         try:
-            require(domains[checked[scenario.name.text].domain], STAGE_NEEDS[stage_name] + picture, asked)
+            require(domains[checked[scenario.name.text].domain], STAGE_NEEDS[stage_name] + picture + verifying, asked)
         except MissingCapability as error:
             span = scenario.domain.span if scenario.domain else scenario.name.span
             found.append(Diagnostic(error.code, error.message, span, help=error.help))
@@ -146,6 +147,7 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
 
 
 def cmd_compile(args) -> int:
+    from physc.backends import selected as backend_selected
     from physc.compiler.infeasible import Infeasible
     from physc.compiler.pipeline import Pipeline
     from physc.domains import load_domain
@@ -218,13 +220,14 @@ def cmd_compile(args) -> int:
             source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
             progress=None if args.quiet else _progress(f"[{index}/{len(selected)}] {ir.name}"),
+            verify_backend=args.verify_backend,
         )
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
             # The picture (a simulation of the solution's paths) is part of the work: within
             # the time budget, and where Ctrl-C stops it safely.
-            with budget.interruptible(), budget.deadline(args.time_budget):
+            with budget.interruptible(), budget.deadline(args.time_budget), backend_selected(args.backend):
                 value = chosen.run(Unit(scenario, ir), pipeline)
                 picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:

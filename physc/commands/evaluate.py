@@ -13,6 +13,7 @@ from physc.files import check_output
 from physc.commands.common import (
     EXIT_OK,
     UsageError,
+    add_backend,
     add_min_robustness,
     check_min_robustness,
     reporter,
@@ -69,7 +70,9 @@ def cmd_eval(args) -> int:
     if args.seed + args.tasks - 1 > arguments.MAX_SEED:
         raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
     check_output(args.out, folder=True)
-    jobs, problems = jobs_for(args.files, args.tasks, args.seed, args.time_budget, args.min_robustness)
+    jobs, problems = jobs_for(
+        args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.backend, args.verify_backend
+    )
     if problems:
         report = reporter(args)
         for path, analysis, errors in problems:
@@ -82,7 +85,7 @@ def cmd_eval(args) -> int:
     for name in sorted({job.domain for job in jobs}):
         domain = load_domain(name)
         try:  # generation needs the domain's capabilities: refused before any work (E0703)
-            require(domain, STAGE_NEEDS["task"], "physc eval")
+            require(domain, STAGE_NEEDS["task"] + ("replay",), "physc eval")  # its replays of the solution
         except MissingCapability as error:
             found = [Diagnostic(error.code, error.message, None, help=error.help)]
             reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
@@ -109,6 +112,7 @@ def add_command(commands, common) -> None:
     parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
     parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds of generation per task at most (default 300; the measurements after it are not counted)")
     add_min_robustness(parser)
+    add_backend(parser)
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=cmd_eval)

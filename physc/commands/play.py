@@ -172,7 +172,7 @@ def add_commands(commands, common) -> None:
             help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
         )
         parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")
-        parser.add_argument("--backend", default="pymunk", help="the physics backend (default pymunk)")
+        parser.add_argument("--backend", type=arguments.backend, default="pymunk", metavar="NAME", help="the physics backend (default pymunk; bullet is the other built-in one)")
 
     simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
     level_arguments(simulate)

@@ -49,6 +49,7 @@ class Pipeline:
         source: str = "",
         min_robustness: int = MIN_ROBUSTNESS,
         progress=None,
+        verify_backend: str | None = None,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -67,6 +68,8 @@ class Pipeline:
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
         self.progress = progress
+        # A second physics backend the task's solution must pass in too (--verify-backend).
+        self.verify_backend = verify_backend
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -119,7 +122,7 @@ class Pipeline:
         time is spent."""
         loop = LayoutLoop(
             self.domain, self.scenario, self.rng, self.validate, self.layout_budget, self.time_budget,
-            self.min_robustness, self.progress,
+            self.min_robustness, self.progress, self.verify_backend,
         )
         with budget.deadline(self.time_budget):
             generated = loop.run(self.placements())

@@ -10,11 +10,11 @@ of promise:
   abstract, so a subclass that forgets one cannot be instantiated, and `load_domain`
   checks them on any plugin object (E0702).
 * **Generation** needs capabilities: `layout_rules`, `layout_parameters`,
-  `concretize`, `satisfy`, `emit_level`, `picture`. No default could be right for
+  `concretize`, `satisfy`, `emit_level`, `picture`, `replay` (verification). No default could be right for
   another domain, so the base class has none; a domain that lacks them still loads and
   checks, and a command that needs one refuses before any work with E0703, naming the
-  domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable` and
-  `robustness_replays` have working defaults.
+  domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable`,
+  `robustness_replays` and `level_classes` have working defaults.
 """
 
 from __future__ import annotations
@@ -32,8 +32,8 @@ if TYPE_CHECKING:
     from physc.dsl.scenario import ScenarioIR
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
-CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays")  # working defaults
+CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay")  # no default
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -172,6 +172,20 @@ class Domain(abc.ABC):
         without one says so clearly instead of drawing something wrong, and one that cannot
         draw a format raises MissingCapability (E0703) for it."""
         raise MissingCapability(self.name, ("picture",), "--png")
+
+    @_no_default
+    def replay(self, level, solution, scenario: ScenarioIR, rng=None):
+        """The solution played in `level`, in the backend the caller selected
+        (physc.backends.current): a physc.simulation.trace.Trace with its interactions
+        recognised and its restrictions checked. With `rng`, a noisy replay: the domain's
+        noise model (the one its robustness replays use) drawn from `rng`. What `physc
+        verify`, `--verify-backend` and the evaluation's replays run."""
+        raise MissingCapability(self.name, ("replay",), "replaying a solution")
+
+    level_classes: tuple[type, ...] = ()
+    """The attrs classes a level of this domain is made of (angrybirds: Level, Camera,
+    LevelObject): what reads a level back from a task file (physc.serialize.from_data,
+    `physc verify`). Empty: task files of this domain cannot be read back."""
 
     # --- generation: working defaults ------------------------------------------
 

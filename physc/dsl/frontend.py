@@ -30,7 +30,17 @@ def analyze(path: str, check: bool = True) -> Analysis:
     read = read_source(path)
     if read.source is None or read.diagnostics:
         return Analysis(path, read.source, None, (), read.diagnostics, ())
-    parsed = parse_source(read.source)
+    return _analyzed(path, read.source, check)
+
+
+def analyze_text(name: str, text: str) -> Analysis:
+    """`analyze` of a scenario held in memory (a task file's `source`), named `name` in
+    diagnostics."""
+    return _analyzed(name, SourceText(name, text), True)
+
+
+def _analyzed(path: str, source: SourceText, check: bool) -> Analysis:
+    parsed = parse_source(source)
     if not check:
         return Analysis(path, parsed.source, parsed.file, (), parsed.diagnostics, ())
     checked = check_file(parsed.file, path)

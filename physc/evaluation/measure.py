@@ -23,7 +23,6 @@ from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level
-from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 from physc.domains.angrybirds.stability import stability  # noqa: F401  (the evaluation's metric)
 from physc.domains.angrybirds.world import reachable
 
@@ -32,20 +31,14 @@ AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 SECONDS = 10.0
 
 
-def _play(level: Level, shot: Shot, scenario):
-    redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
-    return Game(level).play(shot, SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
-
-
-def intended(level: Level, solution, scenario, rng: random.Random) -> dict:
-    """Exact and noisy replays of the recorded solution."""
-    shot = Shot(target=tuple(solution.target), trajectory=solution.trajectory)
-    exact = _play(level, shot, scenario)
+def intended(domain, level, solution, scenario, rng: random.Random) -> dict:
+    """Exact and noisy replays of the recorded solution (the domain's `replay`, in the
+    backend the caller selected)."""
+    exact = domain.replay(level, solution, scenario)
     exact_fidelity = fidelity(scenario, exact)
     solved = faithful = 0
     for _ in range(NOISY_REPLAYS):
-        noisy = Shot(angle=solution.release_angle + rng.gauss(0.0, ANGLE_SIGMA))
-        trace = _play(jitter(level, rng), noisy, scenario)
+        trace = domain.replay(level, solution, scenario, rng)
         solved += trace.solved
         faithful += fidelity(scenario, trace).valid
     return {

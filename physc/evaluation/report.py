@@ -37,11 +37,18 @@ METRICS = (
     ("stable", "Physical stability", "stable"),
     ("generation_seconds", "Generation time (seconds)", "seconds"),
 )
+# With --verify-backend: the solution replayed in the second engine ("{backend}" is its name).
+VERIFY_METRICS = (
+    ("verified_solved", "Solved in {backend} (exact replay)", None),
+    ("verified_realised", "Sequence realised in {backend} (exact replay)", None),
+    ("verified_noisy", "Sequence realised in {backend} (10 noisy replays)", None),
+)
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
     "min_robustness", "robustness", "layouts_tried", "simulations",
 )
+VERIFY_COLUMNS = ("verify_backend", "verified_solved", "verified_realised", "verified_noisy")  # with --verify-backend
 
 
 def mean_sd(values) -> tuple[float, float] | None:
@@ -74,7 +81,7 @@ def summarise(records: list[dict]) -> dict:
         # generator's noisy replays.
         fallbacks = sum(1 for r in made if r.get("robustness") and r["robustness"][0] < r["robustness"][1])
         out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
-        for metric, _, _ in METRICS:
+        for metric, _, _ in METRICS + VERIFY_METRICS:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
@@ -82,7 +89,16 @@ def summarise(records: list[dict]) -> dict:
 
     scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
     counts = {count: stats(rows) for count, rows in sorted(group("interactions").items())}
-    return {"scenarios": scenarios, "interactions": counts, "paper": PAPER}
+    verified = sorted({r["verify_backend"] for r in records if r.get("verify_backend")})
+    return {"scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None}
+
+
+def metrics(summary: dict) -> tuple:
+    """The report's metrics: the paper's, and the verify backend's when the records have it."""
+    backend = summary.get("verify_backend")
+    if not backend:
+        return METRICS
+    return METRICS + tuple((metric, title.format(backend=backend), paper) for metric, title, paper in VERIFY_METRICS)
 
 
 def effort(made: list[dict]) -> dict:
@@ -135,7 +151,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     lines += ["## Per interaction count (physc; the paper in brackets)", ""]
     lines.append("| Evaluation metric | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")
     lines.append("|---|" + "---|" * len(counts))
-    for metric, title, paper_key in METRICS:
+    for metric, title, paper_key in metrics(summary):
         cells = []
         for c in counts:
             ours = fmt(summary["interactions"][c][metric])
@@ -148,11 +164,11 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
         lines.append("| Tasks where the agent found no play (no accidental solvability) | " + " | ".join(map(str, unplayed)) + " |")
     lines += _effort_lines(summary, counts, names)
     lines += ["", "## Per scenario", ""]
-    header = ["scenario", "interactions", "generated"] + [title for _, title, _ in METRICS]
+    header = ["scenario", "interactions", "generated"] + [title for _, title, _ in metrics(summary)]
     lines.append("| " + " | ".join(header) + " |")
     lines.append("|" + "---|" * len(header))
     for name, row in summary["scenarios"].items():
-        cells = [name, str(row["interactions"]), _generated(row)] + [fmt(row[m]) for m, _, _ in METRICS]
+        cells = [name, str(row["interactions"]), _generated(row)] + [fmt(row[m]) for m, _, _ in metrics(summary)]
         lines.append("| " + " | ".join(cells) + " |")
     lines += [
         "",
@@ -165,6 +181,11 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
         "generated tasks; generation ran with the final validation skipped, as in the paper. A fallback",
         "(`--min-robustness`) is a task whose solution passed fewer than all of the generator's 6 noisy replays.",
     ]
+    if summary.get("verify_backend"):
+        lines += [
+            f"With --verify-backend, a task was kept only if its solution also passed in {summary['verify_backend']}, and",
+            f"the rows \"in {summary['verify_backend']}\" replay it there afresh: exactly, and 10 times with the same noise.",
+        ]
     return "\n".join(lines) + "\n"
 
 
@@ -194,13 +215,14 @@ def write(records: list[dict], folder: Path, command: str, seconds: float) -> di
     write_atomic(folder / "results.md", markdown(summary, command, seconds))
     write_atomic(folder / "results.json", json.dumps({"command": command, "seconds": round(seconds, 1), **summary}, indent=2, default=str) + "\n")
     out = io.StringIO()
-    writer = csv.DictWriter(out, fieldnames=CSV_COLUMNS, extrasaction="ignore")
+    columns = CSV_COLUMNS + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
+    writer = csv.DictWriter(out, fieldnames=columns, extrasaction="ignore")
     writer.writeheader()
     for record in sorted(records, key=lambda r: (r["scenario"], r["seed"])):
         passed = record.get("robustness")
         writer.writerow(record | {"robustness": f"{passed[0]}/{passed[1]}" if passed else ""})
     write_atomic(folder / "results.csv", out.getvalue())
-    for metric, title, paper_key in METRICS:
+    for metric, title, paper_key in metrics(summary):
         write_atomic(folder / f"plot_{metric}.png", plot(summary, metric, title, paper_key))
     _pictures(records, folder)
     return summary

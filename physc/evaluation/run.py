@@ -27,11 +27,13 @@ import attrs
 from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
+from physc.backends import DEFAULT_BACKEND, selected
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import installed_domains, load_domain
 from physc.dsl.frontend import analyze
 from physc.evaluation import measure
 from physc.files import ensure_folder
+from physc.generation.verify import verify
 from physc.serialize import to_data
 
 RECORDS = "records.jsonl"
@@ -47,6 +49,8 @@ class Job:
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
     code: str = ""  # of the code that generates and measures it (code_fingerprint)
     domain: str = ""  # the scenario's domain
+    backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
+    verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -56,13 +60,19 @@ class Job:
     def settings(self) -> dict:
         """What a task's record depends on besides its key: a record made with other
         settings is stale."""
-        return {
+        settings = {
             "time_budget": self.time_budget,
             "min_robustness": self.min_robustness,
             "scenario": self.fingerprint,
             "physc": __version__,
             "code": self.code,
         }
+        # Only when not the default, so that records made before backends could be chosen stay valid.
+        if self.backend != DEFAULT_BACKEND:
+            settings["backend"] = self.backend
+        if self.verify_backend is not None:
+            settings["verify_backend"] = self.verify_backend
+        return settings
 
 
 def scenario_fingerprint(scenario) -> str:
@@ -104,7 +114,13 @@ def code_fingerprint(domain: str) -> str:
 
 
 def evaluate(job: Job) -> dict:
-    """Generate one task (final validation skipped, as in the paper) and measure it."""
+    """Generate one task (final validation skipped, as in the paper) and measure it, in the
+    job's backend; with a verify backend, replay its solution there too."""
+    with selected(job.backend):
+        return _evaluate(job)
+
+
+def _evaluate(job: Job) -> dict:
     analysis = analyze(job.path)
     scenario = next(s for s in analysis.scenarios if s.name == job.scenario)
     domain = load_domain(scenario.domain)
@@ -119,7 +135,8 @@ def evaluate(job: Job) -> dict:
     started = time.perf_counter()
     try:
         task = Pipeline(
-            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness
+            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness,
+            verify_backend=job.verify_backend,
         ).task
     except Infeasible as error:
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
@@ -134,7 +151,7 @@ def evaluate(job: Job) -> dict:
     )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = measure.stability(task.level)
-    replay = measure.intended(task.level, task.solution, scenario, rng)
+    replay = measure.intended(domain, task.level, task.solution, scenario, rng)
     target = scenario.interactions[0].objects[1]
     accidental, plays = measure.accidental(task.level, target)
     record.update(
@@ -150,6 +167,15 @@ def evaluate(job: Job) -> dict:
         solution=to_data(task.solution),
         level=to_data(task.level),
     )
+    if job.verify_backend is not None:
+        check = verify(domain, scenario, task.level, task.solution, job.verify_backend, noisy=measure.NOISY_REPLAYS)
+        record.update(
+            verify_backend=job.verify_backend,
+            verified_solved=check.solved,
+            verified_realised=check.realised,
+            verified_noisy=check.noisy_passed / check.noisy_run,
+            verified_trace=check.trace,
+        )
     return record
 
 
@@ -174,7 +200,8 @@ def _in_workers(todo: list[Job], workers: int, keep) -> None:
 
 
 def jobs_for(
-    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS
+    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS,
+    backend: str = DEFAULT_BACKEND, verify_backend: str | None = None,
 ) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs, problems = [], []
@@ -187,7 +214,7 @@ def jobs_for(
         for scenario in analysis.scenarios:
             fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain)
             jobs += [
-                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain)
+                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend)
                 for index in range(tasks)
             ]
     return jobs, problems

@@ -19,6 +19,7 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
+from physc.generation.verify import verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
@@ -59,11 +60,32 @@ class LayoutLoop:
     # passed this many are fallbacks.
     min_robustness: int
     progress: Callable[[Progress], None] | None = None
+    # A second backend the solution must also pass in (--verify-backend): the recorded
+    # solution and as many noisy replays as the generator's own acceptance asked for.
+    verify_backend: str | None = None
 
     def satisfy(self, layout, accept: int | None = None):
-        """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a fallback)."""
+        """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a
+        fallback), then the check in the second backend, if one is asked for."""
         options = {} if accept is None else {"accept": accept}
-        return self.domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
+        result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
+        if result.satisfied and self.verify_backend is not None:
+            result = self.cross_checked(result, accept)
+        return result
+
+    def cross_checked(self, result, accept: int | None):
+        """`result`, or, when its solution fails in the second backend, the layout given up
+        for that reason (the search goes on to the next layout)."""
+        parts = result.parts
+        needed = accept if accept is not None else (self.domain.robustness_replays or 0)
+        check = verify(self.domain, self.scenario, parts.level, parts.solution, self.verify_backend, noisy=needed)
+        spent = 1 + check.noisy_run
+        if check.passes(needed):
+            return attrs.evolve(result, simulations=result.simulations + spent)
+        return attrs.evolve(
+            result, satisfied=False, parts=None, simulations=result.simulations + spent,
+            given_up=f"the solution fails in {self.verify_backend}", nearest=0,
+        )
 
     def run(self, placements: Iterator) -> Generated:
         """Satisfy the placed layouts in turn (`placements` yields objects with a

@@ -11,11 +11,16 @@ import attrs
 from physc.backends import Circle, Polygon
 
 
-def area(shape: Circle | Polygon) -> float:
+def area(shape: Circle | Polygon, skin: float = 0.0) -> float:
+    """The shape's area; a polygon's with its outline grown by `skin` (rounded corners), as
+    pymunk counts a polygon's area, and so its mass, with its radius."""
     if isinstance(shape, Circle):
         return math.pi * shape.radius**2
     points = shape.points
-    return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]))) / 2
+    pairs = list(zip(points, points[1:] + points[:1]))
+    inner = abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in pairs)) / 2
+    perimeter = sum(math.hypot(x1 - x0, y1 - y0) for (x0, y0), (x1, y1) in pairs)
+    return inner + perimeter * skin + math.pi * skin * skin
 
 
 def polar_moment(shape: Circle | Polygon, mass: float) -> float:

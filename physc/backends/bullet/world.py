@@ -10,19 +10,22 @@ revolute joint's damping. Static bodies are plain fixed bodies.
 
 Shapes are extrusions DEPTH deep: boxes for rectangles, convex hulls for other polygons,
 spheres for circles (a sphere's single contact point rolls on a platform as the game's
-circle does; see docs/performance.md for the calibration). Mass is set from the *area*, and
-the inertia about z from the 2-D shape, so they mean what they mean in pymunk whatever the
-depth. Bullet multiplies the friction of two bodies and multiplies their restitution; each
+circle does; see docs/performance.md for the calibration). Mass is set from the *area* (a
+polygon's with its skin, as pymunk counts it), and the inertia about z from the 2-D shape, so
+they mean what they mean in pymunk whatever the depth. Bullet multiplies the friction of two bodies and multiplies their restitution; each
 body gets the square root of its friction (the pair's product is the geometric mean, as
-Box2D's), and its own bounciness against a static body of restitution 1 (exact for every body
-against the static world; between two dynamic bodies Bullet's product is smaller than
-Box2D's larger-of-two: measured and stated in docs/performance.md).
+Box2D's), and its own bounciness against a static body of restitution 1 (exact against the
+static world); a game step in which two dynamic bodies strike each other is stepped again
+with Box2D's larger-of-two for them (physc.backends.bullet.restitution).
 
 Bullet reports no contact events, only the contact points after a step. Contacts begun and
 ended are the difference of the touching pairs between two steps; a contact's relative
 velocity is taken from the two bodies' velocities read before the step, so it is the
-velocity before the collision was resolved. Each world has its own DIRECT client, with
-deterministic overlapping pairs: same bodies, same steps, same result.
+velocity before the collision was resolved. Two differences of the engines are bridged where
+they would change what a task's solution does: bodies that start overlapping are pushed
+apart without speed (`_separate`), and a body set moving flies as it does in pymunk
+(`set_velocity`). Each world has its own DIRECT client, with deterministic overlapping
+pairs: same bodies, same steps, same result.
 """
 
 from __future__ import annotations
@@ -34,6 +37,7 @@ import numpy as np
 import pybullet
 
 from physc.backends import BodySpec, Circle, ContactEvent
+from physc.backends.bullet.restitution import raised
 from physc.backends.bullet.shapes import Extent, area, polar_moment
 
 DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
@@ -43,7 +47,6 @@ ITERATIONS = 10  # the solver's iterations per Bullet step
 ERP = 0.2  # share of a penetration corrected per step (contacts and joints)
 RESTITUTION_THRESHOLD = 0.2  # below this approach speed (units/s) nothing bounces
 SEPARATION = 50  # Bullet steps at most that push initial overlaps apart (see _separate)
-ANCHOR = 0  # Bullet's friction anchors: a resting contact holds its place instead of creeping
 SLOP = 0.005  # overlap left alone (pymunk's and Box2D's linear slop)
 TOUCH = 0.005  # contact points this near (or nearer: negative is overlap) count as touching
 LINK_MASS = 1e-4  # the two carrier links of a planar body (the joints need a mass)
@@ -53,7 +56,6 @@ BODY_LINK = 2  # the link that carries a planar body's shape
 
 
 class BulletWorld:
-    LINK = BODY_LINK  # the link of a dynamic body that carries its shape
     def __init__(self, gravity: float):
         self.client = pybullet.connect(pybullet.DIRECT)
         self.gravity = gravity
@@ -63,6 +65,7 @@ class BulletWorld:
         self._name_of: dict[int, str] = {}  # every body ever added, removed ones too
         self._dynamic: dict[str, float] = {}  # dynamic body → mass
         self._inertia: dict[str, float] = {}
+        self._bounciness: dict[str, float] = {}
         self._damping: dict[str, float] = {}  # Box2D angular damping (1/s) of each dynamic body
         self._extra_gravity: dict[str, float] = {}  # force (y) that makes its gravity scale true
         self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
@@ -70,6 +73,8 @@ class BulletWorld:
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
         self._dt: float | None = None
+        self._unlagged: set[str] = set()  # bodies set moving before the first step (set_velocity)
+        self._gravity_scale: dict[str, float] = {}
 
     def __del__(self):
         try:
@@ -98,10 +103,12 @@ class BulletWorld:
             body = pybullet.createMultiBody(0.0, shape, -1, (spec.x, spec.y, 0.0), quaternion, physicsClientId=c)
             pybullet.changeDynamics(body, -1, lateralFriction=friction, restitution=1.0, physicsClientId=c)
         else:
-            mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape)
+            mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape, SKIN)
             inertia = polar_moment(spec.shape, mass)
             body = self._create_dynamic(spec, shape, friction, mass, inertia)
             self._dynamic[spec.name] = mass
+            self._bounciness[spec.name] = spec.bounciness
+            self._gravity_scale[spec.name] = spec.gravity_scale
             self._inertia[spec.name] = inertia
             self._damping[spec.name] = spec.angular_damping
             if spec.gravity_scale != 1.0:
@@ -136,14 +143,14 @@ class BulletWorld:
         pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=c)
         pybullet.changeDynamics(
             body, BODY_LINK, lateralFriction=friction, restitution=spec.bounciness,
-            localInertiaDiagonal=(inertia, inertia, inertia), frictionAnchor=ANCHOR and not isinstance(spec.shape, Circle), physicsClientId=c,
+            localInertiaDiagonal=(inertia, inertia, inertia), physicsClientId=c,
         )
         return body
 
     def remove(self, name: str) -> None:
         pybullet.removeBody(self._id.pop(name), physicsClientId=self.client)
         self.names.remove(name)
-        for table in (self._dynamic, self._inertia, self._damping, self._extra_gravity):
+        for table in (self._dynamic, self._inertia, self._bounciness, self._gravity_scale, self._damping, self._extra_gravity):
             table.pop(name, None)
         # Its contacts end at the next step, as they do in pymunk (separations reported then).
 
@@ -159,25 +166,32 @@ class BulletWorld:
         for name in self._dynamic:
             self._set_damping(name, self._id[name])
         self._separate()
+        for name in sorted(self._unlagged & self._dynamic.keys()):
+            self._unlag(name)
+        self._unlagged.clear()
 
     def _separate(self) -> None:
         """Push apart the bodies that start overlapping by more than SLOP, without giving them
         speed: Bullet's multibody solver corrects an overlap with a velocity that stays (a
         level's touching blocks would jump apart), where pymunk and Box2D move the bodies
         apart and keep their velocities. So before the first step, the overlaps are solved
-        in up to SEPARATION Bullet steps without gravity, each followed by setting every
-        dynamic body still again. Levels whose bodies do not overlap are not touched."""
+        in up to SEPARATION Bullet steps without gravity, each begun with every dynamic
+        body still; then each gets back the velocity it had (a bird already
+        fired). Levels whose bodies do not overlap are not touched."""
         c = self.client
         pybullet.performCollisionDetection(physicsClientId=c)
         if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
             return
+        speeds = {name: self.state(name)[3:] for name in self._dynamic}  # a shot already fired keeps its speed
         pybullet.setGravity(0.0, 0.0, 0.0, physicsClientId=c)
         for _ in range(SEPARATION):
-            pybullet.stepSimulation(physicsClientId=c)
             for name in self._dynamic:
-                self.set_velocity(name, 0.0, 0.0, 0.0)
+                self._velocity(name, 0.0, 0.0, 0.0)
+            pybullet.stepSimulation(physicsClientId=c)
             if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
                 break
+        for name, (vx, vy, w) in speeds.items():
+            self._velocity(name, vx, vy, w)
         pybullet.setGravity(0.0, -self.gravity, 0.0, physicsClientId=c)
 
     def _set_damping(self, name: str, body: int) -> None:
@@ -193,20 +207,60 @@ class BulletWorld:
     def step(self, dt: float) -> None:
         if self._dt != dt:
             self._configure(dt)
-        c = self.client
         before = {name: self.state(name) for name in self._dynamic}
+        pairs = self._substeps(before)
+        bouncing = self._bouncing(pairs, before)
+        if bouncing:  # once more from the start, with Box2D's restitution for those pairs
+            for name, state in before.items():
+                self._restore(name, state)
+            self._restitution(bouncing)
+            pairs = self._substeps(before)
+            self._restitution({name: self._bounciness[name] for name in bouncing})
+        self._contacts(pairs, before)
+
+    def _substeps(self, before: dict[str, tuple]) -> dict[tuple[int, int], tuple]:
+        """The Bullet steps of one game step; the pairs that touched in them."""
+        c = self.client
         pairs: dict[tuple[int, int], tuple] = {}
         for _ in range(SUBSTEPS):
             for name, force in self._extra_gravity.items():
                 position = (*before[name][:2], 0.0)
-                pybullet.applyExternalForce(self._id[name], self.LINK, (0.0, force, 0.0), position, pybullet.WORLD_FRAME, physicsClientId=c)
+                pybullet.applyExternalForce(self._id[name], BODY_LINK, (0.0, force, 0.0), position, pybullet.WORLD_FRAME, physicsClientId=c)
             pybullet.stepSimulation(physicsClientId=c)
-            self._after_substep()
             self._touched(pairs)
-        self._contacts(pairs, before)
+        return pairs
 
-    def _after_substep(self) -> None:
-        """What a Bullet step needs after it (nothing: the joints keep the bodies planar)."""
+    def _bouncing(self, pairs: dict, before: dict[str, tuple]) -> dict[str, float]:
+        """The restitution, for the step again, of each body that began touching a dynamic
+        body of less bounciness, fast, and touched nothing else (physc.backends.bullet.restitution)."""
+        partners: dict[str, list[str]] = {}
+        for key in pairs:
+            a, b = self._name_of[key[0]], self._name_of[key[1]]
+            partners.setdefault(a, []).append(b)
+            partners.setdefault(b, []).append(a)
+        raised_to: dict[str, float] = {}
+        for key in sorted(pairs.keys() - self._pairs.keys()):
+            event = self._event(pairs[key], before)
+            a, b = event.a, event.b
+            if a not in self._dynamic or b not in self._dynamic or self._bounciness[a] == self._bounciness[b]:
+                continue
+            approach = event.relative_velocity[0] * event.normal[0] + event.relative_velocity[1] * event.normal[1]
+            high, low = (a, b) if self._bounciness[a] > self._bounciness[b] else (b, a)
+            if approach > RESTITUTION_THRESHOLD and partners[high] == [low]:
+                raised_to[high], kept = raised(self._bounciness[high], self._bounciness[low])
+                if kept != self._bounciness[low]:
+                    raised_to[low] = max(raised_to.get(low, 0.0), kept)
+        return raised_to
+
+    def _restitution(self, values: dict[str, float]) -> None:
+        for name, value in values.items():
+            pybullet.changeDynamics(self._id[name], BODY_LINK, restitution=value, physicsClientId=self.client)
+
+    def _restore(self, name: str, state: tuple) -> None:
+        """Put a body back where and as it was (a step taken again)."""
+        body = self._id[name]
+        for joint, value, velocity in zip(JOINTS, state[:3], state[3:]):
+            pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)
 
     def _touched(self, pairs: dict[tuple[int, int], tuple]) -> None:
         """Add the pairs touching in the last Bullet step to `pairs`: a contact point at most
@@ -254,6 +308,25 @@ class BulletWorld:
         return out
 
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
+        """Set a body moving, as pymunk means it: Chipmunk moves a body with its velocity
+        before gravity changes it, Bullet (as Box2D) after, so a body set moving at v flies
+        a little lower in Bullet, more with every second (0.07 units/s: the bird lands 0.2
+        units short). Setting Bullet's velocity lower by gravity's change over the game step
+        in which it would act before the move, G·dt·(k+1)/(2k) for k Bullet steps, makes the
+        flight the same, step for step, until the body touches something."""
+        self._velocity(name, vx, vy, angular)
+        if self._dt is None:
+            self._unlagged.add(name)  # done at the first step, when dt is known
+        else:
+            self._unlag(name)
+
+    def _unlag(self, name: str) -> None:
+        x, y, angle, vx, vy, w = self.state(name)
+        lag = self.gravity * self._gravity_scale[name] * self._dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
+        self._velocity(name, vx, vy + lag, w)
+
+    def _velocity(self, name: str, vx: float, vy: float, angular: float) -> None:
+        """Set Bullet's own velocity of a body (its joints' speeds)."""
         body, state = self._id[name], self.state(name)
         for joint, value, velocity in zip(JOINTS, state[:3], (vx, vy, angular)):
             pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)

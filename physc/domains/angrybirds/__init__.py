@@ -9,9 +9,12 @@ noisy replays.
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.domains.angrybirds import layout_rules, world
 from physc.domains.angrybirds.concretize import concretize
+from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.domains.base import Domain
+
+REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
 
 
 class AngryBirds(Domain):
@@ -20,6 +23,7 @@ class AngryBirds(Domain):
     vocabulary = VOCABULARY
     layout_rules = layout_rules
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
+    level_classes = (Level, Camera, LevelObject)
     layout_parameters = LayoutParameters(
         clearance=0.1,
         far=1.5,
@@ -65,6 +69,23 @@ class AngryBirds(Domain):
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, title, trace.paths(), supports), fmt)
+
+    @staticmethod
+    def replay(level, solution, scenario, rng=None):
+        """The solution's shot (or, with `rng`, the evaluation's noise: release angle and
+        object positions jittered), played with the scenario's restrictions and declared
+        bounces."""
+        from physc.domains.angrybirds.game import Game
+        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
+
+        if rng is None:
+            shot = Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+        else:
+            shot = Shot(angle=solution.release_angle + rng.gauss(0.0, ANGLE_SIGMA))
+            level = jitter(level, rng)
+        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
+        return Game(level).play(shot, REPLAY_SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
 
     def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
         """Simulation-based satisfaction, distractions and validation of one layout; the

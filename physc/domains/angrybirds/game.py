@@ -14,7 +14,7 @@ import math
 
 import attrs
 
-from physc.backends import BodySpec, Circle, Polygon, load_backend
+from physc.backends import BodySpec, Circle, Polygon, current
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     MATERIAL,
@@ -52,7 +52,7 @@ class Game(RunRules):
 
     def __init__(self, level: Level, backend=None, rules: Rules = RULES):
         self.level = level
-        self.backend = backend or load_backend()
+        self.backend = backend or current()  # the caller's choice (physc.backends.selected)
         self.rules = rules
         self._bird_checked_from = min(rules.bird_lifetime, rules.bird_still_after)  # `_bird_done` is False before
 

@@ -1,0 +1,125 @@
+"""`physc verify LEVEL --task TASK.json`: a generated task's solution replayed, in any backend.
+
+The task file (`physc compile --task`) holds the scenario as written, the level with the
+scenario's object names, and the intended solution; LEVEL is the level file given to
+players, which must be that level. The solution is replayed once as recorded and under
+the domain's noise (`--replays`), in `--backend` (bullet: a second engine), and the
+command says whether it solves the level and realises the declared sequence, with the
+interactions it realised. Exit 0 when it passes, 1 when it does not.
+"""
+
+from __future__ import annotations
+
+import json
+
+from physc import budget
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError
+from physc.diagnostics import safe
+from physc.files import read_input
+
+MAX_TASK_BYTES = 50_000_000
+
+
+def _task(path: str) -> dict:
+    data, problem = read_input(path, "the task file", limit=MAX_TASK_BYTES + 1)
+    if data is None:
+        raise UsageError(problem)
+    if len(data) > MAX_TASK_BYTES:
+        raise UsageError(f"{path}: the task file is larger than physc reads ({MAX_TASK_BYTES:,} bytes)")
+    try:
+        task = json.loads(data.decode("utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as error:
+        raise UsageError(f"{path} is not a task file (JSON): {error}") from None
+    fields = ("domain", "scenario", "source", "level", "solution")
+    if not isinstance(task, dict) or task.get("node") != "Task" or not all(field in task for field in fields):
+        raise UsageError(f"{path} is not a task file: write one with `physc compile FILE --task {path}`")
+    return task
+
+
+def _parts(task: dict, path: str):
+    """(domain, scenario, level, solution) of a task file."""
+    from physc.compiler.task import Solution
+    from physc.domains import load_domain
+    from physc.domains.base import DomainError, require
+    from physc.dsl.frontend import analyze_text
+    from physc.serialize import from_data
+
+    try:
+        domain = load_domain(str(task["domain"]))
+        require(domain, ("replay", "emit_level"), "physc verify")
+    except DomainError as error:
+        raise UsageError(f"{path}: {error.message}") from None
+    if not domain.level_classes:
+        raise UsageError(f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)")
+    analysis = analyze_text(f"{path} (source)", str(task["source"]))
+    scenario = next((s for s in analysis.scenarios if s.name == task["scenario"]), None)
+    if scenario is None or any(d.is_error for d in analysis.diagnostics):
+        raise UsageError(f"{path}: its source does not hold a valid scenario '{task['scenario']}'")
+    try:
+        level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
+        solution = from_data(task["solution"], {"Solution": Solution})
+    except (TypeError, ValueError) as error:
+        raise UsageError(f"{path}: its level or solution cannot be read: {error}") from None
+    return domain, scenario, level, solution
+
+
+def cmd_verify(args) -> int:
+    from physc.generation.verify import verify
+
+    task = _task(args.task)
+    domain, scenario, level, solution = _parts(task, args.task)
+    data, problem = read_input(args.level, "the level", limit=MAX_TASK_BYTES + 1)
+    if data is None:
+        raise UsageError(problem)
+    if data.decode("utf-8", "replace").strip() != domain.emit_level(level).strip():
+        raise UsageError(
+            f"{args.level} is not the level of {args.task}: the task file holds another level "
+            "(verify the level file `physc compile` wrote beside it)"
+        )
+    replays = args.replays if args.replays is not None else (domain.robustness_replays or 0)
+    with budget.interruptible():
+        result = verify(domain, scenario, level, solution, args.backend, noisy=replays)
+    if args.json:
+        print(
+            json.dumps(
+                {
+                    "level": args.level,
+                    "task": args.task,
+                    "scenario": scenario.name,
+                    "backend": result.backend,
+                    "solved": result.solved,
+                    "realised": result.realised,
+                    "noisy_passed": result.noisy_passed,
+                    "noisy_run": result.noisy_run,
+                    "passes": result.passes(replays),
+                    "trace": result.trace,
+                    "why": result.why,
+                },
+                indent=2,
+            )
+        )
+    else:
+        verdict = "passes" if result.passes(replays) else "fails"
+        print(f"{safe(args.level)}: scenario {scenario.name}, solution {solution.aimed_at}: {verdict} {result.summary()}")
+        if result.why:
+            print(f"  why: {result.why}")
+        print(f"  realised: {result.trace or '(nothing)'}")
+    return EXIT_OK if result.passes(replays) else EXIT_INPUT
+
+
+def add_command(commands, common) -> None:
+    from physc.commands import arguments
+    from physc.commands.common import add_backend
+
+    parser = commands.add_parser(
+        "verify", parents=[common], help="replay a task's solution (in any backend): does it solve the level and realise the sequence?"
+    )
+    parser.add_argument("level", metavar="LEVEL", help="the task's level file ('-' reads standard input)")
+    parser.add_argument("--task", required=True, metavar="TASK.json", help="the task file `physc compile --task` wrote")
+    add_backend(parser, verify=False)
+    parser.add_argument(
+        "--replays", type=arguments.replays, metavar="N",
+        help="noisy replays that must realise the sequence too (default: the domain's, 6 in angrybirds; 0: none)",
+    )
+    parser.add_argument("--json", action="store_true", help="machine-readable output")
+    parser.set_defaults(run=cmd_verify)

@@ -1,0 +1,150 @@
+"""The pybullet backend: bodies stay in the plane, runs repeat exactly, and the game's
+physics means the same as in pymunk where a task depends on it (benchmarks/backends.py
+measures the rest)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pybullet
+import pytest
+
+from physc.backends import BodySpec, Polygon, current, load_backend, selected
+from physc.domains.angrybirds.game import BIRD, GROUND, Game
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.rules import RULES
+from physc.domains.angrybirds.world import GROUND_TOP
+
+BULLET = load_backend("bullet")
+SQUARE = 0.3772  # SquareSmall
+
+
+def towers() -> Level:
+    """Two towers of wood, ice and stone with pigs between them, and a circle on a platform."""
+    objects = []
+    for tower, x in enumerate((-2.0, 1.5)):
+        for floor in range(4):
+            material = ("wood", "ice", "stone")[(tower + floor) % 3]
+            objects.append(LevelObject("Block", "SquareSmall", x, GROUND_TOP + SQUARE / 2 + 0.015 + floor * (SQUARE + 0.015), 0.0, material, name=f"b{tower}{floor}"))
+    objects.append(LevelObject("Pig", "BasicSmall", -0.25, GROUND_TOP + 0.236, 0.0, name="pig1"))
+    objects.append(LevelObject("Platform", "Platform", 4.0, -1.0, 0.0, scale_x=3.0, scale_y=0.5, name="shelf"))
+    objects.append(LevelObject("Block", "Circle", 4.0, -1.0 + 0.16 + 0.375 + 0.015, 0.0, "wood", name="wheel"))
+    return Level(objects=tuple(objects))
+
+
+def run_steps(backend, level: Level, shot: Shot | None, steps: int, check=None):
+    game = Game(level, backend)
+    world = game.build()
+    if shot is not None:
+        game.launch(world, shot)
+    names = [n for n in world.names if n in game.kinds and game.kinds[n] not in ("platform", "ground")]
+    rows, events = [], []
+    for step in range(steps):
+        world.step(RULES.dt)
+        events += [(step, e.a, e.b, e.point, e.relative_velocity) for e in world.begun()]
+        events += [(step, a, b) for a, b in world.ended()]
+        rows.append(world.states(names).copy())
+        if check is not None:
+            check(world, step)
+    return np.array(rows), events, names
+
+
+def test_bodies_never_leave_the_plane_or_turn_out_of_it_in_a_ten_second_shot():
+    worst = [0.0, 0.0]
+
+    def check(world, step):
+        for name in world.names:
+            body = world._id[name]
+            if name in world._dynamic:
+                (_, _, z), (qx, qy, _, _) = pybullet.getLinkState(body, 2, physicsClientId=world.client)[:2]
+            else:
+                (_, _, z), (qx, qy, _, _) = pybullet.getBasePositionAndOrientation(body, physicsClientId=world.client)
+            worst[0] = max(worst[0], abs(z))
+            worst[1] = max(worst[1], abs(qx), abs(qy))
+
+    rows, events, _ = run_steps(BULLET, towers(), Shot(target=(-2.0, -3.0)), 500, check)
+    assert worst == [0.0, 0.0]
+    assert any(BIRD in e[1:3] for e in events)  # the shot did strike the towers
+    assert np.nanmax(np.abs(rows[:, :, 3])) > 1.0
+
+
+def test_the_same_level_and_shot_give_the_same_run_byte_for_byte():
+    first = run_steps(BULLET, towers(), Shot(target=(-2.0, -3.0)), 300)
+    second = run_steps(BULLET, towers(), Shot(target=(-2.0, -3.0)), 300)
+    assert first[0].tobytes() == second[0].tobytes()
+    assert first[1] == second[1] and first[1]
+    trace = Game(towers(), BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
+    again = Game(towers(), BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
+    assert trace.states.tobytes() == again.states.tobytes() and trace.sequence() == again.sequence()
+
+
+def test_a_fall_and_a_flight_take_as_long_and_go_as_far_as_in_pymunk():
+    def landing(backend, level, shot, name):
+        game = Game(level, backend)
+        world = game.build()
+        if shot is not None:
+            game.launch(world, shot)
+        for step in range(500):
+            world.step(RULES.dt)
+            for event in world.begun():
+                if {event.a, event.b} == {name, GROUND}:
+                    return (step + 1) * RULES.dt, world.state(name)[0]
+            world.ended()
+        raise AssertionError("never landed")
+
+    dropped = Level(objects=(LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 3.0, 0.0, "wood", name="square"),))
+    fall = {b: landing(load_backend(b), dropped, None, "square")[0] for b in ("pymunk", "bullet")}
+    assert fall["bullet"] == pytest.approx(fall["pymunk"], abs=0.021)
+    assert fall["bullet"] == pytest.approx(math.sqrt(2 * 3.0 / RULES.gravity), abs=0.03)
+    for angle in (30, 45, 60):
+        x = {b: landing(load_backend(b), Level(objects=()), Shot(angle=angle), BIRD)[1] for b in ("pymunk", "bullet")}
+        assert x["bullet"] == pytest.approx(x["pymunk"], abs=0.15), angle
+
+
+def test_contacts_begin_with_the_speed_before_the_collision_and_end():
+    world = BULLET.create_world(RULES.gravity)
+    world.add(BodySpec("floor", Polygon(((-5, -0.5), (5, -0.5), (5, 0.5), (-5, 0.5))), 0.0, -0.5, static=True))
+    world.add(BodySpec("box", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 0.0, 1.23, bounciness=0.5))
+    begun, ended = [], []
+    for step in range(150):
+        world.step(RULES.dt)
+        begun += [(step, e) for e in world.begun()]
+        ended += [(step, pair) for pair in world.ended()]
+    first = begun[0][1]
+    assert {first.a, first.b} == {"box", "floor"}
+    speed = math.sqrt(2 * RULES.gravity * 1.0)  # a fall of 1 unit
+    assert abs(first.relative_velocity[1]) == pytest.approx(speed, rel=0.05)
+    assert ended and ended[0][0] > begun[0][0]  # it bounced off (bounciness 0.5 against the static world)
+    assert "floor" in world.touching("box")  # and came to rest on the floor at last
+
+
+def test_bodies_that_start_overlapping_are_pushed_apart_without_flying():
+    overlap = 0.04
+    objects = (
+        LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 0.015, 0.0, "wood", name="low"),
+        LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + 1.5 * SQUARE + 0.015 - overlap, 0.0, "wood", name="high"),
+    )
+    rows, _, _ = run_steps(BULLET, Level(objects=objects), None, 100)
+    assert np.abs(rows[-1, :, 3:]).max() < 0.05  # at rest
+    assert np.abs(rows[-1, :, 0] - rows[0, :, 0]).max() < 0.02  # and where they were
+
+
+def test_a_bird_striking_a_block_bounces_as_in_pymunk():
+    # Box2D bounces the pair with the larger bounciness (the bird's 0.43); Bullet would multiply.
+    level = Level(objects=(LevelObject("Block", "Circle", -6.0, GROUND_TOP + 0.375, 0.0, "wood", name="wheel"),))
+    speeds = {}
+    for name in ("pymunk", "bullet"):
+        rows, events, names = run_steps(load_backend(name), level, Shot(target=(-6.0, GROUND_TOP + 0.375)), 40)
+        hit = next(e[0] for e in events if len(e) == 5 and {e[1], e[2]} == {BIRD, "wheel"})
+        speeds[name] = rows[hit + 1, names.index("wheel"), 3]  # the wheel's speed just after the hit
+    assert speeds["bullet"] == pytest.approx(speeds["pymunk"], rel=0.15)
+
+
+def test_the_backend_a_caller_selects_is_the_one_the_game_uses():
+    assert current().name == "pymunk"
+    with selected("bullet"):
+        assert current().name == "bullet"
+        assert Game(towers()).backend.name == "bullet"
+    assert current().name == "pymunk"
