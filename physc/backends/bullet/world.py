@@ -141,6 +141,10 @@ class BulletWorld:
             pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=c)
         pybullet.setJointMotorControlArray(body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=c)
         pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=c)
+        # A body nearly still for a while sleeps until something touches it, as in pymunk and
+        # Box2D (Bullet's own measure: 2 s below about 0.2 units/s); a level's marginal
+        # balances then stand as they do there.
+        pybullet.changeDynamics(body, -1, activationState=pybullet.ACTIVATION_STATE_ENABLE_SLEEPING, physicsClientId=c)
         pybullet.changeDynamics(
             body, BODY_LINK, lateralFriction=friction, restitution=spec.bounciness,
             localInertiaDiagonal=(inertia, inertia, inertia), physicsClientId=c,
