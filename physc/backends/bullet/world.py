@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+import attrs
 import numpy as np
 import pybullet
 
@@ -55,6 +56,17 @@ JOINTS = (0, 1, 2)  # x, y, angle
 BODY_LINK = 2  # the link that carries a planar body's shape
 
 
+@attrs.frozen
+class Dynamic:
+    """What the world keeps of a dynamic body (Bullet keeps the rest)."""
+
+    mass: float
+    inertia: float  # about z
+    bounciness: float
+    damping: float  # Box2D's angular damping (1/s)
+    gravity_scale: float
+
+
 class BulletWorld:
     def __init__(self, gravity: float):
         self.client = pybullet.connect(pybullet.DIRECT)
@@ -63,18 +75,13 @@ class BulletWorld:
         self.names: list[str] = []
         self._id: dict[str, int] = {}  # name → Bullet body id
         self._name_of: dict[int, str] = {}  # every body ever added, removed ones too
-        self._dynamic: dict[str, float] = {}  # dynamic body → mass
-        self._inertia: dict[str, float] = {}
-        self._bounciness: dict[str, float] = {}
-        self._damping: dict[str, float] = {}  # Box2D angular damping (1/s) of each dynamic body
-        self._extra_gravity: dict[str, float] = {}  # force (y) that makes its gravity scale true
+        self._dynamic: dict[str, Dynamic] = {}
         self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
         self._begun: list[ContactEvent] = []
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
         self._dt: float | None = None
         self._unlagged: set[str] = set()  # bodies set moving before the first step (set_velocity)
-        self._gravity_scale: dict[str, float] = {}
 
     def __del__(self):
         try:
@@ -106,13 +113,7 @@ class BulletWorld:
             mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape, SKIN)
             inertia = polar_moment(spec.shape, mass)
             body = self._create_dynamic(spec, shape, friction, mass, inertia)
-            self._dynamic[spec.name] = mass
-            self._bounciness[spec.name] = spec.bounciness
-            self._gravity_scale[spec.name] = spec.gravity_scale
-            self._inertia[spec.name] = inertia
-            self._damping[spec.name] = spec.angular_damping
-            if spec.gravity_scale != 1.0:
-                self._extra_gravity[spec.name] = -mass * self.gravity * (spec.gravity_scale - 1.0)
+            self._dynamic[spec.name] = Dynamic(mass, inertia, spec.bounciness, spec.angular_damping, spec.gravity_scale)
             if self._dt is not None:
                 self._set_damping(spec.name, body)
         self.names.append(spec.name)
@@ -154,8 +155,7 @@ class BulletWorld:
     def remove(self, name: str) -> None:
         pybullet.removeBody(self._id.pop(name), physicsClientId=self.client)
         self.names.remove(name)
-        for table in (self._dynamic, self._inertia, self._bounciness, self._gravity_scale, self._damping, self._extra_gravity):
-            table.pop(name, None)
+        self._dynamic.pop(name, None)
         # Its contacts end at the next step, as they do in pymunk (separations reported then).
 
     # ---- running -----------------------------------------------------------------
@@ -201,12 +201,12 @@ class BulletWorld:
     def _set_damping(self, name: str, body: int) -> None:
         """Box2D's ω ← ω / (1 + dt·c) each game step, as the revolute joint's damping: Bullet
         applies ω ← ω (1 − h·d/I) each of its SUBSTEPS steps of h."""
-        c = self._damping[name]
-        if not c:
+        dynamic = self._dynamic[name]
+        if not dynamic.damping:
             return
         h = self._dt / SUBSTEPS
-        rate = (1.0 - (1.0 + self._dt * c) ** (-1.0 / SUBSTEPS)) / h
-        pybullet.changeDynamics(body, BODY_LINK, jointDamping=rate * self._inertia[name], physicsClientId=self.client)
+        rate = (1.0 - (1.0 + self._dt * dynamic.damping) ** (-1.0 / SUBSTEPS)) / h
+        pybullet.changeDynamics(body, BODY_LINK, jointDamping=rate * dynamic.inertia, physicsClientId=self.client)
 
     def step(self, dt: float) -> None:
         if self._dt != dt:
@@ -219,7 +219,7 @@ class BulletWorld:
                 self._restore(name, state)
             self._restitution(bouncing)
             pairs = self._substeps(before)
-            self._restitution({name: self._bounciness[name] for name in bouncing})
+            self._restitution({name: self._dynamic[name].bounciness for name in bouncing})
         self._contacts(pairs, before)
 
     def _substeps(self, before: dict[str, tuple]) -> dict[tuple[int, int], tuple]:
@@ -227,9 +227,11 @@ class BulletWorld:
         c = self.client
         pairs: dict[tuple[int, int], tuple] = {}
         for _ in range(SUBSTEPS):
-            for name, force in self._extra_gravity.items():
-                position = (*before[name][:2], 0.0)
-                pybullet.applyExternalForce(self._id[name], BODY_LINK, (0.0, force, 0.0), position, pybullet.WORLD_FRAME, physicsClientId=c)
+            for name, dynamic in self._dynamic.items():
+                if dynamic.gravity_scale != 1.0:  # the force that makes its gravity scale true
+                    force = (0.0, -dynamic.mass * self.gravity * (dynamic.gravity_scale - 1.0), 0.0)
+                    position = (*before[name][:2], 0.0)
+                    pybullet.applyExternalForce(self._id[name], BODY_LINK, force, position, pybullet.WORLD_FRAME, physicsClientId=c)
             pybullet.stepSimulation(physicsClientId=c)
             self._touched(pairs)
         return pairs
@@ -246,13 +248,13 @@ class BulletWorld:
         for key in sorted(pairs.keys() - self._pairs.keys()):
             event = self._event(pairs[key], before)
             a, b = event.a, event.b
-            if a not in self._dynamic or b not in self._dynamic or self._bounciness[a] == self._bounciness[b]:
+            if a not in self._dynamic or b not in self._dynamic or self._dynamic[a].bounciness == self._dynamic[b].bounciness:
                 continue
             approach = event.relative_velocity[0] * event.normal[0] + event.relative_velocity[1] * event.normal[1]
-            high, low = (a, b) if self._bounciness[a] > self._bounciness[b] else (b, a)
+            high, low = (a, b) if self._dynamic[a].bounciness > self._dynamic[b].bounciness else (b, a)
             if approach > RESTITUTION_THRESHOLD and partners[high] == [low]:
-                raised_to[high], kept = raised(self._bounciness[high], self._bounciness[low])
-                if kept != self._bounciness[low]:
+                raised_to[high], kept = raised(self._dynamic[high].bounciness, self._dynamic[low].bounciness)
+                if kept != self._dynamic[low].bounciness:
                     raised_to[low] = max(raised_to.get(low, 0.0), kept)
         return raised_to
 
@@ -326,7 +328,7 @@ class BulletWorld:
 
     def _unlag(self, name: str) -> None:
         x, y, angle, vx, vy, w = self.state(name)
-        lag = self.gravity * self._gravity_scale[name] * self._dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
+        lag = self.gravity * self._dynamic[name].gravity_scale * self._dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
         self._velocity(name, vx, vy + lag, w)
 
     def _velocity(self, name: str, vx: float, vy: float, angular: float) -> None:
@@ -336,7 +338,7 @@ class BulletWorld:
             pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)
 
     def mass(self, name: str) -> float:
-        return self._dynamic[name]
+        return self._dynamic[name].mass
 
     def begun(self) -> list[ContactEvent]:
         events, self._begun = self._begun, []
