@@ -148,3 +148,22 @@ def test_the_backend_a_caller_selects_is_the_one_the_game_uses():
         assert current().name == "bullet"
         assert Game(towers()).backend.name == "bullet"
     assert current().name == "pymunk"
+
+
+def test_pybullet_missing_is_a_clear_usage_error(monkeypatch):
+    import sys
+
+    from conftest import EXAMPLES, run_physc
+    from physc import backends
+
+    for module in [m for m in sys.modules if m.startswith("physc.backends.bullet")]:
+        monkeypatch.delitem(sys.modules, module)
+    monkeypatch.setitem(sys.modules, "pybullet", None)  # as if it were not installed
+    backends.load_backend.cache_clear()
+    try:
+        level = EXAMPLES.parent / "tests" / "data" / "sciencebirds" / "phyq-templates" / "2_2_1_1.xml"
+        run = run_physc("simulate", level, "--backend", "bullet")
+        assert run.status == 2 and "Traceback" not in run.stderr
+        assert "backend 'bullet'" in run.stderr and "pybullet is not installed (pip install pybullet)" in run.stderr
+    finally:
+        backends.load_backend.cache_clear()
