@@ -12,6 +12,9 @@ every backend; the table says what each engine makes of it. What the rows measur
 * a square sliding: a wood SquareSmall on the ground pushed at 3 units/s, how far it slides;
 * a square tipping off a ledge: a wood SquareSmall overhanging a platform's edge by 0.15, pushed
   at 0.6 units/s, where it lands on the ground and where and at what angle it rests;
+* a Triangle whose centroid (not its points' origin) is on a ledge: it must stay;
+* a TNT crate (its own gravity scale) thrown: it must not turn;
+* a square at rest for 5 s, then pushed: a body set moving after it came to rest;
 * a five-block stack: five wood SquareSmalls stacked on the ground, the largest shift in 10 s;
 * the real Phy-Q templates (75 in ../shared/data/sciencebirds): how many stand 10 s
   (shift ≤ 0.1 units, nothing destroyed), with each Circle model;
@@ -125,6 +128,37 @@ def tipping(backend) -> str:
     return f"lands at x {landed[1][0]:.2f}, t {landed[0]:.2f} s; rests at x {rest[0]:.2f}, turned {min(turned, 90 - turned):.0f}°"
 
 
+def triangle_on_ledge(backend) -> str:
+    """A wood Triangle (its centroid is off its points' origin) with its right corner over a
+    ledge's edge but its centroid on the ledge: it should stay."""
+    platform = LevelObject("Platform", "Platform", 0.0, -1.0, 0.0, scale_x=3.0, scale_y=0.5, name="ledge")
+    width, height = extent(platform)
+    triangle = block("Triangle", width / 2 - 0.3, -1.0 + height / 2 + 0.375 + 0.015, "triangle")
+    trace = Game(Level(objects=(platform, triangle)), backend).simulate(None, 5.0, stop_at_rest=False)
+    return f"largest shift {largest_shift(trace):.3f}"
+
+
+def tnt_flight(backend) -> str:
+    """A TNT crate (gravity scale 1/0.48) thrown at 10 units/s: it must not start turning."""
+    game = Game(Level(objects=(LevelObject("TNT", "TNT", 0.0, 2.0, 0.0, name="tnt"),)), backend)
+    world = game.build()
+    world.set_velocity("tnt", 10.0, 0.0)
+    for _ in steps(game, world, 1.0):
+        world.begun(), world.ended()
+    return f"turned {abs(world.state('tnt')[2]):.3f} rad in 1 s"
+
+
+def pushed_after_rest(backend) -> str:
+    """A SquareSmall at rest on the ground for 5 s, then pushed at 3 units/s."""
+    game = Game(Level(objects=(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2, "body"),)), backend)
+    world = game.build()
+    for _ in steps(game, world, 5.0):
+        world.begun(), world.ended()
+    x0 = world.state("body")[0]
+    world.set_velocity("body", 3.0, 0.0, 0.0)
+    return f"{at_rest(game, world, 'body', 10.0)[0] - x0:.2f} units"
+
+
 def stack(backend) -> str:
     objects = tuple(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 0.015 + k * (SQUARE + 0.015), f"b{k}") for k in range(5))
     trace = Game(Level(objects=objects), backend).simulate(None, 10.0, stop_at_rest=False)
@@ -159,6 +193,9 @@ def rows(backend, folder):
     yield "Circle rolling from 3 units/s: distance", moving(backend, "Circle", 3.0)
     yield "SquareSmall sliding from 3 units/s: distance", moving(backend, "SquareSmall", 3.0)
     yield "SquareSmall tipping off a ledge", tipping(backend)
+    yield "Triangle with its centroid on a ledge, 5 s", triangle_on_ledge(backend)
+    yield "TNT thrown at 10 units/s: spin", tnt_flight(backend)
+    yield "SquareSmall at rest 5 s, then pushed at 3 units/s: distance", pushed_after_rest(backend)
     yield "five SquareSmalls stacked, 10 s", stack(backend)
     for circles in ("phyq", "round"):
         yield f"Phy-Q templates standing 10 s (circles {circles})", templates(backend, circles, folder)

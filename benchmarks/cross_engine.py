@@ -22,6 +22,7 @@ from pathlib import Path
 from physc.compiler.task import Solution
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
+from physc.files import write_atomic
 from physc.generation.verify import verify
 from physc.serialize import from_data
 
@@ -40,10 +41,11 @@ def replayed(records: list[dict], backend: str, replays: int):
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
         solution = from_data(record["solution"], {"Solution": Solution})
         started = time.perf_counter()
-        verify(domain, scenario, level, solution, backend)
+        check = verify(domain, scenario, level, solution, backend)
         seconds = time.perf_counter() - started
-        check = verify(domain, scenario, level, solution, backend, noisy=replays) if replays else None
-        yield record, check or verify(domain, scenario, level, solution, backend), seconds
+        if replays:
+            check = verify(domain, scenario, level, solution, backend, noisy=replays)
+        yield record, check, seconds
 
 
 def table(rows: list, key: str, backend: str, replays: int) -> list[str]:
@@ -75,6 +77,8 @@ def main() -> None:
     records = [json.loads(line) for line in (args.results / "records.jsonl").read_text().splitlines() if line.strip()]
     rows = list(replayed(records, args.backend, args.replays))
     total = len(rows)
+    if not total:
+        raise SystemExit(f"{args.results} holds no generated task")
     solved = sum(c.solved for _, c, _ in rows)
     realised = sum(c.realised for _, c, _ in rows)
     print(f"{total} tasks of {args.results} replayed in {args.backend}: solved {solved} ({solved / total:.1%}), "
@@ -82,11 +86,15 @@ def main() -> None:
     print("\n".join(table(rows, "interactions", args.backend, args.replays)) + "\n")
     print("\n".join(table(rows, "scenario", args.backend, args.replays)))
     if args.out:
-        with args.out.open("w") as out:
-            for record, check, seconds in rows:
-                out.write(json.dumps({"scenario": record["scenario"], "seed": record["seed"], "solved": check.solved,
-                                      "realised": check.realised, "noisy_passed": check.noisy_passed, "why": check.why,
-                                      "trace": check.trace, "pymunk_trace": record.get("trace"), "seconds": round(seconds, 4)}) + "\n")
+        lines = []
+        for record, check, seconds in rows:
+            line = {
+                "scenario": record["scenario"], "seed": record["seed"], "solved": check.solved, "realised": check.realised,
+                "noisy_passed": check.noisy_passed, "why": check.why, "trace": check.trace,
+                "generated_trace": record.get("trace"), "seconds": round(seconds, 4),
+            }
+            lines.append(json.dumps(line) + "\n")
+        write_atomic(args.out, "".join(lines))
 
 
 if __name__ == "__main__":

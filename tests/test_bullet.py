@@ -167,3 +167,47 @@ def test_pybullet_missing_is_a_clear_usage_error(monkeypatch):
         assert "backend 'bullet'" in run.stderr and "pybullet is not installed (pip install pybullet)" in run.stderr
     finally:
         backends.load_backend.cache_clear()
+
+
+def test_an_off_centre_polygon_has_its_mass_at_its_centroid():
+    # Science Birds' Triangle has its points about a corner's side, its centroid at (-0.125, -0.125):
+    # with its centroid on a ledge and a corner over the edge it stays, as in pymunk.
+    ledge = LevelObject("Platform", "Platform", 0.0, -1.0, 0.0, scale_x=3.0, scale_y=0.5, name="ledge")
+    triangle = LevelObject("Block", "Triangle", 0.96 - 0.3, -1.0 + 0.16 + 0.375 + 0.015, 0.0, "wood", name="triangle")
+    rows, _, _ = run_steps(BULLET, Level(objects=(ledge, triangle)), None, 250)
+    assert np.abs(rows[-1, 0, :2] - rows[0, 0, :2]).max() < 0.02
+
+
+def test_a_body_set_moving_after_resting_moves_and_a_heavier_gravity_does_not_spin_it():
+    box = LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + SQUARE / 2, 0.0, "wood", name="box")
+    world = Game(Level(objects=(box,)), BULLET).build()
+    for _ in range(250):  # 5 s at rest
+        world.step(RULES.dt)
+    start = world.state("box")[0]
+    world.set_velocity("box", 3.0, 0.0)
+    for _ in range(50):
+        world.step(RULES.dt)
+    assert world.state("box")[0] - start > 0.5  # pymunk: 0.78
+    # TNT falls at the full 9.81 (its gravity scale): the extra pull acts at its centre of mass
+    world = Game(Level(objects=(LevelObject("TNT", "TNT", -5.0, 2.0, 0.0, name="tnt"),)), BULLET).build()
+    world.set_velocity("tnt", 10.0, 0.0)
+    for _ in range(25):
+        world.step(RULES.dt)
+    assert abs(world.state("tnt")[2]) < 1e-6
+    assert world.state("tnt")[4] == pytest.approx(-9.81 * 0.5, abs=0.2)  # set moving: 0.15 units/s of lag (set_velocity)
+
+
+def test_a_removed_body_ends_its_contacts_at_once():
+    world = BULLET.create_world(RULES.gravity)
+    world.add(BodySpec("floor", Polygon(((-5, -0.5), (5, -0.5), (5, 0.5), (-5, 0.5))), 0.0, -0.5, static=True))
+    world.add(BodySpec("box", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 0.0, 0.2))
+    for _ in range(20):
+        world.step(RULES.dt)
+    assert "floor" in world.touching("box")
+    world.begun(), world.ended()
+    world.remove("box")
+    assert {frozenset(pair) for pair in world.ended()} == {frozenset(("box", "floor"))}  # at once, and once
+    assert world.touching("floor") == set()
+    world.add(BodySpec("ball", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 3.0, 3.0))
+    world.step(RULES.dt)  # the new body may get the removed one's id: no stale contact is named after it
+    assert world.ended() == [] and world.begun() == []

@@ -97,7 +97,7 @@ def test_records_made_by_other_code_are_made_again(tmp_path, monkeypatch):
 
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path).stderr.count("resuming: 1 of 1") == 1
-    monkeypatch.setattr(evaluation_run, "code_fingerprint", lambda domain: "edited")
+    monkeypatch.setattr(evaluation_run, "code_fingerprint", lambda domain, backends=(): "edited")
     run = run_physc("eval", SF, "--tasks", "1", "--out", tmp_path)
     assert run.status == 0 and "resuming" not in run.stderr
     (record,) = records(tmp_path).values()

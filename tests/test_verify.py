@@ -96,3 +96,42 @@ def test_eval_records_and_reports_the_verify_backend(tmp_path):
     assert "| Solved in bullet (exact replay) | 1.00 ± 0.00 |" in report
     assert "| Sequence realised in bullet (exact replay) | 1.00 ± 0.00 |" in report
     assert (tmp_path / "results.csv").read_text().splitlines()[0].endswith("verify_backend,verified_solved,verified_realised,verified_noisy")
+
+
+BAD_TASKS = {
+    "a coordinate that is not a number": lambda d: d["level"]["objects"][0].__setitem__("x", "abc"),
+    "a target that is not a point": lambda d: d["solution"].__setitem__("target", "ab"),
+    "an infinite target": lambda d: d["solution"].__setitem__("target", [float("inf"), 0.0]),
+    "a release angle that is not a number": lambda d: d["solution"].__setitem__("release_angle", "x"),
+    "a level that is a number": lambda d: d.__setitem__("level", 5),
+    "objects that are a number": lambda d: d["level"].__setitem__("objects", 5),
+    "an unknown trajectory": lambda d: d["solution"].__setitem__("trajectory", "sideways"),
+    "a target out of reach": lambda d: d["solution"].__setitem__("target", [500.0, 300.0]),
+}
+
+
+@pytest.mark.parametrize("damage", BAD_TASKS, ids=list(BAD_TASKS))
+def test_a_damaged_task_file_is_a_usage_error_not_a_crash(task, tmp_path, damage):
+    level, task_file = task
+    data = json.loads(task_file.read_text())
+    BAD_TASKS[damage](data)
+    damaged = tmp_path / "damaged.json"
+    damaged.write_text(json.dumps(data))
+    run = run_physc("verify", level, "--task", damaged, "--replays", "0")
+    assert run.status == 2 and "internal error" not in run.stderr and str(damaged) in run.stderr
+
+
+def test_deep_json_and_a_level_saved_with_crlf_and_a_bom(task, tmp_path):
+    level, task_file = task
+    deep = tmp_path / "deep.json"
+    deep.write_text("[" * 100_000 + "]" * 100_000)
+    run = run_physc("verify", level, "--task", deep)
+    assert run.status == 2 and "nested too deeply" in run.stderr
+    crlf = tmp_path / "crlf.xml"
+    crlf.write_bytes(b"\xef\xbb\xbf" + level.read_bytes().replace(b"\n", b"\r\n"))
+    assert run_physc("verify", crlf, "--task", task_file, "--replays", "0").status == 0
+
+
+def test_the_verify_backend_must_be_another_engine():
+    run = run_physc("compile", PAPER, "-s", "SF", "--verify-backend", "pymunk")
+    assert run.status == 2 and "already simulates" in run.stderr

@@ -133,6 +133,3 @@ def current() -> Backend:
     """The backend chosen by the innermost `selected`, else the default (pymunk)."""
     return load_backend(_SELECTED.get())
 
-
-def current_name() -> str:
-    return _SELECTED.get()

@@ -74,6 +74,12 @@ def check_min_robustness(value: int, domain) -> None:
         )
 
 
+def check_backends(args) -> None:
+    """--verify-backend must name another engine than the one that simulates."""
+    if getattr(args, "verify_backend", None) and args.verify_backend == args.backend:
+        raise UsageError(f"--verify-backend {args.verify_backend} is the engine that already simulates (--backend): name another one")
+
+
 def add_backend(parser, verify: bool = True) -> None:
     """--backend (the engine that simulates) and, with `verify`, --verify-backend (a second
     engine the task's solution must pass in too)."""

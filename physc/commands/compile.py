@@ -11,6 +11,7 @@ from physc.commands.common import (
     EXIT_INFEASIBLE,
     EXIT_OK,
     UsageError,
+    check_backends,
     check_min_robustness,
     reporter,
 )
@@ -156,6 +157,7 @@ def cmd_compile(args) -> int:
     from physc.dsl.frontend import analyze
     from physc.serialize import to_data
 
+    check_backends(args)
     try:
         chosen = stage(args.emit)
     except StageError as error:

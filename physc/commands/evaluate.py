@@ -14,6 +14,7 @@ from physc.commands.common import (
     EXIT_OK,
     UsageError,
     add_backend,
+    check_backends,
     add_min_robustness,
     check_min_robustness,
     reporter,
@@ -67,6 +68,7 @@ def cmd_eval(args) -> int:
     from physc.domains.base import STAGE_NEEDS, require
     from physc.evaluation.run import jobs_for, run
 
+    check_backends(args)
     if args.seed + args.tasks - 1 > arguments.MAX_SEED:
         raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
     check_output(args.out, folder=True)

@@ -12,7 +12,7 @@ import json
 
 from physc import budget
 from physc.commands import arguments
-from physc.commands.common import EXIT_OK, UsageError, reporter
+from physc.commands.common import EXIT_OK, UsageError, add_backend, reporter
 from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
@@ -63,15 +63,11 @@ def _fail(args, diagnostic: Diagnostic, source=None) -> int:
 
 
 def _game(args, level):
-    from physc.backends import BackendError, load_backend
+    from physc.backends import load_backend
     from physc.domains.angrybirds.game import Game
     from physc.domains.angrybirds.rules import Rules
 
-    try:
-        backend = load_backend(args.backend)
-    except BackendError as error:
-        raise UsageError(str(error)) from None
-    return Game(level, backend, Rules(circles=args.circles))
+    return Game(level, load_backend(args.backend), Rules(circles=args.circles))  # --backend was checked when parsed
 
 
 def _play(args):
@@ -172,7 +168,7 @@ def add_commands(commands, common) -> None:
             help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
         )
         parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")
-        parser.add_argument("--backend", type=arguments.backend, default="pymunk", metavar="NAME", help="the physics backend (default pymunk; bullet is the other built-in one)")
+        add_backend(parser, verify=False)
 
     simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
     level_arguments(simulate)

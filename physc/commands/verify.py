@@ -11,6 +11,7 @@ interactions it realised. Exit 0 when it passes, 1 when it does not.
 from __future__ import annotations
 
 import json
+import math
 
 from physc import budget
 from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError
@@ -27,9 +28,11 @@ def _task(path: str) -> dict:
     if len(data) > MAX_TASK_BYTES:
         raise UsageError(f"{path}: the task file is larger than physc reads ({MAX_TASK_BYTES:,} bytes)")
     try:
-        task = json.loads(data.decode("utf-8"))
+        task = json.loads(data.decode("utf-8-sig"))
     except (UnicodeDecodeError, json.JSONDecodeError) as error:
         raise UsageError(f"{path} is not a task file (JSON): {error}") from None
+    except RecursionError:
+        raise UsageError(f"{path} is not a task file: its JSON is nested too deeply") from None
     fields = ("domain", "scenario", "source", "level", "solution")
     if not isinstance(task, dict) or task.get("node") != "Task" or not all(field in task for field in fields):
         raise UsageError(f"{path} is not a task file: write one with `physc compile FILE --task {path}`")
@@ -57,28 +60,54 @@ def _parts(task: dict, path: str):
         raise UsageError(f"{path}: its source does not hold a valid scenario '{task['scenario']}'")
     try:
         level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
-        solution = from_data(task["solution"], {"Solution": Solution})
-    except (TypeError, ValueError) as error:
-        raise UsageError(f"{path}: its level or solution cannot be read: {error}") from None
-    return domain, scenario, level, solution
+        if not isinstance(level, domain.level_classes[0]):
+            raise ValueError(f"the level is not a {domain.level_classes[0].__name__}")
+        solution = _solution(from_data(task["solution"], {"Solution": Solution}))
+        level_text = domain.emit_level(level)  # also checks that the level is one the domain can write
+    except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:
+        raise UsageError(f"{path}: its level or solution cannot be read: {error or type(error).__name__}") from None
+    return domain, scenario, level, level_text, solution
+
+
+def _solution(solution):
+    """The task file's solution, if its fields are what a Solution holds (ValueError if not)."""
+    from physc.compiler.task import Solution
+
+    if not isinstance(solution, Solution):
+        raise ValueError("the solution is not a Solution")
+    target = solution.target
+    numbers = (*target, solution.release_angle) if isinstance(target, tuple) and len(target) == 2 else None
+    if numbers is None or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
+        raise ValueError("the solution's target and release angle must be finite numbers")
+    if solution.trajectory not in ("low", "high"):
+        raise ValueError(f"the solution's trajectory is 'low' or 'high', not {solution.trajectory!r}")
+    return solution
+
+
+def _normalised(text: str) -> str:
+    """A level file's text as compared: line ends and the ends of the text do not count."""
+    return text.replace("\r\n", "\n").strip()
 
 
 def cmd_verify(args) -> int:
-    from physc.generation.verify import verify
+    from physc.generation.verify import noisy_replays, verify
 
     task = _task(args.task)
-    domain, scenario, level, solution = _parts(task, args.task)
+    domain, scenario, level, level_text, solution = _parts(task, args.task)
     data, problem = read_input(args.level, "the level", limit=MAX_TASK_BYTES + 1)
     if data is None:
         raise UsageError(problem)
-    if data.decode("utf-8", "replace").strip() != domain.emit_level(level).strip():
+    if _normalised(data.decode("utf-8-sig", "replace")) != _normalised(level_text):
         raise UsageError(
             f"{args.level} is not the level of {args.task}: the task file holds another level "
             "(verify the level file `physc compile` wrote beside it)"
         )
-    replays = args.replays if args.replays is not None else (domain.robustness_replays or 0)
-    with budget.interruptible():
-        result = verify(domain, scenario, level, solution, args.backend, noisy=replays)
+    replays = args.replays if args.replays is not None else noisy_replays(domain)
+    try:
+        with budget.interruptible():
+            result = verify(domain, scenario, level, solution, args.backend, noisy=replays)
+    except ValueError as error:  # the file's solution cannot be played (angrybirds: a target out of reach)
+        raise UsageError(f"{args.task}: its solution cannot be played: {error}") from None
     if args.json:
         print(
             json.dumps(

@@ -183,9 +183,10 @@ class Domain(abc.ABC):
         raise MissingCapability(self.name, ("replay",), "replaying a solution")
 
     level_classes: tuple[type, ...] = ()
-    """The attrs classes a level of this domain is made of (angrybirds: Level, Camera,
-    LevelObject): what reads a level back from a task file (physc.serialize.from_data,
-    `physc verify`). Empty: task files of this domain cannot be read back."""
+    """The attrs classes a level of this domain is made of, the level's own class first
+    (angrybirds: Level, Camera, LevelObject): what reads a level back from a task file
+    (physc.serialize.from_data, `physc verify`). Empty: task files of this domain cannot be
+    read back."""
 
     # --- generation: working defaults ------------------------------------------
 

@@ -24,11 +24,12 @@ from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.stability import stability  # noqa: F401  (the evaluation's metric)
+from physc.domains.angrybirds import REPLAY_SECONDS
 from physc.domains.angrybirds.world import reachable
 
 NOISY_REPLAYS = 10
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
-SECONDS = 10.0
+SECONDS = REPLAY_SECONDS  # a play's simulated time at most, the replays' too
 
 
 def intended(domain, level, solution, scenario, rng: random.Random) -> dict:

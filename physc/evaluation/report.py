@@ -19,6 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from physc.evaluation.measure import NOISY_REPLAYS  # noqa: E402
 from physc.files import write_atomic  # noqa: E402
 
 # The paper's table "The results of the intended solvability, accidental
@@ -41,7 +42,7 @@ METRICS = (
 VERIFY_METRICS = (
     ("verified_solved", "Solved in {backend} (exact replay)", None),
     ("verified_realised", "Sequence realised in {backend} (exact replay)", None),
-    ("verified_noisy", "Sequence realised in {backend} (10 noisy replays)", None),
+    ("verified_noisy", "Sequence realised in {backend} (" + str(NOISY_REPLAYS) + " noisy replays)", None),
 )
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
@@ -184,7 +185,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     if summary.get("verify_backend"):
         lines += [
             f"With --verify-backend, a task was kept only if its solution also passed in {summary['verify_backend']}, and",
-            f"the rows \"in {summary['verify_backend']}\" replay it there afresh: exactly, and 10 times with the same noise.",
+            f"the rows \"in {summary['verify_backend']}\" replay it there afresh: exactly, and {NOISY_REPLAYS} times with the same noise.",
         ]
     return "\n".join(lines) + "\n"
 

@@ -27,7 +27,7 @@ import attrs
 from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
-from physc.backends import DEFAULT_BACKEND, selected
+from physc.backends import DEFAULT_BACKEND, installed_backends, selected
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import installed_domains, load_domain
 from physc.dsl.frontend import analyze
@@ -94,15 +94,16 @@ def source_fingerprint(where: Path) -> str:
 
 
 @functools.cache
-def code_fingerprint(domain: str) -> str:
+def code_fingerprint(domain: str, backends: tuple[str, ...] = ()) -> str:
     """A hash of the code a task of `domain` depends on: physc's own source and, for a
-    domain that a third-party package brings, that package's. Records made by other code
-    are made again, so a run resumed after an edit to the generator never mixes old
-    tasks with new ones."""
+    domain or a backend (of `backends`) that a third-party package brings, that package's.
+    Records made by other code are made again, so a run resumed after an edit to the
+    generator never mixes old tasks with new ones."""
     packages = {"physc"}
-    entry_point = installed_domains().get(domain)
-    if entry_point is not None:
-        packages.add(entry_point.module.split(".")[0])
+    entry_points = [installed_domains().get(domain)] + [installed_backends().get(name) for name in backends]
+    for entry_point in entry_points:
+        if entry_point is not None:
+            packages.add(entry_point.module.split(".")[0])
     parts = []
     for package in sorted(packages):
         spec = importlib.util.find_spec(package)
@@ -212,7 +213,8 @@ def jobs_for(
             problems.append((path, analysis, errors))
             continue
         for scenario in analysis.scenarios:
-            fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain)
+            engines = tuple(name for name in (backend, verify_backend) if name)
+            fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
             jobs += [
                 Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend)
                 for index in range(tasks)

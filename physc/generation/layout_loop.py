@@ -19,7 +19,7 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
-from physc.generation.verify import verify
+from physc.generation.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
@@ -77,8 +77,9 @@ class LayoutLoop:
         """`result`, or, when its solution fails in the second backend, the layout given up
         for that reason (the search goes on to the next layout)."""
         parts = result.parts
-        needed = accept if accept is not None else (self.domain.robustness_replays or 0)
-        check = verify(self.domain, self.scenario, parts.level, parts.solution, self.verify_backend, noisy=needed)
+        replays = noisy_replays(self.domain)
+        needed = accept if accept is not None else replays  # as the generator's own acceptance: K of them for a fallback
+        check = verify(self.domain, self.scenario, parts.level, parts.solution, self.verify_backend, noisy=replays)
         spent = 1 + check.noisy_run
         if check.passes(needed):
             return attrs.evolve(result, simulations=result.simulations + spent)

@@ -44,6 +44,12 @@ class Verification:
         return f"in {self.backend}: " + ", ".join(parts)
 
 
+def noisy_replays(domain) -> int:
+    """The noisy replays a solution is put through by default: the domain's own (none for a
+    domain without a noise model)."""
+    return domain.robustness_replays or 0
+
+
 def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> Verification:
     """Replay `solution` in `level` with `backend`: once as recorded, then `noisy` times
     under the domain's noise (drawn from a generator seeded by the backend and the
@@ -62,5 +68,5 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
         missing = scenario.interactions[check.matched].text
         why = f"it realises {check.matched} of {check.total} interactions in order (never `{missing}`)"
     elif passed < noisy:
-        why = f"only {passed} of {noisy} noisy replays realise the sequence"
+        why = f"{passed} of {noisy} noisy replays realise the sequence"
     return Verification(backend, trace.solved, check.valid, passed, noisy, trace.sequence(), why)

@@ -8,8 +8,8 @@ is smaller: the bird (0.43) hitting a wood block (0) would not bounce at all, an
 the block a third less hard than in the game.
 
 So a game step in which two dynamic bodies of different bounciness begin touching, coming
-together faster than the restitution threshold, is stepped again from where it began, with
-the bouncier body's restitution raised for that step so that the pair's product is the
+together faster than the restitution threshold, is taken again from the bodies' poses and
+velocities at its start, with the bouncier body's restitution raised for that step so that the pair's product is the
 larger bounciness (`raised`). That body must touch nothing else in that step (the raised
 value would bounce it off that too); otherwise the step keeps Bullet's product. In the
 game this is the bird (and a thrown block) striking a block in flight: the case that

@@ -23,9 +23,24 @@ def area(shape: Circle | Polygon, skin: float = 0.0) -> float:
     return inner + perimeter * skin + math.pi * skin * skin
 
 
+def centroid(shape: Circle | Polygon) -> tuple[float, float]:
+    """The shape's centre of mass in its own frame (the origin of its points): a polygon's
+    points need not be centred on it (Science Birds' triangles are not)."""
+    if isinstance(shape, Circle):
+        return (0.0, 0.0)
+    points = shape.points
+    total = sx = sy = 0.0
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+        cross = x0 * y1 - x1 * y0
+        total += cross
+        sx += (x0 + x1) * cross
+        sy += (y0 + y1) * cross
+    return (sx / (3 * total), sy / (3 * total)) if total else (0.0, 0.0)
+
+
 def polar_moment(shape: Circle | Polygon, mass: float) -> float:
-    """The moment of inertia about the centre (the origin of the points), for `mass` spread
-    evenly over the shape."""
+    """The moment of inertia about the origin of the points (not the centroid), for `mass`
+    spread evenly over the shape."""
     if isinstance(shape, Circle):
         return mass * shape.radius**2 / 2
     points = shape.points

@@ -15,8 +15,9 @@ polygon's with its skin, as pymunk counts it), and the inertia about z from the 
 they mean what they mean in pymunk whatever the depth. Bullet multiplies the friction of two bodies and multiplies their restitution; each
 body gets the square root of its friction (the pair's product is the geometric mean, as
 Box2D's), and its own bounciness against a static body of restitution 1 (exact against the
-static world); a game step in which two dynamic bodies strike each other is stepped again
-with Box2D's larger-of-two for them (physc.backends.bullet.restitution).
+static world); a game step in which two dynamic bodies strike each other is taken again, from
+the bodies' poses and velocities at its start (Bullet keeps its own contact caches), with Box2D's
+larger-of-two for them (physc.backends.bullet.restitution).
 
 Bullet reports no contact events, only the contact points after a step. Contacts begun and
 ended are the difference of the touching pairs between two steps; a contact's relative
@@ -37,9 +38,9 @@ import attrs
 import numpy as np
 import pybullet
 
-from physc.backends import BodySpec, Circle, ContactEvent
+from physc.backends import BackendError, BodySpec, Circle, ContactEvent
 from physc.backends.bullet.restitution import raised
-from physc.backends.bullet.shapes import Extent, area, polar_moment
+from physc.backends.bullet.shapes import Extent, area, centroid, polar_moment
 
 DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
 SKIN = 0.01  # polygons grow by this, as pymunk's polygon skin (Box2D's polygon radius)
@@ -61,7 +62,8 @@ class Dynamic:
     """What the world keeps of a dynamic body (Bullet keeps the rest)."""
 
     mass: float
-    inertia: float  # about z
+    inertia: float  # about z, through the centre of mass
+    centre: tuple[float, float]  # the centre of mass in the body's frame (a polygon's centroid; pymunk's too)
     bounciness: float
     damping: float  # Box2D's angular damping (1/s)
     gravity_scale: float
@@ -70,11 +72,13 @@ class Dynamic:
 class BulletWorld:
     def __init__(self, gravity: float):
         self.client = pybullet.connect(pybullet.DIRECT)
+        if self.client < 0:
+            raise BackendError("pybullet could not start a physics client (DIRECT)")
         self.gravity = gravity
         pybullet.setGravity(0.0, -gravity, 0.0, physicsClientId=self.client)
         self.names: list[str] = []
         self._id: dict[str, int] = {}  # name → Bullet body id
-        self._name_of: dict[int, str] = {}  # every body ever added, removed ones too
+        self._name_of: dict[int, str] = {}  # Bullet id → name (Bullet gives a freed id to the next body)
         self._dynamic: dict[str, Dynamic] = {}
         self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
         self._begun: list[ContactEvent] = []
@@ -111,9 +115,10 @@ class BulletWorld:
             pybullet.changeDynamics(body, -1, lateralFriction=friction, restitution=1.0, physicsClientId=c)
         else:
             mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape, SKIN)
-            inertia = polar_moment(spec.shape, mass)
-            body = self._create_dynamic(spec, shape, friction, mass, inertia)
-            self._dynamic[spec.name] = Dynamic(mass, inertia, spec.bounciness, spec.angular_damping, spec.gravity_scale)
+            centre = centroid(spec.shape)
+            inertia = polar_moment(spec.shape, mass) - mass * (centre[0] ** 2 + centre[1] ** 2)
+            body = self._create_dynamic(spec, shape, friction, mass, inertia, centre)
+            self._dynamic[spec.name] = Dynamic(mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale)
             if self._dt is not None:
                 self._set_damping(spec.name, body)
         self.names.append(spec.name)
@@ -121,8 +126,9 @@ class BulletWorld:
         self._name_of[body] = spec.name
         self._touching[spec.name] = set()
 
-    def _create_dynamic(self, spec: BodySpec, shape: int, friction: float, mass: float, inertia: float) -> int:
-        """A dynamic body: a planar multibody whose joint coordinates are x, y and the angle."""
+    def _create_dynamic(self, spec: BodySpec, shape: int, friction: float, mass: float, inertia: float, centre) -> int:
+        """A dynamic body: a planar multibody whose joint coordinates are x, y and the angle of
+        the body's origin; its mass sits at `centre` in the body's frame."""
         c = self.client
         body = pybullet.createMultiBody(
             0.0, -1, -1, (0.0, 0.0, 0.0),
@@ -131,7 +137,7 @@ class BulletWorld:
             linkVisualShapeIndices=(-1, -1, -1),
             linkPositions=((0, 0, 0),) * 3,
             linkOrientations=((0, 0, 0, 1),) * 3,
-            linkInertialFramePositions=((0, 0, 0),) * 3,
+            linkInertialFramePositions=((0, 0, 0), (0, 0, 0), (centre[0], centre[1], 0.0)),
             linkInertialFrameOrientations=((0, 0, 0, 1),) * 3,
             linkParentIndices=(0, 1, 2),
             linkJointTypes=(pybullet.JOINT_PRISMATIC, pybullet.JOINT_PRISMATIC, pybullet.JOINT_REVOLUTE),
@@ -142,10 +148,6 @@ class BulletWorld:
             pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=c)
         pybullet.setJointMotorControlArray(body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=c)
         pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=c)
-        # A body nearly still for a while sleeps until something touches it, as in pymunk and
-        # Box2D (Bullet's own measure: 2 s below about 0.2 units/s); a level's marginal
-        # balances then stand as they do there.
-        pybullet.changeDynamics(body, -1, activationState=pybullet.ACTIVATION_STATE_ENABLE_SLEEPING, physicsClientId=c)
         pybullet.changeDynamics(
             body, BODY_LINK, lateralFriction=friction, restitution=spec.bounciness,
             localInertiaDiagonal=(inertia, inertia, inertia), physicsClientId=c,
@@ -153,10 +155,18 @@ class BulletWorld:
         return body
 
     def remove(self, name: str) -> None:
-        pybullet.removeBody(self._id.pop(name), physicsClientId=self.client)
+        """Take a body out. Its contacts end now, as in pymunk (reported by the next `ended`):
+        Bullet gives a removed body's id to the next body added."""
+        body = self._id.pop(name)
+        for key in sorted(k for k in self._pairs if body in k):
+            a, b = self._name_of[key[0]], self._name_of[key[1]]
+            self._ended.append((a, b) if self._pairs[key][1] == key[0] else (b, a))
+            del self._pairs[key]
+        for other in self._touching.pop(name, set()):
+            self._touching.get(other, set()).discard(name)
+        pybullet.removeBody(body, physicsClientId=self.client)
         self.names.remove(name)
         self._dynamic.pop(name, None)
-        # Its contacts end at the next step, as they do in pymunk (separations reported then).
 
     # ---- running -----------------------------------------------------------------
     def _configure(self, dt: float) -> None:
@@ -228,10 +238,14 @@ class BulletWorld:
         pairs: dict[tuple[int, int], tuple] = {}
         for _ in range(SUBSTEPS):
             for name, dynamic in self._dynamic.items():
-                if dynamic.gravity_scale != 1.0:  # the force that makes its gravity scale true
-                    force = (0.0, -dynamic.mass * self.gravity * (dynamic.gravity_scale - 1.0), 0.0)
-                    position = (*before[name][:2], 0.0)
-                    pybullet.applyExternalForce(self._id[name], BODY_LINK, force, position, pybullet.WORLD_FRAME, physicsClientId=c)
+                if dynamic.gravity_scale != 1.0:
+                    # The force that makes its gravity scale true, at the centre of mass: given in
+                    # the body's own frame (Bullet's world-frame point is the last step's, and
+                    # would give a moving body a lever arm).
+                    pull = -dynamic.mass * self.gravity * (dynamic.gravity_scale - 1.0)
+                    angle = self.state(name)[2]
+                    force = (pull * math.sin(angle), pull * math.cos(angle), 0.0)
+                    pybullet.applyExternalForce(self._id[name], BODY_LINK, force, (0.0, 0.0, 0.0), pybullet.LINK_FRAME, physicsClientId=c)
             pybullet.stepSimulation(physicsClientId=c)
             self._touched(pairs)
         return pairs
@@ -264,9 +278,7 @@ class BulletWorld:
 
     def _restore(self, name: str, state: tuple) -> None:
         """Put a body back where and as it was (a step taken again)."""
-        body = self._id[name]
-        for joint, value, velocity in zip(JOINTS, state[:3], state[3:]):
-            pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)
+        self._set_joints(name, state[:3], state[3:])
 
     def _touched(self, pairs: dict[tuple[int, int], tuple]) -> None:
         """Add the pairs touching in the last Bullet step to `pairs`: a contact point at most
@@ -297,14 +309,38 @@ class BulletWorld:
     def _event(self, point: tuple, before: dict[str, tuple]) -> ContactEvent:
         a, b = self._name_of[point[1]], self._name_of[point[2]]
         px, py = point[5][0], point[5][1]
-        va = _velocity_at(before.get(a), px, py)
-        vb = _velocity_at(before.get(b), px, py)
+        va = self._point_velocity(a, before.get(a), px, py)
+        vb = self._point_velocity(b, before.get(b), px, py)
         normal = point[7]  # on B, pointing from B to A
         return ContactEvent(a, b, (px, py), (-normal[0], -normal[1]), (va[0] - vb[0], va[1] - vb[1]), va, vb)
 
     def state(self, name: str):
+        """(x, y, angle, vx, vy, ω): the origin's position and the centre of mass's velocity,
+        as pymunk gives them (Bullet's joints move with the origin)."""
         (x, vx, *_), (y, vy, *_), (angle, w, *_) = pybullet.getJointStates(self._id[name], JOINTS, physicsClientId=self.client)
-        return (x, y, angle, vx, vy, w)
+        rx, ry = self._arm(name, angle)
+        return (x, y, angle, vx - w * ry, vy + w * rx, w)
+
+    def _arm(self, name: str, angle: float) -> tuple[float, float]:
+        """From the body's origin to its centre of mass, in the world's axes."""
+        cx, cy = self._dynamic[name].centre
+        if not cx and not cy:
+            return 0.0, 0.0
+        cos, sin = math.cos(angle), math.sin(angle)
+        return cx * cos - cy * sin, cx * sin + cy * cos
+
+    def _centre_of_mass(self, name: str, state: tuple) -> tuple[float, float]:
+        rx, ry = self._arm(name, state[2])
+        return state[0] + rx, state[1] + ry
+
+    def _point_velocity(self, name: str, state: tuple | None, px: float, py: float) -> tuple[float, float]:
+        """The velocity of the body's point (px, py): v + ω × r from its centre of mass; zero
+        for a static body."""
+        if state is None:
+            return (0.0, 0.0)
+        x, y = self._centre_of_mass(name, state)
+        vx, vy, w = state[3:]
+        return (vx - w * (py - y), vy + w * (px - x))
 
     def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
         if out is None:
@@ -332,10 +368,17 @@ class BulletWorld:
         self._velocity(name, vx, vy + lag, w)
 
     def _velocity(self, name: str, vx: float, vy: float, angular: float) -> None:
-        """Set Bullet's own velocity of a body (its joints' speeds)."""
-        body, state = self._id[name], self.state(name)
-        for joint, value, velocity in zip(JOINTS, state[:3], (vx, vy, angular)):
-            pybullet.resetJointState(body, joint, value, velocity, physicsClientId=self.client)
+        """Set a body's velocity (its centre of mass's, and ω) in Bullet, as it stands."""
+        self._set_joints(name, self.state(name)[:3], (vx, vy, angular))
+
+    def _set_joints(self, name: str, pose, velocity) -> None:
+        """Bullet's joints of a body: the pose (x, y, angle of its origin) and the velocity
+        (vx, vy of its centre of mass, ω), turned into the origin's."""
+        rx, ry = self._arm(name, pose[2])
+        vx, vy, w = velocity
+        body = self._id[name]
+        for joint, value, speed in zip(JOINTS, pose, (vx + w * ry, vy - w * rx, w)):
+            pybullet.resetJointState(body, joint, value, speed, physicsClientId=self.client)
 
     def mass(self, name: str) -> float:
         return self._dynamic[name].mass
@@ -351,10 +394,3 @@ class BulletWorld:
     def touching(self, name: str) -> set[str]:
         return set(self._touching.get(name, ()))
 
-
-def _velocity_at(state: tuple | None, px: float, py: float) -> tuple[float, float]:
-    """The velocity of a body's point (px, py): v + ω × r; zero for a static body."""
-    if state is None:
-        return (0.0, 0.0)
-    x, y, _, vx, vy, w = state
-    return (vx - w * (py - y), vy + w * (px - x))
