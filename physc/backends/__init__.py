@@ -38,7 +38,7 @@ class Circle:
 
 @attrs.frozen
 class Polygon:
-    points: tuple[tuple[float, float], ...]  # convex, counter-clockwise, about the centre
+    points: tuple[tuple[float, float], ...]  # convex, counter-clockwise, about the body's origin (x, y); the mass sits at their centroid
 
 
 @attrs.frozen

@@ -8,7 +8,7 @@ x, y and angle, so no body can leave the plane or turn out of it, and a state re
 `getJointStates` call. The joints' motors are switched off; Box2D's angular damping is the
 revolute joint's damping. Static bodies are plain fixed bodies.
 
-Shapes are extrusions DEPTH deep: boxes for rectangles, convex hulls for other polygons,
+Shapes are extrusions (bodies.py): boxes for rectangles, convex hulls for other polygons,
 spheres for circles (a sphere's single contact point rolls on a platform as the game's
 circle does; see docs/performance.md for the calibration). Mass is set from the *area* (a
 polygon's with its skin, as pymunk counts it), and the inertia about z from the 2-D shape, so
@@ -38,12 +38,11 @@ import attrs
 import numpy as np
 import pybullet
 
-from physc.backends import BackendError, BodySpec, Circle, ContactEvent
+from physc.backends import BackendError, BodySpec, ContactEvent
+from physc.backends.bullet.bodies import BODY_LINK, JOINTS, SKIN, collision_shape, planar_body, static_body
 from physc.backends.bullet.restitution import raised
-from physc.backends.bullet.shapes import Extent, area, centroid, polar_moment
+from physc.backends.bullet.shapes import area, centroid, polar_moment
 
-DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
-SKIN = 0.01  # polygons grow by this, as pymunk's polygon skin (Box2D's polygon radius)
 SUBSTEPS = 2  # Bullet steps per game step
 ITERATIONS = 10  # the solver's iterations per Bullet step
 ERP = 0.2  # share of a penetration corrected per step (contacts and joints)
@@ -51,10 +50,6 @@ RESTITUTION_THRESHOLD = 0.2  # below this approach speed (units/s) nothing bounc
 SEPARATION = 50  # Bullet steps at most that push initial overlaps apart (see _separate)
 SLOP = 0.005  # overlap left alone (pymunk's and Box2D's linear slop)
 TOUCH = 0.005  # contact points this near (or nearer: negative is overlap) count as touching
-LINK_MASS = 1e-4  # the two carrier links of a planar body (the joints need a mass)
-AXES = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
-JOINTS = (0, 1, 2)  # x, y, angle
-BODY_LINK = 2  # the link that carries a planar body's shape
 
 
 @attrs.frozen
@@ -94,30 +89,15 @@ class BulletWorld:
             pass
 
     # ---- building --------------------------------------------------------------
-    def _shape(self, spec: BodySpec) -> int:
-        if isinstance(spec.shape, Circle):
-            return pybullet.createCollisionShape(pybullet.GEOM_SPHERE, radius=spec.shape.radius, physicsClientId=self.client)
-        box = Extent.of(spec.shape.points)
-        if box.rectangle:
-            half = [box.width / 2 + SKIN, box.height / 2 + SKIN, DEPTH / 2]
-            return pybullet.createCollisionShape(pybullet.GEOM_BOX, halfExtents=half, physicsClientId=self.client)
-        grown = Extent.grown(spec.shape.points, SKIN)
-        vertices = [(x, y, z) for x, y in grown for z in (-DEPTH / 2, DEPTH / 2)]
-        return pybullet.createCollisionShape(pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=self.client)
-
     def add(self, spec: BodySpec) -> None:
-        c = self.client
-        shape = self._shape(spec)
-        friction = math.sqrt(max(spec.friction, 0.0))
+        shape = collision_shape(self.client, spec)
         if spec.static:
-            quaternion = pybullet.getQuaternionFromEuler((0.0, 0.0, spec.angle))
-            body = pybullet.createMultiBody(0.0, shape, -1, (spec.x, spec.y, 0.0), quaternion, physicsClientId=c)
-            pybullet.changeDynamics(body, -1, lateralFriction=friction, restitution=1.0, physicsClientId=c)
+            body = static_body(self.client, spec, shape)
         else:
             mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape, SKIN)
             centre = centroid(spec.shape)
             inertia = polar_moment(spec.shape, mass) - mass * (centre[0] ** 2 + centre[1] ** 2)
-            body = self._create_dynamic(spec, shape, friction, mass, inertia, centre)
+            body = planar_body(self.client, spec, shape, mass, inertia, centre)
             self._dynamic[spec.name] = Dynamic(mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale)
             if self._dt is not None:
                 self._set_damping(spec.name, body)
@@ -125,34 +105,6 @@ class BulletWorld:
         self._id[spec.name] = body
         self._name_of[body] = spec.name
         self._touching[spec.name] = set()
-
-    def _create_dynamic(self, spec: BodySpec, shape: int, friction: float, mass: float, inertia: float, centre) -> int:
-        """A dynamic body: a planar multibody whose joint coordinates are x, y and the angle of
-        the body's origin; its mass sits at `centre` in the body's frame."""
-        c = self.client
-        body = pybullet.createMultiBody(
-            0.0, -1, -1, (0.0, 0.0, 0.0),
-            linkMasses=(LINK_MASS, LINK_MASS, mass),
-            linkCollisionShapeIndices=(-1, -1, shape),
-            linkVisualShapeIndices=(-1, -1, -1),
-            linkPositions=((0, 0, 0),) * 3,
-            linkOrientations=((0, 0, 0, 1),) * 3,
-            linkInertialFramePositions=((0, 0, 0), (0, 0, 0), (centre[0], centre[1], 0.0)),
-            linkInertialFrameOrientations=((0, 0, 0, 1),) * 3,
-            linkParentIndices=(0, 1, 2),
-            linkJointTypes=(pybullet.JOINT_PRISMATIC, pybullet.JOINT_PRISMATIC, pybullet.JOINT_REVOLUTE),
-            linkJointAxis=AXES,
-            physicsClientId=c,
-        )
-        for joint, value in zip(JOINTS, (spec.x, spec.y, spec.angle)):
-            pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=c)
-        pybullet.setJointMotorControlArray(body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=c)
-        pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=c)
-        pybullet.changeDynamics(
-            body, BODY_LINK, lateralFriction=friction, restitution=spec.bounciness,
-            localInertiaDiagonal=(inertia, inertia, inertia), physicsClientId=c,
-        )
-        return body
 
     def remove(self, name: str) -> None:
         """Take a body out. Its contacts end now, as in pymunk (reported by the next `ended`):
