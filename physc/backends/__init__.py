@@ -90,11 +90,56 @@ class World(Protocol):
     def touching(self, name: str) -> set[str]: ...
 
 
-class Backend(Protocol):
+class ContactLog:
+    """The contact bookkeeping a world reports through, the same for every engine: the
+    contacts begun and ended since the last call, and who touches whom now. A world
+    subclasses it and tells it what its engine saw (`_began`, `_parted`, `_gone`)."""
+
+    def __init__(self):
+        self._begun: list[ContactEvent] = []
+        self._ended: list[tuple[str, str]] = []
+        self._touching: dict[str, set[str]] = {}
+
+    def _began(self, event: ContactEvent) -> None:
+        self._begun.append(event)
+        self._touching.setdefault(event.a, set()).add(event.b)
+        self._touching.setdefault(event.b, set()).add(event.a)
+
+    def _parted(self, a: str, b: str) -> None:
+        self._ended.append((a, b))
+        if a in self._touching:
+            self._touching[a].discard(b)
+        if b in self._touching:
+            self._touching[b].discard(a)
+
+    def _gone(self, name: str) -> None:
+        """`name` left the world: it touches nothing any more."""
+        for other in self._touching.pop(name, ()):
+            self._touching.get(other, set()).discard(name)
+
+    def begun(self) -> list[ContactEvent]:
+        events, self._begun = self._begun, []
+        return events
+
+    def ended(self) -> list[tuple[str, str]]:
+        events, self._ended = self._ended, []
+        return events
+
+    def touching(self, name: str) -> set[str]:
+        return set(self._touching.get(name, ()))
+
+
+@attrs.frozen
+class Backend:
+    """A physics backend: its name, one line for people, and the World class it builds
+    (`world(gravity)`). A plugin registers one under `physc.backends`."""
+
     name: str
     description: str
+    world: type
 
-    def create_world(self, gravity: float) -> World: ...
+    def create_world(self, gravity: float) -> World:
+        return self.world(gravity)
 
 
 class BackendError(Exception):

@@ -40,7 +40,7 @@ def _task(path: str) -> dict:
 
 
 def _parts(task: dict, path: str):
-    """(domain, scenario, level, solution) of a task file."""
+    """(domain, scenario, level, the level as the domain writes it, solution) of a task file."""
     from physc.compiler.task import Solution
     from physc.domains import load_domain
     from physc.domains.base import DomainError, require

@@ -29,15 +29,7 @@ try:
 except ImportError as error:  # pragma: no cover - pybullet is a dependency of physc
     raise ImportError("pybullet is not installed (pip install pybullet)") from error
 
-from physc.backends.bullet.world import BulletWorld
+from physc.backends import Backend  # noqa: E402
+from physc.backends.bullet.world import BulletWorld  # noqa: E402
 
-
-class BulletBackend:
-    name = "bullet"
-    description = "pybullet 3 (Bullet), bodies kept in the plane by planar joints: the second verifier"
-
-    def create_world(self, gravity: float) -> BulletWorld:
-        return BulletWorld(gravity)
-
-
-BACKEND = BulletBackend()
+BACKEND = Backend("bullet", "pybullet 3 (Bullet), bodies kept in the plane by planar joints: the second verifier", BulletWorld)

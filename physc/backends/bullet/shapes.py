@@ -40,13 +40,13 @@ def centroid(shape: Circle | Polygon) -> tuple[float, float]:
 
 def polar_moment(shape: Circle | Polygon, mass: float) -> float:
     """The moment of inertia about the origin of the points (not the centroid), for `mass`
-    spread evenly over the shape."""
+    spread evenly over the shape (signed triangles from the origin: it may lie outside)."""
     if isinstance(shape, Circle):
         return mass * shape.radius**2 / 2
     points = shape.points
     numerator = denominator = 0.0
     for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
-        cross = abs(x0 * y1 - x1 * y0)
+        cross = x0 * y1 - x1 * y0
         numerator += cross * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
         denominator += cross
     return mass * numerator / (6 * denominator) if denominator else 0.0

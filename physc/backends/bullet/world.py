@@ -38,7 +38,7 @@ import attrs
 import numpy as np
 import pybullet
 
-from physc.backends import BackendError, BodySpec, ContactEvent
+from physc.backends import BackendError, BodySpec, ContactEvent, ContactLog
 from physc.backends.bullet.bodies import BODY_LINK, JOINTS, SKIN, collision_shape, planar_body, static_body
 from physc.backends.bullet.restitution import raised
 from physc.backends.bullet.shapes import area, centroid, polar_moment
@@ -64,8 +64,9 @@ class Dynamic:
     gravity_scale: float
 
 
-class BulletWorld:
+class BulletWorld(ContactLog):
     def __init__(self, gravity: float):
+        super().__init__()
         self.client = pybullet.connect(pybullet.DIRECT)
         if self.client < 0:
             raise BackendError("pybullet could not start a physics client (DIRECT)")
@@ -76,9 +77,6 @@ class BulletWorld:
         self._name_of: dict[int, str] = {}  # Bullet id → name (Bullet gives a freed id to the next body)
         self._dynamic: dict[str, Dynamic] = {}
         self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
-        self._begun: list[ContactEvent] = []
-        self._ended: list[tuple[str, str]] = []
-        self._touching: dict[str, set[str]] = {}
         self._dt: float | None = None
         self._unlagged: set[str] = set()  # bodies set moving before the first step (set_velocity)
 
@@ -104,18 +102,14 @@ class BulletWorld:
         self.names.append(spec.name)
         self._id[spec.name] = body
         self._name_of[body] = spec.name
-        self._touching[spec.name] = set()
 
     def remove(self, name: str) -> None:
         """Take a body out. Its contacts end now, as in pymunk (reported by the next `ended`):
         Bullet gives a removed body's id to the next body added."""
         body = self._id.pop(name)
         for key in sorted(k for k in self._pairs if body in k):
-            a, b = self._name_of[key[0]], self._name_of[key[1]]
-            self._ended.append((a, b) if self._pairs[key][1] == key[0] else (b, a))
-            del self._pairs[key]
-        for other in self._touching.pop(name, set()):
-            self._touching.get(other, set()).discard(name)
+            self._parted(*self._names(self._pairs.pop(key)))
+        self._gone(name)
         pybullet.removeBody(body, physicsClientId=self.client)
         self.names.remove(name)
         self._dynamic.pop(name, None)
@@ -146,7 +140,7 @@ class BulletWorld:
         fired). Levels whose bodies do not overlap are not touched."""
         c = self.client
         pybullet.performCollisionDetection(physicsClientId=c)
-        if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
+        if not self._overlapping():
             return
         speeds = {name: self.state(name)[3:] for name in self._dynamic}  # a shot already fired keeps its speed
         pybullet.setGravity(0.0, 0.0, 0.0, physicsClientId=c)
@@ -154,11 +148,15 @@ class BulletWorld:
             for name in self._dynamic:
                 self._velocity(name, 0.0, 0.0, 0.0)
             pybullet.stepSimulation(physicsClientId=c)
-            if all(point[8] >= -SLOP for point in pybullet.getContactPoints(physicsClientId=c)):
+            if not self._overlapping():
                 break
         for name, (vx, vy, w) in speeds.items():
             self._velocity(name, vx, vy, w)
         pybullet.setGravity(0.0, -self.gravity, 0.0, physicsClientId=c)
+
+    def _overlapping(self) -> bool:
+        """Whether two bodies overlap by more than SLOP (as Bullet's last collision detection found)."""
+        return any(point[8] < -SLOP for point in pybullet.getContactPoints(physicsClientId=self.client))
 
     def _set_damping(self, name: str, body: int) -> None:
         """Box2D's ω ← ω / (1 + dt·c) each game step, as the revolute joint's damping: Bullet
@@ -175,14 +173,16 @@ class BulletWorld:
             self._configure(dt)
         before = {name: self.state(name) for name in self._dynamic}
         pairs = self._substeps(before)
-        bouncing = self._bouncing(pairs, before)
+        events = self._new_contacts(pairs, before)
+        bouncing = self._bouncing(pairs, events)
         if bouncing:  # once more from the start, with Box2D's restitution for those pairs
             for name, state in before.items():
                 self._restore(name, state)
             self._restitution(bouncing)
             pairs = self._substeps(before)
             self._restitution({name: self._dynamic[name].bounciness for name in bouncing})
-        self._contacts(pairs, before)
+            events = self._new_contacts(pairs, before)
+        self._contacts(pairs, events)
 
     def _substeps(self, before: dict[str, tuple]) -> dict[tuple[int, int], tuple]:
         """The Bullet steps of one game step; the pairs that touched in them."""
@@ -202,17 +202,16 @@ class BulletWorld:
             self._touched(pairs)
         return pairs
 
-    def _bouncing(self, pairs: dict, before: dict[str, tuple]) -> dict[str, float]:
+    def _bouncing(self, pairs: dict, events: list[ContactEvent]) -> dict[str, float]:
         """The restitution, for the step again, of each body that began touching a dynamic
         body of less bounciness, fast, and touched nothing else (physc.backends.bullet.restitution)."""
         partners: dict[str, list[str]] = {}
-        for key in pairs:
-            a, b = self._name_of[key[0]], self._name_of[key[1]]
+        for point in pairs.values():
+            a, b = self._names(point)
             partners.setdefault(a, []).append(b)
             partners.setdefault(b, []).append(a)
         raised_to: dict[str, float] = {}
-        for key in sorted(pairs.keys() - self._pairs.keys()):
-            event = self._event(pairs[key], before)
+        for event in events:
             a, b = event.a, event.b
             if a not in self._dynamic or b not in self._dynamic or self._dynamic[a].bounciness == self._dynamic[b].bounciness:
                 continue
@@ -243,23 +242,25 @@ class BulletWorld:
             if key not in pairs:
                 pairs[key] = point
 
-    def _contacts(self, pairs: dict[tuple[int, int], tuple], before: dict[str, tuple]) -> None:
-        """The pairs touching in a game step's Bullet steps; the differences from the last
-        game step as events."""
-        for key in sorted(pairs.keys() - self._pairs.keys()):
-            self._begun.append(self._event(pairs[key], before))
-            a, b = self._name_of[key[0]], self._name_of[key[1]]
-            self._touching[a].add(b)
-            self._touching[b].add(a)
+    def _new_contacts(self, pairs: dict[tuple[int, int], tuple], before: dict[str, tuple]) -> list[ContactEvent]:
+        """The contacts of `pairs` that the last game step did not have, in a fixed order."""
+        return [self._event(pairs[key], before) for key in sorted(pairs.keys() - self._pairs.keys())]
+
+    def _contacts(self, pairs: dict[tuple[int, int], tuple], events: list[ContactEvent]) -> None:
+        """The pairs touching in a game step's Bullet steps: those new to it began (`events`),
+        those gone from it ended."""
+        for event in events:
+            self._began(event)
         for key in sorted(self._pairs.keys() - pairs.keys()):
-            a, b = self._name_of[key[0]], self._name_of[key[1]]
-            self._ended.append((a, b) if self._pairs[key][1] == key[0] else (b, a))
-            self._touching.get(a, set()).discard(b)
-            self._touching.get(b, set()).discard(a)
+            self._parted(*self._names(self._pairs[key]))
         self._pairs = pairs
 
+    def _names(self, point: tuple) -> tuple[str, str]:
+        """The two bodies of a contact point, in Bullet's order (A, B)."""
+        return self._name_of[point[1]], self._name_of[point[2]]
+
     def _event(self, point: tuple, before: dict[str, tuple]) -> ContactEvent:
-        a, b = self._name_of[point[1]], self._name_of[point[2]]
+        a, b = self._names(point)
         px, py = point[5][0], point[5][1]
         va = self._point_velocity(a, before.get(a), px, py)
         vb = self._point_velocity(b, before.get(b), px, py)
@@ -315,7 +316,7 @@ class BulletWorld:
             self._unlag(name)
 
     def _unlag(self, name: str) -> None:
-        x, y, angle, vx, vy, w = self.state(name)
+        vx, vy, w = self.state(name)[3:]
         lag = self.gravity * self._dynamic[name].gravity_scale * self._dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
         self._velocity(name, vx, vy + lag, w)
 
@@ -334,15 +335,4 @@ class BulletWorld:
 
     def mass(self, name: str) -> float:
         return self._dynamic[name].mass
-
-    def begun(self) -> list[ContactEvent]:
-        events, self._begun = self._begun, []
-        return events
-
-    def ended(self) -> list[tuple[str, str]]:
-        events, self._ended = self._ended, []
-        return events
-
-    def touching(self, name: str) -> set[str]:
-        return set(self._touching.get(name, ()))
 

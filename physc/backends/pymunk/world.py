@@ -27,7 +27,7 @@ import numpy as np
 import pymunk
 import pymunk.batch
 
-from physc.backends import BodySpec, Circle, ContactEvent
+from physc.backends import BodySpec, Circle, ContactEvent, ContactLog
 
 ITERATIONS = 10
 SLOP = 0.005  # Box2D's linear slop
@@ -51,8 +51,9 @@ def _velocity_function(scale: float):
     return update
 
 
-class PymunkWorld:
+class PymunkWorld(ContactLog):
     def __init__(self, gravity: float):
+        super().__init__()
         self.space = pymunk.Space()
         self.space.gravity = (0.0, -gravity)
         self.space.iterations = ITERATIONS
@@ -65,9 +66,6 @@ class PymunkWorld:
         self.shapes: dict[str, pymunk.Shape] = {}
         self._name_of: dict[int, str] = {}
         self._bounciness: dict[int, float] = {}
-        self._begun: list[ContactEvent] = []
-        self._ended: list[tuple[str, str]] = []
-        self._touching: dict[str, set[str]] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
         # One batched read of every body per step (pymunk.batch's own call, without
         # building its request anew each time): the buffer, the request, the reader, and
@@ -124,7 +122,6 @@ class PymunkWorld:
         self.shapes[spec.name] = shape
         self._name_of[id(shape)] = spec.name
         self._bounciness[id(shape)] = spec.bounciness
-        self._touching[spec.name] = set()
 
     def remove(self, name: str) -> None:
         body, shape = self.bodies.pop(name), self.shapes.pop(name)
@@ -133,8 +130,7 @@ class PymunkWorld:
         self.space.remove(body, shape)
         self._changed = True
         self.names.remove(name)
-        for other in self._touching.pop(name, ()):
-            self._touching.get(other, set()).discard(name)
+        self._gone(name)
 
     # ---- running -----------------------------------------------------------------
     def step(self, dt: float) -> None:
@@ -192,18 +188,10 @@ class PymunkWorld:
     def mass(self, name: str) -> float:
         return self.bodies[name].mass
 
-    def begun(self) -> list[ContactEvent]:
-        events, self._begun = self._begun, []
-        return events
-
     def ended(self) -> list[tuple[str, str]]:
         # Chipmunk reports separations while walking a hash set keyed by memory addresses:
         # their order within a step would vary from process to process.
-        events, self._ended = sorted(self._ended), []
-        return events
-
-    def touching(self, name: str) -> set[str]:
-        return set(self._touching.get(name, ()))
+        return sorted(super().ended())
 
     # ---- collision callbacks -------------------------------------------------------
     def _pair(self, arbiter):
@@ -220,19 +208,7 @@ class PymunkWorld:
         va = body_a.velocity_at_world_point(point)
         vb = body_b.velocity_at_world_point(point)
         normal = arbiter.normal
-        self._begun.append(
-            ContactEvent(
-                a,
-                b,
-                (point.x, point.y),
-                (normal.x, normal.y),
-                (va.x - vb.x, va.y - vb.y),
-                (va.x, va.y),
-                (vb.x, vb.y),
-            )
-        )
-        self._touching[a].add(b)
-        self._touching[b].add(a)
+        self._began(ContactEvent(a, b, (point.x, point.y), (normal.x, normal.y), (va.x - vb.x, va.y - vb.y), (va.x, va.y), (vb.x, vb.y)))
         # Box2D's restitution of a pair is the larger one. Chipmunk takes the
         # product every step, but the bounce of an impact is computed in the step
         # the contact begins, right after this callback: set it here.
@@ -242,8 +218,4 @@ class PymunkWorld:
         a, b = self._pair(arbiter)
         if a is None or b is None:
             return
-        self._ended.append((a, b))
-        if a in self._touching:
-            self._touching[a].discard(b)
-        if b in self._touching:
-            self._touching[b].discard(a)
+        self._parted(a, b)
