@@ -40,17 +40,17 @@ def test_documented_example_prints_what_the_doc_says(code, tmp_path, monkeypatch
 
 
 def test_broken_plugin_is_e0702(tmp_path, monkeypatch):
-    broken = EntryPoint("phyre", "phyre_physc_missing:DOMAIN", domains.ENTRY_POINT_GROUP)
-    monkeypatch.setattr(domains, "installed_domains", lambda: {"phyre": broken})
+    broken = EntryPoint("marbles", "marbles_physc_missing:DOMAIN", domains.ENTRY_POINT_GROUP)
+    monkeypatch.setattr(domains, "installed_domains", lambda: {"marbles": broken})
     domains.load_domain.cache_clear()
     try:
         path = tmp_path / "scenario.phys"
-        path.write_text("scenario SF {\n    domain phyre\n    interactions { hit(bird, pig, any) }\n}\n")
+        path.write_text("scenario SF {\n    domain marbles\n    interactions { hit(bird, pig, any) }\n}\n")
         run = run_physc("check", "-q", "--color", "never", path)
     finally:
         domains.load_domain.cache_clear()
     assert run.status == 2
     assert (
-        f"{path}:2:12: error[E0702]: the plugin of domain 'phyre' (phyre_physc_missing:DOMAIN) fails to load: "
-        "No module named 'phyre_physc_missing'"
+        f"{path}:2:12: error[E0702]: the plugin of domain 'marbles' (marbles_physc_missing:DOMAIN) fails to load: "
+        "No module named 'marbles_physc_missing'"
     ) in run.stderr

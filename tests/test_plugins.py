@@ -43,8 +43,8 @@ def install(tmp_path, monkeypatch):
 
 
 @pytest.fixture
-def phyre_domain(install):
-    install("phyre", re.search(r"```python\n# phyre_physc/__init__.py\n(.*?)```", PLUGINS, re.S).group(1))
+def marbles_domain(install):
+    install("marbles", re.search(r"```python\n# marbles_physc/__init__.py\n(.*?)```", PLUGINS, re.S).group(1))
 
 
 def write_scenario(tmp_path, domain: str):
@@ -53,16 +53,16 @@ def write_scenario(tmp_path, domain: str):
     return path
 
 
-def test_documented_plugin_domain(phyre_domain, tmp_path):
+def test_documented_plugin_domain(marbles_domain, tmp_path):
     good = tmp_path / "good.phys"
-    good.write_text("scenario P { domain phyre interactions { hit(ball, target, left) > destroy(ball, target) } }\n")
+    good.write_text("scenario P { domain marbles interactions { hit(ball, target, left) > destroy(ball, target) } }\n")
     assert run_physc("check", good).status == 0
     bad = tmp_path / "bad.phys"
-    bad.write_text("scenario P { domain phyre interactions { hit(ball, bar, left) > roll(ball, bar, left) } }\n")
+    bad.write_text("scenario P { domain marbles interactions { hit(ball, bar, left) > roll(ball, bar, left) } }\n")
     run = run_physc("check", "--color", "never", bad)
     assert run.status == 1 and "error[E0201]: unknown interaction term 'roll'" in run.stderr
-    listing = run_physc("domains", "phyre").stdout
-    assert listing.startswith("phyre: PHYRE-like tasks")
+    listing = run_physc("domains", "marbles").stdout
+    assert listing.startswith("marbles: Marble runs")
 
 
 def test_domains_come_from_entry_points():
@@ -70,18 +70,18 @@ def test_domains_come_from_entry_points():
     assert domains.load_domain("angrybirds").vocabulary.player == "bird"
 
 
-def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(phyre_domain):
-    domain = domains.load_domain("phyre")
+def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(marbles_domain):
+    domain = domains.load_domain("marbles")
     assert isinstance(domain, Domain)
     assert missing(domain, STAGE_NEEDS["level"] + ("picture", "replay")) == CAPABILITIES
     assert domain.reach_targets(None) == [] and domain.reachable(-1e6, 1e6) and domain.robustness_replays is None
-    with pytest.raises(MissingCapability, match="the domain 'phyre' cannot .* it has no picture"):
+    with pytest.raises(MissingCapability, match="the domain 'marbles' cannot .* it has no picture"):
         domain.picture(None)
 
 
-def test_a_vocabulary_only_domain_checks_and_refuses_to_generate(phyre_domain, tmp_path, monkeypatch):
+def test_a_vocabulary_only_domain_checks_and_refuses_to_generate(marbles_domain, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    write_scenario(tmp_path, "phyre")
+    write_scenario(tmp_path, "marbles")
     assert run_physc("check", "scenario.phys").status == 0
     assert run_physc("compile", "--emit", "scenario", "scenario.phys").status == 0
     # The default stage, level: what docs/errors.md shows for E0703, exit 2, before any work.
@@ -89,11 +89,11 @@ def test_a_vocabulary_only_domain_checks_and_refuses_to_generate(phyre_domain, t
     run = run_physc(*command.split(), "--color", "never")
     assert (run.status, run.stderr, run.stdout) == (2, expected, "")
     run = run_physc("compile", "-q", "--color", "never", "--emit", "layout-graph", "scenario.phys")
-    assert run.status == 2 and "error[E0703]: the domain 'phyre' cannot do what --emit layout-graph needs: it has no layout_rules\n" in run.stderr
+    assert run.status == 2 and "error[E0703]: the domain 'marbles' cannot do what --emit layout-graph needs: it has no layout_rules\n" in run.stderr
     run = run_physc("compile", "-q", "--color", "never", "--emit", "task", "--png", "task.png", "scenario.phys")
     assert run.status == 2 and "it has no layout_rules, layout_parameters, concretize, satisfy, picture\n" in run.stderr
     run = run_physc("eval", "-q", "--color", "never", "scenario.phys", "--out", "results")
-    assert run.status == 2 and "scenario.phys: error[E0703]: the domain 'phyre' cannot do what physc eval needs" in run.stderr
+    assert run.status == 2 and "scenario.phys: error[E0703]: the domain 'marbles' cannot do what physc eval needs" in run.stderr
     assert not (tmp_path / "task.png").exists() and not (tmp_path / "results").exists()
 
 
