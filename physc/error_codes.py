@@ -56,7 +56,7 @@ _CODES = [
     ErrorCode("E0401", "error", "the first interaction is not performed by the player's object"),
     ErrorCode("E0402", "error", "an object acts before anything set it in motion"),
     ErrorCode("E0403", "error", "destroy(a, b) without an earlier hit(a, b, ...)"),
-    ErrorCode("E0404", "error", "a pig that no interaction destroys"),
+    ErrorCode("E0404", "error", "a goal object that no interaction completes"),
     ErrorCode("E0405", "error", "an object takes part in an interaction after it was destroyed"),
     ErrorCode("E0501", "error", "a restriction leaves an interaction no allowed direction"),
     ErrorCode("E0502", "error", "a restriction forbids an interaction of the sequence"),

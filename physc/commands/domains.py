@@ -60,5 +60,6 @@ def _describe_domain(domain) -> str:
     lines.append(f"  static objects: {', '.join(statics)}")
     aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
     lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))
-    lines.append(f"  the player moves: {vocabulary.player}; goals (all must be destroyed): {vocabulary.goal}")
+    rule = f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""
+    lines.append(f"  the player moves: {vocabulary.player}; goals: {vocabulary.goal}{rule}")
     return "\n".join(lines)

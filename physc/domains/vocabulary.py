@@ -10,7 +10,9 @@ The grammar knows no domain words. A domain declares:
   destroyed), so the static checks of the language stay domain-agnostic;
 * its **directions**, with aliases such as `any`;
 * which object term the player sets in motion (the shot) and which objects are
-  goals (every goal must be destroyed).
+  goals, with how the goal is met (angrybirds: every pig must be destroyed; a PHYRE-like
+  domain: the green object must touch the target): an interaction with a `completes`
+  parameter meets it for that parameter's object.
 """
 
 from __future__ import annotations
@@ -66,7 +68,8 @@ class Parameter:
     default: tuple[str, ...] | None = None
     acts: bool = False  # the object acts: it must already be in motion
     moves: bool = False  # the interaction sets the object in motion
-    destroys: bool = False  # the interaction destroys the object
+    destroys: bool = False  # the interaction destroys the object (it takes part in nothing after)
+    completes: bool = False  # the interaction meets the domain's goal for the object (E0404)
     redirects: bool = False  # the interaction changes the object's course (a bounce)
 
 
@@ -107,7 +110,9 @@ class Vocabulary:
     terms: tuple[TermSignature, ...]
     direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
     player: str = ""  # object term of what the player sets in motion
-    goal: str = ""  # object term of the objects that must all be destroyed
+    goal: str = ""  # object term of the goal objects: each must meet the goal (an interaction `completes` it)
+    goal_unmet: str = "never meets the goal"  # what E0404 says of a goal object no interaction completes
+    goal_rule: str = ""  # when a task is solved, for messages ("a task is solved when every pig is destroyed")
     # Derived in __attrs_post_init__: every direction word, aliases included.
     directions: tuple[str, ...] = attrs.field(init=False, default=())
 

@@ -125,12 +125,15 @@ def _mover(vocabulary: Vocabulary) -> TermSignature | None:
     return None
 
 
-def _destroyer(vocabulary: Vocabulary) -> TermSignature | None:
-    """The interaction that destroys its second object (angrybirds: destroy)."""
+def _completer(vocabulary: Vocabulary) -> tuple[TermSignature, int] | None:
+    """The interaction that meets the goal for one of its two objects, and that object's
+    position (angrybirds: destroy, 1; a PHYRE-like domain: touch, 0)."""
     for signature in vocabulary.terms:
         parameters = signature.object_parameters
-        if signature.kind == INTERACTION and len(parameters) == 2 and parameters[1].destroys:
-            return signature
+        if signature.kind == INTERACTION and len(parameters) == 2:
+            for position, parameter in enumerate(parameters):
+                if parameter.completes:
+                    return signature, position
     return None
 
 
@@ -162,19 +165,29 @@ def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> str:
     return f"add an earlier interaction that sets it in motion, e.g. `{call(vocabulary, mover, (actor, obj))}`"
 
 
-def destroy_help(vocabulary: Vocabulary, goal: str, last, actor: str | None) -> str:
-    """Help for a goal that nothing destroys (E0404): interactions to add at the end of the sequence.
+def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, objects=None) -> str:
+    """Help for a goal object that no interaction completes (E0404): interactions to add at the
+    end of the sequence.
 
     `last` is the last interaction of the sequence (a resolved term), `actor` an object in motion at
-    its end that may collide with the goal (None: the player's object).
+    its end that may collide with the goal (None: the player's object), `objects` the scenario's
+    objects by name (for a goal met with another object that must fit a term: the first declared
+    one that does).
     """
-    destroyer, mover = _destroyer(vocabulary), _mover(vocabulary)
-    if destroyer is None:
-        return f"add an interaction that destroys '{goal}'"
-    if last is not None and last.signature.name == destroyer.requires and last.objects[1:2] == (goal,):
-        return f"add `> {call(vocabulary, destroyer, (last.objects[0], goal))}` at the end of the interactions"
+    found, mover = _completer(vocabulary), _mover(vocabulary)
+    if found is None:
+        return f"add an interaction that meets the goal for '{goal}'"
+    completer, position = found
+    if position == 0:  # the goal object acts on another (touch(green, target))
+        other = completer.object_parameters[1]
+        term = vocabulary.object_term(other.fits) if other.fits else None
+        partner = next((o.name for o in (objects or {}).values() if o.name != goal and term and vocabulary.fits(o.concrete, term.name)), None)
+        partner = partner or (term.abbreviation or term.name if term else actor or vocabulary.player)
+        return f"add `> {call(vocabulary, completer, (goal, partner))}` at the end of the interactions"
+    if last is not None and last.signature.name == completer.requires and last.objects[1:2] == (goal,):
+        return f"add `> {call(vocabulary, completer, (last.objects[0], goal))}` at the end of the interactions"
     actor = actor or vocabulary.player
-    added = f"> {call(vocabulary, destroyer, (actor, goal))}"
-    if mover is not None and destroyer.requires == mover.name:
+    added = f"> {call(vocabulary, completer, (actor, goal))}"
+    if mover is not None and completer.requires == mover.name:
         added = f"> {call(vocabulary, mover, (actor, goal), every_direction=True)} " + added
     return f"add `{added}` at the end of the interactions"

@@ -11,7 +11,7 @@ from __future__ import annotations
 import heapq
 
 from physc.diagnostics import Label, Span
-from physc.dsl.fixes import destroy_help, latest, motion_help, start_help
+from physc.dsl.fixes import goal_help, latest, motion_help, start_help
 
 
 class SequenceChecks:
@@ -24,6 +24,7 @@ class SequenceChecks:
         # The objects set in motion so far that could act, in the order they started (for help texts).
         movers: dict[str, None] = dict.fromkeys(sorted(players))
         destroyed: dict[str, Span] = {}
+        completed: set[str] = set()  # the goal objects an interaction meets the goal for
 
         def calm(name: str) -> bool:  # a goal that knocks another over is valid, but odd to propose
             return not vocabulary.fits(self.objects[name].concrete, vocabulary.goal)
@@ -90,12 +91,14 @@ class SequenceChecks:
                 if parameter.destroys:
                     destroyed.setdefault(obj, resolved.node.span)
                     movers.pop(obj, None)
+                if parameter.completes:
+                    completed.add(obj)
             seen.add((signature.name, resolved.objects[:2]))
         goal = vocabulary.goal
         last = interactions[-1] if interactions else None
         unhittable = None
         for obj in self.objects.values() if complete else ():
-            if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in destroyed:
+            if obj.name in self.unknown or not vocabulary.fits(obj.concrete, goal) or obj.name in completed:
                 continue
             if not obj.used:
                 continue
@@ -103,9 +106,9 @@ class SequenceChecks:
                 unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
             self.error(
                 "E0404",
-                f"the {goal} '{obj.name}' is never destroyed (a task is solved when every {goal} is destroyed)",
+                f"the {goal} '{obj.name}' {vocabulary.goal_unmet}" + (f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""),
                 obj.span,
-                help=destroy_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable)),
+                help=goal_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable), self.objects),
             )
 
     def actor_for(self, goal: str, movers: dict[str, None], unhittable: set) -> str | None:

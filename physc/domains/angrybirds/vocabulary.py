@@ -91,7 +91,7 @@ TERMS = (
     TermSignature(
         "destroy",
         INTERACTION,
-        (_actor(), Parameter("b", OBJECT, fits="pig", destroys=True)),
+        (_actor(), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
         "a destroys b in the collision",
         requires="hit",
     ),
@@ -122,4 +122,6 @@ VOCABULARY = Vocabulary(
     direction_aliases={"any": SIDES},
     player="bird",
     goal="pig",
+    goal_unmet="is never destroyed",
+    goal_rule="a task is solved when every pig is destroyed",
 )
