@@ -126,7 +126,7 @@ def test_a_plugin_that_is_not_a_domain_is_e0702(install, tmp_path, code, problem
 def test_duck_typed_plugins_keep_working_without_the_defaults(install, tmp_path):
     """An object that is not a Domain loads with the required attributes and runs every
     stage whose hooks it defines itself; it inherits no defaults, so E0703 names them."""
-    hooks = "    from physc.domains.angrybirds import layout_rules\n"
+    hooks = "    from physc.compiler.layout_rules import LayoutRules\n    layout_rules = LayoutRules(player='bird', flat='flatPlatform', ground='ground')\n"
     install("duck", DUCK.format(name="duck", body=VOCABULARY + hooks, call=""))
     path = tmp_path / "scenario.phys"
     path.write_text("scenario SF {\n    domain duck\n    interactions { hit(bird, pig, any) > destroy(bird, pig) }\n}\n")

@@ -42,9 +42,23 @@ class Polygon:
 
 
 @attrs.frozen
+class Compound:
+    """A body of several convex parts, rigidly joined (PHYRE's jar: a base and two walls).
+    Each part is about the body's origin; the body's contacts are the union of its parts'
+    (two bodies touch while any of their parts do)."""
+
+    parts: tuple[Circle | Polygon, ...]
+
+
+def parts(shape: Circle | Polygon | Compound) -> tuple[Circle | Polygon, ...]:
+    """The convex parts of a body's shape (a single shape is its own one part)."""
+    return shape.parts if isinstance(shape, Compound) else (shape,)
+
+
+@attrs.frozen
 class BodySpec:
     name: str
-    shape: Circle | Polygon
+    shape: Circle | Polygon | Compound
     x: float
     y: float
     angle: float = 0.0  # radians, counter-clockwise

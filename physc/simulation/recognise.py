@@ -26,6 +26,9 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
 * bounce(a, s, d): a moving object touches a surface s for less than bounce_time
   and leaves it; d is where its velocity points as it leaves.
 * destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
+* touch(a, b): the trace's goal bodies a and b (`Trace.goal`) touch without a break for
+  at least touch_time (PHYRE's goal: 3 s), recognised when the time is up; only in a
+  domain that sets touch_time.
 
 An interaction equal to the one just before it (one roll over two contact
 intervals, a double hit) is reported once.
@@ -46,7 +49,7 @@ import numpy as np
 from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
 
 MAX_TILT = 60.0  # degrees from the vertical: a surface steeper than this is a wall
-ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4}
+ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4, "touch": 5}
 
 
 @attrs.frozen
@@ -69,6 +72,7 @@ class Recogniser:
     background: tuple[str, ...] = ()  # kinds that are never a hit's target
     thrown: tuple[str, ...] = ()  # kinds whose flight is not a fall
     max_tilt: float = MAX_TILT
+    touch_time: float | None = None  # seconds two goal bodies must touch for touch(a, b); None: never recognised
 
     @property
     def upward(self) -> float:
@@ -88,6 +92,7 @@ class Recogniser:
             for d in trace.destructions
             if d.cause == "damage" and d.by is not None
         ]
+        found += self._touches(trace, intervals)
         ordered = sorted(found, key=lambda i: (round(i.time, 6), ORDER[i.name]))
         # One roll over two contact intervals, or a double hit, is one interaction.
         out = []
@@ -96,6 +101,20 @@ class Recogniser:
                 continue
             out.append(interaction)
         return tuple(out)
+
+    def _touches(self, trace: Trace, intervals) -> list[Interaction]:
+        """touch(a, b) for the goal bodies, in the order `Trace.goal` names them, each time
+        they touch for touch_time without a break (a run ended by the goal counts its
+        last step: within a step and a half of the time)."""
+        if self.touch_time is None or len(trace.goal) < 2:
+            return []
+        a, b = trace.goal[:2]
+        held = self.touch_time - 1.5 * trace.dt
+        return [
+            Interaction("touch", (a, b), None, begin + self.touch_time)
+            for begin, end in intervals.get(frozenset((a, b)), ())
+            if end - begin >= held
+        ]
 
     def _hits(self, trace: Trace) -> list[Interaction]:
         kinds = trace.kinds

@@ -7,11 +7,14 @@ when the rules say the run is over. What differs is the rules, so they are hooks
 `RunRules` object (Scenic's simulators keep the same split: a generic loop, a few
 hooks per simulator):
 
+* `on_start`: the world is built and about to run (a rule that asks the world who
+  touches whom keeps it);
 * `on_contact`: a contact began (Science Birds: damage);
 * `removals_due` / `gone` / `on_removed`: whether anything may leave this step (cheap,
   every step), why a body leaves (the destruction's cause and author), and what its
   leaving does (a TNT's blast);
-* `finished`: the run is over before its time (everything at rest, the goal met).
+* `finished`: the run is over before its time (everything at rest, the goal met);
+* `solved`: whether the recorded run met the domain's goal.
 
 The loop is generic and hot: it runs once per simulated step (0.02 s of game time), so
 each hook is one call per step at most and the state rows are handed over as plain
@@ -33,6 +36,9 @@ class RunRules:
     """The hooks of a run; the defaults are a world where nothing is damaged, nothing
     leaves and the run lasts its whole time."""
 
+    def on_start(self, world) -> None:
+        """The run is about to begin in `world`."""
+
     def on_contact(self, world, contact: ContactRecord, damage: list[DamageRecord], time: float) -> None:
         """A contact began at `time` (append what it damaged to `damage`)."""
 
@@ -50,6 +56,10 @@ class RunRules:
 
     def finished(self, values: list, alive: set[str], time: float) -> bool:
         """Whether the run is over at `time`, before its end."""
+        return False
+
+    def solved(self, recording: Recording) -> bool:
+        """Whether the run met the domain's goal (read once, after the run)."""
         return False
 
 
@@ -73,6 +83,7 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     states = np.full((steps, len(dynamic), 6), np.nan)
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
+    rules.on_start(world)
     for step in range(steps):
         budget.check()  # Ctrl-C and the time budget stop a run between steps
         world.step(dt)

@@ -7,7 +7,7 @@ import math
 
 import pybullet
 
-from physc.backends import BodySpec, Circle
+from physc.backends import BodySpec, Circle, Compound
 from physc.backends.bullet.shapes import Extent
 
 DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
@@ -20,7 +20,10 @@ BODY_LINK = 2  # the link that carries a planar body's shape
 
 def collision_shape(client: int, spec: BodySpec) -> int:
     """A sphere for a circle, a box for a centred rectangle, else the convex hull of the
-    polygon grown by SKIN, DEPTH deep."""
+    polygon grown by SKIN, DEPTH deep; for a compound, Bullet's compound of spheres and
+    turned boxes (its parts must be circles and rectangles: ValueError otherwise)."""
+    if isinstance(spec.shape, Compound):
+        return _compound(client, spec.shape)
     if isinstance(spec.shape, Circle):
         return pybullet.createCollisionShape(pybullet.GEOM_SPHERE, radius=spec.shape.radius, physicsClientId=client)
     box = Extent.of(spec.shape.points)
@@ -29,6 +32,31 @@ def collision_shape(client: int, spec: BodySpec) -> int:
         return pybullet.createCollisionShape(pybullet.GEOM_BOX, halfExtents=half, physicsClientId=client)
     vertices = [(x, y, z) for x, y in Extent.grown(spec.shape.points, SKIN) for z in (-DEPTH / 2, DEPTH / 2)]
     return pybullet.createCollisionShape(pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=client)
+
+
+def _compound(client: int, shape: Compound) -> int:
+    kinds, radii, halves, positions, turns = [], [], [], [], []
+    for part in shape.parts:
+        if isinstance(part, Circle):
+            kinds.append(pybullet.GEOM_SPHERE)
+            radii.append(part.radius)
+            halves.append((0.0, 0.0, 0.0))
+            positions.append((0.0, 0.0, 0.0))
+            turns.append((0.0, 0.0, 0.0, 1.0))
+            continue
+        box = Extent.turned(part.points)
+        if box is None:
+            raise ValueError("the bullet backend builds a compound body from circles and rectangles only")
+        (cx, cy), angle, width, height = box
+        kinds.append(pybullet.GEOM_BOX)
+        radii.append(0.0)
+        halves.append((width / 2 + SKIN, height / 2 + SKIN, DEPTH / 2))
+        positions.append((cx, cy, 0.0))
+        turns.append(pybullet.getQuaternionFromEuler((0.0, 0.0, angle)))
+    return pybullet.createCollisionShapeArray(
+        shapeTypes=kinds, radii=radii, halfExtents=halves, collisionFramePositions=positions,
+        collisionFrameOrientations=turns, physicsClientId=client,
+    )
 
 
 def friction(spec: BodySpec) -> float:

@@ -93,8 +93,8 @@ class BulletWorld(ContactLog):
             body = static_body(self.client, spec, shape)
         else:
             mass = spec.mass if spec.mass is not None else spec.density * area(spec.shape, SKIN)
-            centre = centroid(spec.shape)
-            inertia = polar_moment(spec.shape, mass) - mass * (centre[0] ** 2 + centre[1] ** 2)
+            centre = centroid(spec.shape, SKIN)
+            inertia = polar_moment(spec.shape, mass, SKIN) - mass * (centre[0] ** 2 + centre[1] ** 2)
             body = planar_body(self.client, spec, shape, mass, inertia, centre)
             self._dynamic[spec.name] = Dynamic(mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale)
             if self._dt is not None:

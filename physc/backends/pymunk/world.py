@@ -27,7 +27,7 @@ import numpy as np
 import pymunk
 import pymunk.batch
 
-from physc.backends import BodySpec, Circle, ContactEvent, ContactLog
+from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, parts
 
 ITERATIONS = 10
 SLOP = 0.005  # Box2D's linear slop
@@ -63,7 +63,8 @@ class PymunkWorld(ContactLog):
         self.gravity = gravity
         self.names: list[str] = []
         self.bodies: dict[str, pymunk.Body] = {}
-        self.shapes: dict[str, pymunk.Shape] = {}
+        self.shapes: dict[str, tuple[pymunk.Shape, ...]] = {}
+        self._shape_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
         self._name_of: dict[int, str] = {}
         self._bounciness: dict[int, float] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
@@ -96,18 +97,17 @@ class PymunkWorld(ContactLog):
             body = pymunk.Body()
         body.position = (spec.x, spec.y)
         body.angle = spec.angle
-        if isinstance(spec.shape, Circle):
-            shape = pymunk.Circle(body, spec.shape.radius)
-        else:
-            shape = pymunk.Poly(body, spec.shape.points, radius=SKIN)
-        if not spec.static:
-            if spec.mass is not None:
-                shape.mass = spec.mass
-            else:
-                shape.density = spec.density
-        shape.friction = math.sqrt(max(spec.friction, 0.0))
-        shape.elasticity = spec.bounciness
-        self.space.add(body, shape)
+        shapes = tuple(pymunk.Circle(body, s.radius) if isinstance(s, Circle) else pymunk.Poly(body, s.points, radius=SKIN) for s in parts(spec.shape))
+        total = sum(shape.area for shape in shapes)
+        for shape in shapes:
+            if not spec.static:
+                if spec.mass is not None:  # a given mass spread over the parts by area
+                    shape.mass = spec.mass * shape.area / total
+                else:
+                    shape.density = spec.density
+            shape.friction = math.sqrt(max(spec.friction, 0.0))
+            shape.elasticity = spec.bounciness
+        self.space.add(body, *shapes)
         self._changed = True
         if not spec.static and spec.gravity_scale != 1.0:
             body.velocity_func = _velocity_function(spec.gravity_scale)
@@ -119,15 +119,17 @@ class PymunkWorld(ContactLog):
             self._drags[spec.name] = drag
         self.names.append(spec.name)
         self.bodies[spec.name] = body
-        self.shapes[spec.name] = shape
-        self._name_of[id(shape)] = spec.name
-        self._bounciness[id(shape)] = spec.bounciness
+        self.shapes[spec.name] = shapes
+        for shape in shapes:
+            self._name_of[id(shape)] = spec.name
+            self._bounciness[id(shape)] = spec.bounciness
 
     def remove(self, name: str) -> None:
-        body, shape = self.bodies.pop(name), self.shapes.pop(name)
+        body, shapes = self.bodies.pop(name), self.shapes.pop(name)
         if name in self._drags:
             self.space.remove(self._drags.pop(name))
-        self.space.remove(body, shape)
+        self.space.remove(body, *shapes)
+        self._shape_contacts = {pair: n for pair, n in self._shape_contacts.items() if name not in pair}
         self._changed = True
         self.names.remove(name)
         self._gone(name)
@@ -198,9 +200,23 @@ class PymunkWorld(ContactLog):
         first, second = arbiter.shapes
         return self._name_of.get(id(first)), self._name_of.get(id(second))
 
+    def _counted(self, a: str, b: str, change: int) -> int:
+        """The parts of `a` and `b` in contact after `change` (a compound body's parts each
+        begin and end their own contacts; the bodies touch while any do)."""
+        key = (a, b) if a < b else (b, a)
+        count = self._shape_contacts.get(key, 0) + change
+        if count > 0:
+            self._shape_contacts[key] = count
+        else:
+            self._shape_contacts.pop(key, None)
+        return count
+
     def _on_begin(self, arbiter, space, data):
         a, b = self._pair(arbiter)
         if a is None or b is None:
+            return
+        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
+            arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])])
             return
         points = arbiter.contact_point_set.points
         point = points[0].point_a if points else arbiter.bodies[0].position
@@ -218,4 +234,5 @@ class PymunkWorld(ContactLog):
         a, b = self._pair(arbiter)
         if a is None or b is None:
             return
-        self._parted(a, b)
+        if self._counted(a, b, -1) == 0:
+            self._parted(a, b)

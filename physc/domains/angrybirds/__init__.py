@@ -7,7 +7,8 @@ noisy replays.
 """
 
 from physc.compiler.dimension_graphs import LayoutParameters
-from physc.domains.angrybirds import layout_rules, world
+from physc.compiler.layout_rules import LayoutRules
+from physc.domains.angrybirds import world
 from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
@@ -21,7 +22,7 @@ class AngryBirds(Domain):
     name = "angrybirds"
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY
-    layout_rules = layout_rules
+    layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right")
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
     layout_parameters = LayoutParameters(

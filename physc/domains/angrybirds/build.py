@@ -34,7 +34,7 @@ from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.domains.angrybirds.attempt import SECONDS
 from physc.domains.angrybirds.catalogue import extent, shape
-from physc.domains.angrybirds.layout_rules import OPPOSITE
+from physc.compiler.layout_rules import OPPOSITE
 from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.repairs import LANDING_SHARES, SETTLE_MOTION
 from physc.generation.sequential import ChainBuilder, Stage, State, stages

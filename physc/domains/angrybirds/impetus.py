@@ -25,7 +25,7 @@ import numpy as np
 from physc.domains.angrybirds.attempt import Attempt, _along, _span
 from physc.domains.angrybirds.catalogue import extent, shape
 from physc.domains.angrybirds.game import BIRD
-from physc.domains.angrybirds.layout_rules import OPPOSITE, last_hit_on
+from physc.compiler.layout_rules import OPPOSITE, last_hit_on
 from physc.domains.angrybirds.level import level_number
 from physc.domains.angrybirds.repairs import SETTLE_MOTION
 

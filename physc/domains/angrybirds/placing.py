@@ -20,7 +20,7 @@ import networkx as nx
 from physc.domains.angrybirds.attempt import _along, _span
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab, extent
 from physc.domains.angrybirds.game import BIRD
-from physc.domains.angrybirds.layout_rules import last_hit_on
+from physc.compiler.layout_rules import last_hit_on
 from physc.domains.angrybirds.level import Level, LevelObject, level_number
 from physc.domains.angrybirds.world import GROUND_TOP
 

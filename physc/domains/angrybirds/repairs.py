@@ -34,7 +34,7 @@ import numpy as np
 from physc.domains.angrybirds.attempt import Attempt, _along, _span
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, by_prefab, extent
 from physc.domains.angrybirds.game import BIRD
-from physc.domains.angrybirds.layout_rules import last_hit_on
+from physc.compiler.layout_rules import last_hit_on
 from physc.domains.angrybirds.level import level_number
 from physc.domains.angrybirds.obstruct import OBSTACLES
 from physc.domains.angrybirds.placing import MIN_PLATFORM

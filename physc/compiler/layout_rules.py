@@ -1,12 +1,16 @@
-"""Layout inference rules of the angrybirds domain.
+"""The paper's layout inference rules, for any domain of the paper's interactions.
 
-The paper's table "Inferred layout constraints":
+A domain configures them (`LayoutRules`: its player's object term, the concrete objects
+of a flat support and of the ground, and the way the player's object flies, if it flies
+one way) and hands them to the pipeline as its `layout_rules`; angrybirds and the
+PHYRE-like plugin both do. The paper's table "Inferred layout constraints":
 
     hit(a, b, d)      → liesOnPath(b, a) ∧ inDirection(b, a, -d)
     roll(a, b, d)     → inDirection(a, b, -d)
     fall(a, b, d)     → locatedFar(a, b, d)
                         (d = aboveLeft when d is above and the hit before the fall pushes
                         a right: it comes down ahead; see `pushes`)
+    destroy, touch    → nothing of their own (the hit or fall before them places them)
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d)
     cannotHit(a,b,d)  → pathObstructed(a, b, d)
@@ -15,13 +19,13 @@ The paper's table "Inferred layout constraints":
 and the layout optimisation that makes the task stand under gravity. Our precise
 reading (docs/qsr.md, "From scenario to layout"):
 
-* Every dynamic object except the player's bird rests on a support:
+* Every dynamic object except the player's object rests on a support:
   - an object hit sideways by an object that moves along surfaces rests on the
     last surface of that mover's path, on the side the mover comes towards
     (the target lies on the path);
   - otherwise an object that rolls or slides rests on a support platform of its
     own, which its path continues from (`roll(a, s, right)` puts `a` left of `s`);
-  - otherwise a new support: a platform, or the ground, at any location; for an
+  - otherwise a new support: a flat support, or the ground, at any location; for an
     object that will fall, a platform it can be pushed off (on the part of it that
     the hit pushes it towards).
 * The path of an object that rolls or slides: its support, then its surfaces in
@@ -30,7 +34,7 @@ reading (docs/qsr.md, "From scenario to layout"):
   `touching(p, q, upperLeft)` (p's upper-right point is q's upper-left: one
   continuous top edge); for a path towards the left the arguments swap.
 * A surface that a dynamic object rests on is horizontal (an inclined one would
-  not hold it still): such surfaces are narrowed to flatPlatform.
+  not hold it still): such surfaces are narrowed to the flat support.
 """
 
 from __future__ import annotations
@@ -50,26 +54,44 @@ from physc.compiler.layout_graph import (
     LayoutNode,
     Provenance,
 )
+import attrs
+
 from physc.dsl.scenario import ScenarioIR, TermIR
 
 OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
 SIDES = ("left", "right", "above", "below")
 AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed right, a faller starts above its target or up to its left
-FLAT = "flatPlatform"
-GROUND = "ground"
 
 
 def opposite(directions) -> tuple[str, ...]:
     return tuple(OPPOSITE[d] for d in directions)
 
 
+@attrs.frozen
+class LayoutRules:
+    """The rules (module docstring) for one domain: `player`, the object term the player
+    sets in motion; `flat`, the concrete object of a horizontal support; `ground`, that of
+    the ground (None: the domain has none to rest on); `player_heading`, the way the
+    player's object flies until it bounces ("right": Angry Birds' bird, shot from the left;
+    None: no one way, a dropped ball)."""
+
+    player: str
+    flat: str
+    ground: str | None = None
+    player_heading: str | None = None
+
+    def infer(self, scenario: ScenarioIR) -> LayoutGraph:
+        return infer(scenario, self)
+
+
 class _Builder:
-    def __init__(self, scenario: ScenarioIR):
+    def __init__(self, scenario: ScenarioIR, rules: LayoutRules):
         self.scenario = scenario
+        self.flat = rules.flat
         self.nodes: dict[str, LayoutNode] = {}
         self.edges: list[LayoutEdge] = []
         for obj in scenario.objects:
-            role = PLAYER if obj.term == "bird" else OBJECT
+            role = PLAYER if obj.term == rules.player else OBJECT
             self.nodes[obj.name] = LayoutNode(obj.name, obj.term, obj.concrete, obj.static, role)
 
     def edge(self, term, a, b, values, provenance: Provenance):
@@ -84,20 +106,23 @@ class _Builder:
 
     def narrow_to_flat(self, name: str) -> None:
         """A scenario surface that something rests on must be horizontal."""
-        node = self.nodes[name]
-        if node.role != SUPPORT and FLAT in node.concrete and node.concrete != (FLAT,):
-            self.nodes[name] = LayoutNode(node.name, node.term, (FLAT,), node.static, node.role)
+        node, flat = self.nodes[name], self.flat
+        if node.role != SUPPORT and flat in node.concrete and node.concrete != (flat,):
+            self.nodes[name] = LayoutNode(node.name, node.term, (flat,), node.static, node.role)
 
 
 def _interaction_provenance(term: TermIR) -> Provenance:
     return Provenance("interaction", term.text, term.span)
 
 
-def infer(scenario: ScenarioIR) -> LayoutGraph:
-    b = _Builder(scenario)
+def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
+    b = _Builder(scenario, rules)
+    FLAT = rules.flat
+    anywhere = (FLAT,) if rules.ground is None else (FLAT, rules.ground)  # a support that need not be a ledge
     # A list, not a set: iteration order must not depend on string hashing.
-    dynamic = [o.name for o in scenario.objects if not o.static and o.term != "bird"]
-    players = {o.name for o in scenario.objects if o.term == "bird"}
+    dynamic = [o.name for o in scenario.objects if not o.static and o.term != rules.player]
+    players = {o.name for o in scenario.objects if o.term == rules.player}
+    flies = rules.player_heading
 
     # 1. The paper's table.
     for position, term in enumerate(scenario.interactions):
@@ -110,7 +135,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
-            pushed = None if hit is None else pushes(scenario.interactions, hit, players)
+            pushed = None if hit is None else pushes(scenario.interactions, hit, players, flies)
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
@@ -164,9 +189,9 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
             b.edge(ON_LOCATION, target, own, (toward,), Provenance("support", f"{target} starts beside the surface it moves on: {first.text}", first.span))
             support[target] = own
         else:
-            own = b.support_node(target, (FLAT,) if target in falls else (FLAT, GROUND))
+            own = b.support_node(target, (FLAT,) if target in falls else anywhere)
             if target in falls:
-                pushed = pushes(scenario.interactions, position, players)
+                pushed = pushes(scenario.interactions, position, players, flies)
                 locations = (pushed,) if pushed else tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
                 text = f"{target} rests where it can be pushed off to fall: {term.text}"
             else:
@@ -183,7 +208,7 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     # Dynamic objects that nothing hits (they never move) still need a support.
     for name in dynamic:
         if name not in support:
-            own = b.support_node(name, (FLAT, GROUND))
+            own = b.support_node(name, anywhere)
             b.edge(ON_LOCATION, name, own, ("left", "centre", "right"), Provenance("support", f"{name} rests on a support", None))
             support[name] = own
     # Objects at rest on a surface: that surface is horizontal.
@@ -206,18 +231,18 @@ def infer(scenario: ScenarioIR) -> LayoutGraph:
     return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
 
 
-def pushes(interactions, position: int, players: set[str]) -> str | None:
+def pushes(interactions, position: int, players: set[str], heading: str | None = "right") -> str | None:
     """The way (left or right) that the hit `interactions[position]` pushes its target, if
     known: away from the one side it is declared from (from the left: to the right). A hit
     declared otherwise (`left ∨ above`, `any`) pushes the way its actor flies, if that is
-    known: the player's bird, launched from the slingshot at the left edge of the level,
-    flies to the right until it has bounced."""
+    known: the player's object flies `heading` until it has bounced (Angry Birds' bird,
+    launched from the slingshot at the left edge of the level, to the right)."""
     hit, before = interactions[position], interactions[:position]
     if len(hit.directions) == 1 and hit.directions[0] in ("left", "right"):
         return OPPOSITE[hit.directions[0]]
     actor = hit.objects[0]
-    if actor in players and not any(t.name == "bounce" and t.objects[0] == actor for t in before):
-        return "right"
+    if heading is not None and actor in players and not any(t.name == "bounce" and t.objects[0] == actor for t in before):
+        return heading
     return None
 
 

@@ -1,0 +1,158 @@
+"""A domain whose task is one action of the player in a scene that simulation judges.
+
+Most physical-reasoning benchmarks are of this kind (PHYRE: place a ball; a marble run:
+drop a marble): the player acts once, the world runs, a goal is met or not. Such a
+domain subclasses `SimulatedDomain` and writes only what differs, as a sqlglot dialect
+does:
+
+* `level_from_layout(layout)`: the placed layout as the domain's level;
+* `scene(level, action)`: the level as physics (a physc.simulation.scene.Scene), the
+  action taken (None: no action);
+* `actions(level, scenario)`: the candidate actions, labelled (the paper's points of
+  interest of the first target);
+* `rules(level)`: the run's rules (physc.simulation.run.RunRules: when the goal is met,
+  when the run is over), and `recogniser`, `seconds`, `stable_limit`;
+* for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
+  `random_action(rng)` and `valid(level, action)`;
+* `solution(label, action)` / `action_of(solution)`: the task file's record of an action.
+
+Everything else is physc's: the search that makes a placed layout a task
+(physc.generation.search.ActionSearch, behind `satisfy`), the robustness replays,
+stability, the replays of `physc verify` and the evaluation's measurements
+(intended solvability, the random agent's accidental solvability and AUCCESS).
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+from physc.domains.base import Domain, MissingCapability, _no_default, require
+from physc.simulation.recognise import Recogniser
+from physc.simulation.run import RunRules
+from physc.simulation.scene import Scene, play
+from physc.simulation.stability import stable
+from physc.simulation.trace import Trace
+
+# What a simulated domain must write for generation (checked before `satisfy` runs).
+HOOKS = ("level_from_layout", "scene", "actions")
+AGENT_ATTEMPTS = 100  # the random agent's valid attempts per task (PHYRE's evaluation)
+AGENT_DRAWS = 100_000  # draws it may make to find them (PHYRE samples from 100,000 actions)
+
+
+def auccess(first_solved: int | None, attempts: int = AGENT_ATTEMPTS) -> float:
+    """PHYRE's AUCCESS of one task for an agent that first solved it at attempt
+    `first_solved` (1-based; None: never): Σ_k w_k s_k / Σ_k w_k with w_k = ln(k+1) − ln k,
+    s_k = 1 from that attempt on. The mean over tasks is the AUCCESS of the set."""
+    if first_solved is None or first_solved > attempts:
+        return 0.0
+    weights = sum(math.log(k + 1) - math.log(k) for k in range(first_solved, attempts + 1))
+    return weights / math.log(attempts + 1)
+
+
+class SimulatedDomain(Domain):
+    """The base class of a one-action domain (module docstring): the generation, replay and
+    measurement hooks of `Domain` from a few of its own."""
+
+    recogniser: Recogniser | None = None
+    """The domain's recognition of interactions (thresholds in its units, its kinds)."""
+
+    seconds: float = 10.0
+    """A play's simulated time at most."""
+
+    stable_limit: float = 0.05
+    """How far (in the domain's units) a body may move, left alone for `seconds`, in a level
+    that stands."""
+
+    robustness_replays = 6  # noisy replays a generated solution must pass
+
+    # ---- what the domain writes ---------------------------------------------------------
+    @_no_default
+    def level_from_layout(self, layout):
+        """The placed layout (a ConcreteLayout) as the domain's level."""
+        raise MissingCapability(self.name, ("level_from_layout",), "generating a task")
+
+    @_no_default
+    def scene(self, level, action) -> Scene:
+        """The level as physics, with `action` taken (None: the level left alone)."""
+        raise MissingCapability(self.name, ("scene",), "simulating a level")
+
+    @_no_default
+    def actions(self, level, scenario) -> list[tuple[str, object]]:
+        """(label, action) for every candidate action, in the order they are tried."""
+        raise MissingCapability(self.name, ("actions",), "generating a task")
+
+    def rules(self, level) -> RunRules:
+        """The rules of a run in `level` (when the goal is met, when the run is over): a new
+        object per run, as rules keep the run's state."""
+        return RunRules()
+
+    def noisy(self, level, action, rng: random.Random):
+        """(level, action) as one noisy replay draws them from `rng`: the domain's noise
+        model. The default has none: robustness replays are exact replays."""
+        return level, action
+
+    def random_action(self, rng: random.Random):
+        """An action drawn as the evaluation's random agent draws one (None: the domain has
+        no random agent, and no accidental solvability is measured)."""
+        return None
+
+    def valid(self, level, action) -> bool:
+        """Whether `action` may be taken in `level` (PHYRE: the ball occludes nothing)."""
+        return True
+
+    def solution(self, label: str, action):
+        """The task's record of the action found (an attrs value; the default: the action)."""
+        return action
+
+    def action_of(self, solution):
+        """The action a task's recorded solution takes (the inverse of `solution`)."""
+        return solution
+
+    # ---- what physc does with them --------------------------------------------------------
+    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True) -> Trace:
+        """`level` played with `action` in the selected backend; judged against `scenario`'s
+        restrictions and declared bounces when one is given."""
+        restrictions = scenario.restrictions if scenario is not None else ()
+        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
+        return play(
+            self.scene(level, action), self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise
+        )
+
+    def replay(self, level, solution, scenario, rng=None):
+        action = self.action_of(solution)
+        if rng is not None:
+            level, action = self.noisy(level, action, rng)
+        return self.play(level, action, scenario)
+
+    def stability(self, level) -> tuple[bool, float]:
+        """(stable, the largest shift) of `level` left alone for `seconds`."""
+        return stable(self.play(level, None, recognise=False), self.stable_limit)
+
+    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
+        """The generic search (physc.generation.search.ActionSearch) with this domain's hooks."""
+        from physc.generation.search import ActionSearch
+
+        require(self, HOOKS, "generating a task")
+        return ActionSearch(self, scenario, layout, self.robustness_replays if accept is None else accept, validate).run()
+
+    def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
+        """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn
+        from `rng`, each played; the fraction that solve the level, and the task's AUCCESS.
+        Empty when the domain has no random agent."""
+        attempts, solved, first = 0, 0, None
+        for _ in range(AGENT_DRAWS):
+            if attempts == AGENT_ATTEMPTS:
+                break
+            action = self.random_action(rng)
+            if action is None:
+                return {}
+            if not self.valid(level, action):
+                continue
+            attempts += 1
+            if self.play(level, action, recognise=False).solved:
+                solved += 1
+                first = first or attempts
+        if not attempts:
+            return {"accidental": None, "agent_plays": 0}
+        return {"accidental": round(solved / attempts, 5), "agent_plays": attempts, "auccess": round(auccess(first), 5)}

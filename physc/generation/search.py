@@ -1,0 +1,127 @@
+"""The action search: a placed layout made a task by simulating candidate actions.
+
+The generic satisfier of a one-action domain (physc.domains.simulated): the paper's
+step 4 without a domain's own repairs. For one placed layout it
+
+1. gives the layout up unless it stands (left alone, nothing moves more than the
+   domain's limit);
+2. simulates every candidate action the domain offers (the first target's points of
+   interest), judging each trace against the scenario (sequence fidelity, restrictions,
+   goal);
+3. keeps the first working action that passes `accept` of the domain's noisy replays,
+   and as many fresh ones (a confirmation: it was chosen for passing the first);
+4. validates it once more (unless told not to).
+
+Every simulation goes through an Evaluator, which counts it: the figure generation's
+cost is measured in. Noise is drawn from generators named after the action's label, so a
+seed gives the same task in any process.
+"""
+
+from __future__ import annotations
+
+import random
+
+import attrs
+
+from physc.generation.evaluator import Evaluator
+from physc.generation.outcome import Outcome, Parts
+from physc.simulation.fidelity import Fidelity, fidelity
+from physc.simulation.stopped import why_stopped
+from physc.simulation.trace import Trace
+
+NOISE_STREAMS = ("robustness", "confirmation")  # the replays an action is chosen for, and the fresh ones that confirm it
+CANDIDATES = 3  # working actions put through the noisy replays at most, per layout
+# Why a layout is given up (`Outcome.given_up`), in the order of the steps.
+UNSTABLE = "the level did not stand"
+NO_ACTION = "no candidate action"
+NOT_REALISED = "the sequence was not realised"
+FRAGILE = "the solution was too fragile"
+NOT_VALIDATED = "validation failed"
+
+
+@attrs.frozen
+class Attempt:
+    """One candidate action played: its label, the action, the judged trace and its fidelity."""
+
+    label: str
+    action: object
+    trace: Trace
+    fidelity: Fidelity
+
+
+class ActionSearch:
+    """The search for one layout (module docstring)."""
+
+    def __init__(self, domain, scenario, layout, accept: int, validate: bool = True):
+        self.domain = domain
+        self.scenario = scenario
+        self.level = domain.level_from_layout(layout)
+        self.accept = accept
+        self.validate = validate
+        self.evaluator = Evaluator(0)
+        self.best = 0  # most interactions realised in order by one play
+        self.furthest: Attempt | None = None
+        self.nearest = 0  # most noisy replays passed by a working action given up as fragile
+
+    def simulate(self, label: str, action, level=None) -> Attempt:
+        """`action` played in `level` (default: the layout's), judged against the scenario."""
+        trace = self.evaluator.run(lambda: self.domain.play(level or self.level, action, self.scenario))
+        attempt = Attempt(label, action, trace, fidelity(self.scenario, trace))
+        if level is None:
+            self.best = max(self.best, attempt.fidelity.matched)
+            if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
+                self.furthest = attempt
+        return attempt
+
+    def robustness(self, attempt: Attempt, stream: str) -> int:
+        """How many of the domain's noisy replays of the attempt realise the sequence."""
+        noise = random.Random(f"{stream}/{attempt.label}")
+        passed = 0
+        for _ in range(self.domain.robustness_replays):
+            level, action = self.domain.noisy(self.level, attempt.action, noise)
+            passed += self.simulate(attempt.label, action, level).fidelity.valid
+        return passed
+
+    def run(self) -> Outcome:
+        if not self.evaluator.run(lambda: self.domain.stability(self.level))[0]:
+            return self.give_up(UNSTABLE)
+        candidates = self.domain.actions(self.level, self.scenario)
+        if not candidates:
+            return self.give_up(NO_ACTION)
+        working = [a for a in (self.simulate(label, action) for label, action in candidates) if a.fidelity.valid]
+        if not working:
+            return self.give_up(NOT_REALISED)
+        for attempt in working[:CANDIDATES]:
+            passed = self.robustness(attempt, NOISE_STREAMS[0])
+            if passed >= self.accept:
+                passed = min(passed, self.robustness(attempt, NOISE_STREAMS[1]))
+            if passed >= self.accept:
+                break
+            self.nearest = max(self.nearest, passed)
+        else:
+            return self.give_up(FRAGILE)
+        validated, trace = None, attempt.trace
+        if self.validate:
+            final = self.simulate(attempt.label, attempt.action)
+            if not final.fidelity.valid:
+                return self.give_up(NOT_VALIDATED)
+            validated, trace = True, final.trace
+        parts = Parts(
+            level=self.level,
+            solution=self.domain.solution(attempt.label, attempt.action),
+            trace=trace.sequence(),
+            validated=validated,
+            robustness=(passed, self.domain.robustness_replays),
+            repairs=(),
+            obstacles=(),
+            distractors=(),
+        )
+        return Outcome(True, self.evaluator.simulations, parts, best=self.best, stopped=self.stopped)
+
+    @property
+    def stopped(self) -> str:
+        """What the play that came furthest shows about where it stopped."""
+        return "" if self.furthest is None else why_stopped(self.scenario, self.furthest.trace, self.furthest.fidelity)
+
+    def give_up(self, why: str) -> Outcome:
+        return Outcome(False, self.evaluator.simulations, nearest=self.nearest, given_up=why, best=self.best, stopped=self.stopped)

@@ -1,0 +1,59 @@
+"""The scene IR: a world ready to run, backend-neutral, and the generic way to play it.
+
+A domain that judges one action by simulation says what its level is as physics: the
+bodies (physc.backends.BodySpec), the kind of each (what its recogniser calls surfaces,
+background, thrown), the rolling radius of the round ones, the velocities the action
+gives, and which bodies the goal is about. `play` builds that in the backend the caller
+selected (physc.backends.current), runs the generic loop (physc.simulation.run) with the
+domain's rules, and judges the trace: interactions recognised, restrictions checked.
+Angry Birds' game builds its worlds itself (its rules need the level's own objects);
+a domain written on physc.domains.simulated plays through here.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.backends import BodySpec, current
+from physc.simulation.recognise import Recogniser, violations
+from physc.simulation.run import RunRules, run
+from physc.simulation.trace import Trace
+
+
+@attrs.frozen
+class Scene:
+    bodies: tuple[BodySpec, ...]
+    kinds: dict = attrs.field(eq=False)  # name → kind (the recogniser's surfaces, background, thrown)
+    gravity: float  # downwards, in the domain's units
+    dt: float  # the seconds of one step
+    radii: dict = attrs.field(factory=dict, eq=False)  # name → rolling radius of a round body
+    velocities: dict = attrs.field(factory=dict, eq=False)  # name → (vx, vy, ω) at the start
+    goal: tuple[str, ...] = ()  # the bodies the goal is about (Trace.goal)
+
+    @property
+    def dynamic(self) -> tuple[str, ...]:
+        """The bodies that move, in the scene's order (the trace's state columns)."""
+        return tuple(b.name for b in self.bodies if not b.static)
+
+
+def play(
+    scene: Scene, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True
+) -> Trace:
+    """`scene` run for `seconds` at most under `rules`, in the selected backend; with
+    `recognise`, the interactions recognised and the restrictions (`redirects`: the declared
+    bounces, see physc.simulation.recognise.violations) checked."""
+    world = current().create_world(scene.gravity)
+    for body in scene.bodies:
+        world.add(body)
+    for name, velocity in scene.velocities.items():
+        world.set_velocity(name, *velocity)
+    dynamic = scene.dynamic
+    recorded = run(world, dynamic, rules, seconds, scene.dt)
+    trace = Trace(
+        scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
+        recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded),
+    )
+    if not recognise:
+        return trace
+    interactions = recogniser.recognise(trace, scene.radii)
+    return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
