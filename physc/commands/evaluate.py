@@ -87,7 +87,7 @@ def cmd_eval(args) -> int:
     for name in sorted({job.domain for job in jobs}):
         domain = load_domain(name)
         try:  # generation needs the domain's capabilities: refused before any work (E0703)
-            require(domain, STAGE_NEEDS["task"] + ("replay",), "physc eval")  # its replays of the solution
+            require(domain, STAGE_NEEDS["task"] + ("replay", "stability"), "physc eval")  # its replays and measurements
         except MissingCapability as error:
             found = [Diagnostic(error.code, error.message, None, help=error.help)]
             reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)

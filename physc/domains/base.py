@@ -10,11 +10,17 @@ of promise:
   abstract, so a subclass that forgets one cannot be instantiated, and `load_domain`
   checks them on any plugin object (E0702).
 * **Generation** needs capabilities: `layout_rules`, `layout_parameters`,
-  `concretize`, `satisfy`, `emit_level`, `picture`, `replay` (verification). No default could be right for
+  `concretize`, `satisfy`, `emit_level`, `picture`, `replay` (verification), `stability`
+  (the evaluation). No default could be right for
   another domain, so the base class has none; a domain that lacks them still loads and
   checks, and a command that needs one refuses before any work with E0703, naming the
   domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable`,
-  `robustness_replays` and `level_classes` have working defaults.
+  `robustness_replays`, `level_classes`, `solution_class` and `accidental` have working
+  defaults.
+
+A domain whose task is one action in a simulated scene subclasses
+physc.domains.simulated.SimulatedDomain instead, which makes `satisfy`, `replay`,
+`stability` and `accidental` from a few hooks of its own.
 """
 
 from __future__ import annotations
@@ -32,8 +38,8 @@ if TYPE_CHECKING:
     from physc.dsl.scenario import ScenarioIR
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
-CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes")  # working defaults
+CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "solution_class", "accidental")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -182,6 +188,12 @@ class Domain(abc.ABC):
         verify`, `--verify-backend` and the evaluation's replays run."""
         raise MissingCapability(self.name, ("replay",), "replaying a solution")
 
+    @_no_default
+    def stability(self, level) -> tuple[bool, float]:
+        """(stable, the largest shift) of `level` left alone: the evaluation's physical
+        stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
+        raise MissingCapability(self.name, ("stability",), "measuring stability")
+
     level_classes: tuple[type, ...] = ()
     """The attrs classes a level of this domain is made of, the level's own class first
     (angrybirds: Level, Camera, LevelObject): what reads a level back from a task file
@@ -194,6 +206,16 @@ class Domain(abc.ABC):
     """The noisy replays `satisfy` puts a solution through; `--min-robustness K` may ask
     at most this many. None (the default): the domain makes no noisy replays, so
     --min-robustness has nothing to count and is not checked."""
+
+    solution_class: type | None = None
+    """The attrs class of a task's solution, for reading it back from a task file (`physc
+    verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
+
+    def accidental(self, level, scenario: ScenarioIR, solution, rng) -> dict:
+        """The evaluation's accidental solvability of a task: a dict of figures for its record
+        (`accidental`: the fraction of an agent's plays that solve it, None when it found
+        none; `agent_plays`; optionally `auccess`). Default: {} (no agent: not measured)."""
+        return {}
 
     def reach_targets(self, scenario: ScenarioIR) -> list[str]:
         """The objects the player's action must reach directly (angrybirds: the first hit's

@@ -151,10 +151,8 @@ def _evaluate(job: Job) -> dict:
         given_up=task.given_up,
     )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
-    stable, shift = measure.stability(task.level)
+    stable, shift = domain.stability(task.level)
     replay = measure.intended(domain, task.level, task.solution, scenario, rng)
-    target = scenario.interactions[0].objects[1]
-    accidental, plays = measure.accidental(task.level, target)
     record.update(
         stable=stable,
         largest_shift=round(shift, 5),
@@ -162,8 +160,7 @@ def _evaluate(job: Job) -> dict:
         intended_noisy=replay["noisy_solved"],
         fidelity_exact=replay["exact_faithful"],
         fidelity_noisy=replay["noisy_faithful"],
-        accidental=None if accidental is None else round(accidental, 5),
-        agent_plays=plays,
+        **domain.accidental(task.level, scenario, task.solution, rng),
         trace=replay["trace"],
         solution=to_data(task.solution),
         level=to_data(task.level),

@@ -88,6 +88,21 @@ class AngryBirds(Domain):
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
         return Game(level).play(shot, REPLAY_SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
 
+    @staticmethod
+    def stability(level) -> tuple[bool, float]:
+        """10 s with no action: no object moves more than 0.05 units, nothing is destroyed."""
+        from physc.domains.angrybirds.stability import stability
+
+        return stability(level)
+
+    @staticmethod
+    def accidental(level, scenario, solution, rng) -> dict:
+        """The paper's heuristic agent (agent.py): it shoots at everything but the first target."""
+        from physc.domains.angrybirds.agent import accidental
+
+        fraction, plays = accidental(level, scenario.interactions[0].objects[1])
+        return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}
+
     def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
         """Simulation-based satisfaction, distractions and validation of one layout; the
         solution must pass `accept` of the noisy replays (default: all of them)."""
