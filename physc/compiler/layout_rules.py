@@ -73,12 +73,16 @@ class LayoutRules:
     sets in motion; `flat`, the concrete object of a horizontal support; `ground`, that of
     the ground (None: the domain has none to rest on); `player_heading`, the way the
     player's object flies until it bounces ("right": Angry Birds' bird, shot from the left;
-    None: no one way, a dropped ball)."""
+    None: no one way, a dropped ball); `player_placed`, whether the layout places the
+    player's object (the bird at its slingshot) or the action does (PHYRE's red ball: then
+    the player and its edges are left out of the graph, and the action is found by
+    simulation)."""
 
     player: str
     flat: str
     ground: str | None = None
     player_heading: str | None = None
+    player_placed: bool = True
 
     def infer(self, scenario: ScenarioIR) -> LayoutGraph:
         return infer(scenario, self)
@@ -228,7 +232,11 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             else:
                 b.edge(TOUCHING, second, first, ("upperLeft",), why)
 
-    return LayoutGraph(scenario.name, scenario.domain, tuple(b.nodes.values()), tuple(b.edges))
+    nodes, edges = tuple(b.nodes.values()), tuple(b.edges)
+    if not rules.player_placed:
+        nodes = tuple(n for n in nodes if n.name not in players)
+        edges = tuple(e for e in edges if e.a not in players and e.b not in players)
+    return LayoutGraph(scenario.name, scenario.domain, nodes, edges)
 
 
 def pushes(interactions, position: int, players: set[str], heading: str | None = "right") -> str | None:

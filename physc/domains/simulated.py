@@ -5,7 +5,7 @@ drop a marble): the player acts once, the world runs, a goal is met or not. Such
 domain subclasses `SimulatedDomain` and writes only what differs, as a sqlglot dialect
 does:
 
-* `level_from_layout(layout)`: the placed layout as the domain's level;
+* `level_from_layout(layout, scenario)`: the placed layout as the domain's level;
 * `scene(level, action)`: the level as physics (a physc.simulation.scene.Scene), the
   action taken (None: no action);
 * `actions(level, scenario)`: the candidate actions, labelled (the paper's points of
@@ -14,7 +14,9 @@ does:
   when the run is over), and `recogniser`, `seconds`, `stable_limit`;
 * for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
   `random_action(rng)` and `valid(level, action)`;
-* `solution(label, action)` / `action_of(solution)`: the task file's record of an action.
+* `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
+  and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
+  its solutions).
 
 Everything else is physc's: the search that makes a placed layout a task
 (physc.generation.search.ActionSearch, behind `satisfy`), the robustness replays,
@@ -68,8 +70,8 @@ class SimulatedDomain(Domain):
 
     # ---- what the domain writes ---------------------------------------------------------
     @_no_default
-    def level_from_layout(self, layout):
-        """The placed layout (a ConcreteLayout) as the domain's level."""
+    def level_from_layout(self, layout, scenario):
+        """The placed layout (a ConcreteLayout) of `scenario` as the domain's level."""
         raise MissingCapability(self.name, ("level_from_layout",), "generating a task")
 
     @_no_default
@@ -108,6 +110,11 @@ class SimulatedDomain(Domain):
     def action_of(self, solution):
         """The action a task's recorded solution takes (the inverse of `solution`)."""
         return solution
+
+    def with_solution(self, level, solution):
+        """The generated task's level with its solution, if the domain's level keeps it (the
+        default: the level as it is)."""
+        return level
 
     # ---- what physc does with them --------------------------------------------------------
     def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True) -> Trace:

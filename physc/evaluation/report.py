@@ -19,6 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from physc.compiler.task import Solution  # noqa: E402
+from physc.domains.base import provides  # noqa: E402
 from physc.evaluation.measure import NOISY_REPLAYS  # noqa: E402
 from physc.files import write_atomic  # noqa: E402
 
@@ -230,19 +232,26 @@ def write(records: list[dict], folder: Path, command: str, seconds: float) -> di
 
 
 def _pictures(records: list[dict], folder: Path) -> None:
-    """One picture of a generated task per interaction count."""
-    from physc.domains.angrybirds.level import Camera, Level, LevelObject
-    from physc.domains.angrybirds.picture import draw_level, save
+    """One picture of a generated task per interaction count: the domain's `picture` of the
+    task the record holds (records without a domain are angrybirds', as before domains
+    were recorded)."""
+    from physc.compiler.task import Task
+    from physc.domains import load_domain
+    from physc.serialize import from_data
 
     seen = set()
     for record in sorted(records, key=lambda r: (r["interactions"], r["scenario"], r["seed"])):
         if not record.get("generated") or record["interactions"] in seen:
             continue
         seen.add(record["interactions"])
-        data = record["level"]
-        objects = tuple(
-            LevelObject(**{k: v for k, v in o.items() if k != "node"}) for o in data["objects"]
+        domain = load_domain(record.get("domain", "angrybirds"))
+        if not domain.level_classes or not provides(domain, "picture"):
+            continue
+        kind = domain.solution_class or Solution
+        level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
+        solution = from_data(record["solution"], {kind.__name__: kind})
+        task = Task(
+            record["scenario"], domain.name, record["seed"], "", level, solution, record["trace"], None, tuple(record["robustness"]),
+            (), (), (), record.get("layouts_tried", 0), 0, record.get("simulations", 0), {}, {},
         )
-        level = Level(objects=objects, camera=Camera(), birds=tuple(data["birds"]))
-        title = f"{record['scenario']} (seed {record['seed']}): {record['trace'][:80]}"
-        write_atomic(folder / f"task_{record['scenario']}_{record['seed']}.png", save(draw_level(level, title)))
+        write_atomic(folder / f"task_{record['scenario']}_{record['seed']}.png", domain.picture(task))

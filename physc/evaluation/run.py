@@ -128,6 +128,7 @@ def _evaluate(job: Job) -> dict:
     record = {
         "file": job.path,
         "scenario": job.scenario,
+        "domain": scenario.domain,
         "interactions": len(scenario.interactions),
         "seed": job.seed,
         "min_robustness": job.min_robustness,

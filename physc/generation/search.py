@@ -55,7 +55,7 @@ class ActionSearch:
     def __init__(self, domain, scenario, layout, accept: int, validate: bool = True):
         self.domain = domain
         self.scenario = scenario
-        self.level = domain.level_from_layout(layout)
+        self.level = domain.level_from_layout(layout, scenario)
         self.accept = accept
         self.validate = validate
         self.evaluator = Evaluator(0)
@@ -106,9 +106,10 @@ class ActionSearch:
             if not final.fidelity.valid:
                 return self.give_up(NOT_VALIDATED)
             validated, trace = True, final.trace
+        solution = self.domain.solution(attempt.label, attempt.action)
         parts = Parts(
-            level=self.level,
-            solution=self.domain.solution(attempt.label, attempt.action),
+            level=self.domain.with_solution(self.level, solution),
+            solution=solution,
             trace=trace.sequence(),
             validated=validated,
             robustness=(passed, self.domain.robustness_replays),

@@ -9,7 +9,6 @@ paper's figure of its 16 generated tasks (`physc render --shot …`).
 
 from __future__ import annotations
 
-import io
 import math
 
 import matplotlib
@@ -17,6 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
+
+from physc.picture import save  # noqa: E402,F401  (angrybirds' pictures are saved as every domain's)
 
 from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
 from physc.domains.angrybirds.catalogue import by_prefab, extent  # noqa: E402
@@ -87,17 +88,6 @@ def draw_level(level: Level, title: str = "", paths=None, supports=frozenset(), 
     axes.tick_params(labelsize=7)
     figure.tight_layout()
     return figure
-
-
-def save(figure, fmt: str = "png") -> bytes:
-    """The figure as PNG or SVG bytes, without timestamps (same figure, same bytes; SVG's
-    clip-path and glyph ids are random unless salted)."""
-    buffer = io.BytesIO()
-    metadata = {"Software": None} if fmt == "png" else {"Date": None, "Creator": None}
-    with plt.rc_context({"svg.hashsalt": "physc"}):
-        figure.savefig(buffer, format=fmt, metadata=metadata)
-    plt.close(figure)
-    return buffer.getvalue()
 
 
 def render(layout: ConcreteLayout, fmt: str = "png", title: str | None = None, paths=None) -> bytes:

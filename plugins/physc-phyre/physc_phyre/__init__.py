@@ -1,0 +1,113 @@
+"""PHYRE-like tasks for physc: the agent places a red ball; the green object must touch
+the blue or purple one for 3 s.
+
+A domain plugin written against physc's public API only (physc.domains.simulated,
+physc.compiler, physc.backends, physc.simulation): it says what its world is (world.py,
+level.py), what its actions are (actions.py), what its goal is (rules.py, the `touch`
+term of vocabulary.py) and how to write its files (task_file.py, picture.py). physc's
+generic search, robustness replays, stability and evaluation do the rest.
+"""
+
+from __future__ import annotations
+
+import random
+
+import attrs
+from physc.compiler.concrete_layout import ConcreteLayout
+from physc.compiler.dimension_graphs import LayoutParameters
+from physc.compiler.layout_rules import LayoutRules
+from physc.domains.base import MissingCapability
+from physc.domains.simulated import SimulatedDomain
+from physc.picture import FORMATS
+from physc.simulation.scene import Scene
+
+from physc_phyre import actions, world
+from physc_phyre.concretize import concretize
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, level_from_layout
+from physc_phyre.rules import RECOGNISER, GoalRules
+from physc_phyre.task_file import task_json
+from physc_phyre.vocabulary import VOCABULARY
+
+__all__ = ["DOMAIN", "Phyre", "BallAction", "PhyreLevel", "SceneBody"]
+
+
+class Phyre(SimulatedDomain):
+    name = "phyre"
+    description = "PHYRE-like tasks: the agent places a red ball; the green object must touch the target for 3 s"
+    vocabulary = VOCABULARY
+    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground=None, player_placed=False)
+    layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
+    level_classes = (PhyreLevel, SceneBody, BallAction)
+    solution_class = BallAction
+    recogniser = RECOGNISER
+    seconds = world.MAX_STEPS / world.FPS
+    stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
+
+    @staticmethod
+    def concretize(graph, scenario, rng):
+        return concretize(graph, scenario, rng)
+
+    @staticmethod
+    def level_from_layout(layout, scenario) -> PhyreLevel:
+        return level_from_layout(layout, scenario)
+
+    @staticmethod
+    def scene(level: PhyreLevel, action: BallAction | None) -> Scene:
+        specs = world.walls(level.floor)
+        kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
+        radii = {}
+        for body in level.bodies:
+            specs.append(world.body_spec(body.name, world.outline(body.shape, body.size), body.x, body.y, body.angle, body.dynamic))
+            kinds[body.name] = "object" if body.dynamic else "surface"
+            if body.shape == "ball":
+                radii[body.name] = body.size / world.PIXELS_PER_METRE
+        if action is not None:
+            specs.append(world.body_spec(level.player, world.outline("ball", action.radius), action.x, action.y, 0.0, True))
+            kinds[level.player] = "agent"
+            radii[level.player] = action.radius / world.PIXELS_PER_METRE
+        return Scene(tuple(specs), kinds, world.GRAVITY, 1 / world.FPS, radii, goal=level.goal)
+
+    @staticmethod
+    def rules(level: PhyreLevel) -> GoalRules:
+        return GoalRules(level.goal)
+
+    @staticmethod
+    def actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction]]:
+        return actions.candidate_actions(level, scenario)
+
+    @staticmethod
+    def noisy(level: PhyreLevel, action: BallAction, rng: random.Random):
+        return level, actions.noisy(action, rng)
+
+    @staticmethod
+    def random_action(rng: random.Random) -> BallAction:
+        return actions.random_action(rng)
+
+    @staticmethod
+    def valid(level: PhyreLevel, action: BallAction) -> bool:
+        return actions.valid(level, action)
+
+    @staticmethod
+    def with_solution(level: PhyreLevel, solution: BallAction) -> PhyreLevel:
+        return attrs.evolve(level, solutions=(solution,))
+
+    @staticmethod
+    def emit_level(level: PhyreLevel) -> str:
+        """The task in PHYRE's task structure, as JSON (task_file.py)."""
+        return task_json(level)
+
+    def picture(self, task, fmt: str = "png") -> bytes:
+        """The scene in PHYRE's look with the red ball of the solution and the paths it makes;
+        a placed layout as the level it becomes."""
+        from physc_phyre.picture import picture
+
+        if fmt not in FORMATS:
+            raise MissingCapability(self.name, (f"picture in {fmt}",), f"--png as {fmt}")
+        if isinstance(task, ConcreteLayout):
+            return picture(level_from_layout(task, None), f"{task.scenario} (seed {task.seed})", None, None, fmt)
+        trace = self.play(task.level, task.solution, recognise=False)
+        title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
+        return picture(task.level, title, task.solution, trace.paths(threshold=0.5), fmt)
+
+
+DOMAIN = Phyre()

@@ -1,0 +1,102 @@
+"""The agent's action, PHYRE's ball tier: where the red ball is placed, and how big it is.
+
+Candidate actions follow the paper's points of interest: the ball is dropped onto the
+first target's upper corners and the middle of its top, in three sizes, from just above
+and from higher up (a fall gathers speed). Like PHYRE, an action places the ball at whole
+pixels with a whole radius from 2 to 32, inside the scene, occluding nothing (touching is
+allowed). The random agent draws actions as PHYRE's evaluation does, uniformly in
+[0, 1]³ scaled to the scene. Noise, for the robustness replays and the evaluation, moves
+the ball by σ = 0.5 px: PHYRE's own test of a stable solution moves it by half a pixel.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+
+from physc.backends import Circle, parts
+
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody
+from physc_phyre.world import SCENE, extent, outline
+
+RADII = (8, 14, 22)  # pixels
+GAPS = (2, 40)  # pixels between the ball and the target's top when dropped
+FALL_GAPS = (40, 100)  # for a first interaction that is a fall: from higher up
+NOISE = 0.5  # pixels, σ of the ball's position in a noisy replay
+MIN_RADIUS, MAX_RADIUS = 2, 32
+
+
+def outline_box(body: SceneBody) -> tuple[float, float, float, float]:
+    """(left, bottom, right, top) of a body's turned outline box, in pixels."""
+    width, height, below = extent(body.shape, body.size)
+    c, s = math.cos(body.angle), math.sin(body.angle)
+    cx, cy = body.x - below * s, body.y + below * c
+    corners = [(cx + dx * c - dy * s, cy + dx * s + dy * c) for dx in (-width / 2, width / 2) for dy in (-height / 2, height / 2)]
+    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction]]:
+    """(label, action) for every valid drop onto the first target's points of interest."""
+    first = scenario.interactions[0]
+    names = {b.name: b for b in level.bodies}
+    if len(first.objects) < 2 or first.objects[1] not in names:
+        return []
+    target = names[first.objects[1]]
+    left, _, right, top = outline_box(target)
+    points = {"upper left": left, "top": (left + right) / 2, "upper right": right}
+    gaps = FALL_GAPS if first.name == "fall" else GAPS
+    out = []
+    for point, x in points.items():
+        for radius in RADII:
+            for gap in gaps:
+                action = BallAction(int(x), int(top + radius + gap), radius, f"{target.name} {point}, r {radius}, {gap} px above")
+                if valid(level, action):
+                    out.append((action.aimed_at, action))
+    return out
+
+
+def valid(level: PhyreLevel, action: BallAction) -> bool:
+    """Inside the scene, a radius PHYRE allows, and no body occluded (touching is fine)."""
+    r = action.radius
+    if not MIN_RADIUS <= r <= MAX_RADIUS or not (r <= action.x <= SCENE - r and r <= action.y <= SCENE - r):
+        return False
+    return not any(_overlaps(body, action.x, action.y, r) for body in level.bodies)
+
+
+def random_action(rng: random.Random) -> BallAction:
+    """A draw of PHYRE's random agent: uniform in [0, 1]³, scaled and quantised as PHYRE's
+    ball tier does (x = a·255, y = a·255 truncated, r = 2 + a·30 rounded)."""
+    a, b, c = rng.random(), rng.random(), rng.random()
+    return BallAction(int(a * (SCENE - 1)), int(b * (SCENE - 1)), round(MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)))
+
+
+def noisy(action: BallAction, rng: random.Random) -> BallAction:
+    """The action with the ball moved by σ = NOISE pixels along each axis."""
+    return BallAction(action.x + rng.gauss(0.0, NOISE), action.y + rng.gauss(0.0, NOISE), action.radius, action.aimed_at)
+
+
+def _overlaps(body: SceneBody, x: float, y: float, radius: float) -> bool:
+    """Whether a ball at (x, y) overlaps `body` by more than a touch (1e-5 px, PHYRE's)."""
+    c, s = math.cos(body.angle), math.sin(body.angle)
+    dx, dy = x - body.x, y - body.y
+    lx, ly = dx * c + dy * s, -dx * s + dy * c  # the ball's centre in the body's frame
+    for part in parts(outline(body.shape, body.size)):
+        if isinstance(part, Circle):
+            if math.hypot(lx, ly) + 1e-5 < part.radius + radius:
+                return True
+        elif _distance(part.points, lx, ly) + 1e-5 < radius:
+            return True
+    return False
+
+
+def _distance(points, x: float, y: float) -> float:
+    """The distance from (x, y) to a convex polygon (0 inside)."""
+    inside, nearest = True, math.inf
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+        ex, ey = x1 - x0, y1 - y0
+        if ex * (y - y0) - ey * (x - x0) < 0:
+            inside = False
+        t = max(0.0, min(1.0, ((x - x0) * ex + (y - y0) * ey) / (ex * ex + ey * ey)))
+        nearest = min(nearest, math.hypot(x - x0 - t * ex, y - y0 - t * ey))
+    return 0.0 if inside else nearest

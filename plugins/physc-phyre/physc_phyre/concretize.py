@@ -1,0 +1,69 @@
+"""Concrete objects and sizes for a layout graph, drawn from the seeded generator.
+
+Sizes follow PHYRE's templates: balls of scale 0.06–0.12 (radius int(scale·128) + 0.5
+px), bars 35–70 px, jars 40–60 px tall, standing sticks 45–70 px wide. A ledge that
+carries an object is at least three of its widths long, so the object can rest in its
+left, middle or right third; a surface something rolls or slides on is long enough to
+gather speed; a ramp declines 15–30° towards the motion on it (a surface for a bounce
+tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom.
+"""
+
+from __future__ import annotations
+
+import random
+
+from physc.compiler.concrete_layout import Body
+from physc.compiler.geometry import Geometry
+from physc.compiler.layout_graph import ON_LOCATION
+
+from physc_phyre.level import KINDS
+from physc_phyre.world import BAR_HEIGHT, SCENE, WALL, extent
+
+PATH_LENGTH = (90.0, 150.0)
+LEDGE_LENGTH = (30.0, 70.0)
+BAR_LENGTH = (35.0, 70.0)
+RAMP_LENGTH = (70.0, 120.0)
+
+
+def _size(shape: str, rng: random.Random) -> float:
+    if shape == "ball":
+        return int(rng.uniform(0.06, 0.12) * 128) + 0.5
+    if shape == "bar":
+        return round(rng.uniform(*BAR_LENGTH), 1)
+    if shape == "jar":
+        return round(rng.uniform(40.0, 60.0), 1)
+    return round(rng.uniform(45.0, 70.0), 1)
+
+
+def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
+    headings = {t.objects[1]: t.directions[0] for t in scenario.interactions if t.name in ("roll", "slide")}
+    carried: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        if edge.term == ON_LOCATION:
+            carried.setdefault(edge.b, []).append(edge.a)
+    chosen = {node.name: rng.choice(node.concrete) for node in graph.nodes}
+    bodies: dict[str, Body] = {}
+    # Objects first: a ledge's length depends on what it carries.
+    for node in sorted(graph.nodes, key=lambda n: n.static):
+        name, concrete = node.name, chosen[node.name]
+        if concrete == "floor":
+            bodies[name] = Body(name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2))
+        elif concrete == "purpleFloor":
+            bodies[name] = Body(name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT), fixed=(SCENE / 2, BAR_HEIGHT / 2))
+        elif concrete == "ramp":
+            length = round(rng.uniform(*RAMP_LENGTH), 1)
+            if name in headings:
+                angle = rng.uniform(15, 30) * (-1 if headings[name] == "right" else 1)
+            else:
+                angle = rng.uniform(20, 40) * rng.choice((-1, 1))
+            bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
+        elif concrete in ("blackBar", "purpleBar") and node.static:
+            widest = max((bodies[o].geometry.width for o in carried.get(name, ()) if o in bodies), default=0.0)
+            low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else BAR_LENGTH
+            low = max(low, 3 * widest + 6.0)
+            bodies[name] = Body(name, node.role, concrete, Geometry(round(rng.uniform(low, max(high, low + 30.0)), 1), BAR_HEIGHT))
+        else:
+            shape = KINDS[concrete][0]
+            width, height, _ = extent(shape, _size(shape, rng))
+            bodies[name] = Body(name, node.role, concrete, Geometry(round(width, 3), round(height, 3)))
+    return {node.name: bodies[node.name] for node in graph.nodes}

@@ -1,0 +1,102 @@
+"""A PHYRE-like task's level: its scene's bodies, its goal and tier, in PHYRE's terms.
+
+It holds what PHYRE's Task holds (src/if/task.thrift): bodies with a shape, a position
+and angle, a colour and whether they move; the two goal bodies and their relation
+(TOUCHING); the action tier (BALL); and, once generated, the intended solution (PHYRE's
+`solutions`). Positions are in the scene's pixels. The walls are not bodies here: every
+scene has them (world.walls).
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc_phyre.world import SCENE, extent, size_of
+
+# The shape and colour of each concrete object of the vocabulary (the floor is the bottom wall).
+KINDS = {
+    "greenBall": ("ball", "green", True),
+    "greenBar": ("bar", "green", True),
+    "blueBall": ("ball", "blue", True),
+    "blueJar": ("jar", "blue", True),
+    "purpleBar": ("bar", "purple", False),
+    "purpleFloor": ("bar", "purple", False),
+    "ball": ("ball", "gray", True),
+    "bar": ("bar", "gray", True),
+    "jar": ("jar", "gray", True),
+    "sticks": ("standingsticks", "gray", True),
+    "blackBar": ("bar", "black", False),
+    "ramp": ("bar", "black", False),
+}
+GOAL_COLOURS = ("green",)
+TARGET_COLOURS = ("blue", "purple")
+
+
+def _finite(instance, attribute, value) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ValueError(f"{attribute.name} must be a finite number, not {value!r}")
+
+
+@attrs.frozen
+class BallAction:
+    """PHYRE's ball tier: the red ball's centre and radius in pixels (its action, quantised
+    as PHYRE does: integer position, whole radius 2 to 32)."""
+
+    x: float = attrs.field(validator=_finite)
+    y: float = attrs.field(validator=_finite)
+    radius: float = attrs.field(validator=_finite)
+    aimed_at: str = ""  # the candidate it came from (a point of interest of the first target)
+
+    def unit(self) -> tuple[float, float, float]:
+        """The action as PHYRE's agents give it, in [0, 1]³ (action_mappers.py's BallScaler)."""
+        return (round(self.x / (SCENE - 1), 6), round(self.y / (SCENE - 1), 6), round((self.radius - 2) / 30, 6))
+
+
+@attrs.frozen
+class SceneBody:
+    name: str
+    shape: str  # ball | bar | jar | standingsticks
+    x: float = attrs.field(validator=_finite)  # the body's origin, pixels (a jar's: the middle of its base)
+    y: float = attrs.field(validator=_finite)
+    angle: float = attrs.field(validator=_finite)  # radians, counter-clockwise
+    size: float = attrs.field(validator=_finite)  # ball: radius; bar: length; jar: height; sticks: width
+    color: str
+    dynamic: bool
+
+
+@attrs.frozen
+class PhyreLevel:
+    bodies: tuple[SceneBody, ...]
+    goal: tuple[str, str]  # the green body and the one it must touch (PHYRE's bodyId1, bodyId2)
+    player: str = "redBall"  # what the scenario calls the agent's ball
+    floor: str = "floor"  # what the scenario calls the floor (the bottom wall)
+    relation: str = "TOUCHING"
+    tier: str = "BALL"
+    solutions: tuple[BallAction, ...] = ()
+
+    def body(self, name: str) -> SceneBody:
+        return next(b for b in self.bodies if b.name == name)
+
+
+def level_from_layout(layout, scenario) -> PhyreLevel:
+    """The placed layout as a level: each object with the shape and colour of its concrete
+    object, its origin where its outline box's middle was placed; the scenario's names for
+    the agent's ball and the floor (None: the defaults)."""
+    bodies = []
+    for placed in layout.objects:
+        if placed.concrete not in KINDS:  # the floor: the bottom wall every scene has
+            continue
+        shape, color, dynamic = KINDS[placed.concrete]
+        size = size_of(shape, placed.width, placed.height)
+        below = extent(shape, size)[2]
+        angle = math.radians(placed.rotation)
+        x = placed.x + below * math.sin(angle)
+        y = placed.y - below * math.cos(angle)
+        bodies.append(SceneBody(placed.name, shape, round(x, 3), round(y, 3), round(angle, 6), round(size, 3), color, dynamic))
+    green = next((b.name for b in bodies if b.color in GOAL_COLOURS), "")
+    target = next((b.name for b in bodies if b.color in TARGET_COLOURS), "")
+    player = next((o.name for o in scenario.objects if o.term == "redBall"), "redBall") if scenario is not None else "redBall"
+    floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
+    return PhyreLevel(tuple(bodies), (green, target), player, floor)

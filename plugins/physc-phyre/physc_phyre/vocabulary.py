@@ -1,0 +1,126 @@
+"""The `.phys` vocabulary of PHYRE-like tasks: PHYRE's objects in its colours, the
+interactions of the paper, and PHYRE's goal as a term, `touch(green, target)`.
+
+PHYRE colours its objects by role (docs/phyre-facts.md §4): the agent's ball red, the
+goal object green, the object it must touch blue when dynamic and purple when static,
+other dynamic objects gray and static ones black.
+"""
+
+from physc.domains.vocabulary import (
+    DIRECTION,
+    INTERACTION,
+    OBJECT,
+    RESTRICTION,
+    ConcreteObject,
+    ObjectTerm,
+    Parameter,
+    TermSignature,
+    Vocabulary,
+)
+
+SIDES = ("left", "right", "above", "below")
+
+CONCRETE_OBJECTS = (
+    ConcreteObject("redBall", description="the agent's red ball, placed by the action"),
+    ConcreteObject("greenBall", description="the green goal ball"),
+    ConcreteObject("greenBar", description="the green goal bar"),
+    ConcreteObject("blueBall", description="a blue ball, the dynamic object the green one must touch"),
+    ConcreteObject("blueJar", description="a blue jar, the dynamic object the green one must touch"),
+    ConcreteObject("purpleBar", static=True, description="a purple static bar, the static object the green one must touch"),
+    ConcreteObject("purpleFloor", static=True, description="a purple bar over the whole floor, the static object the green one must touch"),
+    ConcreteObject("ball", description="a gray ball"),
+    ConcreteObject("bar", description="a gray bar"),
+    ConcreteObject("jar", description="a gray jar"),
+    ConcreteObject("sticks", description="gray standing sticks: two crossed sticks, nearly upright"),
+    ConcreteObject("blackBar", static=True, description="a black static bar, level"),
+    ConcreteObject("ramp", static=True, description="a black static bar, inclined"),
+    ConcreteObject("floor", static=True, description="the scene's floor (its bottom wall)"),
+)
+
+OBJECT_TERMS = (
+    ObjectTerm("redBall", ("redBall",), "red", noun="the agent's ball"),
+    ObjectTerm("greenObject", ("greenBall", "greenBar"), "green", noun="the green object"),
+    ObjectTerm("targetObject", ("purpleFloor", "purpleBar", "blueBall", "blueJar"), "target", noun="the object the green one must touch"),
+    ObjectTerm("rollableObject", ("ball", "greenBall", "blueBall"), "rObj", noun="a rollable object"),
+    ObjectTerm("fallableObject", ("ball", "bar", "jar", "sticks", "greenBall", "greenBar", "blueBall", "blueJar"), "fObj", noun="a fallable object"),
+    ObjectTerm("slidableObject", ("bar", "greenBar"), "sObj", noun="a slidable object"),
+    ObjectTerm("standingSticks", ("sticks",), "stick", noun="standing sticks"),
+    ObjectTerm("container", ("jar", "blueJar"), "jarObj", noun="a jar"),
+    ObjectTerm("horizontalSurface", ("blackBar",), "hSurface", noun="a horizontal surface"),
+    ObjectTerm("inclinedSurface", ("ramp",), "iSurface", noun="an inclined surface"),
+    ObjectTerm("surface", ("blackBar", "ramp", "floor"), noun="a surface"),
+    ObjectTerm("floor", ("floor",), noun="the floor"),
+)
+
+
+def _actor(fits=None):
+    return Parameter("a", OBJECT, fits=fits, dynamic=True, acts=True)
+
+
+TERMS = (
+    TermSignature(
+        "hit",
+        INTERACTION,
+        (_actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=SIDES + ("any",))),
+        "a collides with b from direction d of b",
+    ),
+    TermSignature(
+        "roll",
+        INTERACTION,
+        (_actor("rollableObject"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
+        "a rolls on b towards d",
+    ),
+    TermSignature(
+        "slide",
+        INTERACTION,
+        (_actor("slidableObject"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
+        "a slides on b towards d",
+    ),
+    TermSignature(
+        "fall",
+        INTERACTION,
+        (_actor(), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",))),
+        "a falls towards b (a starts far from b in direction d of b)",
+    ),
+    TermSignature(
+        "bounce",
+        INTERACTION,
+        (
+            Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True),
+            Parameter("b", OBJECT, fits="surface"),
+            Parameter("d", DIRECTION, directions=SIDES),
+        ),
+        "a bounces off b towards d",
+    ),
+    TermSignature(
+        "touch",
+        INTERACTION,
+        (Parameter("a", OBJECT, fits="greenObject", completes=True), Parameter("b", OBJECT, fits="targetObject")),
+        "the green object a touches b, and keeps touching it for 3 s (PHYRE's goal)",
+    ),
+    TermSignature(
+        "cannotHit",
+        RESTRICTION,
+        (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=SIDES + ("any",))),
+        "during the solution, a must not collide with b from d",
+        narrows="hit",
+    ),
+    TermSignature(
+        "cannotFall",
+        RESTRICTION,
+        (Parameter("a", OBJECT, dynamic=True),),
+        "during the solution, a must not fall",
+        forbids="fall",
+    ),
+)
+
+VOCABULARY = Vocabulary(
+    object_terms=OBJECT_TERMS,
+    concrete_objects=CONCRETE_OBJECTS,
+    terms=TERMS,
+    direction_aliases={"any": SIDES},
+    player="redBall",
+    goal="greenObject",
+    goal_unmet="never touches its target",
+    goal_rule="a task is solved when the green object touches the target for 3 s",
+)
