@@ -9,7 +9,8 @@ PHYRE-like plugin both do. The paper's table "Inferred layout constraints":
     roll(a, b, d)     → inDirection(a, b, -d)
     fall(a, b, d)     → locatedFar(a, b, d)
                         (d = aboveLeft when d is above and the hit before the fall pushes
-                        a right: it comes down ahead; see `pushes`)
+                        a right, or a rolled or slid right just before: it comes down
+                        ahead; see `pushes`)
     destroy, touch    → nothing of their own (the hit or fall before them places them)
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d)
@@ -83,6 +84,10 @@ class LayoutRules:
     ground: str | None = None
     player_heading: str | None = None
     player_placed: bool = True
+    continuous_paths: bool = False
+    """Whether the consecutive surfaces of every path touch, one continuous top edge (a
+    ledge running into a ramp). Without it (angrybirds) they touch only under cannotFall,
+    and the satisfier's repairs close the gaps in simulation."""
 
     def infer(self, scenario: ScenarioIR) -> LayoutGraph:
         return infer(scenario, self)
@@ -140,6 +145,9 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
         elif term.name == "fall":
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
             pushed = None if hit is None else pushes(scenario.interactions, hit, players, flies)
+            moved = _last_motion(scenario.interactions[:position], term.objects[0])
+            if moved is not None and (hit is None or moved > hit):  # it rolled or slid off: it comes down ahead
+                pushed = scenario.interactions[moved].directions[0]
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], (AHEAD[pushed],), why)
@@ -219,13 +227,17 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
     for rest in support.values():
         b.narrow_to_flat(rest)
 
-    # 4. cannotFall: consecutive platforms of the path touch.
-    for term in scenario.restrictions:
-        if term.name != "cannotFall":
-            continue
-        mover = term.objects[0]
+    # 4. cannotFall (and, with continuous_paths, every path): consecutive platforms of the path touch.
+    continuous = [(t.objects[0], Provenance("restriction", t.text, t.span)) for t in scenario.restrictions if t.name == "cannotFall"]
+    if rules.continuous_paths:
+        covered = {mover for mover, _ in continuous}
+        continuous += [
+            (mover, Provenance("support", f"{mover} moves on one continuous surface", moved_on[mover].span))
+            for mover in paths
+            if mover not in covered and mover in moved_on
+        ]
+    for mover, why in continuous:
         path = path_of(mover)
-        why = Provenance("restriction", term.text, term.span)
         for first, second in zip(path, path[1:]):
             if heading.get(mover, "right") == "right":
                 b.edge(TOUCHING, first, second, ("upperLeft",), why)
@@ -264,6 +276,11 @@ def last_hit_on(interactions, name: str) -> TermIR | None:
     """The last declared hit on `name` among `interactions` (those before some point)."""
     at = last_hit_at(interactions, name)
     return None if at is None else interactions[at]
+
+
+def _last_motion(interactions, name: str) -> int | None:
+    """The position of the last roll or slide of `name` among `interactions`."""
+    return next((i for i in reversed(range(len(interactions))) if interactions[i].name in ("roll", "slide") and interactions[i].objects[0] == name), None)
 
 
 def _push_off(direction: str) -> tuple[str, ...]:

@@ -1,7 +1,7 @@
 """The agent's action, PHYRE's ball tier: where the red ball is placed, and how big it is.
 
 Candidate actions follow the paper's points of interest: the ball is dropped onto the
-first target's upper corners and the middle of its top, in three sizes, from just above
+first target's upper corners, the middle of its top and the quarters between, in three sizes, from just above
 and from higher up (a fall gathers speed). Like PHYRE, an action places the ball at whole
 pixels with a whole radius from 2 to 32, inside the scene, occluding nothing (touching is
 allowed). The random agent draws actions as PHYRE's evaluation does, uniformly in
@@ -44,7 +44,8 @@ def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction
         return []
     target = names[first.objects[1]]
     left, _, right, top = outline_box(target)
-    points = {"upper left": left, "top": (left + right) / 2, "upper right": right}
+    width = right - left
+    points = {"upper left": left, "left of top": left + width / 4, "top": left + width / 2, "right of top": right - width / 4, "upper right": right}
     gaps = FALL_GAPS if first.name == "fall" else GAPS
     out = []
     for point, x in points.items():

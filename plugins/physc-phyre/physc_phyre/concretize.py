@@ -41,7 +41,9 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
     for edge in graph.edges:
         if edge.term == ON_LOCATION:
             carried.setdefault(edge.b, []).append(edge.a)
-    chosen = {node.name: rng.choice(node.concrete) for node in graph.nodes}
+    # The agent's ball is the action's, never an object of the scene (it is rollable and
+    # fallable only so that the red ball may roll and fall).
+    chosen = {node.name: rng.choice([c for c in node.concrete if c in KINDS or c == "floor"]) for node in graph.nodes}
     bodies: dict[str, Body] = {}
     # Objects first: a ledge's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: n.static):
