@@ -68,6 +68,10 @@ class SimulatedDomain(Domain):
 
     robustness_replays = 6  # noisy replays a generated solution must pass
 
+    trace_scale: float = 1.0
+    """Layout lengths per length of the simulation (PHYRE: pixels per metre): how a
+    simulated path is read in the placed layout (physc.generation.on_path)."""
+
     # ---- what the domain writes ---------------------------------------------------------
     @_no_default
     def level_from_layout(self, layout, scenario):

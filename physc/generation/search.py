@@ -8,9 +8,12 @@ step 4 without a domain's own repairs. For one placed layout it
 2. simulates every candidate action the domain offers (the first target's points of
    interest), judging each trace against the scenario (sequence fidelity, restrictions,
    goal);
-3. keeps the first working action that passes `accept` of the domain's noisy replays,
+3. if none realises the sequence, makes liesOnPath true in simulation: the play that came
+   furthest stops at a hit or fall, and that target (with its structure) is moved onto
+   the actor's simulated path (on_path.py), one interaction at a time;
+4. keeps the first working action that passes `accept` of the domain's noisy replays,
    and as many fresh ones (a confirmation: it was chosen for passing the first);
-4. validates it once more (unless told not to).
+5. validates it once more (unless told not to).
 
 Every simulation goes through an Evaluator, which counts it: the figure generation's
 cost is measured in. Noise is drawn from generators named after the action's label, so a
@@ -23,6 +26,7 @@ import random
 
 import attrs
 
+from physc.generation import on_path
 from physc.generation.evaluator import Evaluator
 from physc.generation.outcome import Outcome, Parts
 from physc.simulation.fidelity import Fidelity, fidelity
@@ -31,6 +35,7 @@ from physc.simulation.trace import Trace
 
 NOISE_STREAMS = ("robustness", "confirmation")  # the replays an action is chosen for, and the fresh ones that confirm it
 CANDIDATES = 3  # working actions put through the noisy replays at most, per layout
+MOVES = 6  # liesOnPath proposals simulated per interaction brought about
 # Why a layout is given up (`Outcome.given_up`), in the order of the steps.
 UNSTABLE = "the level did not stand"
 NO_ACTION = "no candidate action"
@@ -55,7 +60,9 @@ class ActionSearch:
     def __init__(self, domain, scenario, layout, accept: int, validate: bool = True):
         self.domain = domain
         self.scenario = scenario
+        self.layout = layout
         self.level = domain.level_from_layout(layout, scenario)
+        self.repairs: list[str] = []
         self.accept = accept
         self.validate = validate
         self.evaluator = Evaluator(0)
@@ -90,6 +97,8 @@ class ActionSearch:
             return self.give_up(NO_ACTION)
         working = [a for a in (self.simulate(label, action) for label, action in candidates) if a.fidelity.valid]
         if not working:
+            working = self.moved_onto_paths()
+        if not working:
             return self.give_up(NOT_REALISED)
         for attempt in working[:CANDIDATES]:
             passed = self.robustness(attempt, NOISE_STREAMS[0])
@@ -113,11 +122,37 @@ class ActionSearch:
             trace=trace.sequence(),
             validated=validated,
             robustness=(passed, self.domain.robustness_replays),
-            repairs=(),
+            repairs=tuple(self.repairs),
             obstacles=(),
             distractors=(),
         )
         return Outcome(True, self.evaluator.simulations, parts, best=self.best, stopped=self.stopped)
+
+    def moved_onto_paths(self) -> list[Attempt]:
+        """Step 3: while the furthest play stops at a hit or a fall, the layout with that
+        target moved onto the actor's path (the first of MOVES proposals that gets further
+        and still stands) is adopted; the play, once it realises the whole sequence."""
+        domain = self.domain
+        for _ in range(len(self.scenario.interactions)):
+            furthest = self.furthest
+            proposed = on_path.proposals(
+                self.layout, self.scenario, furthest.trace, furthest.fidelity, domain.layout_parameters, domain.trace_scale
+            )
+            for description, layout in proposed[:MOVES]:
+                level = domain.level_from_layout(layout, self.scenario)
+                if not domain.valid(level, furthest.action):
+                    continue
+                trial = self.simulate(furthest.label, furthest.action, level)
+                if trial.fidelity.matched > furthest.fidelity.matched and self.evaluator.run(lambda: domain.stability(level))[0]:
+                    break
+            else:
+                return []
+            self.layout, self.level, self.furthest = layout, level, trial
+            self.best = max(self.best, trial.fidelity.matched)
+            self.repairs.append(description)
+            if trial.fidelity.valid:
+                return [trial]
+        return []
 
     @property
     def stopped(self) -> str:

@@ -41,6 +41,7 @@ class Phyre(SimulatedDomain):
     solution_class = BallAction
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
+    trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
 
     @staticmethod

@@ -19,8 +19,8 @@ from physc.backends import Circle, parts
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody
 from physc_phyre.world import SCENE, extent, outline
 
-RADII = (8, 14, 22)  # pixels
-GAPS = (2, 40)  # pixels between the ball and the target's top when dropped
+RADII = (8, 16, 26)  # pixels
+GAPS = (4, 70)  # pixels between the ball and the target's top when dropped
 FALL_GAPS = (40, 100)  # for a first interaction that is a fall: from higher up
 NOISE = 0.5  # pixels, σ of the ball's position in a noisy replay
 MIN_RADIUS, MAX_RADIUS = 2, 32

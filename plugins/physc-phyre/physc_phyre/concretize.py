@@ -19,7 +19,7 @@ from physc.compiler.layout_graph import ON_LOCATION
 from physc_phyre.level import KINDS
 from physc_phyre.world import BAR_HEIGHT, SCENE, WALL, extent
 
-PATH_LENGTH = (90.0, 150.0)
+PATH_LENGTH = (50.0, 90.0)
 LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)

@@ -1,0 +1,157 @@
+"""The core a second domain is written on: compound bodies in both engines, the touch
+goal recognised, PHYRE's AUCCESS, the generic goal check (E0404), and the liesOnPath
+proposals of the generic action search."""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+import pytest
+
+from physc.backends import BodySpec, Circle, Compound, Polygon, load_backend, selected
+from physc.compiler.concrete_layout import ChosenRelation, ConcreteLayout, PlacedObject
+from physc.compiler.dimension_graphs import LayoutParameters
+from physc.domains.simulated import auccess
+from physc.generation import on_path
+from physc.simulation.fidelity import Fidelity
+from physc.simulation.recognise import Recogniser
+from physc.simulation.run import RunRules
+from physc.simulation.scene import Scene, play
+
+
+def rectangle(cx, cy, w, h):
+    return Polygon(((cx - w / 2, cy - h / 2), (cx + w / 2, cy - h / 2), (cx + w / 2, cy + h / 2), (cx - w / 2, cy + h / 2)))
+
+
+CUP = Compound((rectangle(0, 0, 3, 0.3), rectangle(-1.35, 1, 0.3, 2), rectangle(1.35, 1, 0.3, 2)))
+FLOOR = BodySpec("floor", rectangle(0, 0, 40, 1), 0, -0.65, static=True)
+
+
+@pytest.mark.parametrize("backend", ["pymunk", "bullet"])
+def test_a_compound_body_holds_a_ball_and_touches_it_once(backend):
+    world = load_backend(backend).create_world(9.8)
+    world.add(FLOOR)
+    world.add(BodySpec("cup", CUP, 0, 0, density=0.25))
+    world.add(BodySpec("ball", Circle(0.5), 0.3, 4, density=0.25))
+    begun = []
+    for _ in range(300):
+        world.step(1 / 60)
+        begun += [frozenset((e.a, e.b)) for e in world.begun()]
+    x, y = world.state("ball")[:2]
+    assert abs(x) < 1.2 and 0.3 < y < 1.0  # inside the cup, on its base
+    assert world.touching("ball") == {"cup"}
+    # The mass is the parts' (0.25 × area, with each engine's polygon skin).
+    assert world.mass("cup") == pytest.approx(0.25 * (3 * 0.3 + 2 * 0.3 * 2), rel=0.1)
+    if backend == "pymunk":  # one contact began, though the ball touched two of the cup's parts
+        assert begun.count(frozenset(("ball", "cup"))) == 1
+
+
+def test_bullet_refuses_a_compound_of_other_polygons():
+    world = load_backend("bullet").create_world(9.8)
+    triangle = Polygon(((0, 0), (1, 0), (0, 1)))
+    with pytest.raises(ValueError, match="circles and rectangles only"):
+        world.add(BodySpec("odd", Compound((triangle, rectangle(0, 0, 1, 1))), 0, 0))
+
+
+class Held(RunRules):
+    """Ends the run once the goal bodies have touched for 1 s."""
+
+    def __init__(self, goal=("ball", "shelf")):
+        self.goal = goal
+        self.held, self.met = 0, False
+
+    def on_start(self, world):
+        self.world = world
+
+    def finished(self, values, alive, time):
+        self.held = self.held + 1 if self.goal[1] in self.world.touching(self.goal[0]) else 0
+        self.met = self.held >= 60
+        return self.met
+
+    def solved(self, recording):
+        return self.met
+
+
+RECOGNISER = Recogniser(
+    hit_speed=0.5, rehit=0.1, moving=0.3, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2, fall_height=0.5,
+    bounce_time=0.2, bounce_speed=1.0, surfaces=("surface",), touch_time=1.0,
+)
+
+
+def test_touch_is_recognised_for_the_goal_bodies_once_held():
+    shelf = BodySpec("shelf", rectangle(0, 0, 6, 0.5), 0, 0, static=True, friction=0.9)
+    ball = BodySpec("ball", Circle(0.5), 0, 3, density=0.25, friction=0.9)
+    scene = Scene((shelf, ball), {"shelf": "surface", "ball": "object"}, 9.8, 1 / 60, {"ball": 0.5}, goal=("ball", "shelf"))
+    trace = play(scene, Held(), 10.0, RECOGNISER)
+    assert trace.solved and trace.duration < 3.0  # ended by the goal, not by the time
+    assert [i.text() for i in trace.interactions][-1] == "touch(ball, shelf)"
+    fell = play(attrs.evolve(scene, goal=("ball", "nothing")), Held(("ball", "nothing")), 2.0, RECOGNISER)
+    assert not fell.solved and "touch" not in fell.sequence()
+
+
+def test_auccess_weights_early_solutions_as_phyre_does():
+    assert auccess(1) == pytest.approx(1.0)
+    assert auccess(None) == 0.0 and auccess(101) == 0.0
+    assert auccess(100) == pytest.approx((math.log(101) - math.log(100)) / math.log(101))
+    assert auccess(10) == pytest.approx((math.log(101) - math.log(10)) / math.log(101))
+
+
+def test_the_goal_check_speaks_the_domains_words(tmp_path):
+    from conftest import run_physc
+
+    path = tmp_path / "s.phys"
+    path.write_text("scenario P {\n    domain phyre\n    interactions { hit(red, green, above) > fall(green, target) }\n}\n")
+    run = run_physc("check", "--color", "never", path)
+    assert run.status == 1
+    assert "error[E0404]: the greenObject 'green' never touches its target (a task is solved when the green object touches the target for 3 s)" in run.stderr
+    assert "help: add `> touch(green, target)` at the end of the interactions" in run.stderr
+
+
+def _placed(name, x, y, w, h, role="object", concrete="thing"):
+    return PlacedObject(name, role, concrete, None, x, y, 0.0, w, h)
+
+
+def test_lies_on_path_moves_the_target_with_its_support_onto_the_actors_path():
+    """A ball (the actor, rObj) falls at x = 2; the target resting on its ledge at x = 8 is moved,
+    ledge and all, so that its top is under the path; the actor's own ledge does not move."""
+    import numpy as np
+
+    from physc.dsl.frontend import analyze_text
+    from physc.simulation.trace import Trace
+
+    scenario = analyze_text("s.phys", "scenario P { domain phyre interactions { hit(red, rObj, above) > hit(rObj, green, above) > touch(green, target) } }").scenarios[0]
+    objects = (
+        _placed("rObj", 2, 5.5, 1, 1), _placed("ledge", 2, 4.9, 3, 0.2, "support"),
+        _placed("green", 8, 2.5, 1, 1), _placed("support_green", 8, 1.9, 3, 0.2, "support"),
+    )
+    conjunction = (
+        ChosenRelation("MeetN", "rObj", "ledge", "onLocation(rObj, ledge)"),
+        ChosenRelation("MeetN", "green", "support_green", "onLocation(green, support_green)"),
+    )
+    layout = ConcreteLayout("P", "phyre", 1, objects, conjunction, (), (), 1, 0, 0)
+    steps = 120
+    states = np.zeros((steps, 1, 6))
+    states[:, 0, 0] = 2.0
+    states[:, 0, 1] = np.linspace(5.5, 1.0, steps)
+    trace = Trace(1 / 60, ("rObj",), {"rObj": "object"}, states)
+    fidelity = Fidelity(1, 3, (), False, (0.1,))
+    parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
+    proposals = on_path.proposals(layout, scenario, trace, fidelity, parameters)
+    assert proposals
+    description, moved = proposals[0]
+    assert description.startswith("liesOnPath: green moved")
+    after = {o.name: o for o in moved.objects}
+    assert after["green"].x == pytest.approx(2.0) and after["support_green"].x == pytest.approx(2.0)
+    assert after["green"].y - after["support_green"].y == pytest.approx(0.6)  # still resting on it
+    assert after["rObj"] == objects[0] and after["ledge"] == objects[1]  # the prefix never moves
+    assert all(on_path.consistent(m, parameters, {"green", "support_green"}) for _, m in proposals)
+
+
+def test_a_selected_backend_plays_a_scene():
+    shelf = BodySpec("shelf", rectangle(0, 0, 6, 0.5), 0, 0, static=True)
+    ball = BodySpec("ball", Circle(0.5), 0, 3, density=0.25)
+    scene = Scene((shelf, ball), {"shelf": "surface", "ball": "object"}, 9.8, 1 / 60, {"ball": 0.5})
+    with selected("bullet"):
+        trace = play(scene, RunRules(), 1.5, RECOGNISER)
+    assert trace.states[-1, 0, 1] == pytest.approx(0.75, abs=0.05)  # came to rest on the shelf
