@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "solution_class", "accidental")  # working defaults
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "solution_class", "accidental", "measures")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -210,6 +210,10 @@ class Domain(abc.ABC):
     solution_class: type | None = None
     """The attrs class of a task's solution, for reading it back from a task file (`physc
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
+
+    measures: str = ""
+    """What the domain's evaluation measures mean (stability's limit, the noise, the agent),
+    a few sentences for the report of `physc eval`."""
 
     def accidental(self, level, scenario: ScenarioIR, solution, rng) -> dict:
         """The evaluation's accidental solvability of a task: a dict of figures for its record

@@ -46,6 +46,8 @@ VERIFY_METRICS = (
     ("verified_realised", "Sequence realised in {backend} (exact replay)", None),
     ("verified_noisy", "Sequence realised in {backend} (" + str(NOISY_REPLAYS) + " noisy replays)", None),
 )
+# With a random agent (a simulated domain's evaluation): PHYRE's AUCCESS of its attempts.
+AGENT_METRICS = (("auccess", "Random agent's AUCCESS (100 attempts)", None),)
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
@@ -84,7 +86,7 @@ def summarise(records: list[dict]) -> dict:
         # generator's noisy replays.
         fallbacks = sum(1 for r in made if r.get("robustness") and r["robustness"][0] < r["robustness"][1])
         out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
-        for metric, _, _ in METRICS + VERIFY_METRICS:
+        for metric, _, _ in METRICS + AGENT_METRICS + VERIFY_METRICS:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
@@ -93,15 +95,20 @@ def summarise(records: list[dict]) -> dict:
     scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
     counts = {count: stats(rows) for count, rows in sorted(group("interactions").items())}
     verified = sorted({r["verify_backend"] for r in records if r.get("verify_backend")})
-    return {"scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None}
+    domains = sorted({r.get("domain", "angrybirds") for r in records})  # records without one are angrybirds'
+    agent = any(r.get("auccess") is not None for r in records)
+    return {"scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None, "domains": domains, "auccess": agent}
 
 
 def metrics(summary: dict) -> tuple:
-    """The report's metrics: the paper's, and the verify backend's when the records have it."""
+    """The report's metrics: the paper's (compared with the paper's table only for its own
+    domain), the random agent's AUCCESS and the verify backend's when the records have them."""
+    own = METRICS if summary.get("domains", ["angrybirds"]) == ["angrybirds"] else tuple((m, title, None) for m, title, _ in METRICS)
+    out = own + (AGENT_METRICS if summary.get("auccess") else ())
     backend = summary.get("verify_backend")
-    if not backend:
-        return METRICS
-    return METRICS + tuple((metric, title.format(backend=backend), paper) for metric, title, paper in VERIFY_METRICS)
+    if backend:
+        out += tuple((metric, title.format(backend=backend), paper) for metric, title, paper in VERIFY_METRICS)
+    return out
 
 
 def effort(made: list[dict]) -> dict:
@@ -173,23 +180,39 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     for name, row in summary["scenarios"].items():
         cells = [name, str(row["interactions"]), _generated(row)] + [fmt(row[m]) for m, _, _ in metrics(summary)]
         lines.append("| " + " | ".join(cells) + " |")
-    lines += [
-        "",
-        "Definitions: stability = no object moves more than 0.05 in 10 s without action and nothing is",
-        "destroyed; intended solvability = the recorded solution solves the task (exactly; and the share of",
-        "10 replays with release-angle noise σ 0.1° and block/pig position noise σ 0.005); sequence fidelity =",
-        "the replay realises the declared sequence without breaking a restriction; accidental solvability =",
-        "the paper's AS: the share of the heuristic agent's plays (every dynamic object but the solution's",
-        "target, at its points of interest, both trajectories) that solve the task. Metrics are over the",
-        "generated tasks; generation ran with the final validation skipped, as in the paper. A fallback",
-        "(`--min-robustness`) is a task whose solution passed fewer than all of the generator's 6 noisy replays.",
-    ]
+    lines += [""] + _definitions(summary.get("domains", ["angrybirds"]))
     if summary.get("verify_backend"):
         lines += [
             f"With --verify-backend, a task was kept only if its solution also passed in {summary['verify_backend']}, and",
             f"the rows \"in {summary['verify_backend']}\" replay it there afresh: exactly, and {NOISY_REPLAYS} times with the same noise.",
         ]
     return "\n".join(lines) + "\n"
+
+
+def _definitions(domains: list[str]) -> list[str]:
+    """What the metrics mean for the records' domains: each domain's own `measures` text
+    (angrybirds': the paper's definitions)."""
+    from physc.domains import load_domain
+
+    lines = []
+    for name in domains:
+        if name == "angrybirds":
+            lines += list(ANGRYBIRDS_DEFINITIONS)
+        elif load_domain(name).measures:
+            lines.append(f"Definitions ({name}): {load_domain(name).measures}")
+    lines.append("Metrics are over the generated tasks; generation ran with the final validation skipped, as in the paper.")
+    return lines
+
+
+ANGRYBIRDS_DEFINITIONS = (
+    "Definitions: stability = no object moves more than 0.05 in 10 s without action and nothing is",
+    "destroyed; intended solvability = the recorded solution solves the task (exactly; and the share of",
+    "10 replays with release-angle noise σ 0.1° and block/pig position noise σ 0.005); sequence fidelity =",
+    "the replay realises the declared sequence without breaking a restriction; accidental solvability =",
+    "the paper's AS: the share of the heuristic agent's plays (every dynamic object but the solution's",
+    "target, at its points of interest, both trajectories) that solve the task. A fallback",
+    "(`--min-robustness`) is a task whose solution passed fewer than all of the generator's 6 noisy replays.",
+)
 
 
 def plot(summary: dict, metric: str, title: str, paper_key: str | None) -> bytes:
@@ -218,7 +241,7 @@ def write(records: list[dict], folder: Path, command: str, seconds: float) -> di
     write_atomic(folder / "results.md", markdown(summary, command, seconds))
     write_atomic(folder / "results.json", json.dumps({"command": command, "seconds": round(seconds, 1), **summary}, indent=2, default=str) + "\n")
     out = io.StringIO()
-    columns = CSV_COLUMNS + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
+    columns = CSV_COLUMNS + (("auccess",) if summary.get("auccess") else ()) + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
     writer = csv.DictWriter(out, fieldnames=columns, extrasaction="ignore")
     writer.writeheader()
     for record in sorted(records, key=lambda r: (r["scenario"], r["seed"])):

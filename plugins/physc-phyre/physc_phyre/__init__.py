@@ -41,6 +41,13 @@ class Phyre(SimulatedDomain):
     solution_class = BallAction
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
+    measures = (
+        "stability = no body moves more than half a pixel when the scene is left alone for 1,000 steps; intended "
+        "solvability = the recorded action solves the task (exactly; and the share of 10 replays with the ball moved "
+        "σ 0.5 px, PHYRE's half-pixel test of a stable solution); sequence fidelity = the replay realises the declared "
+        "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
+        "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
+    )
     trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
 

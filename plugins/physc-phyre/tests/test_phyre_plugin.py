@@ -1,0 +1,101 @@
+"""The PHYRE-like plugin end to end, as its users run it: check, compile (task file in
+PHYRE's structure, picture, the intended action), verify in both engines, eval."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+from pathlib import Path
+
+import pytest
+from physc.cli import main
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+LEDGE = EXAMPLES / "01_ledge.phys"
+
+
+def physc(*args) -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            status = main([str(a) for a in args])
+        except SystemExit as exit_:
+            status = exit_.code if isinstance(exit_.code, int) else 1
+    return status, out.getvalue(), err.getvalue()
+
+
+@pytest.fixture(scope="module")
+def ledge(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("ledge")
+    status, _, err = physc("compile", LEDGE, "--seed", "1", "-q", "-o", folder / "level.json", "--task", folder / "task.json", "--png", folder / "level.png")
+    assert status == 0, err
+    return folder
+
+
+def test_every_example_checks_clean():
+    examples = sorted(EXAMPLES.glob("*.phys"))
+    assert len(examples) >= 6
+    for path in examples:
+        assert physc("check", "-q", path)[0] == 0, path
+
+
+def test_the_domain_is_listed():
+    status, out, _ = physc("domains", "phyre")
+    assert status == 0 and out.startswith("phyre: PHYRE-like tasks") and "touch(a, b)" in out
+
+
+def test_the_level_is_a_task_in_phyres_structure(ledge):
+    task = json.loads((ledge / "level.json").read_text())
+    bodies = task["scene"]["bodies"]
+    assert task["scene"]["width"] == task["scene"]["height"] == 256
+    assert [b["shapeType"] for b in bodies[:4]] == [0, 0, 0, 0]  # the walls first
+    green, target = bodies[task["bodyId1"]], bodies[task["bodyId2"]]
+    assert (green["color"], green["bodyType"], green["shapeType"]) == (2, 2, 1)  # a green dynamic ball
+    assert (target["color"], target["bodyType"]) == (4, 1)  # purple, static
+    assert task["relationships"] == [6] and task["tier"] == "BALL"
+    assert task["description"] == "Make sure the green ball is touching the purple bar."
+    (ball,) = task["solutions"][0]["balls"]
+    assert 2 <= ball["radius"] <= 32 and ball["position"]["x"] == int(ball["position"]["x"])
+    x, y, r = task["physc"]["actions"][0]
+    assert all(0 <= v <= 1 for v in (x, y, r))
+    assert (ledge / "level.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_task_file_holds_the_intended_action_and_its_trace(ledge):
+    task = json.loads((ledge / "task.json").read_text())
+    assert task["domain"] == "phyre" and task["solution"]["node"] == "BallAction"
+    assert task["trace"].endswith("touch(green, target)")
+    assert task["robustness"] == [6, 6] and task["validated"] is True
+
+
+def test_same_seed_same_bytes(ledge, tmp_path):
+    assert physc("compile", LEDGE, "--seed", "1", "-q", "-o", tmp_path / "again.json")[0] == 0
+    assert (tmp_path / "again.json").read_bytes() == (ledge / "level.json").read_bytes()
+
+
+@pytest.mark.parametrize("backend", ["pymunk", "bullet"])
+def test_the_solution_replays_in_both_engines(ledge, backend):
+    status, out, err = physc("verify", ledge / "level.json", "--task", ledge / "task.json", "--backend", backend, "--replays", "2")
+    assert status == 0, out + err
+    assert "passes" in out
+
+
+def test_a_damaged_solution_is_a_usage_error(ledge, tmp_path):
+    task = json.loads((ledge / "task.json").read_text())
+    task["solution"]["radius"] = "big"
+    damaged = tmp_path / "task.json"
+    damaged.write_text(json.dumps(task))
+    status, _, err = physc("verify", ledge / "level.json", "--task", damaged)
+    assert status == 2 and "radius must be a finite number" in err and "Traceback" not in err
+
+
+def test_eval_measures_the_random_agent(tmp_path):
+    status, _, err = physc("eval", LEDGE, "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
+    assert status == 0, err
+    (record,) = [json.loads(line) for line in (tmp_path / "eval" / "records.jsonl").read_text().splitlines()]
+    assert record["generated"] and record["stable"] and record["intended_exact"]
+    assert record["agent_plays"] == 100 and 0 <= record["accidental"] <= 1 and 0 <= record["auccess"] <= 1
+    report = (tmp_path / "eval" / "results.md").read_text()
+    assert "AUCCESS" in report
+    assert list((tmp_path / "eval").glob("task_*.png"))

@@ -1,0 +1,56 @@
+"""The PHYRE-like plugin is written as a third party would write it: it imports from
+physc only the modules docs/plugins.md names as the public API ("What a plugin may
+import"), no private name, nothing of angrybirds; and it stays small (issue 33: about
+1,000 lines, no search, simulation or robustness loop of its own)."""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from conftest import ROOT
+
+PLUGIN = ROOT / "plugins" / "physc-phyre" / "physc_phyre"
+PLUGINS_DOC = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
+
+
+def public_modules() -> set[str]:
+    section = PLUGINS_DOC[PLUGINS_DOC.index("## What a plugin may import") :]
+    section = section[: section.index("\n## ", 1)]
+    return set(re.findall(r"^\| `(physc[\w.]*)` \|", section, re.M))
+
+
+def imports(path):
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] == "physc":
+            yield node.module, [alias.name for alias in node.names]
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] == "physc":
+                    yield alias.name, []
+
+
+def test_the_plugin_imports_only_physcs_public_api():
+    public = public_modules()
+    assert {"physc.domains.simulated", "physc.backends", "physc.simulation.scene"} <= public
+    sources = sorted(PLUGIN.rglob("*.py"))
+    assert sources
+    for path in sources:
+        for module, names in imports(path):
+            assert module in public, f"{path.name} imports {module}, which is not physc's public API"
+            assert not module.startswith("physc.domains.angrybirds")
+            assert not any(name.startswith("_") for name in names), f"{path.name} imports a private name from {module}"
+
+
+def test_the_plugin_is_small_and_has_no_loop_of_its_own():
+    from physc.domains.simulated import SimulatedDomain
+    from physc_phyre import Phyre
+
+    lines = sum(len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py"))
+    assert lines <= 1000, lines
+    assert issubclass(Phyre, SimulatedDomain)
+    # The search, the replays, stability and the agent are physc's: the plugin overrides none.
+    assert not {"satisfy", "replay", "stability", "accidental", "play"} & set(vars(Phyre))
+    for path in PLUGIN.rglob("*.py"):
+        assert ".step(" not in path.read_text(encoding="utf-8"), f"{path.name} steps a world itself"
