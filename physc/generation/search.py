@@ -69,6 +69,7 @@ class ActionSearch:
         self.best = 0  # most interactions realised in order by one play
         self.furthest: Attempt | None = None
         self.nearest = 0  # most noisy replays passed by a working action given up as fragile
+        self.tried = 0  # working actions put through the noisy replays
 
     def simulate(self, label: str, action, level=None) -> Attempt:
         """`action` played in `level` (default: the layout's), judged against the scenario."""
@@ -95,20 +96,12 @@ class ActionSearch:
         candidates = self.domain.actions(self.level, self.scenario)
         if not candidates:
             return self.give_up(NO_ACTION)
-        working = [a for a in (self.simulate(label, action) for label, action in candidates) if a.fidelity.valid]
-        if not working:
-            working = self.moved_onto_paths()
-        if not working:
-            return self.give_up(NOT_REALISED)
-        for attempt in working[:CANDIDATES]:
-            passed = self.robustness(attempt, NOISE_STREAMS[0])
-            if passed >= self.accept:
-                passed = min(passed, self.robustness(attempt, NOISE_STREAMS[1]))
-            if passed >= self.accept:
-                break
-            self.nearest = max(self.nearest, passed)
-        else:
-            return self.give_up(FRAGILE)
+        chosen = self.robust(self.simulate(label, action) for label, action in candidates)
+        if chosen is None and self.tried == 0:
+            chosen = self.robust(self.moved_onto_paths())
+        if chosen is None:
+            return self.give_up(FRAGILE if self.tried else NOT_REALISED)
+        attempt, passed = chosen
         validated, trace = None, attempt.trace
         if self.validate:
             final = self.simulate(attempt.label, attempt.action)
@@ -127,6 +120,24 @@ class ActionSearch:
             distractors=(),
         )
         return Outcome(True, self.evaluator.simulations, parts, best=self.best, stopped=self.stopped)
+
+    def robust(self, attempts) -> tuple[Attempt, int] | None:
+        """The first of `attempts` (simulated lazily, in order) that realises the sequence and
+        passes `accept` noisy replays and as many fresh ones, with the replays it passed; at
+        most CANDIDATES working ones are put through the replays."""
+        for attempt in attempts:
+            if not attempt.fidelity.valid:
+                continue
+            self.tried += 1
+            passed = self.robustness(attempt, NOISE_STREAMS[0])
+            if passed >= self.accept:
+                passed = min(passed, self.robustness(attempt, NOISE_STREAMS[1]))
+            if passed >= self.accept:
+                return attempt, passed
+            self.nearest = max(self.nearest, passed)
+            if self.tried == CANDIDATES:
+                return None
+        return None
 
     def moved_onto_paths(self) -> list[Attempt]:
         """Step 3: while the furthest play stops at a hit or a fall, the layout with that

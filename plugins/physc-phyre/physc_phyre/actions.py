@@ -47,12 +47,15 @@ def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction
     width = right - left
     points = {"upper left": left, "left of top": left + width / 4, "top": left + width / 2, "right of top": right - width / 4, "upper right": right}
     gaps = FALL_GAPS if first.name == "fall" else GAPS
-    out = []
+    out, seen = [], set()
     for point, x in points.items():
         for radius in RADII:
             for gap in gaps:
-                action = BallAction(int(x), int(top + radius + gap), radius, f"{target.name} {point}, r {radius}, {gap} px above")
-                if valid(level, action):
+                # As high as asked, or as high as the scene allows (a target near the top).
+                y = min(int(top + radius + gap), SCENE - radius)
+                action = BallAction(int(x), y, radius, f"{target.name} {point}, r {radius}, {y - top - radius:.0f} px above")
+                if (action.x, action.y, radius) not in seen and valid(level, action):
+                    seen.add((action.x, action.y, radius))
                     out.append((action.aimed_at, action))
     return out
 
