@@ -39,7 +39,8 @@ def replayed(records: list[dict], backend: str, replays: int):
         scenario = scenarios[key]
         domain = load_domain(scenario.domain)
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
-        solution = from_data(record["solution"], {"Solution": Solution})
+        kind = domain.solution_class or Solution
+        solution = from_data(record["solution"], {kind.__name__: kind})
         started = time.perf_counter()
         check = verify(domain, scenario, level, solution, backend)
         seconds = time.perf_counter() - started

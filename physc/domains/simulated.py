@@ -13,7 +13,8 @@ does:
 * `rules(level)`: the run's rules (physc.simulation.run.RunRules: when the goal is met,
   when the run is over), and `recogniser`, `seconds`, `stable_limit`;
 * for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
-  `random_action(rng)` and `valid(level, action)`;
+  `nudged(action, step)` (centring a fragile action), `random_action(rng)` and
+  `valid(level, action)`;
 * `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
   and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
   its solutions).
@@ -97,6 +98,12 @@ class SimulatedDomain(Domain):
         """(level, action) as one noisy replay draws them from `rng`: the domain's noise
         model. The default has none: robustness replays are exact replays."""
         return level, action
+
+    def nudged(self, action, step: int):
+        """`action` moved `step` steps along the line the search centres a fragile action on
+        (physc.generation.search: the middle of the run of working ones); None: no such line
+        (the default)."""
+        return None
 
     def random_action(self, rng: random.Random):
         """An action drawn as the evaluation's random agent draws one (None: the domain has

@@ -8,12 +8,15 @@ step 4 without a domain's own repairs. For one placed layout it
 2. simulates every candidate action the domain offers (the first target's points of
    interest), judging each trace against the scenario (sequence fidelity, restrictions,
    goal);
-3. if none realises the sequence, makes liesOnPath true in simulation: the play that came
+3. a working action that fails some noisy replays is first centred: moved to the middle of
+   the run of working actions around it, along the line the domain's `nudged` draws (PHYRE:
+   the ball a pixel at a time sideways), and replayed again;
+4. if none realises the sequence, makes liesOnPath true in simulation: the play that came
    furthest stops at a hit or fall, and that target (with its structure) is moved onto
    the actor's simulated path (on_path.py), one interaction at a time;
-4. keeps the first working action that passes `accept` of the domain's noisy replays,
+5. keeps the first working action that passes `accept` of the domain's noisy replays,
    and as many fresh ones (a confirmation: it was chosen for passing the first);
-5. validates it once more (unless told not to).
+6. validates it once more (unless told not to).
 
 Every simulation goes through an Evaluator, which counts it: the figure generation's
 cost is measured in. Noise is drawn from generators named after the action's label, so a
@@ -36,6 +39,7 @@ from physc.simulation.trace import Trace
 NOISE_STREAMS = ("robustness", "confirmation")  # the replays an action is chosen for, and the fresh ones that confirm it
 CANDIDATES = 3  # working actions put through the noisy replays at most, per layout
 MOVES = 6  # liesOnPath proposals simulated per interaction brought about
+CENTRING_STEPS = 6  # nudges tried each way around a fragile action
 # Why a layout is given up (`Outcome.given_up`), in the order of the steps.
 UNSTABLE = "the level did not stand"
 NO_ACTION = "no candidate action"
@@ -130,6 +134,12 @@ class ActionSearch:
                 continue
             self.tried += 1
             passed = self.robustness(attempt, NOISE_STREAMS[0])
+            if passed < self.domain.robustness_replays:
+                centred = self.centred(attempt)
+                if centred is not None:
+                    again = self.robustness(centred, NOISE_STREAMS[0])
+                    if again > passed:
+                        attempt, passed = centred, again
             if passed >= self.accept:
                 passed = min(passed, self.robustness(attempt, NOISE_STREAMS[1]))
             if passed >= self.accept:
@@ -138,6 +148,27 @@ class ActionSearch:
             if self.tried == CANDIDATES:
                 return None
         return None
+
+    def centred(self, attempt: Attempt) -> Attempt | None:
+        """The action in the middle of the run of working actions around `attempt` along the
+        domain's `nudged` line (at most CENTRING_STEPS each way), if that is another action
+        and works; None otherwise (or when the domain draws no such line)."""
+        def nudge(step: int) -> Attempt | None:
+            action = self.domain.nudged(attempt.action, step)
+            if action is None or not self.domain.valid(self.level, action):
+                return None
+            return self.simulate(f"{attempt.label}, nudged {step:+d}", action)
+
+        low = high = 0
+        while low > -CENTRING_STEPS and (found := nudge(low - 1)) is not None and found.fidelity.valid:
+            low -= 1
+        while high < CENTRING_STEPS and (found := nudge(high + 1)) is not None and found.fidelity.valid:
+            high += 1
+        middle = (low + high) // 2
+        if middle == 0:
+            return None
+        centre = nudge(middle)
+        return centre if centre is not None and centre.fidelity.valid else None
 
     def moved_onto_paths(self) -> list[Attempt]:
         """Step 3: while the furthest play stops at a hit or a fall, the layout with that

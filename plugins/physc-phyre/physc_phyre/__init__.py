@@ -88,6 +88,11 @@ class Phyre(SimulatedDomain):
         return level, actions.noisy(action, rng)
 
     @staticmethod
+    def nudged(action: BallAction, step: int) -> BallAction:
+        """The ball `step` whole pixels sideways."""
+        return attrs.evolve(action, x=action.x + step)
+
+    @staticmethod
     def random_action(rng: random.Random) -> BallAction:
         return actions.random_action(rng)
 
