@@ -46,6 +46,7 @@ VERIFY_METRICS = (
     ("verified_realised", "Sequence realised in {backend} (exact replay)", None),
     ("verified_noisy", "Sequence realised in {backend} (" + str(NOISY_REPLAYS) + " noisy replays)", None),
 )
+NAMES = {2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six", 7: "Seven", 8: "Eight"}  # interaction counts as the table heads them
 # With a random agent (a simulated domain's evaluation): PHYRE's AUCCESS of its attempts.
 AGENT_METRICS = (("auccess", "Random agent's AUCCESS (100 attempts)", None),)
 CSV_COLUMNS = (
@@ -156,7 +157,7 @@ def _generated(row: dict) -> str:
 
 def markdown(summary: dict, command: str, seconds: float) -> str:
     counts = sorted(summary["interactions"])
-    names = {2: "Two", 4: "Four", 6: "Six", 8: "Eight"}
+    names = NAMES
     lines = ["# Evaluation results", "", f"Command: `{command}`  ", f"Wall time of this invocation: {seconds:.0f} s (a resumed run counts only the tasks it ran)", ""]
     lines += ["## Per interaction count (physc; the paper in brackets)", ""]
     lines.append("| Evaluation metric | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")

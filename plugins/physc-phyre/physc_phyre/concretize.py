@@ -4,7 +4,7 @@ Sizes follow PHYRE's templates: balls of scale 0.06–0.12 (radius int(scale·12
 px), bars 35–70 px, jars 40–60 px tall, standing sticks 45–70 px wide. A ledge that
 carries an object is at least three of its widths long, so the object can rest in its
 left, middle or right third; a surface something rolls or slides on is long enough to
-gather speed; a ramp declines 15–30° towards the motion on it (a surface for a bounce
+gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a surface for a bounce
 tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom.
 """
 
@@ -23,6 +23,7 @@ PATH_LENGTH = (50.0, 90.0)
 LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)
+TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
 
 
 def _size(shape: str, rng: random.Random) -> float:
@@ -61,7 +62,7 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
         elif concrete in ("blackBar", "purpleBar") and node.static:
             widest = max((bodies[o].geometry.width for o in carried.get(name, ()) if o in bodies), default=0.0)
-            low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else BAR_LENGTH
+            low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else TARGET_LENGTH if concrete == "purpleBar" else BAR_LENGTH
             low = max(low, 3 * widest + 6.0)
             bodies[name] = Body(name, node.role, concrete, Geometry(round(rng.uniform(low, max(high, low + 30.0)), 1), BAR_HEIGHT))
         else:
