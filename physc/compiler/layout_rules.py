@@ -9,8 +9,8 @@ PHYRE-like plugin both do. The paper's table "Inferred layout constraints":
     roll(a, b, d)     → inDirection(a, b, -d)
     fall(a, b, d)     → locatedFar(a, b, d)
                         (d = aboveLeft when d is above and the hit before the fall pushes
-                        a right, or a rolled or slid right just before: it comes down
-                        ahead; see `pushes`)
+                        a right, or, with fall_ahead_after_motion, a rolled or slid right
+                        just before: it comes down ahead; see `pushes`)
     destroy, touch    → nothing of their own (the hit or fall before them places them)
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d)
@@ -84,6 +84,10 @@ class LayoutRules:
     ground: str | None = None
     player_heading: str | None = None
     player_placed: bool = True
+    fall_ahead_after_motion: bool = False
+    """Whether a faller that rolled or slid just before its fall starts above and behind
+    its target (it comes down ahead), as one pushed off sideways does. Without it
+    (angrybirds) only a push says so."""
     continuous_paths: bool = False
     """Whether the consecutive surfaces of every path touch, one continuous top edge (a
     ledge running into a ramp). Without it (angrybirds) they touch only under cannotFall,
@@ -146,7 +150,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
             pushed = None if hit is None else pushes(scenario.interactions, hit, players, flies)
             moved = _last_motion(scenario.interactions[:position], term.objects[0])
-            if moved is not None and (hit is None or moved > hit):  # it rolled or slid off: it comes down ahead
+            if rules.fall_ahead_after_motion and moved is not None and (hit is None or moved > hit):  # it rolled or slid off
                 pushed = scenario.interactions[moved].directions[0]
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.

@@ -144,8 +144,10 @@ class SimulatedDomain(Domain):
         return self.play(level, action, scenario)
 
     def stability(self, level) -> tuple[bool, float]:
-        """(stable, the largest shift) of `level` left alone for `seconds`."""
-        return stable(self.play(level, None, recognise=False), self.stable_limit)
+        """(stable, the largest shift) of `level` left alone for all of `seconds`: under plain
+        rules, which never end a run early (a domain's rules may stop once all is still, and
+        something that starts to tip slowly must not pass for standing)."""
+        return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
 
     def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
         """The generic search (physc.generation.search.ActionSearch) with this domain's hooks."""

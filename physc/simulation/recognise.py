@@ -104,17 +104,18 @@ class Recogniser:
 
     def _touches(self, trace: Trace, intervals) -> list[Interaction]:
         """touch(a, b) for the goal bodies, in the order `Trace.goal` names them, each time
-        they touch for touch_time without a break (a run ended by the goal counts its
-        last step: within a step and a half of the time)."""
+        they touch for touch_time without a break, counted in steps as a domain's goal rule
+        counts them (a touch the run ended in counts its last step)."""
         if self.touch_time is None or len(trace.goal) < 2:
             return []
         a, b = trace.goal[:2]
-        held = self.touch_time - 1.5 * trace.dt
-        return [
-            Interaction("touch", (a, b), None, begin + self.touch_time)
-            for begin, end in intervals.get(frozenset((a, b)), ())
-            if end - begin >= held
-        ]
+        dt, out = trace.dt, []
+        for begin, end in intervals.get(frozenset((a, b)), ()):
+            # Steps touching: to the separation, or, for a touch the run ended in, its last step too.
+            steps = (end - begin) / dt + (1 if end >= trace.duration - dt / 2 else 0)
+            if steps >= self.touch_time / dt - 0.5:
+                out.append(Interaction("touch", (a, b), None, begin + self.touch_time))
+        return out
 
     def _hits(self, trace: Trace) -> list[Interaction]:
         kinds = trace.kinds

@@ -102,7 +102,7 @@ class PymunkWorld(ContactLog):
         for shape in shapes:
             if not spec.static:
                 if spec.mass is not None:  # a given mass spread over the parts by area
-                    shape.mass = spec.mass * shape.area / total
+                    shape.mass = spec.mass if len(shapes) == 1 else spec.mass * shape.area / total
                 else:
                     shape.density = spec.density
             shape.friction = math.sqrt(max(spec.friction, 0.0))

@@ -35,14 +35,14 @@ class Phyre(SimulatedDomain):
     name = "phyre"
     description = "PHYRE-like tasks: the agent places a red ball; the green object must touch the target for 3 s"
     vocabulary = VOCABULARY
-    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground=None, player_placed=False, continuous_paths=True)
+    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground=None, player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction)
     solution_class = BallAction
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
     measures = (
-        "stability = no body moves more than half a pixel when the scene is left alone for 1,000 steps; intended "
+        "stability = no body moves more than half a pixel when the scene is left alone for 1,000 steps (16.7 s); intended "
         "solvability = the recorded action solves the task (exactly; and the share of 10 replays with the ball moved "
         "σ 0.5 px, PHYRE's half-pixel test of a stable solution); sequence fidelity = the replay realises the declared "
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "

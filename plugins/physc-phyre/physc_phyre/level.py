@@ -34,9 +34,25 @@ GOAL_COLOURS = ("green",)
 TARGET_COLOURS = ("blue", "purple")
 
 
+SHAPES = ("ball", "bar", "jar", "standingsticks")
+COLORS = ("red", "green", "blue", "purple", "gray", "black")
+
+
 def _finite(instance, attribute, value) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise ValueError(f"{attribute.name} must be a finite number, not {value!r}")
+
+
+def _positive(instance, attribute, value) -> None:
+    _finite(instance, attribute, value)
+    if value <= 0:
+        raise ValueError(f"{attribute.name} must be more than 0, not {value!r}")
+
+
+def _radius(instance, attribute, value) -> None:
+    _finite(instance, attribute, value)
+    if not 2 <= value <= 32:
+        raise ValueError(f"radius must be from 2 to 32 px (PHYRE's ball tier), not {value!r}")
 
 
 @attrs.frozen
@@ -46,7 +62,7 @@ class BallAction:
 
     x: float = attrs.field(validator=_finite)
     y: float = attrs.field(validator=_finite)
-    radius: float = attrs.field(validator=_finite)
+    radius: float = attrs.field(validator=_radius)
     aimed_at: str = ""  # the candidate it came from (a point of interest of the first target)
 
     def unit(self) -> tuple[float, float, float]:
@@ -57,13 +73,13 @@ class BallAction:
 @attrs.frozen
 class SceneBody:
     name: str
-    shape: str  # ball | bar | jar | standingsticks
+    shape: str = attrs.field(validator=attrs.validators.in_(SHAPES))  # ball | bar | jar | standingsticks
     x: float = attrs.field(validator=_finite)  # the body's origin, pixels (a jar's: the middle of its base)
     y: float = attrs.field(validator=_finite)
     angle: float = attrs.field(validator=_finite)  # radians, counter-clockwise
-    size: float = attrs.field(validator=_finite)  # ball: radius; bar: length; jar: height; sticks: width
-    color: str
-    dynamic: bool
+    size: float = attrs.field(validator=_positive)  # ball: radius; bar: length; jar: height; sticks: width
+    color: str = attrs.field(validator=attrs.validators.in_(COLORS))
+    dynamic: bool = attrs.field(validator=attrs.validators.instance_of(bool))
 
 
 @attrs.frozen
@@ -76,8 +92,16 @@ class PhyreLevel:
     tier: str = "BALL"
     solutions: tuple[BallAction, ...] = ()
 
+    def __attrs_post_init__(self):
+        names = {b.name for b in self.bodies}
+        if len(self.goal) != 2 or not (set(self.goal) <= names or self.goal == ("", "")):
+            raise ValueError(f"the goal must name two of the level's bodies, not {list(self.goal)!r}")
+
     def body(self, name: str) -> SceneBody:
-        return next(b for b in self.bodies if b.name == name)
+        for body in self.bodies:
+            if body.name == name:
+                return body
+        raise KeyError(name)
 
 
 def level_from_layout(layout, scenario) -> PhyreLevel:
@@ -95,8 +119,17 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         x = placed.x + below * math.sin(angle)
         y = placed.y - below * math.cos(angle)
         bodies.append(SceneBody(placed.name, shape, round(x, 3), round(y, 3), round(angle, 6), round(size, 3), color, dynamic))
-    green = next((b.name for b in bodies if b.color in GOAL_COLOURS), "")
-    target = next((b.name for b in bodies if b.color in TARGET_COLOURS), "")
+    # The goal pair is the scenario's `touch(green, target)`; without a scenario (a placed
+    # layout's picture), the first green body and the first blue or purple one.
+    touch = next((t.objects for t in scenario.interactions if t.name == "touch"), None) if scenario is not None else None
+    names = {b.name for b in bodies}
+    if touch is not None and set(touch[:2]) <= names:
+        green, target = touch[:2]
+    else:
+        green = next((b.name for b in bodies if b.color in GOAL_COLOURS), "")
+        target = next((b.name for b in bodies if b.color in TARGET_COLOURS), "")
+        if not (green and target):
+            green = target = ""
     player = next((o.name for o in scenario.objects if o.term == "redBall"), "redBall") if scenario is not None else "redBall"
     floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
     return PhyreLevel(tuple(bodies), (green, target), player, floor)

@@ -45,10 +45,12 @@ def jar_parts(height: float) -> tuple[Polygon, ...]:
     top = height - t
     parts = [rectangle(0.0, 0.0, base, t)]
     for side in (-1, 1):
+        # From the base's end, on its middle line, to the opening's edge: its corners stay
+        # within the outline box (`extent`), none below the base.
         x0, x1 = side * (base - t) / 2, side * (width - t) / 2
         length = math.hypot(x1 - x0, top)
         angle = math.atan2(top, x1 - x0)
-        parts.append(rectangle((x0 + x1) / 2, top / 2, length + t, t, angle))
+        parts.append(rectangle((x0 + x1) / 2, top / 2, length, t, angle))
     return tuple(parts)
 
 

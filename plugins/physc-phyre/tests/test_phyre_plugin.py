@@ -81,13 +81,48 @@ def test_the_solution_replays_in_both_engines(ledge, backend):
     assert "passes" in out
 
 
-def test_a_damaged_solution_is_a_usage_error(ledge, tmp_path):
+@pytest.mark.parametrize(
+    "damage, message",
+    [
+        (lambda t: t["solution"].update(radius="big"), "radius must be a finite number"),
+        (lambda t: t["solution"].update(radius=0), "radius must be from 2 to 32 px"),
+        (lambda t: t["level"]["bodies"][0].update(size=0), "size must be more than 0"),
+        (lambda t: t["level"]["bodies"][0].update(shape="cloud"), "'shape' must be in"),
+        (lambda t: t["level"].update(goal=["green"]), "the goal must name two of the level's bodies"),
+        (lambda t: t["level"].update(goal=["green", "wall_bottom"]), "the goal must name two of the level's bodies"),
+    ],
+)
+def test_a_damaged_task_file_is_a_usage_error(ledge, tmp_path, damage, message):
     task = json.loads((ledge / "task.json").read_text())
-    task["solution"]["radius"] = "big"
+    damage(task)
     damaged = tmp_path / "task.json"
     damaged.write_text(json.dumps(task))
     status, _, err = physc("verify", ledge / "level.json", "--task", damaged)
-    assert status == 2 and "radius must be a finite number" in err and "Traceback" not in err
+    assert status == 2 and message in err and "internal error" not in err, err
+
+
+def test_the_goal_pair_is_the_scenarios_touch(tmp_path):
+    """A blue ball declared before the purple floor is not the target: touch says which is."""
+    path = tmp_path / "s.phys"
+    text = LEDGE.read_text().replace("target: targetObject = purpleFloor", "decoy: targetObject = blueBall\n        target: targetObject = purpleFloor")
+    path.write_text(text.replace("        > touch(green, target)\n    }", "        > touch(green, target)\n    }\n    restrictions { cannotHit(red, decoy, any) }"))
+    status, out, err = physc("compile", path, "--seed", "1", "-q", "--emit", "layout")
+    assert status == 0, err
+    from physc_phyre import DOMAIN
+    from physc.compiler.concrete_layout import ConcreteLayout
+    from physc.dsl.frontend import analyze
+    from physc.serialize import from_data
+
+    scenario = analyze(str(path)).scenarios[0]
+    layout = from_data(json.loads(out), {cls.__name__: cls for cls in (ConcreteLayout,)} | _layout_classes())
+    assert "decoy" in {o.name for o in layout.objects}
+    assert DOMAIN.level_from_layout(layout, scenario).goal == ("green", "target")
+
+
+def _layout_classes():
+    from physc.compiler.concrete_layout import ChosenRelation, PlacedObject
+
+    return {"ChosenRelation": ChosenRelation, "PlacedObject": PlacedObject}
 
 
 def test_eval_measures_the_random_agent(tmp_path):
