@@ -158,3 +158,43 @@ class Vocabulary:
     def fits(self, concrete: tuple[str, ...], term_name: str) -> bool:
         allowed = self._by_spelling[term_name].concrete
         return all(c in allowed for c in concrete)
+
+
+SIDES = ("left", "right", "above", "below")
+
+
+def paper_terms(rollable: str, slidable: str, surface: str) -> tuple[dict[str, TermSignature], tuple[TermSignature, ...]]:
+    """The paper's interaction terms (hit, roll, fall, slide, bounce, by name) and its
+    restrictions (cannotHit, cannotFall), with the object terms a domain calls rollable,
+    slidable and a surface. Recognition (physc.simulation.recognise) and the layout rules
+    (physc.compiler.layout_rules) read these terms; a domain adds its goal term."""
+
+    def actor(fits=None):
+        return Parameter("a", OBJECT, fits=fits, dynamic=True, acts=True)
+
+    hit_directions = SIDES + ("any",)
+    along = ("left", "right")
+    interactions = (
+        TermSignature("hit", INTERACTION, (actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=hit_directions)), "a collides with b from direction d of b"),
+        TermSignature("roll", INTERACTION, (actor(rollable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)), "a rolls on b towards d"),
+        TermSignature(
+            "fall", INTERACTION,
+            (actor(), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",))),
+            "a falls towards b (a starts far from b in direction d of b)",
+        ),
+        TermSignature("slide", INTERACTION, (actor(slidable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)), "a slides on b towards d"),
+        TermSignature(
+            "bounce", INTERACTION,
+            (Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=SIDES)),
+            "a bounces off b towards d",
+        ),
+    )
+    restrictions = (
+        TermSignature(
+            "cannotHit", RESTRICTION,
+            (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=hit_directions)),
+            "during the solution, a must not collide with b from d", narrows="hit",
+        ),
+        TermSignature("cannotFall", RESTRICTION, (Parameter("a", OBJECT, dynamic=True),), "during the solution, a must not fall", forbids="fall"),
+    )
+    return {t.name: t for t in interactions}, restrictions

@@ -2,19 +2,16 @@
 paper's tables "Object grammar", "Interaction grammar", "Restriction grammar")."""
 
 from physc.domains.vocabulary import (
-    DIRECTION,
     INTERACTION,
     OBJECT,
-    RESTRICTION,
+    SIDES,
     ConcreteObject,
     ObjectTerm,
     Parameter,
     TermSignature,
     Vocabulary,
+    paper_terms,
 )
-
-SIDES = ("left", "right", "above", "below")
-HIT_DIRECTIONS = SIDES + ("any",)
 
 CONCRETE_OBJECTS = (
     ConcreteObject("redBird", description="the red bird (Science Birds BirdRed)"),
@@ -45,75 +42,21 @@ OBJECT_TERMS = (
 )
 
 
-def _actor(fits=None):
-    return Parameter("a", OBJECT, fits=fits, dynamic=True, acts=True)
-
-
+PAPER, RESTRICTIONS = paper_terms(rollable="rollableBlock", slidable="slidableBlock", surface="surface")
 TERMS = (
-    TermSignature(
-        "hit",
-        INTERACTION,
-        (_actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=HIT_DIRECTIONS)),
-        "a collides with b from direction d of b",
-    ),
-    TermSignature(
-        "roll",
-        INTERACTION,
-        (_actor("rollableBlock"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
-        "a rolls on b towards d",
-    ),
-    TermSignature(
-        "fall",
-        INTERACTION,
-        (
-            _actor(),
-            Parameter("b", OBJECT),
-            Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",)),
-        ),
-        "a falls towards b (a starts far from b in direction d of b)",
-    ),
-    TermSignature(
-        "slide",
-        INTERACTION,
-        (_actor("slidableBlock"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
-        "a slides on b towards d",
-    ),
-    TermSignature(
-        "bounce",
-        INTERACTION,
-        (
-            Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True),
-            Parameter("b", OBJECT, fits="surface"),
-            Parameter("d", DIRECTION, directions=SIDES),
-        ),
-        "a bounces off b towards d",
-    ),
+    PAPER["hit"],
+    PAPER["roll"],
+    PAPER["fall"],
+    PAPER["slide"],
+    PAPER["bounce"],
     TermSignature(
         "destroy",
         INTERACTION,
-        (_actor(), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
+        (Parameter("a", OBJECT, dynamic=True, acts=True), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
         "a destroys b in the collision",
         requires="hit",
     ),
-    TermSignature(
-        "cannotHit",
-        RESTRICTION,
-        (
-            Parameter("a", OBJECT, dynamic=True),
-            Parameter("b", OBJECT),
-            Parameter("d", DIRECTION, directions=HIT_DIRECTIONS),
-        ),
-        "during the solution, a must not collide with b from d",
-        narrows="hit",
-    ),
-    TermSignature(
-        "cannotFall",
-        RESTRICTION,
-        (Parameter("a", OBJECT, dynamic=True),),
-        "during the solution, a must not fall",
-        forbids="fall",
-    ),
-)
+) + RESTRICTIONS
 
 VOCABULARY = Vocabulary(
     object_terms=OBJECT_TERMS,

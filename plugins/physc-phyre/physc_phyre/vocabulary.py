@@ -1,5 +1,6 @@
 """The `.phys` vocabulary of PHYRE-like tasks: PHYRE's objects in its colours, the
-interactions of the paper, and PHYRE's goal as a term, `touch(green, target)`.
+interactions of the paper (physc's `paper_terms`), and PHYRE's goal as a term,
+`touch(green, target)`.
 
 PHYRE colours its objects by role (docs/phyre-facts.md §4): the agent's ball red, the
 goal object green, the object it must touch blue when dynamic and purple when static,
@@ -7,18 +8,16 @@ other dynamic objects gray and static ones black.
 """
 
 from physc.domains.vocabulary import (
-    DIRECTION,
     INTERACTION,
     OBJECT,
-    RESTRICTION,
+    SIDES,
     ConcreteObject,
     ObjectTerm,
     Parameter,
     TermSignature,
     Vocabulary,
+    paper_terms,
 )
-
-SIDES = ("left", "right", "above", "below")
 
 CONCRETE_OBJECTS = (
     ConcreteObject("redBall", description="the agent's red ball, placed by the action"),
@@ -53,66 +52,15 @@ OBJECT_TERMS = (
 )
 
 
-def _actor(fits=None):
-    return Parameter("a", OBJECT, fits=fits, dynamic=True, acts=True)
-
-
-TERMS = (
-    TermSignature(
-        "hit",
-        INTERACTION,
-        (_actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=SIDES + ("any",))),
-        "a collides with b from direction d of b",
-    ),
-    TermSignature(
-        "roll",
-        INTERACTION,
-        (_actor("rollableObject"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
-        "a rolls on b towards d",
-    ),
-    TermSignature(
-        "slide",
-        INTERACTION,
-        (_actor("slidableObject"), Parameter("b", OBJECT, fits="surface"), Parameter("d", DIRECTION, directions=("left", "right"))),
-        "a slides on b towards d",
-    ),
-    TermSignature(
-        "fall",
-        INTERACTION,
-        (_actor(), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",))),
-        "a falls towards b (a starts far from b in direction d of b)",
-    ),
-    TermSignature(
-        "bounce",
-        INTERACTION,
-        (
-            Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True),
-            Parameter("b", OBJECT, fits="surface"),
-            Parameter("d", DIRECTION, directions=SIDES),
-        ),
-        "a bounces off b towards d",
-    ),
+PAPER, RESTRICTIONS = paper_terms(rollable="rollableObject", slidable="slidableObject", surface="surface")
+TERMS = tuple(PAPER.values()) + (
     TermSignature(
         "touch",
         INTERACTION,
         (Parameter("a", OBJECT, fits="greenObject", completes=True), Parameter("b", OBJECT, fits="targetObject")),
         "the green object a touches b, and keeps touching it for 3 s (PHYRE's goal)",
     ),
-    TermSignature(
-        "cannotHit",
-        RESTRICTION,
-        (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=SIDES + ("any",))),
-        "during the solution, a must not collide with b from d",
-        narrows="hit",
-    ),
-    TermSignature(
-        "cannotFall",
-        RESTRICTION,
-        (Parameter("a", OBJECT, dynamic=True),),
-        "during the solution, a must not fall",
-        forbids="fall",
-    ),
-)
+) + RESTRICTIONS
 
 VOCABULARY = Vocabulary(
     object_terms=OBJECT_TERMS,
