@@ -67,6 +67,10 @@ class Span:
         """The smallest span covering both."""
         return Span(min(self.start, other.start), max(self.end, other.end), self._line_starts)
 
+    def first(self, width: int = 1) -> Span:
+        """The first `width` characters of the span (0: the empty span where it starts)."""
+        return Span(self.start, min(self.start + width, self.end), self._line_starts)
+
     def last(self, width: int = 1) -> Span:
         """The last `width` characters of the span."""
         return Span(max(self.end - width, self.start), self.end, self._line_starts)
@@ -98,12 +102,34 @@ class Label:
 
 
 @attrs.frozen
+class Edit:
+    """Replace the text of `span` with `text` (an empty span inserts)."""
+
+    span: Span
+    text: str
+
+
+@attrs.frozen
+class Fix:
+    """A change that a diagnostic's help proposes, ready to apply: what editors offer as a quick
+    fix. `title` says what it does ("replace 'hti' with 'hit'")."""
+
+    title: str
+    edits: tuple[Edit, ...]
+
+    @classmethod
+    def replace(cls, span: Span, text: str, title: str | None = None) -> "Fix":
+        return cls(title or f"replace with '{text}'", (Edit(span, text),))
+
+
+@attrs.frozen
 class Diagnostic:
     code: str
     message: str
     span: Span | None = None
     help: str | None = None
     notes: tuple[Label, ...] = ()
+    fixes: tuple[Fix, ...] = ()  # the help's proposals as edits, best first
 
     @property
     def severity(self) -> Severity:
@@ -308,6 +334,9 @@ def to_json(diagnostic: Diagnostic, path: str) -> dict:
         "message": diagnostic.message,
         "help": diagnostic.help,
         "notes": [{"message": n.message, **where(n.span)} for n in diagnostic.notes],
+        "fixes": [
+            {"title": f.title, "edits": [{"text": e.text, **where(e.span)} for e in f.edits]} for f in diagnostic.fixes
+        ],
     }
 
 

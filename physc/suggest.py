@@ -18,7 +18,11 @@ def closest(word: str, candidates: Iterable[str], limit: int = 3) -> list[str]:
 
 def did_you_mean(word: str, candidates: Iterable[str]) -> str | None:
     """A help sentence such as "did you mean 'rBlock'?", or None."""
-    found = closest(word, candidates)
+    return asking(closest(word, candidates))
+
+
+def asking(found: list[str]) -> str | None:
+    """The help sentence for the names `closest` found: "did you mean 'a' or 'b'?", or None."""
     if not found:
         return None
     quoted = [f"'{c}'" for c in found]

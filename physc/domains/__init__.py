@@ -15,7 +15,7 @@ from importlib.metadata import EntryPoint, entry_points
 
 from physc.domains.base import REQUIRED, Domain, DomainError, MissingCapability
 from physc.domains.vocabulary import Vocabulary
-from physc.suggest import did_you_mean
+from physc.suggest import asking, closest
 
 __all__ = ["DEFAULT_DOMAIN", "ENTRY_POINT_GROUP", "Domain", "DomainError", "MissingCapability", "installed_domains", "load_domain"]
 
@@ -36,10 +36,12 @@ def load_domain(name: str) -> Domain:
     installed = installed_domains()
     if name not in installed:
         known = ", ".join(installed) or "none"
+        found = closest(name, installed)
         raise DomainError(
             "E0701",
             f"the domain '{name}' is not installed",
-            did_you_mean(name, installed) or f"installed domains: {known}",
+            asking(found) or f"installed domains: {known}",
+            tuple(found),
         )
     plugin = f"the plugin of domain '{name}' ({installed[name].value})"
     try:

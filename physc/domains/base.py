@@ -64,11 +64,12 @@ class DomainError(Exception):
     """A domain is unknown (`code` E0701), its plugin fails to load (E0702), or it
     lacks a capability that was asked for (E0703)."""
 
-    def __init__(self, code: str, message: str, help: str | None = None):
+    def __init__(self, code: str, message: str, help: str | None = None, suggestions: tuple[str, ...] = ()):
         super().__init__(message)
         self.code = code
         self.message = message
         self.help = help
+        self.suggestions = suggestions  # installed domain names the asked-for one may be a misspelling of
 
 
 class MissingCapability(DomainError):

@@ -12,10 +12,51 @@ from __future__ import annotations
 
 from typing import Callable, Container, Sequence
 
+import attrs
+
+from physc.diagnostics import Edit, Fix, Span
 from physc.domains.vocabulary import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
-from physc.suggest import article
+from physc.suggest import article, asking, closest
 
 Use = tuple[TermSignature, Parameter]
+
+
+@attrs.frozen
+class Advice:
+    """A help text and the code it proposes, which the checks turn into quick fixes (`Fix`)."""
+
+    text: str
+    declaration: str | None = None  # write this declaration of the object instead of its own
+    other: str | None = None  # name this object at the use instead
+    before: str | None = None  # insert this before the term: `hit(bird, pig, any) > `
+    after: str | None = None  # insert this after the last interaction: ` > destroy(bird, pig)`
+
+    def fixes(self, span: Span, term: Span | None, declaration: Span | None, last: Span | None) -> tuple[Fix, ...]:
+        """The edits proposed for an error at `span` about `term`, of an object declared at
+        `declaration`, in a scenario whose last interaction is at `last`."""
+        fixes = []
+        if self.declaration and declaration is not None:
+            fixes.append(Fix.replace(declaration, self.declaration, f"declare it as `{self.declaration}`"))
+        if self.other:
+            fixes.append(Fix.replace(span, self.other, f"use `{self.other}` here"))
+        if self.before and term is not None:
+            fixes.append(Fix(f"insert `{self.before.rstrip(' >')}` before it", (Edit(term.first(0), self.before),)))
+        if self.after and last is not None:
+            fixes.append(Fix(f"add `{self.after.strip()}` at the end", (Edit(last.last(0), self.after),)))
+        return tuple(fixes)
+
+
+def replacements(name, found, uses: tuple[Span, ...] = ()) -> tuple[Fix, ...]:
+    """Quick fixes that replace a misspelt name (an ast.Name, and its other `uses`) with each name found."""
+    spans = (name.span, *uses)
+    return tuple(Fix(f"change '{name.text}' to '{other}'", tuple(Edit(s, other) for s in spans)) for other in found)
+
+
+def suggestion(name, candidates) -> tuple[str | None, tuple[Fix, ...]]:
+    """"did you mean …?" for a misspelt name (an ast.Name), and its quick fixes."""
+    found = closest(name.text, candidates)
+    return asking(found), replacements(name, found)
+
 Fresh = Callable[[str], str]  # a name for a new object, from a base such as `surface`
 
 
@@ -59,7 +100,7 @@ def _declaration(vocabulary: Vocabulary, name: str, allowed: tuple[str, ...], fi
     return f"{name}: {fits.name} = {' | '.join(c for c in fits.concrete if c in allowed)}"
 
 
-def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> str:
+def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> Advice:
     """Help for an object that no declaration can make fit all its uses: name another object here."""
     other = fresh(fits.abbreviation or fits.name)
     why = ""
@@ -68,10 +109,10 @@ def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequenc
             needs = noun(vocabulary.object_term(parameter.fits)) if parameter.fits else "an object that moves"
             why = f": '{signature.name}' needs it as {needs}"
             break
-    return f"use a separate object here, e.g. `{other}` ({noun(fits)}); '{name}' cannot also be {noun(fits)}{why}"
+    return Advice(f"use a separate object here, e.g. `{other}` ({noun(fits)}); '{name}' cannot also be {noun(fits)}{why}", other=other)
 
 
-def fit_help(vocabulary: Vocabulary, name: str, declared_term: str | None, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> str:
+def fit_help(vocabulary: Vocabulary, name: str, declared_term: str | None, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> Advice:
     """Help for an object `name` that does not fit a parameter asking for `fits`.
 
     `declared_term` is the term of its declaration (None when its name typed it), `uses` every
@@ -82,13 +123,16 @@ def fit_help(vocabulary: Vocabulary, name: str, declared_term: str | None, fits:
         declared = vocabulary.object_term(declared_term)
         narrowed = [c for c in declared.concrete if c in allowed]
         if narrowed:
-            return f"declare it as `{name}: {declared.name} = {' | '.join(narrowed)}`"
-        if allowed:
-            return f"declare it as `{_declaration(vocabulary, name, allowed, fits)}`"
-        return _separate(vocabulary, name, fits, uses, fresh)
+            declaration = f"{name}: {declared.name} = {' | '.join(narrowed)}"
+        elif allowed:
+            declaration = _declaration(vocabulary, name, allowed, fits)
+        else:
+            return _separate(vocabulary, name, fits, uses, fresh)
+        return Advice(f"declare it as `{declaration}`", declaration=declaration)
     if allowed:
         other = fresh(fits.abbreviation or fits.name)
-        return f"declare it as `{_declaration(vocabulary, name, allowed, fits)}` or use {article(other)} {other}"
+        declaration = _declaration(vocabulary, name, allowed, fits)
+        return Advice(f"declare it as `{declaration}` or use {article(other)} {other}", other=other)
     return _separate(vocabulary, name, fits, uses, fresh)
 
 
@@ -103,7 +147,7 @@ def latest(movers: dict[str, None], accept: Callable[[str], bool], limit: int = 
     return None
 
 
-def moving_help(vocabulary: Vocabulary, parameter: Parameter, mover: str | None, fresh: Fresh) -> str:
+def moving_help(vocabulary: Vocabulary, parameter: Parameter, mover: str | None, fresh: Fresh) -> Advice:
     """Help for a static object where an object that moves is needed: `mover` (in motion there,
     fitting the parameter), else a new object of the term the parameter asks for, else the player's."""
     if mover is not None:
@@ -113,7 +157,7 @@ def moving_help(vocabulary: Vocabulary, parameter: Parameter, mover: str | None,
         other = fresh(fits.abbreviation or fits.name)
     else:
         other = vocabulary.player
-    return f"use an object that moves here, e.g. `{other}`"
+    return Advice(f"use an object that moves here, e.g. `{other}`", other=other)
 
 
 def _mover(vocabulary: Vocabulary) -> TermSignature | None:
@@ -148,24 +192,27 @@ def call(vocabulary: Vocabulary, signature: TermSignature, objects: Sequence[str
     return f"{signature.name}({', '.join(arguments)})"
 
 
-def start_help(vocabulary: Vocabulary, obj: str) -> str:
+def start_help(vocabulary: Vocabulary, obj: str) -> Advice:
     """Help for a sequence that starts with another object than the player's (E0401)."""
     player = vocabulary.player
     mover = _mover(vocabulary)
-    example = f", e.g. {call(vocabulary, mover, (player, obj))}" if mover else ""
-    return f"start the sequence with the {player}{example}"
+    if mover is None:
+        return Advice(f"start the sequence with the {player}")
+    example = call(vocabulary, mover, (player, obj))
+    return Advice(f"start the sequence with the {player}, e.g. {example}", before=f"{example} > ")
 
 
-def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> str:
+def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> Advice:
     """Help for an object that acts before anything set it in motion (E0402): an earlier
     interaction in which `actor`, an object already in motion, sets it in motion."""
     mover = _mover(vocabulary)
     if mover is None or actor is None:
-        return "add an earlier interaction that sets it in motion"
-    return f"add an earlier interaction that sets it in motion, e.g. `{call(vocabulary, mover, (actor, obj))}`"
+        return Advice("add an earlier interaction that sets it in motion")
+    example = call(vocabulary, mover, (actor, obj))
+    return Advice(f"add an earlier interaction that sets it in motion, e.g. `{example}`", before=f"{example} > ")
 
 
-def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, objects=None) -> str:
+def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, objects=None) -> Advice:
     """Help for a goal object that no interaction completes (E0404): interactions to add at the
     end of the sequence.
 
@@ -176,18 +223,19 @@ def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, object
     """
     found, mover = _completer(vocabulary), _mover(vocabulary)
     if found is None:
-        return f"add an interaction that meets the goal for '{goal}'"
+        return Advice(f"add an interaction that meets the goal for '{goal}'")
     completer, position = found
     if position == 0:  # the goal object acts on another (touch(green, target))
         other = completer.object_parameters[1]
         term = vocabulary.object_term(other.fits) if other.fits else None
         partner = next((o.name for o in (objects or {}).values() if o.name != goal and term and vocabulary.fits(o.concrete, term.name)), None)
         partner = partner or (term.abbreviation or term.name if term else actor or vocabulary.player)
-        return f"add `> {call(vocabulary, completer, (goal, partner))}` at the end of the interactions"
-    if last is not None and last.signature.name == completer.requires and last.objects[1:2] == (goal,):
-        return f"add `> {call(vocabulary, completer, (last.objects[0], goal))}` at the end of the interactions"
-    actor = actor or vocabulary.player
-    added = f"> {call(vocabulary, completer, (actor, goal))}"
-    if mover is not None and completer.requires == mover.name:
-        added = f"> {call(vocabulary, mover, (actor, goal), every_direction=True)} " + added
-    return f"add `{added}` at the end of the interactions"
+        added = f"> {call(vocabulary, completer, (goal, partner))}"
+    elif last is not None and last.signature.name == completer.requires and last.objects[1:2] == (goal,):
+        added = f"> {call(vocabulary, completer, (last.objects[0], goal))}"
+    else:
+        actor = actor or vocabulary.player
+        added = f"> {call(vocabulary, completer, (actor, goal))}"
+        if mover is not None and completer.requires == mover.name:
+            added = f"> {call(vocabulary, mover, (actor, goal), every_direction=True)} " + added
+    return Advice(f"add `{added}` at the end of the interactions", after=f" {added}")

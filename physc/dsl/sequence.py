@@ -11,7 +11,7 @@ from __future__ import annotations
 import heapq
 
 from physc.diagnostics import Label, Span
-from physc.dsl.fixes import goal_help, latest, motion_help, start_help
+from physc.dsl.fixes import Advice, goal_help, latest, motion_help, start_help
 
 
 class SequenceChecks:
@@ -60,27 +60,31 @@ class SequenceChecks:
                 else:
                     continue
                 if index == 0 and obj not in players:
-                    self.error(
+                    self.advise(
                         "E0401",
                         f"the first interaction must be performed by the {vocabulary.player} "
                         f"(the player's only action), but here '{obj}' acts",
                         span,
-                        help=start_help(vocabulary, obj),
+                        start_help(vocabulary, obj),
+                        resolved.node.span,
                     )
                 elif complete:
-                    self.error(
+                    self.advise(
                         "E0402",
                         f"'{obj}' acts in '{signature.name}' before anything set it in motion",
                         span,
-                        help=motion_help(vocabulary, obj, latest(movers, calm) or latest(movers, bool)),
+                        motion_help(vocabulary, obj, latest(movers, calm) or latest(movers, bool)),
+                        resolved.node.span,
                     )
             if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
                 pair = ", ".join(resolved.objects)
-                self.error(
+                added = f"{signature.requires}({pair}, any)"
+                self.advise(
                     "E0403",
                     f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'",
                     resolved.node.span,
-                    help=f"add `{signature.requires}({pair}, any)` before it",
+                    Advice(f"add `{added}` before it", before=f"{added} > "),
+                    resolved.node.span,
                 )
             for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
                 if parameter.moves:
@@ -104,11 +108,11 @@ class SequenceChecks:
                 continue
             if unhittable is None:
                 unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
-            self.error(
+            self.advise(
                 "E0404",
                 f"the {goal} '{obj.name}' {vocabulary.goal_unmet}" + (f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""),
                 obj.span,
-                help=goal_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable), self.objects),
+                goal_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable), self.objects),
             )
 
     def actor_for(self, goal: str, movers: dict[str, None], unhittable: set) -> str | None:
