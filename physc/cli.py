@@ -31,6 +31,7 @@ from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.verify import add_command as add_verify_command
 from physc.commands.fmt import cmd_fmt
+from physc.commands.lsp import add_command as add_lsp_command
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
 from physc.compiler.stages import STAGES
@@ -96,6 +97,8 @@ def build_parser() -> argparse.ArgumentParser:
     add_play_commands(commands, common)
     add_eval_command(commands, common)
     add_verify_command(commands, common)
+
+    add_lsp_command(commands, common)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")

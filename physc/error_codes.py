@@ -18,6 +18,10 @@ Groups:
 
 from __future__ import annotations
 
+import functools
+import re
+from importlib import resources
+
 import attrs
 
 
@@ -83,3 +87,23 @@ CODES: dict[str, ErrorCode] = {entry.code: entry for entry in _CODES}
 
 def lookup(code: str) -> ErrorCode:
     return CODES[code]
+
+
+@functools.cache
+def _explanations() -> dict[str, str]:
+    """docs/errors.md (shipped in the package as physc/errors.md) cut into its sections, by code."""
+    try:
+        text = resources.files("physc").joinpath("errors.md").read_text(encoding="utf-8")
+    except OSError:
+        return {}
+    sections: dict[str, str] = {}
+    for part in re.split(r"^## ", text, flags=re.MULTILINE)[1:]:
+        code = part.split(":", 1)[0].strip()
+        if code in CODES:
+            sections[code] = "## " + part.strip()
+    return sections
+
+
+def explanation(code: str) -> str | None:
+    """The section of docs/errors.md about `code` (Markdown: what it means, an example, the fix)."""
+    return _explanations().get(code)

@@ -1,0 +1,25 @@
+"""`physc lsp`: run the language server for .phys files over stdio (docs/editors.md)."""
+
+from __future__ import annotations
+
+import logging
+
+from physc.commands.common import EXIT_OK, UsageError
+
+
+def add_command(commands, common) -> None:
+    lsp = commands.add_parser("lsp", parents=[common], help="run the language server for editors (stdio)")
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin and stdout (the default; editors pass it)")
+    lsp.add_argument("--log-file", metavar="PATH", help="log the server's requests and errors to this file")
+    lsp.set_defaults(run=cmd_lsp)
+
+
+def cmd_lsp(args) -> int:
+    try:
+        from physc.lsp.server import serve
+    except ImportError as error:
+        raise UsageError(f"the language server needs the 'lsp' extra ({error.name} is missing): pip install 'physc[lsp]'") from error
+    if args.log_file:
+        logging.basicConfig(filename=args.log_file, level=logging.INFO, format="%(asctime)s %(name)s %(levelname)s %(message)s")
+    serve()
+    return EXIT_OK

@@ -1,0 +1,218 @@
+"""`physc lsp`: the language server for `.phys` files (pygls, over stdio).
+
+Diagnostics are `physc check`'s, published after every change: the check runs on a worker thread,
+so completion and hover are answered while a long file is being checked, and edits that arrive
+during a check are coalesced into one check of the latest version. Diagnostics of a version that
+is no longer the latest, or of a document that was closed meanwhile, are never published.
+Every feature handler is guarded: an unexpected error in one answers that request with nothing and
+is logged, and the server goes on.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import functools
+import logging
+from concurrent.futures import ThreadPoolExecutor
+from urllib.parse import unquote
+
+from lsprotocol import types
+from pygls.lsp.server import LanguageServer
+
+from physc import __version__
+from physc.lsp import completion, context, edits, hover, navigation
+from physc.lsp.documents import Documents, Snapshot
+
+log = logging.getLogger("physc.lsp")
+TRIGGERS = ["(", ",", ":", "=", "|", ">", " "]
+
+
+class PhyscServer(LanguageServer):
+    """The server: pygls plus the open documents' analyses and the checks under way."""
+
+    def __init__(self):
+        super().__init__("physc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
+        self.documents = Documents()
+        self.checker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="physc-check")
+        self.checking: dict[str, asyncio.Future] = {}
+        self.stale: set[str] = set()  # changed while being checked
+
+    # ---- documents ---------------------------------------------------------------
+    def open_text(self, uri: str) -> tuple[int | None, str] | None:
+        document = self.workspace.text_documents.get(unquote(uri))
+        return None if document is None else (document.version, document.source)
+
+    def schedule_check(self, uri: str) -> None:
+        if uri in self.checking:
+            self.stale.add(uri)
+            return
+        self.checking[uri] = asyncio.ensure_future(self._check(uri))
+
+    async def _check(self, uri: str) -> None:
+        loop = asyncio.get_running_loop()
+        try:
+            while True:
+                self.stale.discard(uri)
+                opened = self.open_text(uri)
+                if opened is None:
+                    return
+                snapshot = await loop.run_in_executor(self.checker, self.documents.snapshot, uri, *opened)
+                if uri in self.stale:
+                    continue
+                if self.open_text(uri) != opened:  # closed, or changed without a notice yet
+                    if self.open_text(uri) is None:
+                        self.documents.forget(uri)
+                    return
+                self.text_document_publish_diagnostics(
+                    types.PublishDiagnosticsParams(uri=uri, version=snapshot.version, diagnostics=snapshot.lsp_diagnostics())
+                )
+                return
+        except Exception:  # a bug in physc: keep serving; the log says what happened
+            log.exception("checking %s failed", uri)
+        finally:
+            self.checking.pop(uri, None)
+
+    async def current(self, uri: str) -> Snapshot | None:
+        """The analysis of the document as it is now (made on the worker if not yet made)."""
+        opened = self.open_text(uri)
+        if opened is None:
+            return None
+        latest = self.documents.latest(uri)
+        if latest is not None and (latest.version, latest.text) == opened:
+            return latest
+        loop = asyncio.get_running_loop()
+        return await loop.run_in_executor(self.checker, self.documents.snapshot, uri, *opened)
+
+    def close(self, uri: str) -> None:
+        self.documents.forget(uri)
+        self.stale.discard(uri)
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
+
+    def snippets(self) -> bool:
+        try:
+            return bool(self.client_capabilities.text_document.completion.completion_item.snippet_support)
+        except AttributeError:
+            return False
+
+
+def guarded(handler):
+    """A feature handler that answers None, and logs, instead of failing on a bug."""
+
+    @functools.wraps(handler)
+    async def run(ls, params):
+        try:
+            return await handler(ls, params)
+        except Exception:
+            log.exception("%s failed", handler.__name__)
+            return None
+
+    return run
+
+
+def build() -> PhyscServer:
+    server = PhyscServer()
+
+    @server.feature(types.INITIALIZE)
+    def initialize(ls: PhyscServer, params: types.InitializeParams) -> None:
+        ls.documents.encoding = ls.workspace.position_encoding or types.PositionEncodingKind.Utf16
+
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(ls: PhyscServer, params: types.DidOpenTextDocumentParams) -> None:
+        ls.schedule_check(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    def did_change(ls: PhyscServer, params: types.DidChangeTextDocumentParams) -> None:
+        ls.schedule_check(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
+    def did_save(ls: PhyscServer, params: types.DidSaveTextDocumentParams) -> None:
+        ls.schedule_check(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(ls: PhyscServer, params: types.DidCloseTextDocumentParams) -> None:
+        ls.close(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=TRIGGERS))
+    @guarded
+    async def complete(ls: PhyscServer, params: types.CompletionParams):
+        place = _place(ls, params.text_document.uri, params.position)
+        return None if place is None else types.CompletionList(is_incomplete=False, items=completion.complete(place, ls.snippets()))
+
+    @server.feature(types.TEXT_DOCUMENT_HOVER)
+    @guarded
+    async def on_hover(ls: PhyscServer, params: types.HoverParams):
+        snapshot = await ls.current(params.text_document.uri)
+        if snapshot is None:
+            return None
+        offset = snapshot.positions.offset(params.position)
+        text = snapshot.text
+        inside = offset < len(text) and (text[offset].isalnum() or text[offset] == "_")
+        place = context.locate(text, offset + 1 if inside else offset)
+        found = hover.hover_text(place, snapshot.diagnostics_at(offset, offset))
+        if found is None:
+            return None
+        word = place.word
+        where = snapshot.positions.range(snapshot.analysis.source.span(word.start, word.end)) if word else None
+        return types.Hover(contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=found), range=where)
+
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    @guarded
+    async def definition(ls: PhyscServer, params: types.DefinitionParams):
+        snapshot = await ls.current(params.text_document.uri)
+        if snapshot is None or snapshot.analysis.file is None:
+            return None
+        span = navigation.definition(snapshot.analysis.file, snapshot.positions.offset(params.position))
+        return None if span is None else types.Location(uri=params.text_document.uri, range=snapshot.range(span))
+
+    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
+    @guarded
+    async def references(ls: PhyscServer, params: types.ReferenceParams):
+        snapshot = await ls.current(params.text_document.uri)
+        if snapshot is None or snapshot.analysis.file is None:
+            return None
+        offset = snapshot.positions.offset(params.position)
+        spans = navigation.references(snapshot.analysis.file, offset, params.context.include_declaration)
+        return [types.Location(uri=params.text_document.uri, range=snapshot.range(s)) for s in spans]
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    @guarded
+    async def document_symbols(ls: PhyscServer, params: types.DocumentSymbolParams):
+        snapshot = await ls.current(params.text_document.uri)
+        if snapshot is None or snapshot.analysis.file is None:
+            return None
+        return navigation.symbols(snapshot.analysis.file, snapshot.range)
+
+    @server.feature(types.TEXT_DOCUMENT_FORMATTING)
+    @guarded
+    async def formatting(ls: PhyscServer, params: types.DocumentFormattingParams):
+        snapshot = await ls.current(params.text_document.uri)
+        analysis = None if snapshot is None else snapshot.analysis
+        if analysis is None or analysis.file is None or any(d.is_error for d in analysis.syntax):
+            return None  # physc fmt formats only what parses
+        return edits.formatting(analysis.file, analysis.source)
+
+    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+    @guarded
+    async def code_actions(ls: PhyscServer, params: types.CodeActionParams):
+        snapshot = await ls.current(params.text_document.uri)
+        if snapshot is None:
+            return None
+        start, end = (snapshot.positions.offset(p) for p in (params.range.start, params.range.end))
+        found = [(d, snapshot.lsp_diagnostic(d)) for d in snapshot.diagnostics_at(start, end) if d.fixes]
+        return edits.quick_fixes(params.text_document.uri, found, snapshot.range)
+
+    return server
+
+
+def _place(ls: PhyscServer, uri: str, position: types.Position) -> context.Place | None:
+    """The place of a position in the document as it is now (read from its text: no analysis)."""
+    opened = ls.open_text(uri)
+    if opened is None:
+        return None
+    text = opened[1]
+    return context.locate(text, ls.documents.positions(uri, text).offset(position))
+
+
+def serve() -> None:
+    """Serve over stdin and stdout until the client exits."""
+    build().start_io()
