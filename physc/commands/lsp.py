@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import logging
-
 from physc.commands.common import EXIT_OK, UsageError
 
 
@@ -20,6 +18,9 @@ def cmd_lsp(args) -> int:
     except ImportError as error:
         raise UsageError(f"the language server needs the 'lsp' extra ({error.name} is missing): pip install 'physc[lsp]'") from error
     if args.log_file:
-        logging.basicConfig(filename=args.log_file, level=logging.INFO, format="%(asctime)s %(name)s %(levelname)s %(message)s")
-    serve()
+        try:
+            open(args.log_file, "a", encoding="utf-8").close()
+        except OSError as error:
+            raise UsageError(f"cannot write the log file {args.log_file}: {error.strerror or error}") from error
+    serve(args.log_file)
     return EXIT_OK

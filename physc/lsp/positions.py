@@ -15,9 +15,10 @@ from lsprotocol import types
 
 from physc.diagnostics import SourceText, Span
 
+# Code units per encoding; "surrogatepass" because a JSON string may carry a lone surrogate.
 _UNITS = {
-    types.PositionEncodingKind.Utf8: lambda text: len(text.encode("utf-8")),
-    types.PositionEncodingKind.Utf16: lambda text: len(text.encode("utf-16-le")) // 2,
+    types.PositionEncodingKind.Utf8: lambda text: len(text.encode("utf-8", "surrogatepass")),
+    types.PositionEncodingKind.Utf16: lambda text: len(text.encode("utf-16-le", "surrogatepass")) // 2,
     types.PositionEncodingKind.Utf32: len,
 }
 

@@ -213,6 +213,28 @@ def _place(ls: PhyscServer, uri: str, position: types.Position) -> context.Place
     return context.locate(text, ls.documents.positions(uri, text).offset(position))
 
 
-def serve() -> None:
-    """Serve over stdin and stdout until the client exits."""
+class _OneLine(logging.Formatter):
+    """Log lines for the editor's output panel: an error's type and message, not its traceback
+    (`physc lsp --log-file` keeps the tracebacks)."""
+
+    def format(self, record: logging.LogRecord) -> str:
+        text = f"physc lsp: {record.levelname.lower()}: {record.getMessage()}"
+        if record.exc_info and record.exc_info[1] is not None:
+            error = record.exc_info[1]
+            text += f": {type(error).__name__}: {error}"
+        return text
+
+
+def serve(log_file: str | None = None) -> None:
+    """Serve over stdin and stdout until the client exits. Warnings and errors go to stderr as one
+    line each; with `log_file`, everything down to info, with tracebacks, goes there too."""
+    stderr = logging.StreamHandler()
+    stderr.setLevel(logging.WARNING)
+    stderr.setFormatter(_OneLine())
+    handlers: list[logging.Handler] = [stderr]
+    if log_file:
+        to_file = logging.FileHandler(log_file, encoding="utf-8")
+        to_file.setFormatter(logging.Formatter("%(asctime)s %(name)s %(levelname)s %(message)s"))
+        handlers.append(to_file)
+    logging.basicConfig(level=logging.INFO if log_file else logging.WARNING, handlers=handlers, force=True)
     build().start_io()
