@@ -10,7 +10,7 @@ import pytest_lsp
 from lsprotocol import types
 from pytest_lsp import ClientServerConfig, LanguageClient, client_capabilities
 
-SERVER = [sys.executable, "-m", "physc", "lsp"]
+SERVER = [sys.executable, "-m", "physc", "lsp", "--stdio"]  # as VS Code starts it
 
 
 @pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
