@@ -108,6 +108,32 @@ async def completions(client: Client, uri: str, text: str, count: int) -> list[f
     return times
 
 
+async def completions_while_checking(client: Client, uri: str, text: str, count: int, version: int) -> list[float]:
+    """Completion asked right after an edit, while the server checks the edited text."""
+    offset = text.index("> hit(rBlock2", len(text) // 2) + len("> hit(")
+    line = text.count("\n", 0, offset)
+    at = types.Position(line=line, character=offset - text.rfind("\n", 0, offset) - 1)
+    edited = text.count("\n", 0, text.index("> hit(rBlock1", len(text) // 2))
+    times = []
+    for number in range(count):
+        version += 1
+        inserting = number % 2 == 0  # a space before the line's indentation, then taken away again
+        end = types.Position(line=edited, character=0 if inserting else 1)
+        change = types.TextDocumentContentChangePartial(
+            range=types.Range(start=types.Position(line=edited, character=0), end=end), text=" " if inserting else ""
+        )
+        waiting = client.expect(uri, version)
+        client.text_document_did_change(
+            types.DidChangeTextDocumentParams(text_document=types.VersionedTextDocumentIdentifier(uri=uri, version=version), content_changes=[change])
+        )
+        started = time.perf_counter()
+        result = await client.text_document_completion_async(types.CompletionParams(text_document=types.TextDocumentIdentifier(uri=uri), position=at))
+        times.append(time.perf_counter() - started)
+        assert result.items
+        await asyncio.wait_for(waiting, 60)
+    return times
+
+
 async def run(args) -> None:
     client = Client()
     await client.start_io(sys.executable, "-m", "physc", "lsp")
@@ -124,6 +150,8 @@ async def run(args) -> None:
         times, _ = await edits(client, uri, text, count, 1)
         print(summary(f"diagnostics after an edit, {text.count(chr(10))} lines", times))
         print(summary(f"completion in hit(, {text.count(chr(10))} lines", await completions(client, uri, text, args.completions)))
+        during = await completions_while_checking(client, uri, text, args.big_edits, 1 + count)
+        print(summary(f"completion during a check, {text.count(chr(10))} lines", during))
         client.text_document_did_close(types.DidCloseTextDocumentParams(text_document=types.TextDocumentIdentifier(uri=uri)))
 
     text = document(200)

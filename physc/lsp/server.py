@@ -13,6 +13,7 @@ from __future__ import annotations
 import asyncio
 import functools
 import logging
+import sys
 from concurrent.futures import ThreadPoolExecutor
 from urllib.parse import unquote
 
@@ -24,6 +25,10 @@ from physc.lsp import completion, context, edits, hover, navigation
 from physc.lsp.documents import Documents, Snapshot
 
 log = logging.getLogger("physc.lsp")
+# How long the checking thread may hold the interpreter before the thread that answers requests
+# gets a turn (Python's default is 5 ms): short, so that completion asked during a long check is
+# answered in a few turns rather than after many 5 ms slices.
+SWITCH_INTERVAL = 0.0005
 TRIGGERS = ["(", ",", ":", "=", "|", ">", " "]
 
 
@@ -237,4 +242,5 @@ def serve(log_file: str | None = None) -> None:
         to_file.setFormatter(logging.Formatter("%(asctime)s %(name)s %(levelname)s %(message)s"))
         handlers.append(to_file)
     logging.basicConfig(level=logging.INFO if log_file else logging.WARNING, handlers=handlers, force=True)
+    sys.setswitchinterval(SWITCH_INTERVAL)
     build().start_io()
