@@ -72,11 +72,13 @@ async def test_a_5_mb_document(client):
     open_document(client, uri, text)
     small = "file:///work/small.phys"
     open_document(client, small, SCENARIO)
-    at = types.CompletionParams(text_document=document(uri), position=position(text.count("\n") - 5, 12))
+    at = position(text.count("\n") - 5, 12)
     started = asyncio.get_running_loop().time()
-    result = await asyncio.wait_for(client.text_document_completion_async(at), 30)
+    result = await asyncio.wait_for(client.text_document_completion_async(types.CompletionParams(text_document=document(uri), position=at)), 30)
     assert result is not None
-    assert asyncio.get_running_loop().time() - started < 5
+    hovered = await client.text_document_hover_async(types.HoverParams(text_document=document(uri), position=position(3, 12)))  # `angrybirds`
+    assert hovered is not None
+    assert asyncio.get_running_loop().time() - started < 5  # neither waited for the check
     found = await diagnostics(client, uri, 1, timeout=300)
     assert list(found) == []
 

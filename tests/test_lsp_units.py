@@ -12,7 +12,6 @@ from hypothesis import strategies as st
 from lsprotocol import types
 
 from conftest import EXAMPLES, run_physc
-from physc.diagnostics import SourceText
 from physc.dsl.frontend import analyze_text
 from physc.lsp import context
 from physc.lsp.completion import complete
@@ -37,16 +36,24 @@ def labels(text: str) -> list[str]:
 # ---- positions ---------------------------------------------------------------------------------
 def test_positions_count_utf16_units_and_clamp():
     text = "a😀b\ncé\r\nend"
-    positions = Positions(SourceText("x", text))
+    positions = Positions(text)
     assert positions.position(text.index("b")) == types.Position(line=0, character=3)  # 😀 is two units
     assert positions.offset(types.Position(line=0, character=3)) == text.index("b")
     assert positions.offset(types.Position(line=1, character=2)) == text.index("\r")
     assert positions.offset(types.Position(line=0, character=99)) == text.index("\n")  # past the line's end
     assert positions.offset(types.Position(line=99, character=0)) == len(text)  # past the document's
-    utf8 = Positions(SourceText("x", text), types.PositionEncodingKind.Utf8)
+    utf8 = Positions(text, types.PositionEncodingKind.Utf8)
     assert utf8.position(text.index("b")) == types.Position(line=0, character=5)
-    lone = Positions(SourceText("x", "\ud800x"))
+    lone = Positions("\ud800x")
     assert lone.position(1) == types.Position(line=0, character=1)  # a lone surrogate is one unit
+
+
+def test_lines_end_as_the_protocol_says():
+    """At \n, \r\n and \r; not at the other breaks that Python's splitlines knows."""
+    text = "a\rb\r\nc\u2028d\x0ce\nf"
+    positions = Positions(text)
+    assert [positions.position(text.index(c)).line for c in "abcdef"] == [0, 1, 2, 2, 2, 3]
+    assert positions.offset(types.Position(line=2, character=2)) == text.index("d")
 
 
 # ---- the place of the cursor --------------------------------------------------------------------
@@ -93,6 +100,13 @@ def test_completion_in_the_phyre_domain():
     assert "touch" in found and "destroy" not in found
 
 
+def test_every_code_has_its_explanation_shipped():
+    """physc/errors.md (a link to docs/errors.md, shipped as package data) explains every code."""
+    from physc import error_codes
+
+    assert [code for code in error_codes.CODES if not error_codes.explanation(code)] == []
+
+
 def test_hover_explains_a_diagnostic_with_docs_errors_md():
     text = "scenario SF {\n    interactions {\n        hit(bird, pig, any)\n        > destory(bird, pig)\n    }\n}\n"
     analysis = analyze_text("x.phys", text)
@@ -113,13 +127,38 @@ def applied(text: str, fix) -> str:
 BROKEN = sorted((EXAMPLES / "errors").glob("*.phys"))
 
 
-@pytest.mark.parametrize("path", BROKEN, ids=[p.stem for p in BROKEN])
-def test_every_quick_fix_removes_its_diagnostic(path):
-    text = path.read_bytes().decode("utf-8", "replace")
-    for diagnostic in analyze_text(path.name, text).diagnostics:
+# The paper form, and terms in brackets, where a fix that inserts a term must write it in brackets.
+BRACKETED = [
+    "scenario X = {[hit(bird)(pig)(left)]}, {}",
+    "scenario X = {[roll(rBlock)(surface)(left)] > [hit(rBlock)(pig)(left)] > [destroy(rBlock)(pig)]}, {}",
+    "scenario X = {[hit(bird)(pig)(left)] > [destroy(bird)(pig)] > [destroy(fBlock)(pig)]}, {}",
+    "scenario X = {[hit(bird)(pig)(left)] > [hit(fBlock)(pig)(left)] > [destroy(fBlock)(pig)]}, {}",
+    "scenario X { interactions { [hit(bird, pig, left)] } }",
+    "scenario X { interactions { hit(bird, rBlok, left) > roll(rBlok, surface, left, x) > destroy(rBlok, pig) } }",
+]
+FIXABLE = [p.read_bytes().decode("utf-8", "replace") for p in BROKEN] + BRACKETED
+
+
+@pytest.mark.parametrize("text", FIXABLE, ids=[p.stem for p in BROKEN] + [f"bracketed{n}" for n in range(len(BRACKETED))])
+def test_every_quick_fix_removes_its_diagnostic(text):
+    """A fix takes its diagnostic away and never breaks the syntax (a syntax error would hide every
+    other diagnostic)."""
+    before = analyze_text("x.phys", text)
+    for diagnostic in before.diagnostics:
         for fix in diagnostic.fixes:
-            after = analyze_text(path.name, applied(text, fix)).diagnostics
-            assert (diagnostic.code, diagnostic.message) not in {(d.code, d.message) for d in after}, fix.title
+            after = analyze_text("x.phys", applied(text, fix))
+            assert [d.code for d in after.syntax] == [d.code for d in before.syntax], fix.title
+            assert (diagnostic.code, diagnostic.message) not in {(d.code, d.message) for d in after.diagnostics}, fix.title
+
+
+def test_inserted_terms_follow_their_neighbours_brackets():
+    (diagnostic,) = analyze_text("x", BRACKETED[0]).diagnostics
+    assert applied(BRACKETED[0], diagnostic.fixes[0]) == "scenario X = {[hit(bird)(pig)(left)] > [destroy(bird, pig)]}, {}"
+    (diagnostic,) = analyze_text("x", BRACKETED[1]).diagnostics
+    assert applied(BRACKETED[1], diagnostic.fixes[0]).startswith("scenario X = {[hit(bird, rBlock, left)] > [roll(")
+    text = BRACKETED[5]
+    renamed = applied(text, analyze_text("x", text).diagnostics[0].fixes[0])  # every use, the broken term's too
+    assert "rBlok" not in renamed
 
 
 def test_quick_fixes_where_a_help_proposes_a_change():
@@ -159,6 +198,6 @@ def test_mutated_files_at_random_places(rng, text):
         found = context.locate(text, offset)
         complete(found, snippets=True)
         hover_text(context.locate(text, min(offset + 1, len(text))), analysis.diagnostics[:2])
-        positions = Positions(analysis.source) if analysis.source else None
-        if positions is not None:
+        positions = Positions(text)
+        if text[offset - 1 : offset + 1] != "\r\n":  # not between the two characters of one line break
             assert positions.offset(positions.position(offset)) == offset

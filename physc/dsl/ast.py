@@ -47,6 +47,8 @@ class Term:
     name: Name
     arguments: tuple[Argument, ...]
     span: Span | None = _span
+    # With its brackets, `[hit(bird)(pig)(left)]`, when written in them (where a fix inserts a term).
+    outer: Span | None = attrs.field(eq=False, default=None, repr=False, metadata={"dump": False})
 
 
 @attrs.frozen

@@ -106,23 +106,22 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
         self.position: int | None = None  # of the interaction being resolved
         self.helps: dict[int, Advice] = {}
         self.fresh_names: dict[str, str] = {}
-        # E0301: (diagnostic index, first use, the names it may be a misspelling of) by name, and
-        # the later uses of the name, so that its quick fixes rename every use.
+        # E0301: (diagnostic index, first use, the names it may be a misspelling of) by name; its
+        # quick fixes rename every use, found in the tree once the scenario is resolved.
         self.misspelt: dict[str, tuple[int, ast.Name, list[str]]] = {}
-        self.later_uses: dict[str, list[Span]] = {}
         self.comparisons = 0
 
     def error(self, code, message, span, help=None, notes=(), fixes=()):
         self.diagnostics.append(Diagnostic(code, message, span, help=help, notes=tuple(notes), fixes=tuple(fixes)))
 
-    def advise(self, code, message, span, advice: Advice, term: Span | None = None) -> None:
+    def advise(self, code, message, span, advice: Advice, term: ast.Term | None = None) -> None:
         """An error whose help is `advice`, with its proposals as quick fixes; `term` is the term
         the error is about (where `advice.before` goes)."""
         self.error(code, message, span, help=advice.text, fixes=self.fixes(advice, span, term))
 
-    def fixes(self, advice: Advice, span: Span, term: Span | None = None, declaration: Span | None = None) -> tuple[Fix, ...]:
+    def fixes(self, advice: Advice, span: Span, term: ast.Term | None = None, declaration: Span | None = None) -> tuple[Fix, ...]:
         interactions = self.scenario.interactions
-        return advice.fixes(span, term, declaration, interactions[-1].span if interactions else None)
+        return advice.fixes(span, term, declaration, interactions[-1] if interactions else None)
 
     # ---- terms -------------------------------------------------------------
     def resolve_term(self, term: ast.Term, kind: str) -> _Resolved | None:

@@ -16,6 +16,7 @@ import attrs
 
 from physc.diagnostics import Edit, Fix, Span
 from physc.domains.vocabulary import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
+from physc.dsl.ast import Term
 from physc.suggest import article, asking, closest
 
 Use = tuple[TermSignature, Parameter]
@@ -28,22 +29,30 @@ class Advice:
     text: str
     declaration: str | None = None  # write this declaration of the object instead of its own
     other: str | None = None  # name this object at the use instead
-    before: str | None = None  # insert this before the term: `hit(bird, pig, any) > `
-    after: str | None = None  # insert this after the last interaction: ` > destroy(bird, pig)`
+    before: str | None = None  # insert this term before the one the error is about
+    after: tuple[str, ...] = ()  # add these terms after the last interaction
 
-    def fixes(self, span: Span, term: Span | None, declaration: Span | None, last: Span | None) -> tuple[Fix, ...]:
-        """The edits proposed for an error at `span` about `term`, of an object declared at
-        `declaration`, in a scenario whose last interaction is at `last`."""
+    def fixes(self, span: Span, term: Term | None, declaration: Span | None, last: Term | None) -> tuple[Fix, ...]:
+        """The edits proposed for an error at `span` about the term `term`, of an object declared
+        at `declaration`, in a scenario whose last interaction is `last`. An inserted term is
+        written in brackets where its neighbour is (`[hit(bird, pig, any)] > [destroy(…)]`)."""
         fixes = []
         if self.declaration and declaration is not None:
             fixes.append(Fix.replace(declaration, self.declaration, f"declare it as `{self.declaration}`"))
         if self.other:
             fixes.append(Fix.replace(span, self.other, f"use `{self.other}` here"))
         if self.before and term is not None:
-            fixes.append(Fix(f"insert `{self.before.rstrip(' >')}` before it", (Edit(term.first(0), self.before),)))
+            written = _beside(term, self.before)
+            fixes.append(Fix(f"insert `{self.before}` before it", (Edit((term.outer or term.span).first(0), f"{written} > "),)))
         if self.after and last is not None:
-            fixes.append(Fix(f"add `{self.after.strip()}` at the end", (Edit(last.last(0), self.after),)))
+            added = "".join(f" > {_beside(last, t)}" for t in self.after)
+            fixes.append(Fix(f"add `> {' > '.join(self.after)}` at the end", (Edit((last.outer or last.span).last(0), added),)))
         return tuple(fixes)
+
+
+def _beside(neighbour: Term, text: str) -> str:
+    """A term's text as written next to `neighbour`: in brackets if it is."""
+    return f"[{text}]" if neighbour.outer is not None else text
 
 
 def replacements(name, found, uses: tuple[Span, ...] = ()) -> tuple[Fix, ...]:
@@ -199,7 +208,7 @@ def start_help(vocabulary: Vocabulary, obj: str) -> Advice:
     if mover is None:
         return Advice(f"start the sequence with the {player}")
     example = call(vocabulary, mover, (player, obj))
-    return Advice(f"start the sequence with the {player}, e.g. {example}", before=f"{example} > ")
+    return Advice(f"start the sequence with the {player}, e.g. {example}", before=example)
 
 
 def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> Advice:
@@ -209,7 +218,7 @@ def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> Advice:
     if mover is None or actor is None:
         return Advice("add an earlier interaction that sets it in motion")
     example = call(vocabulary, mover, (actor, obj))
-    return Advice(f"add an earlier interaction that sets it in motion, e.g. `{example}`", before=f"{example} > ")
+    return Advice(f"add an earlier interaction that sets it in motion, e.g. `{example}`", before=example)
 
 
 def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, objects=None) -> Advice:
@@ -230,12 +239,12 @@ def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, object
         term = vocabulary.object_term(other.fits) if other.fits else None
         partner = next((o.name for o in (objects or {}).values() if o.name != goal and term and vocabulary.fits(o.concrete, term.name)), None)
         partner = partner or (term.abbreviation or term.name if term else actor or vocabulary.player)
-        added = f"> {call(vocabulary, completer, (goal, partner))}"
+        added = [call(vocabulary, completer, (goal, partner))]
     elif last is not None and last.signature.name == completer.requires and last.objects[1:2] == (goal,):
-        added = f"> {call(vocabulary, completer, (last.objects[0], goal))}"
+        added = [call(vocabulary, completer, (last.objects[0], goal))]
     else:
         actor = actor or vocabulary.player
-        added = f"> {call(vocabulary, completer, (actor, goal))}"
+        added = [call(vocabulary, completer, (actor, goal))]
         if mover is not None and completer.requires == mover.name:
-            added = f"> {call(vocabulary, mover, (actor, goal), every_direction=True)} " + added
-    return Advice(f"add `{added}` at the end of the interactions", after=f" {added}")
+            added.insert(0, call(vocabulary, mover, (actor, goal), every_direction=True))
+    return Advice(f"add `> {' > '.join(added)}` at the end of the interactions", after=tuple(added))

@@ -109,8 +109,6 @@ class ObjectChecks:
             found.used = True
             return found
         if name.text in self.unknown:  # already reported
-            if name.text in self.misspelt:
-                self.later_uses.setdefault(name.text, []).append(name.span)
             return None
         term = self.vocabulary.term_of_name(name.text)
         if term is None:
@@ -190,8 +188,15 @@ class ObjectChecks:
         """Write the help texts and fixes that needed the whole scenario: E0203 for an object term
         (every use of the object must be known), for a static object outside the sequence, and the
         renames of E0301 (every use of the unknown name)."""
+        if self.misspelt:
+            uses: dict[str, list[Span]] = {}
+            for term in self.scenario.interactions + self.scenario.restrictions:
+                for argument in term.arguments:
+                    for other in argument.alternatives:
+                        if other.text in self.misspelt and other.span != self.misspelt[other.text][1].span:
+                            uses.setdefault(other.text, []).append(other.span)
         for name, (index, first, found) in self.misspelt.items():
-            fixes = replacements(first, found, tuple(self.later_uses.get(name, ())))
+            fixes = replacements(first, found, tuple(uses.get(name, ())))
             self.diagnostics[index] = attrs.evolve(self.diagnostics[index], fixes=fixes)
         if not self.misfits and not self.immobile:
             return

@@ -134,7 +134,7 @@ class _Builder(Transformer):
         return ast.Term(name, tuple(arguments), name.span.join(self._span(closing)))
 
     def bracketed(self, children):
-        return children[1]
+        return attrs.evolve(children[1], outer=self._span(children[0], children[2]))
 
     def sequence(self, children):
         return [c for c in children if isinstance(c, ast.Term)]

@@ -66,7 +66,7 @@ class SequenceChecks:
                         f"(the player's only action), but here '{obj}' acts",
                         span,
                         start_help(vocabulary, obj),
-                        resolved.node.span,
+                        resolved.node,
                     )
                 elif complete:
                     self.advise(
@@ -74,7 +74,7 @@ class SequenceChecks:
                         f"'{obj}' acts in '{signature.name}' before anything set it in motion",
                         span,
                         motion_help(vocabulary, obj, latest(movers, calm) or latest(movers, bool)),
-                        resolved.node.span,
+                        resolved.node,
                     )
             if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
                 pair = ", ".join(resolved.objects)
@@ -83,8 +83,8 @@ class SequenceChecks:
                     "E0403",
                     f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'",
                     resolved.node.span,
-                    Advice(f"add `{added}` before it", before=f"{added} > "),
-                    resolved.node.span,
+                    Advice(f"add `{added}` before it", before=added),
+                    resolved.node,
                 )
             for parameter, obj, span in zip(signature.object_parameters, resolved.objects, resolved.object_spans):
                 if parameter.moves:

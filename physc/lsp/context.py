@@ -33,6 +33,8 @@ _SECTIONS = {"OBJECTS": "objects", "INTERACTIONS": "interactions", "RESTRICTIONS
 _ALTERNATIVE = {"PIPE", "VEE", "OR"}
 _SEPARATOR = {"GT", "COMMA", "AMP", "WEDGE", "AND"}
 _SCENARIO_WORD = re.compile(r"\bscenario\b")
+# A string (closed or not) or a comment on a line: no name is written inside one.
+_QUOTED = re.compile(r'"(?:[^"\\\n]|\\.)*"?|#[^\n]*|//[^\n]*')
 
 
 @attrs.frozen
@@ -132,6 +134,7 @@ class _Walk:
             self.pending = _SECTIONS[kind]
             self.expect(OTHER)
         elif kind == "DOMAIN" and self.depth == 1:
+            place.sections.add("domain")
             self.expect(DOMAIN)
         elif kind == "EQUALS" and self.depth == 0:
             self.form = "paper"
@@ -141,7 +144,8 @@ class _Walk:
         elif kind == "RBRACE":
             self.depth = max(self.depth - 1, 0)
             place.section = None
-            self.expect(BODY if self.form == "block" and self.depth == 1 else OTHER)
+            ended = self.depth == 0 and (self.form == "block" or self.paper_section >= 2)
+            self.expect(TOP if ended else BODY if self.form == "block" and self.depth == 1 else OTHER)
         elif kind == "LPAR" and place.role == OTHER and place.term:
             self.expect(ARGUMENT, term=place.term)
         elif kind == "RPAR" and place.role == ARGUMENT:
@@ -210,6 +214,8 @@ class _Walk:
 def locate(text: str, offset: int) -> Place:
     """The place of `offset` in `text`: the role of a name there, and its scenario's names."""
     offset = min(max(offset, 0), len(text))
+    if _quoted(text, offset):
+        return Place(role=OTHER)
     start = _scenario_start(text, offset)
     if start is None:
         return Place(role=TOP, word=_word_at(text, offset))
@@ -232,6 +238,18 @@ def locate(text: str, offset: int) -> Place:
     at.word, at.domain, at.sections = word, final.domain, final.sections
     at.declared, at.narrowed, at.arguments = final.declared, final.narrowed, final.arguments
     return at
+
+
+def _quoted(text: str, offset: int) -> bool:
+    """Whether `offset` is inside a string or a comment (read on its line)."""
+    line_start = text.rfind("\n", 0, offset) + 1
+    line_end = text.find("\n", offset)
+    for found in _QUOTED.finditer(text, line_start, len(text) if line_end < 0 else line_end):
+        word = found.group()
+        closed = word[0] == '"' and len(word) > 1 and word.endswith('"')  # a comment or an open string runs on
+        if found.start() < offset and (offset < found.end() or not closed):
+            return True
+    return False
 
 
 def _word_at(text: str, offset: int) -> Token | None:

@@ -1,8 +1,11 @@
-"""The analyses of open documents, one per document version.
+"""The open documents: their text as the editor has it, and the analysis of their latest version.
 
-An analysis is `physc check`'s: `physc.dsl.frontend.analyze_text`, the same parse and the same
-checks, so the editor shows exactly the diagnostics that `physc check` prints. The front end keeps
-state while it parses, so analyses run one at a time (a lock); each document keeps only the
+The server keeps the text itself, applying the editor's changes with its own positions, so that
+the text it checks and the positions it reports agree on what a line is. An analysis is `physc
+check`'s: `physc.dsl.frontend.analyze_text`, the same parse and the same checks, so the editor
+shows exactly the diagnostics that `physc check` prints (a leading byte-order mark, which `physc
+check` drops, is read as a blank, so that offsets stay those of the editor's text). The front end
+keeps state while it parses, so analyses run one at a time (a lock). Each document keeps only the
 analysis of its latest version, so memory does not grow with the number of edits.
 """
 
@@ -15,6 +18,7 @@ from lsprotocol import types
 
 from physc.diagnostics import Diagnostic, Severity, SourceText, Span
 from physc.dsl.frontend import Analysis, analyze_text
+from physc.dsl.parser import MAX_SOURCE_BYTES
 from physc.lsp.positions import Positions
 
 _SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning}
@@ -58,41 +62,87 @@ class Snapshot:
         return [d for d in self.analysis.diagnostics if d.span is not None and d.span.start <= end and start <= d.span.end]
 
 
+@attrs.define
+class Document:
+    """An open document as the editor has it."""
+
+    version: int | None
+    text: str
+    positions: Positions | None = None  # of `text`, made when first asked for
+
+
+def analyze_document(uri: str, text: str) -> Analysis:
+    """`physc check`'s analysis of an editor's text."""
+    if len(text) > MAX_SOURCE_BYTES or len(text.encode("utf-8", "surrogatepass")) > MAX_SOURCE_BYTES:
+        too_big = Diagnostic("E0001", f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads")
+        return Analysis(uri, SourceText(uri, ""), None, (), (too_big,), ())
+    if text.startswith("\ufeff"):
+        text = " " + text[1:]
+    return analyze_text(uri, text)
+
+
 class Documents:
-    """The latest analysed version of each open document."""
+    """The open documents, and the latest analysed version of each."""
 
     def __init__(self, encoding: str = types.PositionEncodingKind.Utf16):
         self.encoding = encoding
+        self._open: dict[str, Document] = {}
         self._latest: dict[str, Snapshot] = {}
-        self._lock = threading.Lock()
-        self._positions: dict[str, Positions] = {}  # of the text last asked about, by document
+        self._analysing = threading.Lock()
 
+    # ---- the editor's text -------------------------------------------------------------------
+    def open(self, uri: str, version: int | None, text: str) -> None:
+        self._open[uri] = Document(version, text)
+
+    def change(self, uri: str, version: int | None, changes) -> None:
+        """Apply the editor's changes (whole texts, or ranges and their new text), in order."""
+        document = self._open.get(uri)
+        if document is None:
+            return
+        text = document.text
+        for change in changes:
+            if isinstance(change, types.TextDocumentContentChangePartial):
+                positions = Positions(text, self.encoding)
+                start, end = positions.offset(change.range.start), positions.offset(change.range.end)
+                text = text[:start] + change.text + text[max(start, end) :]
+            else:
+                text = change.text
+        self._open[uri] = Document(version, text)
+
+    def close(self, uri: str) -> None:
+        """Forget a document (a check under way finishes, but its result is not kept)."""
+        self._open.pop(uri, None)
+        self._latest.pop(uri, None)
+
+    def current(self, uri: str) -> Document | None:
+        return self._open.get(uri)
+
+    def positions(self, uri: str) -> Positions | None:
+        """The positions of the document's current text."""
+        document = self._open.get(uri)
+        if document is None:
+            return None
+        if document.positions is None:
+            document.positions = Positions(document.text, self.encoding)
+        return document.positions
+
+    # ---- analyses ----------------------------------------------------------------------------
     def snapshot(self, uri: str, version: int | None, text: str) -> Snapshot:
         """The analysis of this version of the document (made now, unless it was already)."""
-        with self._lock:
+        with self._analysing:
             known = self._latest.get(uri)
             if known is not None and known.version == version and known.text == text:
                 return known
-            analysis = analyze_text(uri, text)
-            snapshot = Snapshot(uri, version, text, analysis, Positions(analysis.source, self.encoding))
-            self._latest[uri] = snapshot
+            analysis = analyze_document(uri, text)
+            snapshot = Snapshot(uri, version, text, analysis, Positions(text, self.encoding))
+            document = self._open.get(uri)
+            if document is not None and document.version == version:  # still open, still this version
+                self._latest[uri] = snapshot
             return snapshot
 
     def latest(self, uri: str) -> Snapshot | None:
-        """The latest analysis made of the document, whatever its version."""
-        return self._latest.get(uri)
-
-    def positions(self, uri: str, text: str) -> Positions:
-        """The positions of a text of the document, without analysing it (for completion)."""
-        for known in (self._latest.get(uri), self._positions.get(uri)):
-            found = known.positions if isinstance(known, Snapshot) else known
-            if found is not None and found.source.text is text:
-                return found
-        made = Positions(SourceText(uri, text), self.encoding)
-        self._positions[uri] = made
-        return made
-
-    def forget(self, uri: str) -> None:
-        with self._lock:
-            self._latest.pop(uri, None)
-            self._positions.pop(uri, None)
+        """The analysis of the document's current text, if it was made; else None."""
+        snapshot, document = self._latest.get(uri), self._open.get(uri)
+        if snapshot is None or document is None or (snapshot.version, snapshot.text) != (document.version, document.text):
+            return None
+        return snapshot

@@ -8,6 +8,7 @@ the document into it, so that the cursor and the rest of the text stay where the
 from __future__ import annotations
 
 import difflib
+import re
 from typing import Callable, Sequence
 
 from lsprotocol import types
@@ -17,6 +18,7 @@ from physc.dsl import ast
 from physc.dsl.fmt import format_file
 
 ToRange = Callable[..., types.Range]
+_LINES = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+\Z")
 
 
 def quick_fixes(
@@ -39,12 +41,17 @@ def quick_fixes(
     return actions
 
 
-def formatting(file: ast.File, source: SourceText) -> list[types.TextEdit]:
-    """The line edits that make the document `physc fmt`'s output (none when it already is)."""
+def lines(text: str) -> list[str]:
+    """The lines of `text` with their breaks, as LSP counts lines (`\n`, `\r\n`, `\r`)."""
+    return _LINES.findall(text)
+
+
+def formatting(file: ast.File, source: SourceText, text: str) -> list[types.TextEdit]:
+    """The line edits that make the document's `text` `physc fmt`'s output (none when it is)."""
     formatted = format_file(file, source)
-    if formatted == source.text:
+    if formatted == text:
         return []
-    old, new = source.text.splitlines(keepends=True), formatted.splitlines(keepends=True)
+    old, new = lines(text), lines(formatted)
     edits = []
     matcher = difflib.SequenceMatcher(None, old, new, autojunk=False)
     for tag, i1, i2, j1, j2 in reversed(matcher.get_opcodes()):

@@ -15,7 +15,6 @@ import functools
 import logging
 import sys
 from concurrent.futures import ThreadPoolExecutor
-from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -33,7 +32,7 @@ TRIGGERS = ["(", ",", ":", "=", "|", ">", " "]
 
 
 class PhyscServer(LanguageServer):
-    """The server: pygls plus the open documents' analyses and the checks under way."""
+    """The server: pygls plus the open documents, their analyses and the checks under way."""
 
     def __init__(self):
         super().__init__("physc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
@@ -42,11 +41,7 @@ class PhyscServer(LanguageServer):
         self.checking: dict[str, asyncio.Future] = {}
         self.stale: set[str] = set()  # changed while being checked
 
-    # ---- documents ---------------------------------------------------------------
-    def open_text(self, uri: str) -> tuple[int | None, str] | None:
-        document = self.workspace.text_documents.get(unquote(uri))
-        return None if document is None else (document.version, document.source)
-
+    # ---- checks ------------------------------------------------------------------------------
     def schedule_check(self, uri: str) -> None:
         if uri in self.checking:
             self.stale.add(uri)
@@ -58,15 +53,13 @@ class PhyscServer(LanguageServer):
         try:
             while True:
                 self.stale.discard(uri)
-                opened = self.open_text(uri)
-                if opened is None:
+                document = self.documents.current(uri)
+                if document is None:
                     return
-                snapshot = await loop.run_in_executor(self.checker, self.documents.snapshot, uri, *opened)
+                snapshot = await loop.run_in_executor(self.checker, self.documents.snapshot, uri, document.version, document.text)
                 if uri in self.stale:
                     continue
-                if self.open_text(uri) != opened:  # closed, or changed without a notice yet
-                    if self.open_text(uri) is None:
-                        self.documents.forget(uri)
+                if self.documents.latest(uri) is not snapshot:  # closed meanwhile
                     return
                 self.text_document_publish_diagnostics(
                     types.PublishDiagnosticsParams(uri=uri, version=snapshot.version, diagnostics=snapshot.lsp_diagnostics())
@@ -78,18 +71,19 @@ class PhyscServer(LanguageServer):
             self.checking.pop(uri, None)
 
     async def current(self, uri: str) -> Snapshot | None:
-        """The analysis of the document as it is now (made on the worker if not yet made)."""
-        opened = self.open_text(uri)
-        if opened is None:
+        """The analysis of the document as it is now (made on the worker, after the checks
+        queued there, unless it was already made)."""
+        document = self.documents.current(uri)
+        if document is None:
             return None
         latest = self.documents.latest(uri)
-        if latest is not None and (latest.version, latest.text) == opened:
+        if latest is not None:
             return latest
         loop = asyncio.get_running_loop()
-        return await loop.run_in_executor(self.checker, self.documents.snapshot, uri, *opened)
+        return await loop.run_in_executor(self.checker, self.documents.snapshot, uri, document.version, document.text)
 
     def close(self, uri: str) -> None:
-        self.documents.forget(uri)
+        self.documents.close(uri)
         self.stale.discard(uri)
         self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
 
@@ -123,15 +117,15 @@ def build() -> PhyscServer:
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(ls: PhyscServer, params: types.DidOpenTextDocumentParams) -> None:
-        ls.schedule_check(params.text_document.uri)
+        item = params.text_document
+        ls.documents.open(item.uri, item.version, item.text)
+        ls.schedule_check(item.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(ls: PhyscServer, params: types.DidChangeTextDocumentParams) -> None:
-        ls.schedule_check(params.text_document.uri)
-
-    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
-    def did_save(ls: PhyscServer, params: types.DidSaveTextDocumentParams) -> None:
-        ls.schedule_check(params.text_document.uri)
+        uri = params.text_document.uri
+        ls.documents.change(uri, params.text_document.version, params.content_changes)
+        ls.schedule_check(uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(ls: PhyscServer, params: types.DidCloseTextDocumentParams) -> None:
@@ -146,18 +140,19 @@ def build() -> PhyscServer:
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     @guarded
     async def on_hover(ls: PhyscServer, params: types.HoverParams):
-        snapshot = await ls.current(params.text_document.uri)
-        if snapshot is None:
+        document, positions = ls.documents.current(params.text_document.uri), ls.documents.positions(params.text_document.uri)
+        if document is None:
             return None
-        offset = snapshot.positions.offset(params.position)
-        text = snapshot.text
+        text, offset = document.text, positions.offset(params.position)
         inside = offset < len(text) and (text[offset].isalnum() or text[offset] == "_")
         place = context.locate(text, offset + 1 if inside else offset)
-        found = hover.hover_text(place, snapshot.diagnostics_at(offset, offset))
+        # The diagnostics of the current text when its check is done; a hover does not wait for one.
+        snapshot = ls.documents.latest(params.text_document.uri)
+        found = hover.hover_text(place, snapshot.diagnostics_at(offset, offset) if snapshot else [])
         if found is None:
             return None
         word = place.word
-        where = snapshot.positions.range(snapshot.analysis.source.span(word.start, word.end)) if word else None
+        where = types.Range(start=positions.position(word.start), end=positions.position(word.end)) if word else None
         return types.Hover(contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=found), range=where)
 
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
@@ -194,7 +189,7 @@ def build() -> PhyscServer:
         analysis = None if snapshot is None else snapshot.analysis
         if analysis is None or analysis.file is None or any(d.is_error for d in analysis.syntax):
             return None  # physc fmt formats only what parses
-        return edits.formatting(analysis.file, analysis.source)
+        return edits.formatting(analysis.file, analysis.source, snapshot.text)
 
     @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
     @guarded
@@ -211,11 +206,8 @@ def build() -> PhyscServer:
 
 def _place(ls: PhyscServer, uri: str, position: types.Position) -> context.Place | None:
     """The place of a position in the document as it is now (read from its text: no analysis)."""
-    opened = ls.open_text(uri)
-    if opened is None:
-        return None
-    text = opened[1]
-    return context.locate(text, ls.documents.positions(uri, text).offset(position))
+    document, positions = ls.documents.current(uri), ls.documents.positions(uri)
+    return None if document is None else context.locate(document.text, positions.offset(position))
 
 
 class _OneLine(logging.Formatter):
