@@ -31,6 +31,7 @@ from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.verify import add_command as add_verify_command
 from physc.commands.fmt import cmd_fmt
+from physc.commands.generate import add_command as add_generate_command
 from physc.commands.lsp import add_command as add_lsp_command
 from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
@@ -95,6 +96,7 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.set_defaults(run=cmd_compile)
 
     add_play_commands(commands, common)
+    add_generate_command(commands, common)
     add_eval_command(commands, common)
     add_verify_command(commands, common)
 

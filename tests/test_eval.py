@@ -105,7 +105,7 @@ def test_records_made_by_other_code_are_made_again(tmp_path, monkeypatch):
 
 
 def test_the_code_fingerprint_follows_python_source_only(tmp_path):
-    from physc.evaluation.run import code_fingerprint, source_fingerprint
+    from physc.fingerprint import code_fingerprint, source_fingerprint
 
     package = tmp_path / "plugin"
     (package / "sub").mkdir(parents=True)

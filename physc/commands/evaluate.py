@@ -19,46 +19,11 @@ from physc.commands.common import (
     check_min_robustness,
     reporter,
 )
+from physc.commands.running import Progress, add_executor, executor_from
 
 
-class _Progress:
-    """A rich progress bar on stderr (plain lines when stderr is not a terminal)."""
-
-    def __init__(self, quiet: bool):
-        self.quiet = quiet
-        self.bar = None
-
-    def start(self, total: int, done: int) -> None:
-        if self.quiet:
-            return
-        from rich.console import Console
-        from rich.progress import (
-            BarColumn,
-            MofNCompleteColumn,
-            Progress,
-            TextColumn,
-            TimeElapsedColumn,
-            TimeRemainingColumn,
-        )
-
-        console = Console(stderr=True)
-        self.bar = Progress(
-            TextColumn("[bold]eval"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-            TextColumn("{task.description}"), console=console, transient=False,
-        )
-        self.bar.start()
-        self.task = self.bar.add_task("", total=total, completed=done)
-        if done:
-            console.print(f"resuming: {done} of {total} tasks already done")
-
-    def advance(self, record: dict) -> None:
-        if self.bar:
-            state = "ok" if record.get("generated") else "no task"
-            self.bar.update(self.task, advance=1, description=f"{record['scenario']} seed {record['seed']}: {state}")
-
-    def stop(self) -> None:
-        if self.bar:
-            self.bar.stop()
+def _described(record: dict) -> str:
+    return f"{record['scenario']} seed {record['seed']}: {'ok' if record.get('generated') else 'no task'}"
 
 
 def cmd_eval(args) -> int:
@@ -95,7 +60,8 @@ def cmd_eval(args) -> int:
         check_min_robustness(args.min_robustness, domain)
     folder = Path(args.out)
     started = time.perf_counter()
-    records = run(jobs, folder, args.jobs, _Progress(args.quiet))
+    with executor_from(args) as executor:
+        records = run(jobs, folder, executor, Progress("eval", args.quiet, _described))
     command = "physc eval " + " ".join(shlex.quote(a) for a in sys.argv[2:]) if sys.argv[1:2] == ["eval"] else "physc eval …"
     summary = write(records, folder, command, time.perf_counter() - started)
     if not args.quiet:
@@ -110,7 +76,7 @@ def add_command(commands, common) -> None:
     parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each is evaluated")
     parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
     parser.add_argument("--tasks", type=arguments.tasks, default=30, metavar="N", help="tasks per scenario (default 30)")
-    parser.add_argument("--jobs", type=arguments.jobs, default=1, metavar="N", help="processes (default 1); results do not depend on it")
+    add_executor(parser)
     parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
     parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds of generation per task at most (default 300; the measurements after it are not counted)")
     add_min_robustness(parser)

@@ -195,6 +195,11 @@ class Domain(abc.ABC):
         stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
         raise MissingCapability(self.name, ("stability",), "measuring stability")
 
+    level_suffix: str = "level"
+    """The file suffix of the domain's level files, without the dot (angrybirds: "xml"): what
+    `physc generate` names a task's level `<seed>.<suffix>` with ("json": `<seed>.level.json`,
+    beside the task's own `<seed>.json`)."""
+
     level_classes: tuple[type, ...] = ()
     """The attrs classes a level of this domain is made of, the level's own class first
     (angrybirds: Level, Camera, LevelObject): what reads a level back from a task file

@@ -45,3 +45,18 @@ def _analyzed(path: str, source: SourceText, check: bool) -> Analysis:
         return Analysis(path, parsed.source, parsed.file, (), parsed.diagnostics, ())
     checked = check_file(parsed.file, path)
     return Analysis(path, parsed.source, parsed.file, checked.scenarios, parsed.diagnostics, checked.diagnostics)
+
+
+def analyze_files(paths) -> tuple[list[tuple[str, ScenarioIR]], list[tuple[str, Analysis, list[Diagnostic]]]]:
+    """The checked scenarios of several files, each with its file's path, in order; and, for each
+    file with errors, (path, its analysis, its errors): a batch command (eval, generate) reports
+    those and runs nothing."""
+    scenarios, problems = [], []
+    for path in paths:
+        analysis = analyze(path)
+        errors = [d for d in analysis.diagnostics if d.is_error]
+        if errors:
+            problems.append((path, analysis, errors))
+            continue
+        scenarios += [(path, scenario) for scenario in analysis.scenarios]
+    return scenarios, problems

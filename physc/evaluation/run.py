@@ -1,25 +1,21 @@
 """Running an evaluation: generate and measure tasks, resumably, in parallel.
 
-Each task is one (scenario, seed) pair, seed = base seed + index. Its record is
+Each task is one (scenario, seed) pair, seed = base seed + index, evaluated on an executor
+(physc.execution: local processes or a Dask cluster). Its record is
 appended to DIR/records.jsonl as soon as it is done (one JSON object a line,
 flushed), so a killed run resumes where it stopped: tasks with a record are not
 done again, unless the record was made with other settings (the generation settings,
 the scenario as written, the source code of physc and of the scenario's domain plugin):
 those are made again. A task's record
 depends only on its scenario and seed, never on the process that made it, so the
-results do not depend on --jobs.
+results do not depend on the executor or the number of workers.
 """
 
 from __future__ import annotations
 
-import functools
-import hashlib
-import importlib.util
 import json
-import multiprocessing
 import random
 import time
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 
 import attrs
@@ -27,12 +23,14 @@ import attrs
 from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
-from physc.backends import DEFAULT_BACKEND, installed_backends, selected
+from physc.backends import DEFAULT_BACKEND, selected
 from physc.compiler.task import MIN_ROBUSTNESS
-from physc.domains import installed_domains, load_domain
-from physc.dsl.frontend import analyze
+from physc.domains import load_domain
+from physc.dsl.frontend import analyze, analyze_files
 from physc.evaluation import measure
+from physc.execution import Executor
 from physc.files import ensure_folder
+from physc.fingerprint import code_fingerprint, scenario_fingerprint
 from physc.generation.verify import verify
 from physc.serialize import to_data
 
@@ -73,45 +71,6 @@ class Job:
         if self.verify_backend is not None:
             settings["verify_backend"] = self.verify_backend
         return settings
-
-
-def scenario_fingerprint(scenario) -> str:
-    """A hash of what a scenario says: the fields its equality compares (not where it is
-    written: spans, the file's path, layout and comments do not count)."""
-    data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.eq)
-    return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()[:16]
-
-
-def source_fingerprint(where: Path) -> str:
-    """A hash of the Python source at `where`, a module's file or a package's folder:
-    every .py file's path (relative to the folder) and content. Anything else (docs,
-    caches, data) does not count."""
-    files, folder = ([where], where.parent) if where.is_file() else (sorted(where.rglob("*.py")), where)
-    digest = hashlib.sha256()
-    for path in files:
-        digest.update(path.relative_to(folder).as_posix().encode() + b"\0" + path.read_bytes() + b"\0")
-    return digest.hexdigest()[:16]
-
-
-@functools.cache
-def code_fingerprint(domain: str, backends: tuple[str, ...] = ()) -> str:
-    """A hash of the code a task of `domain` depends on: physc's own source and, for a
-    domain or a backend (of `backends`) that a third-party package brings, that package's.
-    Records made by other code are made again, so a run resumed after an edit to the
-    generator never mixes old tasks with new ones."""
-    packages = {"physc"}
-    entry_points = [installed_domains().get(domain)] + [installed_backends().get(name) for name in backends]
-    for entry_point in entry_points:
-        if entry_point is not None:
-            packages.add(entry_point.module.split(".")[0])
-    parts = []
-    for package in sorted(packages):
-        spec = importlib.util.find_spec(package)
-        if spec is None:
-            continue
-        where = list(spec.submodule_search_locations or []) or ([spec.origin] if spec.has_location else [])
-        parts += [f"{package}:{source_fingerprint(Path(place))}" for place in where]
-    return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:16]
 
 
 def evaluate(job: Job) -> dict:
@@ -178,45 +137,20 @@ def _evaluate(job: Job) -> dict:
     return record
 
 
-def _in_workers(todo: list[Job], workers: int, keep) -> None:
-    """Evaluate the jobs in worker processes, keeping each record as it comes. Workers ignore
-    Ctrl-C; on an interrupt (or any error) here they are ended at once: only this process
-    writes records, so nothing is left half-written."""
-    pool = ProcessPoolExecutor(max_workers=min(workers, len(todo)) or 1, initializer=budget.ignore_in_workers)
-    try:
-        pending = {pool.submit(evaluate, job) for job in todo}
-        while pending:
-            done, pending = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
-            for future in done:
-                keep(future.result())
-            budget.check()
-    except BaseException:
-        for process in multiprocessing.active_children():
-            process.terminate()
-        pool.shutdown(wait=True, cancel_futures=True)
-        raise
-    pool.shutdown()
-
-
 def jobs_for(
     files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS,
     backend: str = DEFAULT_BACKEND, verify_backend: str | None = None,
 ) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
-    jobs, problems = [], []
-    for path in files:
-        analysis = analyze(path)
-        errors = [d for d in analysis.diagnostics if d.is_error]
-        if errors:
-            problems.append((path, analysis, errors))
-            continue
-        for scenario in analysis.scenarios:
-            engines = tuple(name for name in (backend, verify_backend) if name)
-            fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
-            jobs += [
-                Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend)
-                for index in range(tasks)
-            ]
+    jobs = []
+    scenarios, problems = analyze_files(files)
+    for path, scenario in scenarios:
+        engines = tuple(name for name in (backend, verify_backend) if name)
+        fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
+        jobs += [
+            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend)
+            for index in range(tasks)
+        ]
     return jobs, problems
 
 
@@ -234,7 +168,9 @@ def done_records(folder: Path) -> dict:
     return found
 
 
-def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict]:
+def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> list[dict]:
+    """Evaluate the jobs that have no record made with their settings, on `executor`; every
+    job's record, in the order of `jobs`."""
     ensure_folder(folder)
     records = done_records(folder)
     # A record made with other settings is made again (the last line of a key wins).
@@ -247,7 +183,7 @@ def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict
         temporary.write_text(text, encoding="utf-8")
         temporary.replace(path)
     if progress:
-        progress.start(len(jobs), len(jobs) - len(todo))
+        progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
     with path.open("a", encoding="utf-8") as out:
         def keep(record):
             records[(record["file"], record["scenario"], record["seed"])] = record
@@ -257,11 +193,7 @@ def run(jobs: list[Job], folder: Path, workers: int, progress=None) -> list[dict
                 progress.advance(record)
 
         with budget.interruptible():  # Ctrl-C stops the work at its next stopping point
-            if workers <= 1:
-                for job in todo:
-                    keep(evaluate(job))
-            else:
-                _in_workers(todo, workers, keep)
+            executor.map(evaluate, todo, keep)
     if progress:
         progress.stop()
     return [records[job.key] for job in jobs if job.key in records]

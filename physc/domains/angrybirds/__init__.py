@@ -25,6 +25,7 @@ class AngryBirds(Domain):
     layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right")
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
+    level_suffix = "xml"  # Science Birds level files
     layout_parameters = LayoutParameters(
         clearance=0.1,
         far=1.5,

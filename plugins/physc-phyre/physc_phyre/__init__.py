@@ -38,6 +38,7 @@ class Phyre(SimulatedDomain):
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground=None, player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction)
+    level_suffix = "json"  # task files in PHYRE's task structure
     solution_class = BallAction
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS

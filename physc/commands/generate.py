@@ -1,0 +1,98 @@
+"""`physc generate`: a dataset of tasks for scenarios, on local processes or a Dask cluster."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from physc import diagnostics
+from physc.commands import arguments
+from physc.commands.common import (
+    EXIT_INFEASIBLE,
+    EXIT_OK,
+    UsageError,
+    add_backend,
+    add_min_robustness,
+    check_backends,
+    check_min_robustness,
+    reporter,
+)
+from physc.commands.running import Progress, add_executor, executor_from, reproducing_command
+from physc.compiler.task import TIME_BUDGET
+from physc.files import check_output
+
+
+def _described(row: dict) -> str:
+    return f"{row['scenario']} seed {row['seed']}: {row['outcome']}"
+
+
+def cmd_generate(args) -> int:
+    from physc.dataset.build import build
+    from physc.dataset.job import NO_TASK, jobs_for
+    from physc.diagnostics import Diagnostic
+    from physc.domains import MissingCapability, load_domain
+    from physc.domains.base import STAGE_NEEDS, require
+
+    check_backends(args)
+    if args.seed + args.tasks - 1 > arguments.MAX_SEED:
+        raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
+    check_output(args.out, folder=True)
+    jobs, problems = jobs_for(
+        args.files, args.tasks, args.seed, time_budget=args.time_budget, min_robustness=args.min_robustness,
+        validate=not args.no_validate, picture=args.png, accidental=args.accidental,
+        backend=args.backend, verify_backend=args.verify_backend,
+    )
+    if problems:
+        report = reporter(args)
+        for path, analysis, errors in problems:
+            report(path, analysis.source, errors)
+        return max(diagnostics.exit_status(errors) for _, _, errors in problems)
+    if args.scenario:
+        jobs = [j for j in jobs if j.scenario in args.scenario]
+        if not jobs:
+            raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
+    files_of: dict[str, set] = {}
+    for job in jobs:
+        files_of.setdefault(job.scenario, set()).add(job.path)
+    clashes = sorted(name for name, paths in files_of.items() if len(paths) > 1)
+    if clashes:
+        where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in clashes)
+        raise UsageError(f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename")
+    needs = STAGE_NEEDS["level"] + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
+    for name in sorted({job.domain for job in jobs}):
+        domain = load_domain(name)
+        try:  # refused before any work (E0703)
+            require(domain, needs, "physc generate")
+        except MissingCapability as error:
+            found = [Diagnostic(error.code, error.message, None, help=error.help)]
+            reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
+            return diagnostics.exit_status(found)
+        check_min_robustness(args.min_robustness, domain)
+    argv = sys.argv[2:] if sys.argv[1:2] == ["generate"] else [*args.files, "--tasks", str(args.tasks), "--out", args.out]
+    command = reproducing_command("generate", argv)
+    with executor_from(args) as executor:
+        rows = build(jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command)
+    made = sum(row["outcome"] != NO_TASK for row in rows)
+    if not args.quiet:
+        print(f"{made} of {len(rows)} tasks generated; dataset in {args.out} (README.md, manifest.parquet)", file=sys.stderr)
+    return EXIT_OK if made else EXIT_INFEASIBLE
+
+
+def add_command(commands, common) -> None:
+    parser = commands.add_parser("generate", parents=[common], help="generate a dataset of tasks (locally or on a Dask cluster)")
+    parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each gets tasks")
+    parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
+    parser.add_argument("--tasks", type=arguments.tasks, default=100, metavar="N", help="tasks per scenario (default 100)")
+    parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
+    parser.add_argument("--out", required=True, metavar="DIR", help="the dataset folder; a rerun resumes")
+    parser.add_argument("--png", action="store_true", help="also draw each task (<seed>.png)")
+    parser.add_argument("--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)")
+    parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each task")
+    parser.add_argument(
+        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
+    )
+    add_min_robustness(parser)
+    add_backend(parser)
+    add_executor(parser)
+    parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    parser.set_defaults(run=cmd_generate)

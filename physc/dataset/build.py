@@ -1,0 +1,87 @@
+"""Running a dataset: make the tasks not made yet on an executor, write each as it comes back.
+
+Each task's files are written whole (physc.files.write_atomic), then its row is appended to the
+manifest, so a run killed at any moment resumes where it stopped: a task whose row and files are
+there, made with the same settings, is not made again; one without is made again, to the same
+bytes. At the end the manifest (JSON Lines and Parquet) and the README are written whole.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from physc import budget
+from physc.dataset import manifest, readme
+from physc.dataset.job import TaskJob, make
+from physc.dsl import ast
+from physc.dsl.fmt import format_file
+from physc.dsl.frontend import analyze
+from physc.execution import Executor
+from physc.files import OutputError, ensure_folder, write_atomic
+
+README = "README.md"
+
+
+def _finished(folder: Path, job: TaskJob, row: dict | None) -> bool:
+    """Whether the task's row was made with the job's settings and its files are all there."""
+    if row is None or row.get("settings") != job.settings:
+        return False
+    return all((folder / row[name]).is_file() for name in ("level", "task", "picture") if row.get(name))
+
+
+def sources(jobs: list[TaskJob]) -> dict[str, str]:
+    """Each scenario of the jobs as written, in block form, by name."""
+    found = {}
+    for path in dict.fromkeys(job.path for job in jobs):
+        analysis = analyze(path)
+        for scenario in analysis.file.scenarios:
+            found.setdefault(scenario.name.text, format_file(ast.File((scenario,))))
+    return found
+
+
+def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:
+    """Make the dataset of `jobs` in `folder`; every job's row, in the order of `jobs`."""
+    folder = ensure_folder(folder)
+    rows = manifest.read(folder)
+    todo = [job for job in jobs if not _finished(folder, job, rows.get(job.key))]
+    if rows:  # written whole first, so that a torn last line of a killed run cannot stay in the middle
+        manifest.write_jsonl(folder, [rows[k] for k in sorted(rows)])
+    for scenario in dict.fromkeys(job.scenario for job in todo):
+        ensure_folder(folder / scenario)
+    if progress:
+        progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
+    kept = 0
+    path = folder / manifest.JSONL
+    try:
+        with path.open("a", encoding="utf-8") as out, budget.interruptible():
+
+            def keep(result: dict) -> None:
+                nonlocal kept
+                for name, content in result["files"].items():
+                    write_atomic(folder / name, content)
+                row = result["row"]
+                try:
+                    out.write(manifest.line(row))
+                    out.flush()
+                except OSError as error:
+                    raise OutputError(path, error) from None
+                rows[manifest.key(row)] = row
+                kept += 1
+                if progress:
+                    progress.advance(row)
+
+            executor.map(make, todo, keep)
+    except OSError as error:  # opening the manifest
+        raise OutputError(path, error) from None
+    except OutputError as error:
+        done = len(jobs) - len(todo) + kept
+        error.args = (f"{error}; the {done} tasks finished so far are kept: run the same command again to go on",)
+        raise
+    finally:
+        if progress:
+            progress.stop()
+    final = [rows[job.key] for job in jobs]
+    manifest.write_jsonl(folder, final)
+    manifest.write_parquet(folder, final)
+    write_atomic(folder / README, readme.render(folder, jobs, final, sources(jobs), command))
+    return final

@@ -1,0 +1,73 @@
+"""The README of a dataset, written from a jinja2 template: its scenarios, counts and command."""
+
+from __future__ import annotations
+
+import collections
+from importlib import resources
+from pathlib import Path
+
+import jinja2
+
+from physc import __version__
+from physc.dataset.job import FALLBACK, NO_TASK
+from physc.domains import load_domain
+
+_LEVEL_FORMATS = {"xml": "a Science Birds level file (XML)", "json": "the domain's level file (JSON)"}
+
+
+def render(folder: Path, jobs: list, rows: list[dict], sources: dict[str, str], command: str) -> str:
+    """The README for the dataset in `folder`: `jobs` and their `rows` in order; `sources`: each
+    scenario as written (block form), by name."""
+    by_scenario: dict[str, list] = collections.defaultdict(list)
+    for job, row in zip(jobs, rows):
+        by_scenario[job.scenario].append((job, row))
+    scenarios = [_scenario(name, pairs, sources[name]) for name, pairs in by_scenario.items()]
+    made = [r for r in rows if r["outcome"] != NO_TASK]
+    domains = sorted({job.domain for job in jobs})
+    suffixes = {load_domain(d).level_suffix for d in domains}
+    suffix = suffixes.pop() if len(suffixes) == 1 else "<suffix>"
+    template = jinja2.Environment(keep_trailing_newline=True, undefined=jinja2.StrictUndefined).from_string(
+        resources.files("physc.dataset").joinpath("templates/README.md.j2").read_text(encoding="utf-8")
+    )
+    return template.render(
+        name=folder.resolve().name,
+        total=len(rows),
+        generated=len(made),
+        fallbacks=sum(r["outcome"] == FALLBACK for r in rows),
+        missing=len(rows) - len(made),
+        scenarios=scenarios,
+        backends=", ".join(sorted({j.backend for j in jobs} | {j.verify_backend for j in jobs if j.verify_backend})),
+        validated=all(j.validate for j in jobs),
+        accidental=all(j.accidental for j in jobs),
+        pictures=any(r.get("picture") for r in rows),
+        level_suffix="level.json" if suffix == "json" else suffix,
+        level_format=_LEVEL_FORMATS.get(suffix, "in the domain's format"),
+        command=command,
+        version=__version__,
+        code=", ".join(sorted({j.code for j in jobs})),
+    )
+
+
+def _scenario(name: str, pairs: list, source: str) -> dict:
+    job, _ = pairs[0]
+    rows = [row for _, row in pairs]
+    made = [r for r in rows if r["outcome"] != NO_TASK]
+    robustness = collections.Counter(f"{r['robustness_passed']}/{r['robustness_run']}" for r in made)
+    reasons = collections.Counter(r["reason"] for r in rows if r["outcome"] == NO_TASK)
+    plays = [r["accidental"] for r in made if r.get("accidental") is not None]
+    return {
+        "name": name,
+        "title": rows[0].get("title"),
+        "domain": job.domain,
+        "interactions": rows[0]["interactions"],
+        "total": len(rows),
+        "generated": len(made),
+        "fallbacks": sum(r["outcome"] == FALLBACK for r in rows),
+        "missing": len(rows) - len(made),
+        "accidental": f"{sum(plays) / len(plays):.3f} (mean of {len(plays)})" if plays else "none measured",
+        "source": source,
+        "first_seed": min(j.seed for j, _ in pairs),
+        "last_seed": max(j.seed for j, _ in pairs),
+        "robustness": ", ".join(f"{k} × {v}" for k, v in sorted(robustness.items(), key=lambda kv: (-kv[1], kv[0]))) or "none generated",
+        "reasons": "; ".join(f"{v} × {k}" for k, v in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0]))),
+    }

@@ -1,0 +1,85 @@
+"""Jobs on a Dask cluster: an existing one (`--scheduler`) or one started here (`--dask-workers`).
+
+Dask's scheduler hands the jobs to the workers and runs a job again when its worker dies (up to
+Dask's `distributed.scheduler.allowed-failures`, 3 by default; then the run stops with an error).
+Results come back here as their futures complete. physc's time budgets are kept per process
+(physc.budget), so a worker process runs one job at a time: workers started here have one thread,
+and `run_job` holds a lock while it runs, so a worker started with more threads does no harm.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+
+from physc import budget
+from physc.execution import Executor, ExecutorError
+
+CONNECT_SECONDS = 5  # how long to try to reach a scheduler before giving up
+_one_at_a_time = threading.Lock()
+
+
+def run_job(function, job):
+    """What a worker runs: the job, alone in its process."""
+    with _one_at_a_time:
+        return function(job)
+
+
+class DaskCluster(Executor):
+    """A Dask client: connected to `scheduler` (an address such as tcp://host:8786), or to a
+    LocalCluster of `workers` single-threaded worker processes started here."""
+
+    name = "Dask"
+
+    def __init__(self, scheduler: str | None = None, workers: int | None = None):
+        try:
+            from distributed import Client, LocalCluster
+        except ImportError as error:
+            raise ExecutorError(
+                f"--scheduler and --dask-workers need Dask ({error.name} is missing): pip install 'physc[dask]'"
+            ) from error
+        self.cluster = None
+        self.address = scheduler
+        if scheduler is not None:
+            try:
+                self.client = Client(scheduler, timeout=CONNECT_SECONDS)
+            except (OSError, TimeoutError, ValueError) as error:
+                raise ExecutorError(f"cannot reach the Dask scheduler at {scheduler}: {error}") from error
+            self.workers = len(self.client.scheduler_info().get("workers", {}))
+        else:
+            self.workers = max(1, workers or 1)
+            self.cluster = LocalCluster(
+                n_workers=self.workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                silence_logs=logging.ERROR,
+            )
+            self.client = Client(self.cluster)
+
+    def describe(self) -> str:
+        where = f"the Dask cluster at {self.address}" if self.address else "a local Dask cluster"
+        return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''})"
+
+    def map(self, function, jobs, keep) -> None:
+        from distributed import wait
+
+        futures = [self.client.submit(run_job, function, job, pure=False) for job in jobs]
+        pending = set(futures)
+        try:
+            while pending:
+                try:
+                    done, pending = wait(pending, timeout=0.2, return_when="FIRST_COMPLETED")
+                except TimeoutError:  # none completed meanwhile
+                    done = set()
+                for future in done:
+                    keep(future.result())
+                    future.release()
+                budget.check()
+        except BaseException:
+            self.client.cancel(list(pending))
+            raise
+
+    def close(self) -> None:
+        try:
+            self.client.close()
+        finally:
+            if self.cluster is not None:
+                self.cluster.close()
