@@ -37,6 +37,7 @@ from physc.commands.play import add_commands as add_play_commands
 from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
 from physc.compiler.stages import STAGES
 from physc.diagnostics import safe
+from physc.execution import ExecutorError
 from physc.files import OutputError
 
 
@@ -117,7 +118,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_USAGE
     try:
         return args.run(args)
-    except (UsageError, OutputError) as error:
+    except (UsageError, OutputError, ExecutorError) as error:
         print(f"physc {args.command}: error: {safe(str(error))}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:

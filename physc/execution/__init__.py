@@ -22,8 +22,9 @@ Keep = Callable[[Any], None]
 
 
 class ExecutorError(Exception):
-    """An executor cannot be used (Dask not installed, a scheduler that cannot be reached): a
-    usage error, said before any job runs."""
+    """An executor cannot be used (Dask not installed, a scheduler that cannot be reached), or
+    lost a job's worker too often (a job that kills its process, say by running out of memory).
+    The command says so and exits 2; what was kept before stays."""
 
 
 class Executor(abc.ABC):

@@ -59,7 +59,7 @@ class DaskCluster(Executor):
         return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''})"
 
     def map(self, function, jobs, keep) -> None:
-        from distributed import wait
+        from distributed import KilledWorker, wait
 
         futures = [self.client.submit(run_job, function, job, pure=False) for job in jobs]
         pending = set(futures)
@@ -70,7 +70,11 @@ class DaskCluster(Executor):
                 except TimeoutError:  # none completed meanwhile
                     done = set()
                 for future in done:
-                    keep(future.result())
+                    try:
+                        result = future.result()
+                    except KilledWorker as error:  # its workers died allowed-failures times
+                        raise ExecutorError(f"Dask lost the workers running a job too often: {error}") from None
+                    keep(result)
                     future.release()
                 budget.check()
         except BaseException:

@@ -7,7 +7,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 
 from physc import budget
-from physc.execution import Executor
+from physc.execution import Executor, ExecutorError
 
 RUNS = 3  # how often a job may be under way in a pool that breaks before the run stops
 
@@ -27,33 +27,37 @@ class LocalProcesses(Executor):
                 keep(function(job))
                 budget.check()
             return
-        runs = [0] * len(jobs)
-        left = set(range(len(jobs)))
+        left = dict.fromkeys(range(len(jobs)))  # unfinished, in the order submitted
+        breaks = [0] * len(jobs)  # how often a pool broke while the job was under way
         while left:
+            running: set[int] = set()
             try:
-                self._pool(function, jobs, left, runs, keep)
+                self._pool(function, jobs, left, running, keep)
             except BrokenProcessPool:
-                # A worker died (killed, out of memory): the jobs under way in that pool run again
-                # in a new one, unless one of them has now been under way in RUNS broken pools.
-                if any(runs[i] >= RUNS for i in left):
-                    raise
+                # A worker died (killed, out of memory). Its pool's unfinished jobs run again in a
+                # new one; the jobs that were under way (seen running, else the first in line) are
+                # suspects, and one that was under way in RUNS broken pools stops the run.
+                suspects = [i for i in left if i in running] or list(left)[: self.workers]
+                for index in suspects:
+                    breaks[index] += 1
+                lost = [i for i in suspects if breaks[i] >= RUNS]
+                if lost:
+                    raise ExecutorError(f"a worker process died {RUNS} times while running the job {getattr(jobs[lost[0]], 'key', jobs[lost[0]])}") from None
 
-    def _pool(self, function, jobs, left: set, runs: list, keep) -> None:
-        """Run the jobs `left` in one pool, removing each from `left` once kept. Workers ignore
-        Ctrl-C; on an interrupt (or any error) here they are ended at once: only this process
-        writes, so nothing is left half-written."""
+    def _pool(self, function, jobs, left: dict, running: set, keep) -> None:
+        """Run the jobs `left` in one pool, removing each from `left` once kept and noting in
+        `running` those seen under way. Workers ignore Ctrl-C; on an interrupt (or any error)
+        here they are ended at once: only this process writes, so nothing is left half-written."""
         pool = ProcessPoolExecutor(max_workers=min(self.workers, len(left)), initializer=budget.ignore_in_workers)
         try:
-            pending = {}
-            for index in sorted(left):
-                runs[index] += 1
-                pending[pool.submit(function, jobs[index])] = index
+            pending = {pool.submit(function, jobs[index]): index for index in left}
             while pending:
                 done, _ = wait(pending, timeout=0.2, return_when=FIRST_COMPLETED)
+                running.update(index for future, index in pending.items() if future.running())
                 for future in done:
                     index = pending.pop(future)
                     keep(future.result())
-                    left.discard(index)
+                    del left[index]
                 budget.check()
         except BaseException:
             for process in multiprocessing.active_children():
