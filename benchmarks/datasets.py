@@ -29,20 +29,20 @@ PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper"
 SCENARIOS = ["01_SF", "02_SFTB", "03_SFLB", "04_R", "05_F", "06_S", "07_B"]
 
 
-def fingerprint(folder: Path) -> str:
-    """A hash of the dataset's task files and its manifest without times."""
-    digest = hashlib.sha256()
+def fingerprint(folder: Path) -> dict[str, str]:
+    """A hash of each task file, and of each manifest row without its times, by name."""
+    found = {}
     for path in sorted(folder.rglob("*")):
         if path.is_file() and path.suffix in (".xml", ".json"):
-            digest.update(str(path.relative_to(folder)).encode() + path.read_bytes())
+            found[str(path.relative_to(folder))] = hashlib.sha256(path.read_bytes()).hexdigest()
     for line in (folder / "manifest.jsonl").read_text().splitlines():
         row = json.loads(line)
         row.pop("generation_seconds"), row.pop("seconds")
-        digest.update(json.dumps(row, sort_keys=True).encode())
-    return digest.hexdigest()
+        found[f"row {row['scenario']} {row['seed']}"] = hashlib.sha256(json.dumps(row, sort_keys=True).encode()).hexdigest()
+    return found
 
 
-def timed(executor: list[str], tasks: int) -> tuple[float, str, int]:
+def timed(executor: list[str], tasks: int) -> tuple[float, dict, int]:
     work = Path(tempfile.mkdtemp(prefix="physc-bench-"))
     try:
         command = [sys.executable, "-m", "physc", "generate", *(str(PAPER / f"{s}.phys") for s in SCENARIOS),
@@ -63,12 +63,12 @@ def main() -> None:
     args = parser.parse_args()
     print(f"python {platform.python_version()}, {platform.machine()}; {len(SCENARIOS)} scenarios x {args.tasks} tasks")
     runs = {"--jobs 1": ["--jobs", "1"], "--jobs 2": ["--jobs", "2"], "--dask-workers 1": ["--dask-workers", "1"], "--dask-workers 2": ["--dask-workers", "2"]}
-    medians, prints = {}, set()
+    medians, prints = {}, []
     for _ in range(args.repeat):  # interleaved, so that a drift of the machine's speed hits every executor
         for name, options in runs.items():
             seconds, made_print, made = timed(options, args.tasks)
             medians.setdefault(name, []).append(seconds)
-            prints.add(made_print)
+            prints.append((name, made_print))
     total = len(SCENARIOS) * args.tasks
     for name, times in medians.items():
         median = statistics.median(times)
@@ -77,7 +77,9 @@ def main() -> None:
     print(f"speed-up, 2 Dask workers over 1: {m['--dask-workers 1'] / m['--dask-workers 2']:.2f} (target >= 1.8)")
     print(f"Dask overhead against local processes: 1 worker {100 * (m['--dask-workers 1'] / m['--jobs 1'] - 1):+.1f} %, "
           f"2 workers {100 * (m['--dask-workers 2'] / m['--jobs 2'] - 1):+.1f} % (target <= 5 %)")
-    print(f"the same dataset on every executor: {len(prints) == 1}")
+    first_name, first = prints[0]
+    differing = {key for _, other in prints[1:] for key in first.keys() | other.keys() if first.get(key) != other.get(key)}
+    print(f"the same dataset in every run: {not differing}" + (f"; differing: {', '.join(sorted(differing)[:10])}" if differing else ""))
 
 
 if __name__ == "__main__":

@@ -226,3 +226,29 @@ def test_a_job_that_always_kills_its_worker_stops_the_run_clearly():
     with pytest.raises(ExecutorError, match=f"died {RUNS} times while running the job 2"):
         LocalProcesses(2).map(_always_dies, range(5), kept.append)
     assert 2 not in kept
+
+
+@pytest.fixture(scope="module")
+def cluster():
+    """A Dask cluster that `physc generate --scheduler` connects to by its address."""
+    import logging
+
+    from distributed import LocalCluster
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=logging.ERROR) as running:
+        yield running
+
+
+def test_an_existing_cluster_by_its_address(reference, cluster, tmp_path):
+    run = run_physc("generate", SF, "--tasks", "2", "--out", tmp_path / "dataset", "--scheduler", cluster.scheduler_address, "-q")
+    assert run.status == 0, run.stderr
+    _, rows = dataset(tmp_path / "dataset")
+    assert rows == dataset(reference)[1][:2]
+
+
+def test_workers_with_other_physc_code_are_refused(cluster, tmp_path, monkeypatch):
+    from physc import fingerprint
+
+    monkeypatch.setattr(fingerprint, "code_fingerprint", lambda domain, backends=(): "other code")  # here, not in the workers
+    run = run_physc("generate", SF, "--tasks", "1", "--out", tmp_path, "--scheduler", cluster.scheduler_address)
+    assert run.status == 2 and "run other physc code than this machine" in run.stderr

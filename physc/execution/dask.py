@@ -26,6 +26,13 @@ LOCAL_SETTINGS = {
 _one_at_a_time = threading.Lock()
 
 
+def physc_code() -> str:
+    """The fingerprint of the physc source a process runs (what a worker is asked on connecting)."""
+    from physc.fingerprint import code_fingerprint
+
+    return code_fingerprint("")
+
+
 def run_job(function, job):
     """What a worker runs: the job, alone in its process."""
     with _one_at_a_time:
@@ -54,6 +61,7 @@ class DaskCluster(Executor):
             except (OSError, TimeoutError, ValueError) as error:
                 raise ExecutorError(f"cannot reach the Dask scheduler at {scheduler}: {error}") from error
             self.workers = len(self.client.scheduler_info().get("workers", {}))
+            self._same_code(scheduler)
         else:
             self.workers = max(1, workers or 1)
             with dask.config.set(LOCAL_SETTINGS):  # the workers are handed the settings when they start
@@ -62,6 +70,23 @@ class DaskCluster(Executor):
                     silence_logs=logging.ERROR,
                 )
             self.client = Client(self.cluster)
+
+    def _same_code(self, scheduler: str) -> None:
+        """Refuse workers that run other physc code than this process: their tasks would differ
+        from what the manifest's code fingerprint says."""
+        try:
+            theirs = self.client.run(physc_code)
+        except Exception as error:  # a worker that cannot even import physc
+            self.client.close()
+            raise ExecutorError(f"the workers of {scheduler} cannot run physc ({type(error).__name__}: {error}); install it on every machine") from None
+        mine = physc_code()
+        others = sorted(worker for worker, code in theirs.items() if code != mine)
+        if others:
+            self.client.close()
+            raise ExecutorError(
+                f"{len(others)} of the workers of {scheduler} ({', '.join(others[:3])}) run other physc code than this machine: "
+                "install the same physc (and domain plugins) on every machine"
+            )
 
     def describe(self) -> str:
         where = f"the Dask cluster at {self.address}" if self.address else "a local Dask cluster"
