@@ -58,7 +58,7 @@ def cmd_generate(args) -> int:
     if clashes:
         where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in clashes)
         raise UsageError(f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename")
-    needs = STAGE_NEEDS["level"] + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
+    needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
     for name in sorted({job.domain for job in jobs}):
         domain = load_domain(name)
         try:  # refused before any work (E0703)

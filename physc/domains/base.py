@@ -39,7 +39,7 @@ if TYPE_CHECKING:
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "solution_class", "accidental", "measures")  # working defaults
+DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "level_suffix", "solution_class", "accidental", "measures")  # working defaults
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
