@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import errno
+import json
 import os
 import re
 import stat
@@ -35,6 +36,20 @@ class OutputError(Exception):
     def __init__(self, path, error: OSError):
         super().__init__(f"cannot write {path}: {error.strerror or error}")
         self.path = path
+
+
+def read_json_lines(path: Path) -> list:
+    """The values of a JSON Lines file, in order; a line that does not parse (the torn last line
+    of a killed writer) is skipped; none when the file is missing."""
+    if not path.exists():
+        return []
+    found = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        try:
+            found.append(json.loads(line))
+        except json.JSONDecodeError:
+            continue
+    return found
 
 
 def ensure_folder(path: str | os.PathLike) -> Path:

@@ -7,19 +7,9 @@ import sys
 import time
 from pathlib import Path
 
-from physc import diagnostics
 from physc.commands import arguments
-from physc.files import check_output
-from physc.commands.common import (
-    EXIT_OK,
-    UsageError,
-    add_backend,
-    check_backends,
-    add_min_robustness,
-    check_min_robustness,
-    reporter,
-)
-from physc.commands.running import Progress, add_executor, executor_from
+from physc.commands.common import EXIT_OK, add_backend, add_min_robustness
+from physc.commands.running import Progress, add_executor, check_batch, executor_from, refused_domains, selected_jobs
 
 
 def _described(record: dict) -> str:
@@ -28,36 +18,18 @@ def _described(record: dict) -> str:
 
 def cmd_eval(args) -> int:
     from physc.evaluation.report import write
-    from physc.diagnostics import Diagnostic
-    from physc.domains import MissingCapability, load_domain
-    from physc.domains.base import STAGE_NEEDS, require
+    from physc.domains.base import STAGE_NEEDS
     from physc.evaluation.run import jobs_for, run
 
-    check_backends(args)
-    if args.seed + args.tasks - 1 > arguments.MAX_SEED:
-        raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
-    check_output(args.out, folder=True)
+    check_batch(args)
     jobs, problems = jobs_for(
         args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.backend, args.verify_backend
     )
-    if problems:
-        report = reporter(args)
-        for path, analysis, errors in problems:
-            report(path, analysis.source, errors)
-        return max(diagnostics.exit_status(errors) for _, _, errors in problems)
-    if args.scenario:
-        jobs = [j for j in jobs if j.scenario in args.scenario]
-        if not jobs:
-            raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
-    for name in sorted({job.domain for job in jobs}):
-        domain = load_domain(name)
-        try:  # generation needs the domain's capabilities: refused before any work (E0703)
-            require(domain, STAGE_NEEDS["task"] + ("replay", "stability"), "physc eval")  # its replays and measurements
-        except MissingCapability as error:
-            found = [Diagnostic(error.code, error.message, None, help=error.help)]
-            reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
-            return diagnostics.exit_status(found)
-        check_min_robustness(args.min_robustness, domain)
+    jobs, status = selected_jobs(args, jobs, problems)
+    if status is None:  # generation needs the domain's capabilities, and so do its replays and measurements
+        status = refused_domains(args, jobs, STAGE_NEEDS["task"] + ("replay", "stability"), "physc eval")
+    if status is not None:
+        return status
     folder = Path(args.out)
     started = time.perf_counter()
     with executor_from(args) as executor:

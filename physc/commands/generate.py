@@ -5,21 +5,18 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from physc import diagnostics
 from physc.commands import arguments
-from physc.commands.common import (
-    EXIT_INFEASIBLE,
-    EXIT_OK,
-    UsageError,
-    add_backend,
-    add_min_robustness,
-    check_backends,
-    check_min_robustness,
-    reporter,
+from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_backend, add_min_robustness
+from physc.commands.running import (
+    Progress,
+    add_executor,
+    check_batch,
+    executor_from,
+    refused_domains,
+    reproducing_command,
+    selected_jobs,
 )
-from physc.commands.running import Progress, add_executor, executor_from, reproducing_command
 from physc.compiler.task import TIME_BUDGET
-from physc.files import check_output
 
 
 def _described(row: dict) -> str:
@@ -29,28 +26,17 @@ def _described(row: dict) -> str:
 def cmd_generate(args) -> int:
     from physc.dataset.build import build
     from physc.dataset.job import NO_TASK, jobs_for
-    from physc.diagnostics import Diagnostic
-    from physc.domains import MissingCapability, load_domain
-    from physc.domains.base import STAGE_NEEDS, require
+    from physc.domains.base import STAGE_NEEDS
 
-    check_backends(args)
-    if args.seed + args.tasks - 1 > arguments.MAX_SEED:
-        raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
-    check_output(args.out, folder=True)
+    check_batch(args)
     jobs, problems = jobs_for(
         args.files, args.tasks, args.seed, time_budget=args.time_budget, min_robustness=args.min_robustness,
         validate=not args.no_validate, picture=args.png, accidental=args.accidental,
         backend=args.backend, verify_backend=args.verify_backend,
     )
-    if problems:
-        report = reporter(args)
-        for path, analysis, errors in problems:
-            report(path, analysis.source, errors)
-        return max(diagnostics.exit_status(errors) for _, _, errors in problems)
-    if args.scenario:
-        jobs = [j for j in jobs if j.scenario in args.scenario]
-        if not jobs:
-            raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
+    jobs, status = selected_jobs(args, jobs, problems)
+    if status is not None:
+        return status
     files_of: dict[str, set] = {}
     for job in jobs:
         files_of.setdefault(job.scenario, set()).add(job.path)
@@ -59,15 +45,9 @@ def cmd_generate(args) -> int:
         where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in clashes)
         raise UsageError(f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename")
     needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
-    for name in sorted({job.domain for job in jobs}):
-        domain = load_domain(name)
-        try:  # refused before any work (E0703)
-            require(domain, needs, "physc generate")
-        except MissingCapability as error:
-            found = [Diagnostic(error.code, error.message, None, help=error.help)]
-            reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
-            return diagnostics.exit_status(found)
-        check_min_robustness(args.min_robustness, domain)
+    status = refused_domains(args, jobs, needs, "physc generate")
+    if status is not None:
+        return status
     argv = sys.argv[2:] if sys.argv[1:2] == ["generate"] else [*args.files, "--tasks", str(args.tasks), "--out", args.out]
     command = reproducing_command("generate", argv)
     with executor_from(args) as executor:

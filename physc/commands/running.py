@@ -5,9 +5,11 @@ from __future__ import annotations
 
 import shlex
 
+from physc import diagnostics
 from physc.commands import arguments
-from physc.commands.common import UsageError
+from physc.commands.common import UsageError, check_backends, check_min_robustness, reporter
 from physc.execution import Executor, ExecutorError, executor_for
+from physc.files import check_output
 
 
 def add_executor(parser) -> None:
@@ -15,6 +17,49 @@ def add_executor(parser) -> None:
     where.add_argument("--jobs", type=arguments.jobs, default=1, metavar="N", help="local processes (default 1); results do not depend on it")
     where.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask cluster, e.g. tcp://host:8786 (needs physc[dask])")
     where.add_argument("--dask-workers", type=arguments.jobs, metavar="N", help="start a Dask cluster of N worker processes here (needs physc[dask])")
+
+
+def check_batch(args) -> None:
+    """What a batch command refuses before reading its files: unknown backends, seeds past the
+    largest, an output folder that cannot be written."""
+    check_backends(args)
+    if args.seed + args.tasks - 1 > arguments.MAX_SEED:
+        raise UsageError(f"--seed {args.seed} with --tasks {args.tasks} runs past the largest seed, 2**63 - 1")
+    check_output(args.out, folder=True)
+
+
+def selected_jobs(args, jobs: list, problems: list) -> tuple[list, int | None]:
+    """The jobs of the scenarios `-s` names (all by default); or, for files with errors, their
+    diagnostics reported and the exit status."""
+    if problems:
+        report = reporter(args)
+        for path, analysis, errors in problems:
+            report(path, analysis.source, errors)
+        return [], max(diagnostics.exit_status(errors) for _, _, errors in problems)
+    if args.scenario:
+        jobs = [j for j in jobs if j.scenario in args.scenario]
+        if not jobs:
+            raise UsageError("no scenario of the files is named " + ", ".join(args.scenario))
+    return jobs, None
+
+
+def refused_domains(args, jobs: list, needs: tuple[str, ...], command: str) -> int | None:
+    """The exit status when a domain of the jobs lacks a capability in `needs` (E0703, reported
+    before any work), else None; `--min-robustness` is checked against each domain too."""
+    from physc.diagnostics import Diagnostic
+    from physc.domains import MissingCapability, load_domain
+    from physc.domains.base import require
+
+    for name in sorted({job.domain for job in jobs}):
+        domain = load_domain(name)
+        try:
+            require(domain, needs, command)
+        except MissingCapability as error:
+            found = [Diagnostic(error.code, error.message, None, help=error.help)]
+            reporter(args)(next(job.path for job in jobs if job.domain == name), None, found)
+            return diagnostics.exit_status(found)
+        check_min_robustness(args.min_robustness, domain)
+    return None
 
 
 def executor_from(args) -> Executor:

@@ -13,7 +13,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from physc.files import write_atomic
+from physc.files import read_json_lines, write_atomic
 
 JSONL = "manifest.jsonl"
 PARQUET = "manifest.parquet"
@@ -35,15 +35,12 @@ def key(row: dict) -> tuple[str, str, int]:
 
 def read(folder: Path) -> dict:
     """The rows already written, by task (the last row of a task wins; a torn line is skipped)."""
-    path = folder / JSONL
     rows = {}
-    if path.exists():
-        for line in path.read_text(encoding="utf-8").splitlines():
-            try:
-                row = json.loads(line)
-                rows[key(row)] = row
-            except (json.JSONDecodeError, KeyError, TypeError):
-                continue
+    for row in read_json_lines(folder / JSONL):
+        try:
+            rows[key(row)] = row
+        except (KeyError, TypeError):  # not a row of ours
+            continue
     return rows
 
 

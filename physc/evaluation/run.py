@@ -29,7 +29,7 @@ from physc.domains import load_domain
 from physc.dsl.frontend import analyze, analyze_files
 from physc.evaluation import measure
 from physc.execution import Executor
-from physc.files import ensure_folder
+from physc.files import ensure_folder, read_json_lines, write_atomic
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
 from physc.generation.verify import verify
 from physc.serialize import to_data
@@ -156,16 +156,7 @@ def jobs_for(
 
 def done_records(folder: Path) -> dict:
     """The records already written (a torn last line, from a killed run, is ignored)."""
-    path = folder / RECORDS
-    found = {}
-    if path.exists():
-        for line in path.read_text(encoding="utf-8").splitlines():
-            try:
-                record = json.loads(line)
-            except json.JSONDecodeError:
-                continue
-            found[(record["file"], record["scenario"], record["seed"])] = record
-    return found
+    return {(record["file"], record["scenario"], record["seed"]): record for record in read_json_lines(folder / RECORDS)}
 
 
 def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> list[dict]:
@@ -178,10 +169,7 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
     path = folder / RECORDS
     # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
     if records:
-        text = "".join(json.dumps(records[k], sort_keys=True) + "\n" for k in sorted(records))
-        temporary = path.with_suffix(".tmp")
-        temporary.write_text(text, encoding="utf-8")
-        temporary.replace(path)
+        write_atomic(path, "".join(json.dumps(records[k], sort_keys=True) + "\n" for k in sorted(records)))
     if progress:
         progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
     with path.open("a", encoding="utf-8") as out:

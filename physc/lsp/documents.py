@@ -134,8 +134,9 @@ class Documents:
             if known is not None and known.version == version and known.text == text:
                 return known
             analysis = analyze_document(uri, text)
-            snapshot = Snapshot(uri, version, text, analysis, Positions(text, self.encoding))
             document = self._open.get(uri)
+            made = document.positions if document is not None and document.text is text else None  # completion's, if any
+            snapshot = Snapshot(uri, version, text, analysis, made or Positions(text, self.encoding))
             if document is not None and document.version == version:  # still open, still this version
                 self._latest[uri] = snapshot
             return snapshot

@@ -82,6 +82,11 @@ class PhyscServer(LanguageServer):
         loop = asyncio.get_running_loop()
         return await loop.run_in_executor(self.checker, self.documents.snapshot, uri, document.version, document.text)
 
+    async def parsed(self, uri: str) -> Snapshot | None:
+        """`current`, when the document's text gave a syntax tree (what navigation reads)."""
+        snapshot = await self.current(uri)
+        return snapshot if snapshot is not None and snapshot.analysis.file is not None else None
+
     def close(self, uri: str) -> None:
         self.documents.close(uri)
         self.stale.discard(uri)
@@ -158,8 +163,8 @@ def build() -> PhyscServer:
     @server.feature(types.TEXT_DOCUMENT_DEFINITION)
     @guarded
     async def definition(ls: PhyscServer, params: types.DefinitionParams):
-        snapshot = await ls.current(params.text_document.uri)
-        if snapshot is None or snapshot.analysis.file is None:
+        snapshot = await ls.parsed(params.text_document.uri)
+        if snapshot is None:
             return None
         span = navigation.definition(snapshot.analysis.file, snapshot.positions.offset(params.position))
         return None if span is None else types.Location(uri=params.text_document.uri, range=snapshot.range(span))
@@ -167,8 +172,8 @@ def build() -> PhyscServer:
     @server.feature(types.TEXT_DOCUMENT_REFERENCES)
     @guarded
     async def references(ls: PhyscServer, params: types.ReferenceParams):
-        snapshot = await ls.current(params.text_document.uri)
-        if snapshot is None or snapshot.analysis.file is None:
+        snapshot = await ls.parsed(params.text_document.uri)
+        if snapshot is None:
             return None
         offset = snapshot.positions.offset(params.position)
         spans = navigation.references(snapshot.analysis.file, offset, params.context.include_declaration)
@@ -177,8 +182,8 @@ def build() -> PhyscServer:
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     @guarded
     async def document_symbols(ls: PhyscServer, params: types.DocumentSymbolParams):
-        snapshot = await ls.current(params.text_document.uri)
-        if snapshot is None or snapshot.analysis.file is None:
+        snapshot = await ls.parsed(params.text_document.uri)
+        if snapshot is None:
             return None
         return navigation.symbols(snapshot.analysis.file, snapshot.range)
 
