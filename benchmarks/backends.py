@@ -1,6 +1,6 @@
 """The physics backends side by side: the same Science Birds situations in each engine.
 
-    python benchmarks/backends.py [--backends pymunk,bullet] [--templates DIR]
+    python benchmarks/backends.py [--backends box2d,pymunk,bullet] [--templates DIR]
 
 Each row is one situation, built by the game (its shapes, materials and rules) and run in
 every backend; the table says what each engine makes of it. What the rows measure:
@@ -171,7 +171,7 @@ def templates(backend, circles: str, folder: pathlib.Path) -> str:
         return "no templates found"
     standing = 0
     for path in paths:
-        trace = Game(read_level(path.read_bytes()), backend, Rules(circles=circles)).simulate(None, 10.0, stop_at_rest=False)
+        trace = Game(read_level(path.read_bytes()), backend, Rules(colliders=circles)).simulate(None, 10.0, stop_at_rest=False)
         standing += largest_shift(trace) <= 0.1 and not trace.destructions
     return f"{standing} of {len(paths)} ({standing / len(paths):.0%})"
 
@@ -197,15 +197,15 @@ def rows(backend, folder):
     yield "TNT thrown at 10 units/s: spin", tnt_flight(backend)
     yield "SquareSmall at rest 5 s, then pushed at 3 units/s: distance", pushed_after_rest(backend)
     yield "five SquareSmalls stacked, 10 s", stack(backend)
-    for circles in ("phyq", "round"):
-        yield f"Phy-Q templates standing 10 s (circles {circles})", templates(backend, circles, folder)
+    for colliders in ("game", "phyq", "round"):
+        yield f"Phy-Q templates standing 10 s (colliders {colliders})", templates(backend, colliders, folder)
     yield "20 bodies standing: game steps/s", speed(backend, None)
     yield "20 bodies, a shot into the towers: game steps/s", speed(backend, Shot(target=(0.0, -2.5)))
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--backends", default="pymunk,bullet")
+    parser.add_argument("--backends", default="box2d,pymunk,bullet")
     parser.add_argument("--templates", type=pathlib.Path, default=TEMPLATES)
     args = parser.parse_args()
     names = args.backends.split(",")

@@ -1,6 +1,6 @@
 """Real Science Birds levels: how many load, stand and trace, per folder.
 
-    python benchmarks/real_levels.py FOLDER... [--seconds 10] [--circles round|phyq] [--limit 0.1]
+    python benchmarks/real_levels.py FOLDER... [--seconds 10] [--colliders game|round|phyq] [--limit 0.1]
 
 Every `*.xml` under each FOLDER (recursively) is read with physc's importer, played
 `--seconds` with no shot, and traced (the interactions recognised in that run). A level
@@ -41,7 +41,7 @@ def measure(path: Path, seconds: float, circles: str, limit: float) -> tuple[boo
         level = read_level(path.read_bytes())
     except LevelError as error:
         return False, False, False, f"{error.code} {error}"
-    game = Game(level, rules=Rules(circles=circles))
+    game = Game(level, rules=Rules(colliders=circles))
     trace = game.simulate(None, seconds, stop_at_rest=False)
     moved, name = movement(trace)
     destroyed = [d.name for d in trace.destructions]
@@ -58,7 +58,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("folders", nargs="+", type=Path, metavar="FOLDER")
     parser.add_argument("--seconds", type=float, default=10.0, help="simulated seconds per level (default 10)")
-    parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders (default round)")
+    parser.add_argument("--colliders", choices=("game", "round", "phyq"), default="game", help="the bodies' colliders (default: the game's own)")
     parser.add_argument("--limit", type=float, default=0.1, help="how far an object may move and still stand (default 0.1)")
     args = parser.parse_args()
     failures = []
@@ -69,7 +69,7 @@ def main() -> None:
         start = time.perf_counter()
         counts = {"loaded": 0, "stood": 0, "traced": 0}
         for path in paths:
-            loaded, stood, traced, why = measure(path, args.seconds, args.circles, args.limit)
+            loaded, stood, traced, why = measure(path, args.seconds, args.colliders, args.limit)
             counts["loaded"] += loaded
             counts["stood"] += stood
             counts["traced"] += traced

@@ -1,6 +1,6 @@
 """Stability of real levels: the 75 Phy-Q templates standing for 10 s with no shot.
 
-    python benchmarks/stability.py [--circles phyq|round] [--seconds 10] [--limit 0.1]
+    python benchmarks/stability.py [--colliders game|phyq|round] [--backend NAME] [--seconds 10] [--limit 0.1]
 
 A template is stable when no object moves more than `--limit` units and nothing is
 destroyed. Prints each unstable template with the object that moved most.
@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level_xml import read_level
 from physc.domains.angrybirds.rules import Rules
@@ -23,7 +24,8 @@ TEMPLATES = Path(__file__).resolve().parents[2] / "shared" / "data" / "sciencebi
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--circles", choices=("phyq", "round"), default="phyq")
+    parser.add_argument("--colliders", choices=("game", "phyq", "round"), default="game")
+    parser.add_argument("--backend", default="box2d", help="the physics engine (default box2d, the game's)")
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--limit", type=float, default=0.1)
     parser.add_argument("--templates", type=Path, default=TEMPLATES)
@@ -33,7 +35,7 @@ def main() -> None:
     unstable = []
     for path in paths:
         level = read_level(path.read_bytes())
-        trace = Game(level, rules=Rules(circles=args.circles)).simulate(None, args.seconds, stop_at_rest=False)
+        trace = Game(level, load_backend(args.backend), Rules(colliders=args.colliders)).simulate(None, args.seconds, stop_at_rest=False)
         states = trace.states
         shift = np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1]) if states.shape[1] else np.zeros((1, 1))
         worst = float(np.nanmax(shift))
@@ -41,7 +43,7 @@ def main() -> None:
             name = trace.names[int(np.nanargmax(np.nanmax(shift, axis=0)))]
             unstable.append((path.stem, name, worst, [d.name for d in trace.destructions]))
     stable = len(paths) - len(unstable)
-    print(f"circles={args.circles}: {stable} of {len(paths)} stable ({stable / len(paths):.1%}) in {time.perf_counter() - start:.1f} s")
+    print(f"{args.backend}, colliders={args.colliders}: {stable} of {len(paths)} stable ({stable / len(paths):.1%}) in {time.perf_counter() - start:.1f} s")
     for stem, name, worst, destroyed in unstable:
         print(f"  {stem}: {name} moved {worst:.3f}" + (f"; destroyed {', '.join(destroyed)}" if destroyed else ""))
 

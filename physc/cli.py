@@ -27,6 +27,7 @@ from physc.commands.common import (
     add_min_robustness,
 )
 from physc.commands.compile import cmd_compile
+from physc.commands.backends import cmd_backends
 from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.verify import add_command as add_verify_command
@@ -102,6 +103,12 @@ def build_parser() -> argparse.ArgumentParser:
     add_verify_command(commands, common)
 
     add_lsp_command(commands, common)
+
+    backends = commands.add_parser("backends", parents=[common], help="list installed physics engines, their versions and what each honours")
+    backends.add_argument("name", nargs="*", help="only these backends")
+    backends.add_argument("-v", "--verbose", action="store_true", help="say, setting by setting, what each engine does with a world's engine settings")
+    backends.add_argument("--json", action="store_true", help="machine-readable output")
+    backends.set_defaults(run=cmd_backends)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")

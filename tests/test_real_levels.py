@@ -16,7 +16,7 @@ ROLL_OFF_ROUND = {"3_5_1_1", "3_5_5_1", "3_6_7_1", "3_7_4_1", "3_7_5_1", "3_8_2_
 
 
 def moved(path, circles):
-    trace = Game(read_level(path.read_bytes()), rules=Rules(circles=circles)).simulate(None, 10.0, stop_at_rest=False)
+    trace = Game(read_level(path.read_bytes()), rules=Rules(colliders=circles)).simulate(None, 10.0, stop_at_rest=False)
     return largest_shift(trace), trace.destructions
 
 

@@ -20,10 +20,11 @@ from typing import Protocol
 import attrs
 import numpy as np
 
+from physc.backends.settings import BOX2D_DEFAULTS, EngineSettings
 from physc.suggest import did_you_mean
 
 ENTRY_POINT_GROUP = "physc.backends"
-DEFAULT_BACKEND = "pymunk"
+DEFAULT_BACKEND = "box2d"  # the engine of both target worlds (README, "The reference engine")
 # The backend the caller chose for what runs inside `selected` (a command's --backend):
 # the domain's game builds its worlds with `current()`, so generation, measurement and
 # verification all run in the engine the caller named, without every function between
@@ -69,6 +70,7 @@ class BodySpec:
     bounciness: float = 0.0
     gravity_scale: float = 1.0  # relative to the world's gravity
     angular_damping: float = 0.0  # Box2D-style: ω ← ω / (1 + dt · damping) each step
+    continuous: bool = False  # swept against moving bodies too (Box2D's bullet; Unity's Continuous detection)
 
 
 @attrs.frozen
@@ -146,14 +148,19 @@ class ContactLog:
 @attrs.frozen
 class Backend:
     """A physics backend: its name, one line for people, and the World class it builds
-    (`world(gravity)`). A plugin registers one under `physc.backends`."""
+    (`world(gravity, settings)`, settings: physc.backends.settings.EngineSettings). A plugin
+    registers one under `physc.backends`. `honours` says, setting by setting, what its engine
+    does with the target world's engine settings (`physc backends` prints it); `package` is
+    the distribution whose version `physc backends` reports."""
 
     name: str
     description: str
     world: type
+    package: str = ""
+    honours: dict[str, str] = attrs.field(factory=dict)
 
-    def create_world(self, gravity: float) -> World:
-        return self.world(gravity)
+    def create_world(self, gravity: float, settings: EngineSettings | None = None) -> World:
+        return self.world(gravity, settings or BOX2D_DEFAULTS)
 
 
 class BackendError(Exception):
@@ -189,6 +196,6 @@ def selected(name: str) -> Iterator[Backend]:
 
 
 def current() -> Backend:
-    """The backend chosen by the innermost `selected`, else the default (pymunk)."""
+    """The backend chosen by the innermost `selected`, else the default (box2d)."""
     return load_backend(_SELECTED.get())
 

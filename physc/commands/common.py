@@ -88,7 +88,7 @@ def add_backend(parser, verify: bool = True) -> None:
 
     parser.add_argument(
         "--backend", type=backend, default=DEFAULT_BACKEND, metavar="NAME",
-        help=f"the physics backend that simulates (default {DEFAULT_BACKEND}; bullet is the other built-in one)",
+        help=f"the physics engine that simulates (default {DEFAULT_BACKEND}, the game's; pymunk and bullet are built in too: physc backends)",
     )
     if verify:
         parser.add_argument(

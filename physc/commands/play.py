@@ -67,7 +67,7 @@ def _game(args, level):
     from physc.domains.angrybirds.game import Game
     from physc.domains.angrybirds.rules import Rules
 
-    return Game(level, load_backend(args.backend), Rules(circles=args.circles))  # --backend was checked when parsed
+    return Game(level, load_backend(args.backend), Rules(colliders=args.colliders))  # --backend was checked when parsed
 
 
 def _play(args):
@@ -167,7 +167,7 @@ def add_commands(commands, common) -> None:
             "--seconds", type=arguments.seconds, default=10.0, metavar="S",
             help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
         )
-        parser.add_argument("--circles", choices=("round", "phyq"), default="round", help="Circle colliders: true circles (default) or Phy-Q's flat-bottomed polygons")
+        parser.add_argument("--colliders", choices=("game", "round", "phyq"), default="game", help="the bodies' colliders: the game's own (default), or physc's catalogue model with Circle and CircleSmall as true circles (round) or flat-footed polygons (phyq)")
         add_backend(parser, verify=False)
 
     simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")

@@ -15,6 +15,7 @@ from __future__ import annotations
 import attrs
 
 from physc.backends import BodySpec, current
+from physc.backends.settings import EngineSettings
 from physc.simulation.recognise import Recogniser, violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.trace import Trace
@@ -25,10 +26,15 @@ class Scene:
     bodies: tuple[BodySpec, ...]
     kinds: dict = attrs.field(eq=False)  # name → kind (the recogniser's surfaces, background, thrown)
     gravity: float  # downwards, in the domain's units
-    dt: float  # the seconds of one step
+    engine: EngineSettings  # the target world's engine settings (its step, iterations, thresholds)
     radii: dict = attrs.field(factory=dict, eq=False)  # name → rolling radius of a round body
     velocities: dict = attrs.field(factory=dict, eq=False)  # name → (vx, vy, ω) at the start
     goal: tuple[str, ...] = ()  # the bodies the goal is about (Trace.goal)
+
+    @property
+    def dt(self) -> float:
+        """The seconds of one step."""
+        return self.engine.dt
 
     @property
     def dynamic(self) -> tuple[str, ...]:
@@ -42,7 +48,7 @@ def play(
     """`scene` run for `seconds` at most under `rules`, in the selected backend; with
     `recognise`, the interactions recognised and the restrictions (`redirects`: the declared
     bounces, see physc.simulation.recognise.violations) checked."""
-    world = current().create_world(scene.gravity)
+    world = current().create_world(scene.gravity, scene.engine)
     for body in scene.bodies:
         world.add(body)
     for name, velocity in scene.velocities.items():

@@ -30,6 +30,6 @@ except ImportError as error:  # pragma: no cover - pybullet is a dependency of p
     raise ImportError("pybullet is not installed (pip install pybullet)") from error
 
 from physc.backends import Backend  # noqa: E402
-from physc.backends.bullet.world import BulletWorld  # noqa: E402
+from physc.backends.bullet.world import HONOURS, BulletWorld  # noqa: E402
 
-BACKEND = Backend("bullet", "pybullet 3 (Bullet), bodies kept in the plane by planar joints: the second verifier", BulletWorld)
+BACKEND = Backend("bullet", "pybullet 3 (Bullet), bodies kept in the plane by planar joints: a second verifier", BulletWorld, package="pybullet", honours=HONOURS)

@@ -9,6 +9,7 @@ import pybullet
 
 from physc.backends import BodySpec, Circle, Compound
 from physc.backends.bullet.shapes import Extent
+from physc.backends.convex import hull
 
 DEPTH = 1.0  # the extrusion's depth (out of the plane); mass and inertia do not depend on it
 SKIN = 0.01  # polygons grow by this, as pymunk's polygon skin (Box2D's polygon radius)
@@ -20,17 +21,27 @@ BODY_LINK = 2  # the link that carries a planar body's shape
 
 def collision_shape(client: int, spec: BodySpec) -> int:
     """A sphere for a circle, a box for a centred rectangle, else the convex hull of the
-    polygon grown by SKIN, DEPTH deep; for a compound, Bullet's compound of spheres and
-    turned boxes (its parts must be circles and rectangles: ValueError otherwise)."""
+    polygon grown by SKIN, DEPTH deep; for a compound of circles and rectangles, Bullet's
+    compound of spheres and turned boxes; for any other compound (a game collider split into
+    convex parts: pybullet's compounds take no meshes), the convex hull of all its parts, so
+    its concavities and holes are filled in this engine."""
     if isinstance(spec.shape, Compound):
-        return _compound(client, spec.shape)
+        if all(isinstance(part, Circle) or Extent.turned(part.points) is not None for part in spec.shape.parts):
+            return _compound(client, spec.shape)
+        points = [point for part in spec.shape.parts for point in part.points]
+        return _mesh(client, hull(points))
     if isinstance(spec.shape, Circle):
         return pybullet.createCollisionShape(pybullet.GEOM_SPHERE, radius=spec.shape.radius, physicsClientId=client)
     box = Extent.of(spec.shape.points)
     if box.rectangle:
         half = [box.width / 2 + SKIN, box.height / 2 + SKIN, DEPTH / 2]
         return pybullet.createCollisionShape(pybullet.GEOM_BOX, halfExtents=half, physicsClientId=client)
-    vertices = [(x, y, z) for x, y in Extent.grown(spec.shape.points, SKIN) for z in (-DEPTH / 2, DEPTH / 2)]
+    return _mesh(client, spec.shape.points)
+
+
+def _mesh(client: int, points) -> int:
+    """The convex hull of `points` grown by SKIN, DEPTH deep."""
+    vertices = [(x, y, z) for x, y in Extent.grown(points, SKIN) for z in (-DEPTH / 2, DEPTH / 2)]
     return pybullet.createCollisionShape(pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=client)
 
 

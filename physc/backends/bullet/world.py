@@ -42,14 +42,28 @@ from physc.backends import BackendError, BodySpec, ContactEvent, ContactLog
 from physc.backends.bullet.bodies import BODY_LINK, JOINTS, SKIN, collision_shape, planar_body, static_body
 from physc.backends.bullet.restitution import raised
 from physc.backends.bullet.shapes import area, centroid, polar_moment
+from physc.backends.settings import EngineSettings
 
 SUBSTEPS = 2  # Bullet steps per game step
-ITERATIONS = 10  # the solver's iterations per Bullet step
-ERP = 0.2  # share of a penetration corrected per step (contacts and joints)
-RESTITUTION_THRESHOLD = 0.2  # below this approach speed (units/s) nothing bounces
+ITERATIONS = 10  # the solver's iterations per Bullet step (calibrated: docs/performance.md, "Two engines")
 SEPARATION = 50  # Bullet steps at most that push initial overlaps apart (see _separate)
-SLOP = 0.005  # overlap left alone (pymunk's and Box2D's linear slop)
+SLOP = 0.005  # overlap left alone before the first step (pymunk's and Box2D's linear slop)
 TOUCH = 0.005  # contact points this near (or nearer: negative is overlap) count as touching
+HONOURS = {
+    "dt": "native (two Bullet sub-steps per step)",
+    "velocity_iterations": "not honoured (10 per sub-step, calibrated against pymunk)",
+    "position_iterations": "not honoured (Bullet corrects positions by ERP)",
+    "restitution_threshold": "native (restitutionVelocityThreshold)",
+    "linear_slop": "native (contactSlop)",
+    "baumgarte": "native (erp, contactERP, frictionERP)",
+    "toi_baumgarte": "not honoured (no continuous collision in the planar bodies)",
+    "max_linear_correction": "not honoured",
+    "max_angular_correction": "not honoured",
+    "max_translation": "not honoured",
+    "time_to_sleep": "not honoured (Bullet's own deactivation)",
+    "linear_sleep_tolerance": "not honoured",
+    "angular_sleep_tolerance": "not honoured",
+}
 
 
 @attrs.frozen
@@ -65,8 +79,9 @@ class Dynamic:
 
 
 class BulletWorld(ContactLog):
-    def __init__(self, gravity: float):
+    def __init__(self, gravity: float, settings: EngineSettings):
         super().__init__()
+        self.settings = settings
         self.client = pybullet.connect(pybullet.DIRECT)
         if self.client < 0:
             raise BackendError("pybullet could not start a physics client (DIRECT)")
@@ -120,7 +135,8 @@ class BulletWorld(ContactLog):
         self._dt = dt
         pybullet.setPhysicsEngineParameter(
             fixedTimeStep=dt / SUBSTEPS, numSubSteps=0, numSolverIterations=ITERATIONS,
-            erp=ERP, contactERP=ERP, frictionERP=ERP, contactSlop=SLOP, restitutionVelocityThreshold=RESTITUTION_THRESHOLD,
+            erp=self.settings.baumgarte, contactERP=self.settings.baumgarte, frictionERP=self.settings.baumgarte,
+            contactSlop=self.settings.linear_slop, restitutionVelocityThreshold=self.settings.restitution_threshold,
             deterministicOverlappingPairs=1, physicsClientId=self.client,
         )
         for name in self._dynamic:
@@ -217,7 +233,7 @@ class BulletWorld(ContactLog):
                 continue
             approach = event.relative_velocity[0] * event.normal[0] + event.relative_velocity[1] * event.normal[1]
             high, low = (a, b) if self._dynamic[a].bounciness > self._dynamic[b].bounciness else (b, a)
-            if approach > RESTITUTION_THRESHOLD and partners[high] == [low]:
+            if approach > self.settings.restitution_threshold and partners[high] == [low]:
                 raised_to[high], kept = raised(self._dynamic[high].bounciness, self._dynamic[low].bounciness)
                 if kept != self._dynamic[low].bounciness:
                     raised_to[low] = max(raised_to.get(low, 0.0), kept)

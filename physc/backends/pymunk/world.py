@@ -8,9 +8,12 @@ pair's restitution is set to the larger of the two when the contact begins,
 which is when an impact's bounce is computed. Box2D's angular damping is a
 damped rotary spring of no stiffness to the static body (C, not Python). Contacts
 are reported from pymunk 7's `Space.on_collision` begin and separate callbacks.
-Collision slop, the skin around polygons and the solver's iterations follow
-Box2D's defaults for metre-sized objects (levels saved from the game keep
-stacked blocks 0.015 apart: Box2D's 0.01 polygon skin on each, less its slop). The game steps
+The target world's engine settings are honoured as far as Chipmunk can (HONOURS): the
+solver's iterations are the velocity iterations, the collision slop and the polygons' skin
+are Box2D's (levels saved from the game keep stacked blocks 0.015 apart: Box2D's 0.01
+polygon skin on each, less its slop), sleeping follows the time and the linear tolerance,
+and an impact slower than the restitution threshold does not bounce (set when the contact
+begins, as Box2D decides it). The game steps
 and reads the world hundreds of times per simulation, so both are kept lean: `states` reads every
 body in one batched call (pymunk.batch) through numpy views of its buffer, and `step` calls
 Chipmunk's step directly unless bodies were added or removed since the last step (then pymunk's
@@ -28,12 +31,23 @@ import pymunk
 import pymunk.batch
 
 from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, parts
+from physc.backends.settings import EngineSettings
 
-ITERATIONS = 10
-SLOP = 0.005  # Box2D's linear slop
-SKIN = 0.01  # Box2D's polygon radius (2 × linear slop): polygons keep this far apart
-SLEEP_AFTER = 0.5  # seconds at rest before a body sleeps (as Box2D's time to sleep)
-IDLE_SPEED = 0.05
+HONOURS = {
+    "dt": "native (Space.step)",
+    "velocity_iterations": "native (Space.iterations; Chipmunk has one solver loop)",
+    "position_iterations": "not honoured (Chipmunk corrects positions by bias velocities, no iterations)",
+    "restitution_threshold": "emulated (no bounce for a slower approach, set when the contact begins)",
+    "linear_slop": "native (Space.collision_slop; polygons' skin 2 × slop)",
+    "baumgarte": "not honoured (Chipmunk's collision_bias)",
+    "toi_baumgarte": "not honoured (Chipmunk has no continuous collision)",
+    "max_linear_correction": "not honoured",
+    "max_angular_correction": "not honoured",
+    "max_translation": "not honoured",
+    "time_to_sleep": "native (Space.sleep_time_threshold)",
+    "linear_sleep_tolerance": "native (Space.idle_speed_threshold)",
+    "angular_sleep_tolerance": "not honoured (Chipmunk's idle test is linear)",
+}
 # What one batched read returns per body: id; x, y, angle, vx, vy, ω (in this order).
 BATCH_FIELDS = (
     pymunk.batch.BodyFields.BODY_ID
@@ -52,14 +66,16 @@ def _velocity_function(scale: float):
 
 
 class PymunkWorld(ContactLog):
-    def __init__(self, gravity: float):
+    def __init__(self, gravity: float, settings: EngineSettings):
         super().__init__()
+        self.settings = settings
         self.space = pymunk.Space()
         self.space.gravity = (0.0, -gravity)
-        self.space.iterations = ITERATIONS
-        self.space.collision_slop = SLOP
-        self.space.sleep_time_threshold = SLEEP_AFTER
-        self.space.idle_speed_threshold = IDLE_SPEED
+        self.space.iterations = settings.velocity_iterations
+        self.space.collision_slop = settings.linear_slop
+        self.space.sleep_time_threshold = settings.time_to_sleep
+        self.space.idle_speed_threshold = settings.linear_sleep_tolerance
+        self._skin = settings.contact_offset
         self.gravity = gravity
         self.names: list[str] = []
         self.bodies: dict[str, pymunk.Body] = {}
@@ -97,7 +113,7 @@ class PymunkWorld(ContactLog):
             body = pymunk.Body()
         body.position = (spec.x, spec.y)
         body.angle = spec.angle
-        shapes = tuple(pymunk.Circle(body, s.radius) if isinstance(s, Circle) else pymunk.Poly(body, s.points, radius=SKIN) for s in parts(spec.shape))
+        shapes = tuple(pymunk.Circle(body, s.radius) if isinstance(s, Circle) else pymunk.Poly(body, s.points, radius=self._skin) for s in parts(spec.shape))
         total = sum(shape.area for shape in shapes)
         for shape in shapes:
             if not spec.static:
@@ -215,20 +231,21 @@ class PymunkWorld(ContactLog):
         a, b = self._pair(arbiter)
         if a is None or b is None:
             return
-        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
-            arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])])
-            return
         points = arbiter.contact_point_set.points
         point = points[0].point_a if points else arbiter.bodies[0].position
         body_a, body_b = arbiter.bodies
         va = body_a.velocity_at_world_point(point)
         vb = body_b.velocity_at_world_point(point)
         normal = arbiter.normal
+        # Box2D's restitution of a pair is the larger one, and none below its threshold
+        # speed of approach. Chipmunk takes the product every step, but the bounce of an
+        # impact is computed in the step the contact begins, right after this callback.
+        approach = (va.x - vb.x) * normal.x + (va.y - vb.y) * normal.y
+        bounces = approach > self.settings.restitution_threshold
+        arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])]) if bounces else 0.0
+        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
+            return
         self._began(ContactEvent(a, b, (point.x, point.y), (normal.x, normal.y), (va.x - vb.x, va.y - vb.y), (va.x, va.y), (vb.x, vb.y)))
-        # Box2D's restitution of a pair is the larger one. Chipmunk takes the
-        # product every step, but the bounce of an impact is computed in the step
-        # the contact begins, right after this callback: set it here.
-        arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])])
 
     def _on_separate(self, arbiter, space, data):
         a, b = self._pair(arbiter)

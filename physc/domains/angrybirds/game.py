@@ -15,6 +15,7 @@ import math
 import attrs
 
 from physc.backends import BodySpec, Circle, Polygon, current
+from physc.domains.angrybirds import prefabs
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     MATERIAL,
@@ -25,7 +26,7 @@ from physc.domains.angrybirds.catalogue import (
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.rules import RULES, Rules
-from physc.domains.angrybirds.world import BIRD_REST, GROUND_TOP
+from physc.domains.angrybirds.world import GROUND_TOP
 from physc.simulation.recognise import Recogniser, violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.trace import ContactRecord, DamageRecord, Trace
@@ -54,7 +55,6 @@ class Game(RunRules):
         self.level = level
         self.backend = backend or current()  # the caller's choice (physc.backends.selected)
         self.rules = rules
-        self._bird_checked_from = min(rules.bird_lifetime, rules.bird_still_after)  # `_bird_done` is False before
 
     # ---- building the world ---------------------------------------------------------
     def _spec(self, obj: LevelObject) -> tuple[BodySpec, str, float, float]:
@@ -67,7 +67,10 @@ class Game(RunRules):
             outline = Polygon(((-w, -h), (w, -h), (w, h), (-w, h)))
             spec = BodySpec(obj.name, outline, obj.x, obj.y, angle, static=True, friction=rules.platform_friction)
             return spec, "platform", math.inf, 0.0
-        if catalogue.round and rules.circles == "phyq" and catalogue.name in PHYQ_CIRCLES:
+        game = rules.colliders == "game" and obj.type in prefabs.prefabs()
+        if game:
+            outline = prefabs.body_shape(obj.type)
+        elif catalogue.round and rules.colliders == "phyq" and catalogue.name in PHYQ_CIRCLES:
             outline = Polygon(catalogue.phyq_circle_points())
         elif catalogue.round:
             outline = Circle(catalogue.width / 2)
@@ -75,17 +78,25 @@ class Game(RunRules):
             outline = Polygon(catalogue.outline_points())
         common = dict(angle=angle, angular_damping=rules.angular_drag)
         if catalogue.kind == "pig":
-            spec = BodySpec(obj.name, outline, obj.x, obj.y, density=rules.pig_density, friction=rules.pig_friction, bounciness=rules.pig_bounciness, **common)
+            mass = prefabs.body_mass(obj.type, rules.pig_density) if game else None
+            spec = BodySpec(
+                obj.name, outline, obj.x, obj.y, mass=mass, density=rules.pig_density, friction=rules.pig_friction,
+                bounciness=rules.pig_bounciness, continuous=True, **common,
+            )
             return spec, "pig", float(catalogue.life[""]), rules.pig_defence
         if catalogue.kind == "tnt":
-            spec = BodySpec(obj.name, outline, obj.x, obj.y, density=1.0, friction=0.5, gravity_scale=rules.tnt_gravity_scale, **common)
+            spec = BodySpec(
+                obj.name, outline, obj.x, obj.y, angle, density=rules.tnt_density, friction=rules.tnt_friction,
+                gravity_scale=rules.tnt_gravity_scale, angular_damping=rules.tnt_angular_drag,
+            )
             return spec, "tnt", float(catalogue.life[""]), 0.0
         material = MATERIAL[_material(obj)]
-        spec = BodySpec(obj.name, outline, obj.x, obj.y, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
+        mass = prefabs.body_mass(obj.type, material.density) if game else None
+        spec = BodySpec(obj.name, outline, obj.x, obj.y, mass=mass, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
         return spec, "block", float(catalogue.life[material.name]), material.defence
 
     def build(self):
-        world = self.backend.create_world(self.rules.gravity)
+        world = self.backend.create_world(self.rules.gravity, self.rules.engine)
         ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, GROUND_TOP - 0.5, static=True, friction=self.rules.ground_friction)
         world.add(ground)
         self.kinds = {GROUND: "ground"}
@@ -103,7 +114,10 @@ class Game(RunRules):
     def launch(self, world, shot: Shot) -> None:
         """Put the bird into `world` (built by `build`) at the slingshot, flying as `shot` sends it."""
         rules = self.rules
-        bird = BodySpec(BIRD, Circle(shape("redBird").width / 2), *BIRD_REST, mass=rules.bird_mass, friction=rules.bird_friction, bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag)
+        bird = BodySpec(
+            BIRD, Circle(shape("redBird").width / 2), *shot.origin(), mass=rules.bird_mass, friction=rules.bird_friction,
+            bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag, continuous=True,
+        )
         world.add(bird)
         world.set_velocity(BIRD, *shot.velocity())
         self.kinds[BIRD] = "bird"
@@ -139,6 +153,8 @@ class Game(RunRules):
         self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
         self._settle_after_solved, self._solved_at = settle_after_solved, None
         self._stop_at_rest, self._resting_since = stop_at_rest, None
+        self._bird_check_at = rules.bird_lifetime  # the next time the bird may be removed (ABBird.cs)
+        self._bird_struck = False  # whether the bird has collided yet
         recorded = run(world, dynamic, self, seconds, rules.dt)
         return Trace(
             rules.dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
@@ -152,6 +168,10 @@ class Game(RunRules):
 
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
     def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
+        if not self._bird_struck and BIRD in (contact.a, contact.b):
+            self._bird_struck = True
+            # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
+            self._bird_check_at = min(time + self.rules.bird_still_after, self.rules.bird_lifetime)
         if time > self._invulnerable:
             self._damage(world, contact, damage, time)
 
@@ -197,9 +217,11 @@ class Game(RunRules):
         for v in values:  # `_outside`, inlined: this runs every step, and a call per body nearly triples its cost
             if v[0] < left or v[0] > right:
                 return True
-        if BIRD in alive and time >= self._bird_checked_from:
+        if BIRD in alive and time >= self._bird_check_at - 1e-9:
             _, _, _, vx, vy, _ = values[0]  # the bird, if any, is the first body
-            return self._bird_done(vx, vy, time)
+            if self._bird_done(vx, vy, time):
+                return True
+            self._bird_check_at = min(self._bird_check_at + self.rules.bird_still_every, self.rules.bird_lifetime)
         return False
 
     @staticmethod
@@ -215,7 +237,7 @@ class Game(RunRules):
             return ("damage", self._last_attacker(damage, name))
         if self._outside(x):
             return ("out of world", None)
-        if name == BIRD and self._bird_done(vx, vy, time):
+        if name == BIRD and time >= self._bird_check_at - 1e-9 and self._bird_done(vx, vy, time):
             return ("removed", None)
         return None
 
@@ -225,8 +247,9 @@ class Game(RunRules):
         return x < self.rules.world_left or x > self.rules.world_right
 
     def _bird_done(self, vx: float, vy: float, time: float) -> bool:
+        """At a check (`_bird_check_at`): whether the bird goes, too old or nearly still."""
         rules = self.rules
-        return time >= rules.bird_lifetime or (time >= rules.bird_still_after and math.hypot(vx, vy) < rules.bird_still_speed)
+        return time >= rules.bird_lifetime - 1e-9 or math.hypot(vx, vy) < rules.bird_still_speed
 
     def _wound(self, target: str, amount: float) -> None:
         self.life[target] -= amount
@@ -265,7 +288,7 @@ class Game(RunRules):
         for target in (contact.a, contact.b):
             if target not in self.life or self.life[target] <= 0:
                 continue
-            if attacker == BIRD:
+            if attacker == BIRD and self.kinds.get(target) == "block":  # ABBlock's override
                 amount = speed * mass * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
             else:
                 amount = speed * mass * rules.damage_factor * rules.block_damage_share
@@ -281,17 +304,21 @@ class Game(RunRules):
         return next((d.by for d in reversed(damage) if d.target == name), None)
 
     def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
+        """ABTNT.Explode: every body within the radius but birds takes damage and an impulse
+        away from the TNT, both falling off linearly with the distance."""
         rules = self.rules
         cx, cy = world.state(name)[:2]
         for other in sorted(alive):
-            if other == name:
+            if other == name or self.kinds.get(other) == "bird":
                 continue
             x, y, _, vx, vy, w = world.state(other)
             distance = math.hypot(x - cx, y - cy)
-            if distance > rules.tnt_radius or distance == 0:
+            share = max(1.0 - distance / rules.tnt_radius, 0.0)
+            if share <= 0.0 or distance == 0:
                 continue
-            push = rules.tnt_impulse / max(world.mass(other), 1e-6)
+            push = rules.tnt_impulse * share / max(world.mass(other), 1e-6)
             world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
             if other in self.life:
-                self._wound(other, rules.tnt_damage)
-                damage.append(DamageRecord(time, other, rules.tnt_damage, self.life[other], name))
+                amount = rules.tnt_damage * share
+                self._wound(other, amount)
+                damage.append(DamageRecord(time, other, amount, self.life[other], name))

@@ -74,7 +74,7 @@ class Phyre(SimulatedDomain):
             specs.append(world.body_spec(level.player, world.outline("ball", action.radius), action.x, action.y, 0.0, True))
             kinds[level.player] = "agent"
             radii[level.player] = action.radius / world.PIXELS_PER_METRE
-        return Scene(tuple(specs), kinds, world.GRAVITY, 1 / world.FPS, radii, goal=level.goal)
+        return Scene(tuple(specs), kinds, world.GRAVITY, world.ENGINE, radii, goal=level.goal)
 
     @staticmethod
     def rules(level: PhyreLevel) -> GoalRules:

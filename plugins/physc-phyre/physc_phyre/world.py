@@ -14,13 +14,16 @@ from __future__ import annotations
 
 import math
 
-from physc.backends import BodySpec, Circle, Compound, Polygon
+from physc.backends import BodySpec, Circle, Compound, EngineSettings, Polygon
 
 SCENE = 256  # pixels, width and height
 PIXELS_PER_METRE = 6.0
 GRAVITY = 9.8  # m/s²
 FPS = 60
 MAX_STEPS = 1000
+# PHYRE's Box2D 2.3.2 step: 1/60 s, 15 velocity and 20 position iterations (src/simulator/
+# task_utils.h); every other setting is Box2D's compiled-in default (docs/phyre-facts.md).
+ENGINE = EngineSettings(dt=1 / FPS, velocity_iterations=15, position_iterations=20)
 GOAL_STEPS = 180  # the goal must hold this many steps in a row (3 s)
 DENSITY, FRICTION, RESTITUTION, ANGULAR_DAMPING = 0.25, 0.5, 0.2, 0.01
 WALL = 5.0  # the walls' thickness, outside the scene

@@ -1,0 +1,211 @@
+"""A Box2D world behind physc's backend interface: the target worlds' own engine.
+
+Science Birds runs Unity's 2D physics, which is Box2D 2.x, and PHYRE runs Box2D 2.3; pybox2d
+is Box2D 2.3.x. Everything the target world configures is honoured natively, nothing
+emulated: the step, the velocity and position iterations are the arguments of `b2World.Step`,
+and the thresholds (restitution, slop and polygon skin, Baumgarte factors, corrections,
+sleeping) are the constants Box2D was compiled with, which a world checks against the
+domain's settings at creation (a mismatch is a BackendError, not a silent difference). Box2D
+mixes frictions by their geometric mean and restitutions by the larger, and damps rotation by
+ω ← ω / (1 + dt · c), exactly as Unity states them, so a body's values go in as the game gives
+them.
+
+Contacts are Box2D's own events: `BeginContact` (called while the step finds new touching
+pairs, before the solver, so the bodies' velocities are still those before the impact) and
+`EndContact` (also called when a body is destroyed). A compound body begins a contact when
+its first part touches and ends it when its last part parts. A concave polygon, or one with
+more than Unity's eight corners, is split into convex parts (physc.backends.convex). A
+`continuous` body is a Box2D bullet (Unity's Continuous collision detection): swept against
+moving bodies too, not only static ones.
+
+Reading the world is most of the Python work per step, so `states` reads only the bodies that
+are awake: a sleeping body has not moved since it fell asleep, and its last row is reused.
+The world is deterministic: same bodies, same steps, same result.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import Box2D
+import numpy as np
+
+from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, parts
+from physc.backends.convex import MAX_CORNERS, convex_parts
+from physc.backends.settings import EngineSettings
+
+# Each setting, the Box2D constant it must equal (pybox2d exposes them), and how it is honoured.
+COMPILED = {
+    "restitution_threshold": "b2_velocityThreshold",
+    "linear_slop": "b2_linearSlop",
+    "baumgarte": "b2_baumgarte",
+    "toi_baumgarte": "b2_toiBaugarte",
+    "max_linear_correction": "b2_maxLinearCorrection",
+    "max_angular_correction": "b2_maxAngularCorrection",
+    "max_translation": "b2_maxTranslation",
+    "time_to_sleep": "b2_timeToSleep",
+    "linear_sleep_tolerance": "b2_linearSleepTolerance",
+    "angular_sleep_tolerance": "b2_angularSleepTolerance",
+}
+HONOURS = {
+    "dt": "native (b2World.Step)",
+    "velocity_iterations": "native (b2World.Step)",
+    "position_iterations": "native (b2World.Step)",
+    **{setting: f"native ({constant}, compiled in; checked)" for setting, constant in COMPILED.items()},
+}
+
+
+def check_settings(settings: EngineSettings) -> None:
+    """BackendError unless every compiled-in constant is the domain's setting."""
+    for setting, constant in COMPILED.items():
+        wanted, built = getattr(settings, setting), getattr(Box2D, constant)
+        if not math.isclose(wanted, built, rel_tol=1e-6):
+            raise BackendError(
+                f"Box2D was compiled with {constant} = {built:g}, but the domain's world needs {setting} = {wanted:g}; "
+                "pybox2d cannot change it at run time"
+            )
+
+
+class _Listener(Box2D.b2ContactListener):
+    """Box2D's contact events, handed to the world."""
+
+    def __init__(self, world: Box2DWorld):
+        super().__init__()
+        self.world = world
+
+    def BeginContact(self, contact):  # noqa: N802 - Box2D's name
+        self.world._on_begin(contact)
+
+    def EndContact(self, contact):  # noqa: N802 - Box2D's name
+        self.world._on_end(contact)
+
+
+class Box2DWorld(ContactLog):
+    def __init__(self, gravity: float, settings: EngineSettings):
+        super().__init__()
+        check_settings(settings)
+        self.settings = settings
+        self.gravity = gravity
+        self.world = Box2D.b2World(gravity=(0.0, -gravity), doSleep=True)
+        self._listener = _Listener(self)
+        self.world.contactListener = self._listener
+        self.names: list[str] = []
+        self.bodies: dict[str, Box2D.b2Body] = {}
+        self._dynamic: dict[str, Box2D.b2Body] = {}
+        self._fixture_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
+        self._last: dict[str, tuple] = {}  # each dynamic body's state when last read
+
+    # ---- building --------------------------------------------------------------
+    def add(self, spec: BodySpec) -> None:
+        if spec.name in self.bodies:
+            raise BackendError(f"a body named '{spec.name}' is already in the world")
+        kind = Box2D.b2_staticBody if spec.static else Box2D.b2_dynamicBody
+        body = self.world.CreateBody(
+            type=kind, position=(spec.x, spec.y), angle=spec.angle, angularDamping=spec.angular_damping,
+            gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
+        )
+        shapes = [shape for part in parts(spec.shape) for shape in _box2d_shapes(part)]
+        area = sum(_area(shape) for shape in shapes)
+        density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
+        for shape in shapes:
+            body.CreateFixture(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness)
+        self.names.append(spec.name)
+        self.bodies[spec.name] = body
+        if not spec.static:
+            self._dynamic[spec.name] = body
+
+    def remove(self, name: str) -> None:
+        body = self.bodies.pop(name)
+        self._dynamic.pop(name, None)
+        self._last.pop(name, None)
+        self.world.DestroyBody(body)  # Box2D ends its contacts (EndContact) here
+        self._fixture_contacts = {pair: n for pair, n in self._fixture_contacts.items() if name not in pair}
+        self.names.remove(name)
+        self._gone(name)
+
+    # ---- running -----------------------------------------------------------------
+    def step(self, dt: float) -> None:
+        self.world.Step(dt, self.settings.velocity_iterations, self.settings.position_iterations)
+
+    def state(self, name: str):
+        body = self.bodies[name]
+        (x, y), (vx, vy) = body.position, body.linearVelocity
+        return (x, y, body.angle, vx, vy, body.angularVelocity)
+
+    def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
+        if out is None:
+            out = np.empty((len(names), 6))
+        last, bodies = self._last, self.bodies
+        for row, name in enumerate(names):
+            body = bodies.get(name)
+            if body is None:
+                out[row] = np.nan
+                continue
+            if body.awake or name not in last:
+                (x, y), (vx, vy) = body.position, body.linearVelocity
+                last[name] = (x, y, body.angle, vx, vy, body.angularVelocity)
+            out[row] = last[name]
+        return out
+
+    def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
+        body = self.bodies[name]
+        body.awake = True
+        body.linearVelocity = (vx, vy)
+        body.angularVelocity = angular
+        self._last.pop(name, None)
+
+    def apply_impulse(self, name: str, ix: float, iy: float) -> None:
+        """An impulse at the body's centre of mass (Unity's AddForce with ForceMode2D.Impulse)."""
+        body = self.bodies[name]
+        body.ApplyLinearImpulse((ix, iy), body.worldCenter, True)
+        self._last.pop(name, None)
+
+    def mass(self, name: str) -> float:
+        return self.bodies[name].mass
+
+    def ended(self) -> list[tuple[str, str]]:
+        return sorted(super().ended())
+
+    # ---- contact events ------------------------------------------------------------
+    def _counted(self, a: str, b: str, change: int) -> int:
+        key = (a, b) if a < b else (b, a)
+        count = self._fixture_contacts.get(key, 0) + change
+        if count > 0:
+            self._fixture_contacts[key] = count
+        else:
+            self._fixture_contacts.pop(key, None)
+        return count
+
+    def _on_begin(self, contact) -> None:
+        body_a, body_b = contact.fixtureA.body, contact.fixtureB.body
+        a, b = body_a.userData, body_b.userData
+        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
+            return
+        manifold = contact.worldManifold
+        count = contact.manifold.pointCount
+        point = tuple(manifold.points[0]) if count else tuple(body_a.worldCenter)
+        if count > 1:  # the middle of the two points of a face contact
+            point = tuple((p + q) / 2 for p, q in zip(manifold.points[0], manifold.points[1]))
+        va = body_a.GetLinearVelocityFromWorldPoint(point)
+        vb = body_b.GetLinearVelocityFromWorldPoint(point)
+        normal = tuple(manifold.normal)
+        self._began(ContactEvent(a, b, point, normal, (va[0] - vb[0], va[1] - vb[1]), (va[0], va[1]), (vb[0], vb[1])))
+
+    def _on_end(self, contact) -> None:
+        a, b = contact.fixtureA.body.userData, contact.fixtureB.body.userData
+        if self._counted(a, b, -1) == 0:
+            self._parted(a, b)
+
+
+def _box2d_shapes(part) -> list:
+    if isinstance(part, Circle):
+        return [Box2D.b2CircleShape(radius=part.radius)]
+    return [Box2D.b2PolygonShape(vertices=list(points)) for points in convex_parts(part.points, max_corners=MAX_CORNERS)]
+
+
+def _area(shape) -> float:
+    if isinstance(shape, Box2D.b2CircleShape):
+        return math.pi * shape.radius**2
+    vertices = shape.vertices
+    return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(vertices, [*vertices[1:], vertices[0]]))) / 2

@@ -1,0 +1,88 @@
+"""Science Birds' own colliders and masses, as its prefabs give them.
+
+`prefabs.json` beside this module is read from the game's Unity project by
+tools/extract_prefabs.py (docs/angrybirds.md, "The game's colliders"): each prefab's
+colliders in component order, its Rigidbody2D and its script's fields. The game's bodies
+follow from two rules of Unity and one line of the game:
+
+* a Rigidbody2D with auto mass weighs the sum over its *enabled* colliders of area × the
+  collider's density;
+* a PolygonCollider2D's paths are filled even-odd: a path inside another is a hole
+  (TriangleHole's and SquareHole's; the saved masses confirm it);
+* `ABGameObject.Start` sets `GetComponent<Collider2D>().density = _density`, and
+  `GetComponent` returns the *first* collider in component order, enabled or not. Circle,
+  CircleSmall and the pigs list a disabled CircleCollider2D first, so their polygon keeps
+  density 1 whatever the material: a stone Circle weighs what a wood one does, and a pig
+  half of what density 2 would give. SquareHole's box gets the material's density and its
+  holed polygon keeps 1.
+
+`body_shape` and `body_mass` give a level object's collision shape (convex parts,
+physc.backends.convex) and its mass under those rules.
+"""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+from pathlib import Path
+
+from physc.backends import Circle, Compound, Polygon
+from physc.backends.convex import convex_parts, signed_area
+
+DATA = Path(__file__).with_name("prefabs.json")
+
+
+@functools.cache
+def prefabs() -> dict:
+    """The prefabs as tools/extract_prefabs.py wrote them (name → colliders, rigidbody, script)."""
+    return json.loads(DATA.read_text(encoding="utf-8"))["prefabs"]
+
+
+def _rings(collider: dict) -> tuple[tuple[tuple[float, float], ...], list]:
+    """A polygon collider's outline and holes: the largest path is the outline, the others
+    (inside it, even-odd) holes."""
+    dx, dy = collider["offset"]
+    paths = [tuple((x + dx, y + dy) for x, y in path) for path in collider["paths"]]
+    paths.sort(key=lambda p: -abs(signed_area(p)))
+    return paths[0], paths[1:]
+
+
+def _collider_parts(collider: dict) -> tuple[Polygon | Circle, ...]:
+    if collider["type"] == "box":
+        (w, h), (dx, dy) = collider["size"], collider["offset"]
+        return (Polygon(((dx - w / 2, dy - h / 2), (dx + w / 2, dy - h / 2), (dx + w / 2, dy + h / 2), (dx - w / 2, dy + h / 2))),)
+    if collider["type"] == "circle":
+        if collider["offset"] != [0.0, 0.0]:
+            raise ValueError("an off-centre circle collider is not a physc shape")
+        return (Circle(collider["radius"]),)
+    outline, holes = _rings(collider)
+    return tuple(Polygon(points) for points in convex_parts(outline, holes))
+
+
+def _area(collider: dict) -> float:
+    if collider["type"] == "box":
+        return collider["size"][0] * collider["size"][1]
+    if collider["type"] == "circle":
+        return math.pi * collider["radius"] ** 2
+    outline, holes = _rings(collider)
+    return abs(signed_area(outline)) - sum(abs(signed_area(h)) for h in holes)
+
+
+def enabled(prefab: str) -> list[dict]:
+    return [c for c in prefabs()[prefab]["colliders"] if c["enabled"]]
+
+
+@functools.cache
+def body_shape(prefab: str) -> Circle | Polygon | Compound:
+    """The prefab's enabled colliders as one body's shape (convex parts about its origin)."""
+    parts = tuple(part for collider in enabled(prefab) for part in _collider_parts(collider))
+    return parts[0] if len(parts) == 1 else Compound(parts)
+
+
+@functools.cache
+def body_mass(prefab: str, density: float) -> float:
+    """The prefab's mass when its script's density is `density`: the first collider (enabled
+    or not) takes that density, every other keeps its own; only enabled ones weigh."""
+    colliders = prefabs()[prefab]["colliders"]
+    return sum(_area(c) * (density if index == 0 else c["density"]) for index, c in enumerate(colliders) if c["enabled"])
