@@ -143,11 +143,11 @@ def test_a_bird_striking_a_block_bounces_as_in_pymunk():
 
 
 def test_the_backend_a_caller_selects_is_the_one_the_game_uses():
-    assert current().name == "pymunk"
+    assert current().name == "box2d"  # the default: the game's own engine
     with selected("bullet"):
         assert current().name == "bullet"
         assert Game(towers()).backend.name == "bullet"
-    assert current().name == "pymunk"
+    assert current().name == "box2d"
 
 
 def test_pybullet_missing_is_a_clear_usage_error(monkeypatch):

@@ -20,7 +20,7 @@ import pytest
 from conftest import EXAMPLES, run_physc
 
 SF = EXAMPLES / "paper" / "01_SF.phys"
-R = EXAMPLES / "paper" / "04_R.phys"
+F = EXAMPLES / "paper" / "05_F.phys"
 TIMES = ("generation_seconds", "seconds")
 
 
@@ -64,45 +64,45 @@ def wait_for_rows(folder: Path, count: int, process: subprocess.Popen, seconds: 
 
 @pytest.fixture(scope="module")
 def reference(tmp_path_factory):
-    """SF and R, 4 tasks each, made one after another in this process."""
+    """SF and F, 4 tasks each, made one after another in this process."""
     folder = tmp_path_factory.mktemp("reference") / "dataset"
-    run = run_physc("generate", SF, R, "--tasks", "4", "--out", folder, "-q")
+    run = run_physc("generate", SF, F, "--tasks", "4", "--out", folder, "-q")
     assert run.status == 0, run.stderr
     return folder
 
 
 def test_a_dataset_is_complete_and_loads_in_pandas(reference):
     files, rows = dataset(reference)
-    assert [(r["scenario"], r["seed"], r["outcome"]) for r in rows] == [("SF", s, "ok") for s in range(4)] + [("R", s, "ok") for s in range(4)]
-    assert {f"SF/{s}.xml" for s in range(4)} | {f"R/{s}.json" for s in range(4)} | {"README.md"} <= set(files)
+    assert [(r["scenario"], r["seed"], r["outcome"]) for r in rows] == [("SF", s, "ok") for s in range(4)] + [("F", s, "ok") for s in range(4)]
+    assert {f"SF/{s}.xml" for s in range(4)} | {f"F/{s}.json" for s in range(4)} | {"README.md"} <= set(files)
     tasks = pd.read_parquet(reference / "manifest.parquet")
     assert list(tasks["seed"]) == [0, 1, 2, 3] * 2 and set(tasks["outcome"]) == {"ok"}
     assert tasks["robustness_passed"].min() >= 4 and tasks["generation_seconds"].gt(0).all()
     assert json.loads(tasks["solution"][0])["node"] == "Solution"
-    task = json.loads((reference / "R" / "2.json").read_text())
+    task = json.loads((reference / "F" / "2.json").read_text())
     assert task["seed"] == 2 and task["trace"] == rows[6]["trace"] and "seconds" not in task
     readme = (reference / "README.md").read_text()
-    assert "8 tasks of 2 scenarios: 8 generated" in readme and "| R (Rolling) | angrybirds | 4 | 4 | 4 | 0 | 0 |" in readme
+    assert "8 tasks of 2 scenarios: 8 generated" in readme and "| F (Falling) | angrybirds | 4 | 4 | 4 | 0 | 0 |" in readme
     assert "physc generate" in readme and "pd.read_parquet" in readme
 
 
 def test_local_processes_and_a_dask_cluster_make_the_same_dataset(reference, tmp_path):
-    run = run_physc("generate", SF, R, "--tasks", "4", "--out", tmp_path / "dataset", "--jobs", "2", "-q")
+    run = run_physc("generate", SF, F, "--tasks", "4", "--out", tmp_path / "dataset", "--jobs", "2", "-q")
     assert run.status == 0, run.stderr
     assert dataset(tmp_path / "dataset") == dataset(reference)
-    run = run_physc("generate", SF, R, "--tasks", "4", "--out", tmp_path / "dask" / "dataset", "--dask-workers", "2", "-q")
+    run = run_physc("generate", SF, F, "--tasks", "4", "--out", tmp_path / "dask" / "dataset", "--dask-workers", "2", "-q")
     assert run.status == 0, run.stderr
     assert dataset(tmp_path / "dask" / "dataset") == dataset(reference)
 
 
 def test_a_killed_client_resumes(reference, tmp_path):
     folder = tmp_path / "dataset"
-    process = generate(SF, R, "--tasks", "4", "--out", folder, "--dask-workers", "2")
+    process = generate(SF, F, "--tasks", "4", "--out", folder, "--dask-workers", "2")
     wait_for_rows(folder, 2, process)
     os.killpg(process.pid, signal.SIGKILL)  # the client and the cluster it started
     process.wait()
     assert rows_written(folder) < 8
-    run = run_physc("generate", SF, R, "--tasks", "4", "--out", folder)
+    run = run_physc("generate", SF, F, "--tasks", "4", "--out", folder)
     assert run.status == 0, run.stderr
     assert "resuming:" in run.stderr
     assert dataset(folder) == dataset(reference)
@@ -110,7 +110,7 @@ def test_a_killed_client_resumes(reference, tmp_path):
 
 def test_a_killed_worker_loses_no_task_and_duplicates_none(reference, tmp_path):
     folder = tmp_path / "dataset"
-    process = generate(SF, R, "--tasks", "4", "--out", folder, "--dask-workers", "2")
+    process = generate(SF, F, "--tasks", "4", "--out", folder, "--dask-workers", "2")
     wait_for_rows(folder, 1, process)
     workers = [p for p in psutil.Process(process.pid).children() if "resource_tracker" not in " ".join(p.cmdline())]
     assert workers, "no worker process"

@@ -1,4 +1,4 @@
-"""The angrybirds game in pymunk: hand-made cases with known outcomes, rules, determinism."""
+"""The angrybirds game in its default engine (Box2D at the game's settings): hand-made cases with known outcomes, rules, determinism."""
 
 from __future__ import annotations
 
@@ -9,14 +9,14 @@ from physc.backends import installed_backends, load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot, Unreachable
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.rules import RULES
-from physc.domains.angrybirds.world import BIRD_REST, GRAVITY, reachable
+from physc.domains.angrybirds.rules import RULES, Rules
+from physc.domains.angrybirds.world import BIRD_COLLIDER_OFFSET, BIRD_REST, DRAG_RADIUS, GRAVITY, launch_point, reachable
 
 PIG_ON_GROUND = LevelObject("Pig", "BasicSmall", 0.0, -3.5 + 0.236, 0.0, name="pig")
 
 
-def play(objects, shot, seconds=8.0, **options):
-    return Game(Level(objects=tuple(objects))).play(shot, seconds, **options)
+def play(objects, shot, seconds=8.0, rules=RULES, **options):
+    return Game(Level(objects=tuple(objects)), rules=rules).play(shot, seconds, **options)
 
 
 def test_bird_destroys_a_small_pig_on_the_ground():
@@ -25,18 +25,25 @@ def test_bird_destroys_a_small_pig_on_the_ground():
     assert trace.sequence().startswith("hit(bird, pig, left) > destroy(bird, pig)")
 
 
-def test_circle_hit_from_the_left_rolls_right():
+def test_a_true_circle_hit_from_the_left_rolls_right_where_the_games_circle_hops():
     platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
     circle = LevelObject("Block", "Circle", -1.5, -1.0 + 0.16 + 0.385, 0.0, "wood", name="circle")
-    trace = play([platform, circle], Shot(target=(-1.5, -0.46)))
+    shot = Shot(target=(-1.5, -0.46))
+    trace = play([platform, circle], shot, rules=Rules(colliders="round"))  # physc's earlier model
     texts = [i.text() for i in trace.interactions]
     assert texts[:2] == ["hit(bird, circle, left)", "roll(circle, platform, right)"]
     x = trace.states[:, trace.index("circle"), 0]
     assert np.nanmax(x) > -1.5 + 2.0  # it rolled well to the right
+    # The game's Circle is a polygon with a flat foot: struck from the left it tips over its
+    # front corner and leaves the platform, so it lands (a bounce) before it rolls.
+    texts = [i.text() for i in play([platform, circle], shot).interactions]
+    circle_moves = [t for t in texts if t.startswith(("roll(circle", "bounce(circle"))]
+    assert texts[0] == "hit(bird, circle, left)" and circle_moves[0] == "bounce(circle, platform, right)"
 
 
 def test_block_dropped_on_a_pig_kills_it():
-    block = LevelObject("Block", "SquareHole", 0.0, 3.0, 0.0, "stone", name="block")
+    # From 8, it lands after the level's 2 s of invulnerability (a fall of 11.3 units: 2.2 s).
+    block = LevelObject("Block", "SquareHole", 0.0, 8.0, 0.0, "stone", name="block")
     trace = play([PIG_ON_GROUND, block], None)
     assert trace.solved
     texts = [i.text() for i in trace.interactions]
@@ -95,13 +102,29 @@ def test_launch_model():
     assert 0 < low < 45 < high < 90
     vx, vy = shot.velocity()
     assert np.hypot(vx, vy) == pytest.approx(10.0)
-    # The flight passes through the target (no air drag, g = 4.7088).
-    t = (0.0 - BIRD_REST[0]) / vx
-    assert BIRD_REST[1] + vy * t - GRAVITY * t * t / 2 == pytest.approx(-3.0, abs=1e-9)
+    # The game launches the bird where it was dragged to: the rest point pulled back a drag
+    # radius along the shot, plus its collider's offset (ABBird.LaunchBird, BirdRed.prefab).
+    x0, y0 = shot.origin()
+    theta = np.radians(low)
+    assert (x0, y0) == pytest.approx((BIRD_REST[0] - DRAG_RADIUS * np.cos(theta) + BIRD_COLLIDER_OFFSET[0], BIRD_REST[1] - DRAG_RADIUS * np.sin(theta) + BIRD_COLLIDER_OFFSET[1]))
+    assert launch_point(45.0) == pytest.approx((-12.15 - 0.7071 + 0.05, -1.7 - 0.7071 - 0.03), abs=1e-4)
+    # The flight from there passes through the target (no air drag, g = 4.7088).
+    t = (0.0 - x0) / vx
+    assert y0 + vy * t - GRAVITY * t * t / 2 == pytest.approx(-3.0, abs=1e-9)
     assert not reachable(15.0, 5.0)
     with pytest.raises(Unreachable):
         Shot(target=(15.0, 5.0)).release_angle()
     assert RULES.gravity == pytest.approx(9.81 * 0.48)
+
+
+def test_the_bird_is_launched_from_the_dragged_to_point_in_the_world():
+    game = Game(Level(objects=()))
+    world = game.build()
+    shot = Shot(angle=30.0)
+    game.launch(world, shot)
+    x, y, _, vx, vy, _ = world.state("bird")
+    assert (x, y) == pytest.approx(launch_point(30.0), abs=1e-6)
+    assert (vx, vy) == pytest.approx((10 * np.cos(np.radians(30)), 10 * np.sin(np.radians(30))), abs=1e-5)
 
 
 def test_backend_is_a_plugin():

@@ -21,6 +21,18 @@ from physc.domains.angrybirds.impetus import STRIKE_AFTER
 from physc.domains.angrybirds.satisfy import Satisfier, _placed
 
 
+@pytest.fixture(autouse=True)
+def catalogue_world(monkeypatch):
+    """The repair fixtures below are layouts of chains with rolls, built when physc generated
+    with true circles: they are kept in that world (physc's earlier catalogue colliders,
+    `Rules(colliders="round")`), in the default engine. The game's flat-footed circles hop
+    where these balls roll (docs/results.md), so its layouts would not reach the repairs."""
+    from physc.domains.angrybirds import game
+    from physc.domains.angrybirds.rules import Rules
+
+    monkeypatch.setattr(game.Game.__init__, "__defaults__", (None, Rules(colliders="round")))
+
+
 def satisfier(name: str, seed: int = 0) -> Satisfier:
     return Satisfier(DOMAIN, paper_scenarios()[name], pipeline(name, seed=seed).placed.layout)
 
@@ -371,7 +383,7 @@ def test_obstacles_across_go_further_back_and_shorter_when_asked():
 
 
 def test_a_fragile_shot_is_centred_in_its_window_of_working_angles(monkeypatch):
-    s = satisfier("R", 4)  # its first layout works as placed
+    s = satisfier("R", 3)  # its first layout works as placed
     solution = s.working(s.attempts())[0]
     angle = solution.shot.release_angle()
     # Pretend the sequence is realised only from angle - 0.05° to angle + 0.25°: the
@@ -393,14 +405,14 @@ def test_a_fragile_shot_is_centred_in_its_window_of_working_angles(monkeypatch):
 
 
 def test_a_shot_alone_in_its_window_stays():
-    s = satisfier("R", 4)  # its first layout works as placed
+    s = satisfier("R", 11)  # its first layout works as placed
     solution = s.working(s.attempts())[0]
-    # R seed 4's first layout works at this one angle, not 0.05° either side: nothing to move.
+    # R seed 11's first layout works at this one angle, not 0.05° either side: nothing to move.
     assert s.centred(solution) is None
 
 
 def test_world_beyond_brings_a_target_nearer_along_the_heading():
-    s = satisfier("R", 4)
+    s = satisfier("R", 3)
     before = s.objects
     start = _span(before["pig"])[0]
     level = s.world_beyond(start - 1e-3, 0.3, 1.0)
@@ -415,7 +427,7 @@ def test_world_beyond_brings_a_target_nearer_along_the_heading():
 
 
 def test_a_fragile_solution_is_firmed_up_by_bringing_targets_nearer(monkeypatch):
-    s = satisfier("R", 4)  # its first layout works as placed
+    s = satisfier("R", 3)  # its first layout works as placed
     solution = s.working(s.attempts())[0]
     pig_x = s.objects["pig"].x
     # Pretend noise breaks the solution unless the pig is at least 0.1 nearer (0.15 nearer,
@@ -498,11 +510,13 @@ def _struck(prefab: str, material: str, point: str) -> tuple[bool, bool]:
 
 def test_only_an_ice_square_or_a_triangle_struck_low_slides():
     """The premise of the slide repairs: wood grips a platform at friction 1.26, more than
-    a square's width over its height, so a struck wooden square tips over instead."""
+    a square's width over its height, so a struck wooden square tips over instead. (A
+    TriangleHole struck at its centre tipped in pymunk; in Box2D at the game's settings it
+    slides, as it does struck low.)"""
     assert _struck("SquareHole", "wood", "left") == (True, False)
     assert _struck("SquareHole", "ice", "left") == (True, True)
     assert _struck("TriangleHole", "wood", "lr") == (True, True)
-    assert _struck("TriangleHole", "wood", "c") == (True, False)  # struck high, it tips
+    assert _struck("TriangleHole", "wood", "c") == (True, True)
 
 
 def test_a_stuck_slide_is_offered_a_block_that_slides():
@@ -591,13 +605,13 @@ def test_a_faller_is_offered_a_ledge_that_ends_at_it_and_nearer_its_hitter():
 
 
 def test_a_ball_too_slow_to_destroy_the_pig_meets_it_sooner():
-    # R with the pig 1.5 units further along a longer surface: the ball reaches it, too
+    # R with the pig 3 units further along a longer surface: the ball reaches it, too
     # slowly. The pig (and the world beyond) comes back to where the ball rolls fastest,
     # and the ball then strikes it harder.
     s = satisfier("R")
     pig, surface = s.objects["pig"], s.objects["surface"]
-    longer = attrs.evolve(surface, x=surface.x + 0.75, scale_x=surface.scale_x + 1.5 / PLATFORM_BASE)
-    s.level = s.with_objects({"pig": attrs.evolve(pig, x=pig.x + 1.5), "surface": longer})
+    longer = attrs.evolve(surface, x=surface.x + 1.5, scale_x=surface.scale_x + 3.0 / PLATFORM_BASE)
+    s.level = s.with_objects({"pig": attrs.evolve(pig, x=pig.x + 3.0), "surface": longer})
     best = max(s.attempts(), key=lambda a: a.fidelity.score)
     assert best.fidelity.matched == 3  # it hit the pig; the destroy is missing
     destroy = s.scenario.interactions[3]
@@ -778,7 +792,7 @@ def test_every_solution_must_pass_fresh_replays_too(monkeypatch):
 
 
 def test_a_distractor_must_leave_the_solution_passing_the_confirmation_replays_too(monkeypatch):
-    # R seed 1's first layout takes two distractors with this draw. A distractor is kept
+    # R seed 1's first layout takes two distractors with this draw (the first and third offered). A distractor is kept
     # for passing the noisy replays, so the confirmation's fresh ones decide too: when they
     # all fail, none is kept.
     def solved():
@@ -786,8 +800,9 @@ def test_a_distractor_must_leave_the_solution_passing_the_confirmation_replays_t
         return s, s.run().attempt
 
     s, solution = solved()
-    assert distract(s, solution, random.Random(0)) == ["distractor1", "distractor2"]
+    assert distract(s, solution, random.Random(0)) == ["distractor1", "distractor3"]
     s, solution = solved()
     streams = _only_the_first_replays_pass(monkeypatch, s)
     assert distract(s, solution, random.Random(0)) == []
     assert "confirmation" in streams
+

@@ -48,11 +48,16 @@ def test_a_compound_body_holds_a_ball_and_touches_it_once(backend):
         assert begun.count(frozenset(("ball", "cup"))) == 1
 
 
-def test_bullet_refuses_a_compound_of_other_polygons():
+def test_bullet_wraps_a_compound_of_other_polygons_in_its_hull():
+    # pybullet's compounds take no meshes: a compound with a part that is not a circle or a
+    # rectangle (a game collider split into convex parts) collides as the hull of its parts.
     world = load_backend("bullet").create_world(9.8)
+    world.add(BodySpec("floor", rectangle(0, -0.5, 10, 1), 0, 0, static=True))
     triangle = Polygon(((0, 0), (1, 0), (0, 1)))
-    with pytest.raises(ValueError, match="circles and rectangles only"):
-        world.add(BodySpec("odd", Compound((triangle, rectangle(0, 0, 1, 1))), 0, 0))
+    world.add(BodySpec("odd", Compound((triangle, rectangle(0.5, -0.5, 1, 1))), 0, 1.02))
+    for _ in range(60):
+        world.step(1 / 60)
+    assert world.state("odd")[1] == pytest.approx(1.02, abs=0.03)  # resting on its hull's foot
 
 
 class Held(RunRules):

@@ -19,7 +19,8 @@ more than Unity's eight corners, is split into convex parts (physc.backends.conv
 moving bodies too, not only static ones.
 
 Reading the world is most of the Python work per step, so `states` reads only the bodies that
-are awake: a sleeping body has not moved since it fell asleep, and its last row is reused.
+are awake, and a sleeping one once after it fell asleep (Box2D zeroes its velocity then): it has
+not moved since, and that row is reused.
 The world is deterministic: same bodies, same steps, same result.
 """
 
@@ -34,6 +35,14 @@ import numpy as np
 from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, parts
 from physc.backends.convex import MAX_CORNERS, convex_parts
 from physc.backends.settings import EngineSettings
+
+# pybox2d's C accessors, called directly: its Python properties add a call each (the states
+# of every awake body are read every step).
+_position = Box2D._Box2D.b2Body___GetPosition
+_velocity = Box2D._Box2D.b2Body___GetLinearVelocity
+_angle = Box2D._Box2D.b2Body___GetAngle
+_spin = Box2D._Box2D.b2Body___GetAngularVelocity
+_awake = Box2D._Box2D.b2Body___IsAwake
 
 # Each setting, the Box2D constant it must equal (pybox2d exposes them), and how it is honoured.
 COMPILED = {
@@ -94,7 +103,12 @@ class Box2DWorld(ContactLog):
         self.bodies: dict[str, Box2D.b2Body] = {}
         self._dynamic: dict[str, Box2D.b2Body] = {}
         self._fixture_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
-        self._last: dict[str, tuple] = {}  # each dynamic body's state when last read
+        self._asleep_in_table: set[str] = set()  # bodies whose row was read while they slept
+        self._version = 0  # bumped by add and remove: `states` looks the bodies up again
+        self._read_for: Sequence[str] | None = None  # the names of the last `states`, their bodies,
+        self._read_bodies: list = []  # and the version they were looked up at
+        self._read_version = -1
+        self._table = np.empty((0, 6))
 
     # ---- building --------------------------------------------------------------
     def add(self, spec: BodySpec) -> None:
@@ -112,14 +126,15 @@ class Box2DWorld(ContactLog):
             body.CreateFixture(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness)
         self.names.append(spec.name)
         self.bodies[spec.name] = body
+        self._version += 1
         if not spec.static:
             self._dynamic[spec.name] = body
 
     def remove(self, name: str) -> None:
         body = self.bodies.pop(name)
         self._dynamic.pop(name, None)
-        self._last.pop(name, None)
         self.world.DestroyBody(body)  # Box2D ends its contacts (EndContact) here
+        self._version += 1
         self._fixture_contacts = {pair: n for pair, n in self._fixture_contacts.items() if name not in pair}
         self.names.remove(name)
         self._gone(name)
@@ -134,18 +149,27 @@ class Box2DWorld(ContactLog):
         return (x, y, body.angle, vx, vy, body.angularVelocity)
 
     def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
-        if out is None:
-            out = np.empty((len(names), 6))
-        last, bodies = self._last, self.bodies
-        for row, name in enumerate(names):
-            body = bodies.get(name)
+        if self._read_for is not names or self._read_version != self._version:
+            # The bodies of `names`, and a table of their rows that only awake bodies rewrite.
+            self._read_for, self._read_version = names, self._version
+            self._read_bodies = [(row, name, self.bodies.get(name)) for row, name in enumerate(names)]
+            self._table = np.full((len(names), 6), np.nan)
+            self._asleep_in_table = set()
+        table, asleep = self._table, self._asleep_in_table
+        for row, name, body in self._read_bodies:
             if body is None:
-                out[row] = np.nan
                 continue
-            if body.awake or name not in last:
-                (x, y), (vx, vy) = body.position, body.linearVelocity
-                last[name] = (x, y, body.angle, vx, vy, body.angularVelocity)
-            out[row] = last[name]
+            if _awake(body):
+                asleep.discard(name)
+            elif name in asleep:
+                continue  # read since it fell asleep (Box2D zeroed its velocity then): unchanged
+            else:
+                asleep.add(name)
+            p, v = _position(body), _velocity(body)
+            table[row] = (p.x, p.y, _angle(body), v.x, v.y, _spin(body))
+        if out is None:
+            return table.copy()
+        out[:] = table
         return out
 
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None:
@@ -153,13 +177,13 @@ class Box2DWorld(ContactLog):
         body.awake = True
         body.linearVelocity = (vx, vy)
         body.angularVelocity = angular
-        self._last.pop(name, None)
+        self._asleep_in_table.discard(name)
 
     def apply_impulse(self, name: str, ix: float, iy: float) -> None:
         """An impulse at the body's centre of mass (Unity's AddForce with ForceMode2D.Impulse)."""
         body = self.bodies[name]
         body.ApplyLinearImpulse((ix, iy), body.worldCenter, True)
-        self._last.pop(name, None)
+        self._asleep_in_table.discard(name)
 
     def mass(self, name: str) -> float:
         return self.bodies[name].mass

@@ -1,0 +1,111 @@
+"""Science Birds' rules and bodies as the game's own files give them (docs/angrybirds.md,
+"The game's engine and rules, from its own files"): each departure physc had is fixed here
+or kept as a named parameter, and each has a test."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from physc.backends import Compound, Polygon, load_backend
+from physc.backends.convex import signed_area
+from physc.domains.angrybirds import prefabs
+from physc.domains.angrybirds.catalogue import MATERIAL
+from physc.domains.angrybirds.game import BIRD, Game
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.rules import RULES, SCIENCE_BIRDS_ENGINE, Rules
+from physc.domains.angrybirds.world import GROUND_TOP
+from physc.simulation.trace import ContactRecord
+
+PIG = LevelObject("Pig", "BasicSmall", 0.0, GROUND_TOP + 0.236, 0.0, name="pig")
+
+
+def test_the_engine_settings_are_unitys_physics2d_and_time_settings():
+    e = SCIENCE_BIRDS_ENGINE
+    assert (e.dt, e.velocity_iterations, e.position_iterations) == (0.02, 100, 100)
+    assert (e.restitution_threshold, e.contact_offset, e.time_to_sleep, e.linear_sleep_tolerance) == (1.0, 0.01, 0.5, 0.01)
+    assert e.angular_sleep_tolerance == pytest.approx(math.radians(2)) and e.max_translation == pytest.approx(2.0)
+    assert RULES.engine is e and RULES.dt == 0.02
+
+
+def test_masses_follow_the_first_collider_rule_and_equal_the_saved_auto_masses():
+    saved = {name: p["rigidbody"]["mass"] for name, p in prefabs.prefabs().items()}
+    for name in ("Circle", "CircleSmall", "SquareHole", "TriangleHole", "BasicMedium", "BasicBig"):
+        assert prefabs.body_mass(name, 1.0) == pytest.approx(saved[name], rel=1e-5), name  # Unity's own, at density 1
+    # The density lands on the disabled circle: a Circle weighs the same in any material,
+    # a pig its polygon's area (not twice it).
+    assert prefabs.body_mass("Circle", MATERIAL["stone"].density) == prefabs.body_mass("Circle", MATERIAL["wood"].density)
+    assert prefabs.body_mass("BasicSmall", RULES.pig_density) == pytest.approx(0.1508, abs=1e-4)
+    # SquareHole: its box takes the material's density, its holed polygon keeps 1.
+    box = 0.7636**2
+    assert prefabs.body_mass("SquareHole", 1.5) == pytest.approx(box * 1.5 + (saved["SquareHole"] - box), rel=1e-5)
+    game = Game(Level(objects=(LevelObject("Block", "Circle", 0.0, 0.0, 0.0, "stone", name="c"), PIG)))
+    world = game.build()
+    assert world.mass("c") == pytest.approx(0.4277, abs=1e-3) and world.mass("pig") == pytest.approx(0.1508, abs=1e-3)
+
+
+def test_the_games_colliders_are_its_polygons_with_holes_and_flat_feet():
+    circle = prefabs.body_shape("Circle")
+    assert isinstance(circle, Compound) and all(isinstance(p, Polygon) and len(p.points) <= 8 for p in circle.parts)
+    lowest = min(y for p in circle.parts for _, y in p.points)
+    assert lowest == pytest.approx(-0.375)  # the flat foot
+    hole = prefabs.body_shape("TriangleHole")
+    assert sum(signed_area(p.points) for p in hole.parts) == pytest.approx(prefabs.prefabs()["TriangleHole"]["rigidbody"]["mass"], rel=1e-5)
+    assert len(prefabs.enabled("SquareHole")) == 2
+
+
+def test_a_pig_struck_by_the_bird_takes_the_half_formula_and_a_block_the_full_one():
+    block = LevelObject("Block", "SquareSmall", 3.0, GROUND_TOP + 0.2, 0.0, "wood", name="block")
+    game = Game(Level(objects=(PIG, block)))
+    world = game.build()
+    game.launch(world, Shot(angle=10.0))
+    game.kinds[BIRD] = "bird"
+    bird_mass = world.mass(BIRD)
+    for target, share, defence in (("pig", 0.5, 1.0), ("block", 1.0, 2.5)):
+        contact = ContactRecord(3.0, BIRD, target, (0, 0), (1, 0), (8.0, 0.0), (8.0, 0.0), (0.0, 0.0))
+        out = []
+        game.life[target] = 1000.0
+        game._damage(world, contact, out, 3.0)
+        (record,) = out
+        assert record.amount == pytest.approx(8.0 * bird_mass * 11.22 * share - defence)
+
+
+def test_tnt_falls_off_with_distance_and_spares_birds():
+    tnt = LevelObject("TNT", "TNT", 0.0, GROUND_TOP + 0.33, 0.0, name="tnt")
+    near = LevelObject("Block", "SquareSmall", 1.0, GROUND_TOP + 0.2, 0.0, "stone", name="near")
+    far = LevelObject("Block", "SquareSmall", 2.0, GROUND_TOP + 0.2, 0.0, "stone", name="far")
+    game = Game(Level(objects=(tnt, near, far)))
+    world = game.build()
+    game.launch(world, Shot(angle=80.0))
+    game.kinds[BIRD] = "bird"
+    damage = []
+    game._explode(world, "tnt", {"tnt", "near", "far", BIRD}, damage, 3.0)
+    by = {d.target: d.amount for d in damage}
+    distance = math.dist(world.state("near")[:2], world.state("tnt")[:2])
+    assert by["near"] == pytest.approx(100 * (1 - distance / 2.5), rel=1e-3)
+    assert by["far"] < by["near"] and BIRD not in by
+    assert world.state(BIRD)[3:5] == pytest.approx((10 * math.cos(math.radians(80)), 10 * math.sin(math.radians(80))), abs=1e-5)
+    # TNT's own body: no material (0.4), angular drag 0.05, 0.64² × 1.
+    assert (RULES.tnt_friction, RULES.tnt_angular_drag) == (0.4, 0.05)
+    assert world.mass("tnt") == pytest.approx(0.64**2)
+
+
+def test_the_bird_is_checked_three_seconds_after_its_first_collision_then_every_second():
+    # A bird shot down into the ground by the slingshot comes to rest there.
+    trace = Game(Level(objects=())).simulate(Shot(angle=-45.0), 20.0, stop_at_rest=False)
+    first = min(c.time for c in trace.contacts if BIRD in (c.a, c.b))
+    (gone,) = [d for d in trace.destructions if d.name == BIRD]
+    after = gone.time - first
+    assert gone.cause == "removed" and after >= 3.0 - 1e-9
+    assert abs((after - 3.0) - round(after - 3.0)) < 0.021  # at a whole second's check
+    still = Game(Level(objects=()), rules=Rules(bird_lifetime=2.0)).simulate(Shot(angle=45.0), 5.0, stop_at_rest=False)
+    assert [d.time for d in still.destructions if d.name == BIRD] == [pytest.approx(2.0)]
+
+
+def test_birds_and_pigs_collide_continuously_and_blocks_do_not():
+    game = Game(Level(objects=(PIG, LevelObject("Block", "SquareSmall", 3.0, GROUND_TOP + 0.2, 0.0, "wood", name="block"))), load_backend("box2d"))
+    world = game.build()
+    game.launch(world, Shot(angle=20.0))
+    assert world.bodies[BIRD].bullet and world.bodies["pig"].bullet and not world.bodies["block"].bullet
