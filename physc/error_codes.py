@@ -77,6 +77,7 @@ _CODES = [
     ErrorCode("E0905", "error", "a block whose material is missing or unknown"),
     ErrorCode("E0906", "error", "a level file larger than physc reads"),
     ErrorCode("E0907", "error", "a shot asked for on a level without birds"),
+    ErrorCode("E0908", "error", "a level whose objects are stacked into one another"),
     ErrorCode("E0801", "error", "the layout constraints of a scenario cannot hold together", exit_status=3),
     ErrorCode("E0802", "error", "the search budget ran out before a layout was found", exit_status=3),
     ErrorCode("E0803", "error", "a scenario larger than the layout search takes", exit_status=3),

@@ -61,7 +61,7 @@ def test_compile_writes_level_task_and_picture(tmp_path):
     assert "SF: validated" in run.stderr
     data = json.loads(task.read_text())
     assert data["scenario"] == "SF" and data["seed"] == 0 and data["validated"] is True
-    assert data["trace"].endswith("destroy(bird, pig)")
+    assert data["trace"].startswith("hit(bird, pig, left) > destroy(bird, pig)")
     seconds = data["seconds"]
     assert list(seconds) == ["layout", "satisfy", "distract", "validate", "total"]
     assert sum(seconds.values()) - seconds["total"] == pytest.approx(seconds["total"], abs=1e-3)
@@ -71,8 +71,8 @@ def test_compile_writes_level_task_and_picture(tmp_path):
 
 
 def test_same_seed_same_level_bytes():
-    first = run_physc("compile", EXAMPLES / "paper" / "04_R.phys", "--seed", "2", "-q")
-    second = run_physc("compile", EXAMPLES / "paper" / "04_R.phys", "--seed", "2", "-q")
+    first = run_physc("compile", EXAMPLES / "paper" / "05_F.phys", "--seed", "2", "-q")
+    second = run_physc("compile", EXAMPLES / "paper" / "05_F.phys", "--seed", "2", "-q")
     assert first.status == 0 and first.stdout == second.stdout
 
 
@@ -95,9 +95,9 @@ def test_infeasible_scenario_exits_3():
 
 
 def test_the_task_says_why_earlier_layouts_were_given_up(tmp_path):
-    # SRF seed 3: the first layouts never realise the sequence; a later one works.
-    task = tmp_path / "srf.json"
-    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "SRF", "--seed", "3", "--no-validate", "--task", task, "-o", tmp_path / "l.xml")
+    # S seed 0: its first layouts do not realise the sequence (or too fragilely); a later one works.
+    task = tmp_path / "s.json"
+    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "S", "--seed", "0", "--no-validate", "--task", task, "-o", tmp_path / "l.xml")
     assert run.status == 0, run.stderr
     data = json.loads(task.read_text())
     given_up = data["given_up"]

@@ -94,11 +94,25 @@ def test_values_at_the_limits_load():
 
 
 def test_the_body_limit():
-    pig = "<Pig type='BasicSmall' x='1' y='2'/>"
-    assert len(parse_level(level(*[pig] * MAX_BODIES)).objects) == MAX_BODIES
-    error = error_of(level(*[pig] * (MAX_BODIES + 5)))
+    pigs = [f"<Pig type='BasicSmall' x='{0.6 * k - 90:g}' y='2'/>" for k in range(MAX_BODIES + 5)]
+    assert len(parse_level(level(*pigs[:MAX_BODIES])).objects) == MAX_BODIES
+    error = error_of(level(*pigs))
     assert (error.code, error.line) == ("E0906", 4 + MAX_BODIES)  # the first object past the limit
     assert str(MAX_BODIES) in error.message
+
+
+def test_objects_stacked_into_one_another_are_refused_past_the_limit():
+    from physc.domains.angrybirds.level_checks import MAX_DEEP_OVERLAPS
+
+    pig = "<Pig type='BasicSmall' x='1' y='2'/>"
+    five = level(*[pig] * 5)  # 10 pairs: the most physc plays
+    assert len(parse_level(five).objects) == 5 and MAX_DEEP_OVERLAPS == 10
+    error = error_of(level(*[pig] * 6))  # 15 pairs
+    assert error.code == "E0908" and "15 pairs" in error.message and error.line == 4 + 4  # pair (2, 4), the 11th
+    # Touching neighbours, as in real levels (and platforms, which do not move), are not stacked.
+    row = [f"<Block type='SquareSmall' material='wood' x='{0.39 * k:g}' y='0'/>" for k in range(40)]
+    walls = ["<Platform type='Platform' x='0' y='0' scaleX='5'/>"] * 20
+    assert len(parse_level(level(*row, *walls)).objects) == 60
 
 
 BILLION_LAUGHS = (

@@ -88,7 +88,7 @@ def test_variants_per_stage_are_bounded():
     assert search.furthest == 1
 
 
-def _ab(scenario_name: str):
+def _ab(scenario_name: str, seed: int = 0):
     from physc.compiler.pipeline import Pipeline
     from physc.domains import load_domain
     from physc.domains.angrybirds.build import AngryBirdsChain
@@ -97,7 +97,7 @@ def _ab(scenario_name: str):
 
     scenario = next(s for s in analyze(str(PAPER / "all.paper.phys")).scenarios if s.name == scenario_name)
     domain = load_domain("angrybirds")
-    layout = Pipeline(domain, scenario, 0).placed.layout
+    layout = Pipeline(domain, scenario, seed).placed.layout
     return AngryBirdsChain(Satisfier(domain, scenario, layout))
 
 
@@ -118,12 +118,12 @@ def test_a_stage_scene_holds_only_what_has_entered():
 
 
 def test_the_next_target_goes_on_its_actors_simulated_path():
-    chain = _ab("RF")
+    chain = _ab("F", seed=2)
     root = chain.root()
     plan = chain.stages()
     description, scene, lead = next(iter(chain.variants(root, plan[0])))
     attempts = chain.realised(scene, root, plan[0], lead)
-    assert attempts, "RF seed 0's first stage is realised as placed"
+    assert attempts, "F seed 2's first stage is realised as placed"
     parent = State(scene, attempts, 0)
     offered = list(chain.variants(parent, plan[1]))
     placed = [d for d, _, _ in offered if "on its path" in d]

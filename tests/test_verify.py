@@ -22,7 +22,7 @@ def task(tmp_path_factory):
     return level, task
 
 
-@pytest.mark.parametrize("backend", ["pymunk", "bullet"])
+@pytest.mark.parametrize("backend", ["box2d", "pymunk", "bullet"])
 def test_a_tasks_solution_passes_in_either_engine(task, backend):
     level, task_file = task
     run = run_physc("verify", level, "--task", task_file, "--backend", backend)
@@ -133,5 +133,5 @@ def test_deep_json_and_a_level_saved_with_crlf_and_a_bom(task, tmp_path):
 
 
 def test_the_verify_backend_must_be_another_engine():
-    run = run_physc("compile", PAPER, "-s", "SF", "--verify-backend", "pymunk")
+    run = run_physc("compile", PAPER, "-s", "SF", "--verify-backend", "box2d")
     assert run.status == 2 and "already simulates" in run.stderr

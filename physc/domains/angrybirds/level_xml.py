@@ -26,7 +26,16 @@ from lxml import etree
 
 from physc.domains.angrybirds.catalogue import BY_PREFAB
 from physc.domains.angrybirds.level import ELEMENTS, Camera, Level, LevelObject
-from physc.domains.angrybirds.level_checks import MAX_BODIES, MAX_CAMERA_WIDTH, MAX_WIDTH, LevelError, Source, check_size
+from physc.domains.angrybirds.level_checks import (
+    MAX_BODIES,
+    MAX_CAMERA_WIDTH,
+    MAX_DEEP_OVERLAPS,
+    MAX_WIDTH,
+    LevelError,
+    Source,
+    check_size,
+    deep_overlaps,
+)
 from physc.suggest import did_you_mean
 
 __all__ = ["LevelError", "decode", "emit_level", "parse_level", "read_level"]
@@ -110,7 +119,7 @@ def parse_level(text: str) -> Level:
         width = source.number(root, "width")
         if not 0 < width <= MAX_WIDTH:
             raise source.error("E0904", f"<Level> width=\"{root.get('width')}\" is out of range: more than 0 and at most {MAX_WIDTH:g}", root, "width")
-    objects = []
+    objects, elements = [], []
     counts: dict[str, int] = {}
     container = root.find("GameObjects")
     for element in container if container is not None else ():
@@ -141,6 +150,15 @@ def parse_level(text: str) -> Level:
                 scale_y=source.scale(element, "scaleY"),
                 name=f"{base}{counts[base]}",
             )
+        )
+        elements.append(element)
+    stacked = deep_overlaps(objects)
+    if len(stacked) > MAX_DEEP_OVERLAPS:
+        raise source.error(
+            "E0908",
+            f"{len(stacked):,} pairs of objects are stacked into one another (centres nearer than half the smaller one), more than the {MAX_DEEP_OVERLAPS} physc plays",
+            elements[stacked[MAX_DEEP_OVERLAPS][1]],
+            help="real levels have none: objects touch, they do not sit inside one another; a pile of bodies at one spot takes Box2D minutes a step at the game's 100 iterations (docs/angrybirds.md, \"Level files\")",
         )
     return Level(
         width=width,

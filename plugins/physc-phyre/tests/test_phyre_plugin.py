@@ -134,3 +134,13 @@ def test_eval_measures_the_random_agent(tmp_path):
     report = (tmp_path / "eval" / "results.md").read_text()
     assert "AUCCESS" in report
     assert list((tmp_path / "eval").glob("task_*.png"))
+
+
+def test_the_scene_runs_in_box2d_with_phyres_step_and_iterations():
+    from physc.backends import DEFAULT_BACKEND, load_backend
+    from physc_phyre import world
+
+    assert (world.ENGINE.dt, world.ENGINE.velocity_iterations, world.ENGINE.position_iterations) == (1 / 60, 15, 20)
+    assert DEFAULT_BACKEND == "box2d"
+    created = load_backend("box2d").create_world(world.GRAVITY, world.ENGINE)  # Box2D's compiled constants are PHYRE's
+    assert created.settings is world.ENGINE
