@@ -1,6 +1,6 @@
 """Simulation speed: physics steps per second for a level of 20 bodies, one core.
 
-    python benchmarks/simulation_speed.py [--seconds 10] [--repeat 5]
+    python benchmarks/simulation_speed.py [--seconds 10] [--repeat 5] [--backend NAME]
 
 The level: a row of 3 towers of wood, stone and ice blocks (4 high) on the
 ground, with 4 pigs and 4 circles on platforms: 20 dynamic bodies and 4
@@ -19,6 +19,7 @@ import platform
 import statistics
 import time
 
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
@@ -39,9 +40,9 @@ def level() -> Level:
     return Level(objects=tuple(objects))
 
 
-def measure(shot, seconds: float, repeat: int) -> list[float]:
+def measure(shot, seconds: float, repeat: int, backend) -> list[float]:
     rates = []
-    game = Game(level())
+    game = Game(level(), backend)
     for _ in range(repeat):
         start = time.perf_counter()
         trace = game.simulate(shot, seconds, stop_at_rest=False)
@@ -49,10 +50,10 @@ def measure(shot, seconds: float, repeat: int) -> list[float]:
     return rates
 
 
-def measure_engine(shot, seconds: float, repeat: int) -> list[float]:
+def measure_engine(shot, seconds: float, repeat: int, backend) -> list[float]:
     """The shot's steps on the world alone, as the game builds it."""
     rates = []
-    game = Game(level())
+    game = Game(level(), backend)
     rules = game.rules
     steps = int(round(seconds / rules.dt))
     for _ in range(repeat):
@@ -71,13 +72,15 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--backend", default="box2d", help="the physics engine (default box2d)")
     args = parser.parse_args()
+    backend = load_backend(args.backend)
     bodies = sum(1 for o in level().objects if o.element != "Platform")
-    print(f"machine: {platform.machine()}, Python {platform.python_version()}; {bodies} dynamic bodies, {args.seconds:g} s per run")
+    print(f"machine: {platform.machine()}, Python {platform.python_version()}; {args.backend}; {bodies} dynamic bodies, {args.seconds:g} s per run")
     for label, shot in (("standing, no shot", None), ("shot into the towers", Shot(target=(0.0, -2.5)))):
-        rates = measure(shot, args.seconds, args.repeat)
+        rates = measure(shot, args.seconds, args.repeat, backend)
         print(f"{label:<22} median {statistics.median(rates):,.0f} steps/s  (best {max(rates):,.0f})")
-    rates = measure_engine(Shot(target=(0.0, -2.5)), args.seconds, args.repeat)
+    rates = measure_engine(Shot(target=(0.0, -2.5)), args.seconds, args.repeat, backend)
     print(f"{'the shot, engine only':<22} median {statistics.median(rates):,.0f} steps/s  (best {max(rates):,.0f})")
 
 

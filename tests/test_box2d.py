@@ -152,3 +152,21 @@ def test_a_continuous_body_does_not_pass_through_a_thin_moving_one():
 
 def test_pybox2d_is_box2d_2_3():
     assert Box2D.__version__.startswith("2.3")
+
+
+def test_physc_backends_lists_the_engines_their_versions_and_what_each_honours():
+    import json
+
+    from conftest import run_physc
+
+    run = run_physc("backends")
+    assert run.status == 0
+    lines = run.stdout.splitlines()
+    assert lines[0].startswith("box2d (default): box2d 2.3.10: ") and any(line.startswith("pymunk: pymunk ") for line in lines)
+    verbose = run_physc("backends", "pymunk", "-v").stdout
+    assert "restitution_threshold" in verbose and "emulated" in verbose and "not honoured" in verbose
+    data = json.loads(run_physc("backends", "--json").stdout)
+    assert [d["name"] for d in data] == ["box2d", "bullet", "pymunk"] and all(d["installed"] and d["version"] for d in data)
+    assert data[0]["honours"]["velocity_iterations"].startswith("native")
+    wrong = run_physc("backends", "box2e")
+    assert wrong.status == 2 and "did you mean 'box2d'?" in wrong.stderr

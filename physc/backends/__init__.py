@@ -115,6 +115,19 @@ class ContactLog:
         self._begun: list[ContactEvent] = []
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
+        self._part_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
+
+    def _counted(self, a: str, b: str, change: int) -> int:
+        """The parts of `a` and `b` in contact after `change` (+1 a pair of parts began
+        touching, -1 one parted): a compound body's parts each begin and end their own
+        contacts, and the bodies touch while any do."""
+        key = (a, b) if a < b else (b, a)
+        count = self._part_contacts.get(key, 0) + change
+        if count > 0:
+            self._part_contacts[key] = count
+        else:
+            self._part_contacts.pop(key, None)
+        return count
 
     def _began(self, event: ContactEvent) -> None:
         self._begun.append(event)
@@ -130,6 +143,7 @@ class ContactLog:
 
     def _gone(self, name: str) -> None:
         """`name` left the world: it touches nothing any more."""
+        self._part_contacts = {pair: n for pair, n in self._part_contacts.items() if name not in pair}
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
 

@@ -6,8 +6,7 @@ from __future__ import annotations
 import json
 from importlib.metadata import PackageNotFoundError, version
 
-from physc.commands.common import EXIT_OK, UsageError
-from physc.suggest import did_you_mean
+from physc.commands.common import EXIT_OK, chosen
 
 
 def _version(package: str) -> str | None:
@@ -36,13 +35,7 @@ def describe(name: str) -> dict:
 def cmd_backends(args) -> int:
     from physc.backends import installed_backends
 
-    names = list(installed_backends())
-    if args.name:
-        unknown = [n for n in args.name if n not in names]
-        if unknown:
-            hint = did_you_mean(unknown[0], names) or "installed backends: " + (", ".join(names) or "none")
-            raise UsageError(f"the backend '{unknown[0]}' is not installed; {hint}")
-        names = args.name
+    names = chosen(args.name, list(installed_backends()), "backend")
     entries = [describe(name) for name in names]
     if args.json:
         print(json.dumps(entries, indent=2, ensure_ascii=False))

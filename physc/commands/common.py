@@ -74,6 +74,19 @@ def check_min_robustness(value: int, domain) -> None:
         )
 
 
+def chosen(asked: Sequence[str], installed: Sequence[str], kind: str) -> list[str]:
+    """The installed plugins a listing command names (`physc domains`, `physc backends`): all
+    of them, or those `asked`; an unknown name is a usage error with a did-you-mean."""
+    from physc.suggest import did_you_mean
+
+    names = list(installed)
+    unknown = [n for n in asked if n not in names]
+    if unknown:
+        hint = did_you_mean(unknown[0], names) or f"installed {kind}s: " + (", ".join(names) or "none")
+        raise UsageError(f"the {kind} '{unknown[0]}' is not installed; {hint}")
+    return list(asked) or names
+
+
 def check_backends(args) -> None:
     """--verify-backend must name another engine than the one that simulates."""
     if getattr(args, "verify_backend", None) and args.verify_backend == args.backend:

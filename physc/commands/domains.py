@@ -5,24 +5,13 @@ from __future__ import annotations
 import json
 import sys
 
-from physc.commands.common import (
-    EXIT_OK,
-    EXIT_USAGE,
-    UsageError,
-)
-from physc.suggest import did_you_mean
+from physc.commands.common import EXIT_OK, EXIT_USAGE, chosen
 
 
 def cmd_domains(args) -> int:
     from physc.domains import DomainError, installed_domains, load_domain
 
-    names = list(installed_domains())
-    if args.name:
-        unknown = [n for n in args.name if n not in names]
-        if unknown:
-            hint = did_you_mean(unknown[0], names) or "installed domains: " + (", ".join(names) or "none")
-            raise UsageError(f"the domain '{unknown[0]}' is not installed; {hint}")
-        names = args.name
+    names = chosen(args.name, list(installed_domains()), "domain")
     loaded = []
     for name in names:
         try:

@@ -102,7 +102,6 @@ class Box2DWorld(ContactLog):
         self.names: list[str] = []
         self.bodies: dict[str, Box2D.b2Body] = {}
         self._dynamic: dict[str, Box2D.b2Body] = {}
-        self._fixture_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
         self._asleep_in_table: set[str] = set()  # bodies whose row was read while they slept
         self._version = 0  # bumped by add and remove: `states` looks the bodies up again
         self._read_for: Sequence[str] | None = None  # the names of the last `states`, their bodies,
@@ -135,7 +134,6 @@ class Box2DWorld(ContactLog):
         self._dynamic.pop(name, None)
         self.world.DestroyBody(body)  # Box2D ends its contacts (EndContact) here
         self._version += 1
-        self._fixture_contacts = {pair: n for pair, n in self._fixture_contacts.items() if name not in pair}
         self.names.remove(name)
         self._gone(name)
 
@@ -192,15 +190,6 @@ class Box2DWorld(ContactLog):
         return sorted(super().ended())
 
     # ---- contact events ------------------------------------------------------------
-    def _counted(self, a: str, b: str, change: int) -> int:
-        key = (a, b) if a < b else (b, a)
-        count = self._fixture_contacts.get(key, 0) + change
-        if count > 0:
-            self._fixture_contacts[key] = count
-        else:
-            self._fixture_contacts.pop(key, None)
-        return count
-
     def _on_begin(self, contact) -> None:
         body_a, body_b = contact.fixtureA.body, contact.fixtureB.body
         a, b = body_a.userData, body_b.userData

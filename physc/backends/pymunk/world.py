@@ -80,7 +80,6 @@ class PymunkWorld(ContactLog):
         self.names: list[str] = []
         self.bodies: dict[str, pymunk.Body] = {}
         self.shapes: dict[str, tuple[pymunk.Shape, ...]] = {}
-        self._shape_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
         self._name_of: dict[int, str] = {}
         self._bounciness: dict[int, float] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
@@ -145,7 +144,6 @@ class PymunkWorld(ContactLog):
         if name in self._drags:
             self.space.remove(self._drags.pop(name))
         self.space.remove(body, *shapes)
-        self._shape_contacts = {pair: n for pair, n in self._shape_contacts.items() if name not in pair}
         self._changed = True
         self.names.remove(name)
         self._gone(name)
@@ -215,17 +213,6 @@ class PymunkWorld(ContactLog):
     def _pair(self, arbiter):
         first, second = arbiter.shapes
         return self._name_of.get(id(first)), self._name_of.get(id(second))
-
-    def _counted(self, a: str, b: str, change: int) -> int:
-        """The parts of `a` and `b` in contact after `change` (a compound body's parts each
-        begin and end their own contacts; the bodies touch while any do)."""
-        key = (a, b) if a < b else (b, a)
-        count = self._shape_contacts.get(key, 0) + change
-        if count > 0:
-            self._shape_contacts[key] = count
-        else:
-            self._shape_contacts.pop(key, None)
-        return count
 
     def _on_begin(self, arbiter, space, data):
         a, b = self._pair(arbiter)
