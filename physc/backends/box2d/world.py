@@ -33,7 +33,7 @@ import Box2D
 import numpy as np
 
 from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, parts
-from physc.backends.convex import MAX_CORNERS, convex_parts
+from physc.backends.convex import MAX_CORNERS, convex_parts, signed_area
 from physc.backends.settings import EngineSettings
 
 # pybox2d's C accessors, called directly: its Python properties add a call each (the states
@@ -101,7 +101,6 @@ class Box2DWorld(ContactLog):
         self.world.contactListener = self._listener
         self.names: list[str] = []
         self.bodies: dict[str, Box2D.b2Body] = {}
-        self._dynamic: dict[str, Box2D.b2Body] = {}
         self._asleep_in_table: set[str] = set()  # bodies whose row was read while they slept
         self._version = 0  # bumped by add and remove: `states` looks the bodies up again
         self._read_for: Sequence[str] | None = None  # the names of the last `states`, their bodies,
@@ -119,19 +118,16 @@ class Box2DWorld(ContactLog):
             gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
         )
         shapes = [shape for part in parts(spec.shape) for shape in _box2d_shapes(part)]
-        area = sum(_area(shape) for shape in shapes)
+        area = sum(_area(shape) for shape in shapes)  # of the shapes as Box2D holds them (float32 corners)
         density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
         for shape in shapes:
             body.CreateFixture(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness)
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self._version += 1
-        if not spec.static:
-            self._dynamic[spec.name] = body
 
     def remove(self, name: str) -> None:
         body = self.bodies.pop(name)
-        self._dynamic.pop(name, None)
         self.world.DestroyBody(body)  # Box2D ends its contacts (EndContact) here
         self._version += 1
         self.names.remove(name)
@@ -177,12 +173,6 @@ class Box2DWorld(ContactLog):
         body.angularVelocity = angular
         self._asleep_in_table.discard(name)
 
-    def apply_impulse(self, name: str, ix: float, iy: float) -> None:
-        """An impulse at the body's centre of mass (Unity's AddForce with ForceMode2D.Impulse)."""
-        body = self.bodies[name]
-        body.ApplyLinearImpulse((ix, iy), body.worldCenter, True)
-        self._asleep_in_table.discard(name)
-
     def mass(self, name: str) -> float:
         return self.bodies[name].mass
 
@@ -220,5 +210,4 @@ def _box2d_shapes(part) -> list:
 def _area(shape) -> float:
     if isinstance(shape, Box2D.b2CircleShape):
         return math.pi * shape.radius**2
-    vertices = shape.vertices
-    return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(vertices, [*vertices[1:], vertices[0]]))) / 2
+    return abs(signed_area(shape.vertices))

@@ -114,12 +114,13 @@ class Game(RunRules):
     def launch(self, world, shot: Shot) -> None:
         """Put the bird into `world` (built by `build`) at the slingshot, flying as `shot` sends it."""
         rules = self.rules
+        origin, velocity = shot.start()
         bird = BodySpec(
-            BIRD, Circle(shape("redBird").width / 2), *shot.origin(), mass=rules.bird_mass, friction=rules.bird_friction,
+            BIRD, Circle(shape("redBird").width / 2), *origin, mass=rules.bird_mass, friction=rules.bird_friction,
             bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag, continuous=True,
         )
         world.add(bird)
-        world.set_velocity(BIRD, *shot.velocity())
+        world.set_velocity(BIRD, *velocity)
         self.kinds[BIRD] = "bird"
 
     # ---- playing ----------------------------------------------------------------------

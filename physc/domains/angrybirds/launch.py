@@ -54,11 +54,17 @@ class Shot:
 
     def origin(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
         """Where the bird's centre starts this shot (the game's dragged-to point)."""
-        return launch_point(self.release_angle(speed, gravity))
+        return self.start(speed, gravity)[0]
+
+    def start(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[tuple[float, float], tuple[float, float]]:
+        """Where the bird starts this shot and its velocity there, from one release angle
+        (finding it from a target point iterates: `aim`)."""
+        angle = self.release_angle(speed, gravity)
+        theta = math.radians(angle)
+        return launch_point(angle), (speed * math.cos(theta), speed * math.sin(theta))
 
     def velocity(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
-        angle = math.radians(self.release_angle(speed, gravity))
-        return speed * math.cos(angle), speed * math.sin(angle)
+        return self.start(speed, gravity)[1]
 
     def text(self) -> str:
         if self.angle is not None:
