@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
-from middle_end import pipeline
+import pytest
+
+from middle_end import DOMAIN, pipeline, scenario_from_text
+from physc.compiler.pipeline import Pipeline
 
 
 def edges(name):
@@ -72,3 +75,31 @@ def test_falling_ahead_keeps_the_straight_drop_and_the_near_side():
 
     assert set(relations_for("locatedFar", ("aboveLeft",))) == {"FarN", "FarNW"}
     assert set(relations_for("locatedFar", ("aboveRight",))) == {"FarN", "FarNE"}
+
+
+SHARED = """
+scenario Shared {{
+    objects {{ shelf: {term} }}
+    interactions {{
+        hit(bird, {a}, left) > {move}({a}, shelf, right) > hit({a}, {b}, left)
+        > {move}({b}, shelf, right) > hit({b}, pig, left) > destroy({b}, pig)
+    }}
+}}
+"""
+
+
+@pytest.mark.parametrize(
+    "term, a, b, move", [("horizontalSurface", "sBlock1", "sBlock2", "slide"), ("surface", "rBlock1", "rBlock2", "roll")]
+)
+def test_bodies_moving_in_turn_along_one_surface_are_consistent(term, a, b, move):
+    # The second body rests on the shelf the first comes along, in its middle, and starts its
+    # own motion there: no inDirection(b, shelf, left) against its onLocation (was E0801).
+    scenario = scenario_from_text(SHARED.format(term=term, a=a, b=b, move=move))
+    run = Pipeline(DOMAIN, scenario, 0)
+    texts = {e.text() for e in run.layout_graph.edges}
+    assert f"onLocation({b}, shelf, centre)" in texts
+    assert f"inDirection({b}, shelf, left)" not in texts
+    assert f"inDirection({a}, shelf, left)" in texts  # the first starts beside it, on its own support
+    layout = run.placed.layout
+    objects = {o.name: o for o in layout.objects}
+    assert objects[a].x < objects[b].x < objects["pig"].x

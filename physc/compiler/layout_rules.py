@@ -138,6 +138,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
     flies = rules.player_heading
 
     # 1. The paper's table.
+    motions: list[int] = []  # the edges of rolls and slides, by position
     for position, term in enumerate(scenario.interactions):
         why = _interaction_provenance(term)
         if term.name == "hit":
@@ -145,6 +146,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             b.edge(LIES_ON_PATH, target, actor, (), why)
             b.edge(IN_DIRECTION, target, actor, opposite(term.directions), why)
         elif term.name in ("roll", "slide"):
+            motions.append(len(b.edges))
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
@@ -196,7 +198,12 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
         if path_of(actor) and sideways:
             rest = path_of(actor)[-1]
             towards = heading[actor]
-            b.edge(ON_LOCATION, target, rest, (towards,), Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
+            where = (towards,)
+            if rest in surfaces.get(target, ()) and heading[target] == towards:
+                # It goes on along the same surface: it rests in its middle, ahead of its
+                # hitter and with room ahead of it.
+                where = ("centre",)
+            b.edge(ON_LOCATION, target, rest, where, Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
             support[target] = rest
         elif target in surfaces:
             first = moved_on[target]
@@ -227,6 +234,11 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             own = b.support_node(name, anywhere)
             b.edge(ON_LOCATION, name, own, ("left", "centre", "right"), Provenance("support", f"{name} rests on a support", None))
             support[name] = own
+    # A mover that rests on the surface it rolls or slides along (set moving by one that came
+    # along the same surface) starts on it, not beside it: its motion's inDirection is its
+    # place on that surface, which its support's onLocation already gives.
+    starts_on = {k for k in motions if support.get(b.edges[k].a) == b.edges[k].b}
+    b.edges = [e for k, e in enumerate(b.edges) if k not in starts_on]
     # Objects at rest on a surface: that surface is horizontal.
     for rest in support.values():
         b.narrow_to_flat(rest)
