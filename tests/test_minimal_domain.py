@@ -3,10 +3,11 @@
 "minimal": a ball on flat ground is pushed (the player's only action), hits a box, and
 the box must touch a static goal pad; the goal is met when a box touches every pad. The
 domain implements every generation capability (layout rules and parameters, concretize,
-satisfy, emit_level, picture as SVG) with the least code that is honest, and satisfies
-a layout with physc's own generic parts: the `Sequential` search over stages with a
-`ChainBuilder` of its own (the pad is offered where the box's simulated path takes it),
-the backend's world and the generic run loop, the generic recogniser and sequence fidelity.
+emit_level, picture as SVG) with the least code that is honest, and is a SimulatedDomain:
+it writes the hooks of physc's one generation search (its level, its play, its candidate
+pushes) and nothing of the search itself, which places the pad where the box's simulated
+path takes it. It runs on the backend's world and the generic run loop, the generic
+recogniser and sequence fidelity.
 
 The tests check that the public pipeline and the command line make a real task of it:
 its solution realises the declared sequence in a fresh simulation, the level stands,
@@ -29,16 +30,14 @@ from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
 from physc.compiler.pipeline import Pipeline
-from physc.compiler.qsr import TILES
 from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
 from physc.domains.base import STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_source
-from physc.generation.outcome import Outcome, Parts
-from physc.generation.sequential import ChainBuilder, Sequential, Stage, State, stages
-from physc.simulation.fidelity import Fidelity, fidelity
+from physc.simulation.fidelity import fidelity
 from physc.simulation.recognise import Recogniser, approach, side, violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.stability import stable
@@ -50,10 +49,6 @@ HEIGHT = 0.5  # every object is this tall; the placement area is one object high
 GRAVITY, DT, SECONDS = 9.8, 0.02, 4.0
 FRICTION = 0.3
 SPEEDS = (4.0, 6.0, 8.0)  # units/s: the pushes the player may give the ball, towards the first hit's target
-STEP = 0.25  # units of travel between the places a pad is offered along a path
-PLACES = 6  # places offered along one attempt's path
-GAP = 0.02  # between a placed pad and the box that is to touch it
-MOVING = 0.2  # units/s: slower, a box is not offered a pad further on
 STILL = 0.02  # below this (units/s, rad/s) a body is at rest
 # A level stands when, left alone, nothing moves further than this (the backend keeps polygons
 # a skin of 0.01 apart: a box placed flush on the ground rises by about 0.013)
@@ -189,137 +184,15 @@ def simulate(level: Level, push: float) -> Trace:
     return attrs.evolve(trace, interactions=found, violations=violations(found, ()), solved=bool(pads) and touched >= set(pads))
 
 
-@attrs.frozen
-class Attempt:
-    push: float
-    trace: Trace
-    fidelity: Fidelity
+class Minimal(SimulatedDomain):
+    """What differs in this domain, as hooks of physc's one search (SimulatedDomain)."""
 
-
-class Chain(ChainBuilder):
-    """The stages of the scenario (an object enters at the first interaction naming it); a
-    stage's variants: its new pad where an attempt's simulated actor passes, then the scene as
-    placed; realised: the attempts whose simulation realises every interaction to its end."""
-
-    def __init__(self, scenario, level: Level, layout):
-        self.scenario, self.level, self.layout = scenario, level, layout
-        self.interactions = scenario.interactions
-        self.introduced = {t.name: len(self.interactions) for t in level.things}
-        for k, term in reversed(list(enumerate(self.interactions))):
-            for name in term.objects:
-                self.introduced[name] = k
-        self.simulations = 0
-        self.best = 0  # most interactions realised in order in one simulation
-
-    def stages(self) -> list[Stage]:
-        return stages(self.interactions, self.introduced)
-
-    def root(self) -> State:
-        return State(self.level, (), -1)
-
-    def prefix(self, scene: Level, start: int) -> Level:
-        return Level(tuple(t for t in scene.things if self.introduced[t.name] <= start))
-
-    def attempt(self, scene: Level, push: float) -> Attempt:
-        self.simulations += 1
-        trace = simulate(scene, push)
-        found = fidelity(self.scenario, trace)
-        self.best = max(self.best, found.matched)
-        return Attempt(push, trace, found)
-
-    def reaches(self, attempt: Attempt, end: int) -> bool:
-        f = attempt.fidelity
-        if end >= len(self.interactions):
-            return f.valid
-        return f.matched >= end and not any(v.interaction.time <= f.times[end - 1] for v in attempt.trace.violations)
-
-    def candidates(self, scene: Level) -> list[float]:
-        """Pushes of the ball towards the first hit's target."""
-        first = self.interactions[0]
-        ball, target = scene.thing(first.objects[0]), scene.thing(first.objects[1])
-        return [math.copysign(speed, target.x - ball.x) for speed in SPEEDS]
-
-    def realised(self, scene, parent: State, stage: Stage, lead: int = 0):
-        if parent.attempts:
-            pushes = [parent.attempts[lead].push] + [a.push for j, a in enumerate(parent.attempts) if j != lead]
-        else:
-            pushes = self.candidates(scene)
-        level = self.prefix(scene, stage.start)
-        good = [a for a in (self.attempt(level, push) for push in pushes) if self.reaches(a, stage.end)]
-        return tuple(good) or None
-
-    def variants(self, parent: State, stage: Stage):
-        if parent.attempts and stage.start < len(self.interactions):
-            declared = self.interactions[stage.start]
-            for lead, attempt in enumerate(parent.attempts[:2]):
-                for description, scene in self.on_path(parent.scene, declared, stage, attempt):
-                    yield description, scene, lead
-        yield "", parent.scene, 0
-
-    def on_path(self, scene: Level, declared, stage: Stage, attempt: Attempt):
-        """Scenes with the touched pad where the attempt's actor meets it from the declared side
-        (pads stand on the ground: only sideways), every STEP of travel after the interaction
-        before, keeping the layout's relations, clear of every body's path until then."""
-        actor, pad = declared.objects
-        if declared.name != "touch" or pad not in stage.new or actor not in attempt.trace.names:
-            return
-        trace, a, b = attempt.trace, scene.thing(actor), scene.thing(pad)
-        first = int(attempt.fidelity.times[stage.start - 1] / trace.dt) if stage.start else 0
-        rows = trace.states[first:, trace.index(actor)]
-        offered, last = 0, None
-        for i, (x, _, _, vx, vy, _) in enumerate(rows):
-            if math.isnan(x) or (last is not None and math.hypot(vx, vy) < MOVING) or offered >= PLACES:
-                return
-            if last is not None and abs(x - last) < STEP:
-                continue
-            last = x
-            for where in declared.directions:
-                if where not in ("left", "right"):
-                    continue
-                px = x + (a.width + b.width) / 2 + GAP if where == "left" else x - (a.width + b.width) / 2 - GAP
-                placed = scene.moved(pad, px)
-                if self.keeps_layout(placed) and self.clear(trace, first + i, placed.thing(pad), scene):
-                    offered += 1
-                    yield f"{declared.text}: {pad} on the path of {actor}, at x = {px:.2f}", placed
-
-    def keeps_layout(self, scene: Level) -> bool:
-        """Every directional relation the layout chose still holds, and all is in the area."""
-        p = DOMAIN.layout_parameters
-        for t in scene.things:
-            left, right, bottom, top = t.box()
-            if left < p.left or right > p.right or bottom < p.bottom - 1e-9 or top > p.top + 1e-9:
-                return False
-        for r in self.layout.conjunction + self.layout.separations:
-            if r.relation not in TILES:
-                continue
-            (la, ra, ba, ta), (lb, rb, bb, tb) = scene.thing(r.a).box(), scene.thing(r.b).box()
-            for (lo_a, hi_a, lo_b, hi_b), state in zip(((la, ra, lb, rb), (ba, ta, bb, tb)), TILES[r.relation]):
-                if state == "before" and hi_a > lo_b - p.clearance + 1e-9:
-                    return False
-                if state == "after" and lo_a < hi_b + p.clearance - 1e-9:
-                    return False
-                if state == "overlap" and (lo_a > hi_b or hi_a < lo_b):
-                    return False
-        return True
-
-    @staticmethod
-    def clear(trace: Trace, row: int, pad: Thing, scene: Level) -> bool:
-        """Whether no body of the trace passes through the pad before `row`."""
-        left, right, bottom, top = pad.box()
-        for index, name in enumerate(trace.names):
-            body = scene.thing(name)
-            for x, y in trace.states[:row, index, :2]:
-                if x + body.width / 2 > left and x - body.width / 2 < right and y + body.height / 2 > bottom and y - body.height / 2 < top:
-                    return False
-        return True
-
-
-class Minimal(Domain):
     name = "minimal"
     description = "a ball pushed on flat ground, a box, goal pads a box must touch (physc's test domain)"
     vocabulary = VOCABULARY
     layout_rules = LayoutRules()
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=0.0, right=8.0, bottom=0.0, top=HEIGHT)
+    seconds = SECONDS
 
     @staticmethod
     def concretize(graph, scenario, rng) -> dict[str, Body]:
@@ -330,25 +203,34 @@ class Minimal(Domain):
             bodies[node.name] = Body(node.name, node.role, concrete, Geometry(rng.choice(widths[concrete]), HEIGHT))
         return bodies
 
-    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None) -> Outcome:
-        level = Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
-        chain = Chain(scenario, level, layout)
-        found = Sequential(chain).run()
-        if found is None:
-            return Outcome(False, chain.simulations, given_up="the sequence was not realised", best=chain.best)
-        chain.simulations += 1
-        if not stable(simulate(found.scene, 0.0), STANDS)[0]:
-            return Outcome(False, chain.simulations, given_up="the level did not stand", best=chain.best)
-        attempt, validated = found.attempts[0], None
-        if validate:
-            attempt = chain.attempt(found.scene, attempt.push)
-            if not attempt.fidelity.valid:
-                return Outcome(False, chain.simulations, given_up="validation failed", best=chain.best)
-            validated = True
-        ball = scenario.interactions[0].objects[0]
-        solution = Solution(f"{ball} pushed at {attempt.push:g} units/s", (attempt.push, 0.0), "push", 0.0)
-        parts = Parts(found.scene, solution, attempt.trace.sequence(), validated, (0, 0), found.steps, (), ())
-        return Outcome(True, chain.simulations, parts, best=chain.best)
+    @staticmethod
+    def level_from_layout(layout, scenario=None) -> Level:
+        return Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
+
+    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True) -> Trace:
+        return simulate(level, action or 0.0)
+
+    @staticmethod
+    def actions(level, scenario) -> list[tuple[str, float]]:
+        """Pushes of the ball towards the first hit's target, if both have entered the scene."""
+        first = scenario.interactions[0]
+        names = {t.name for t in level.things}
+        if not set(first.objects) <= names:
+            return []
+        ball, target = level.thing(first.objects[0]), level.thing(first.objects[1])
+        return [(f"{ball.name} pushed at {speed:g} units/s", math.copysign(speed, target.x - ball.x)) for speed in SPEEDS]
+
+    @staticmethod
+    def stability(level) -> tuple[bool, float]:
+        return stable(simulate(level, 0.0), STANDS)
+
+    @staticmethod
+    def solution(label: str, push: float) -> Solution:
+        return Solution(label, (push, 0.0), "push", 0.0)
+
+    @staticmethod
+    def action_of(solution: Solution) -> float:
+        return solution.target[0]
 
     @staticmethod
     def emit_level(level: Level) -> str:
@@ -419,7 +301,7 @@ def test_a_task_is_compiled_and_its_solution_realises_the_sequence_in_a_fresh_si
     assert (task.domain, task.scenario, task.seed, task.validated) == ("minimal", "Push", 0, True)
     assert task.simulations > 0 and task.layouts_tried >= 1
     # Built stage by stage: the goal pad was placed on the box's simulated path.
-    assert any("goal on the path of box" in step for step in task.repairs), task.repairs
+    assert any("goal on its path" in step for step in task.repairs), task.repairs
     level = task.level
     assert sorted(t.kind for t in level.things) == ["ball", "box", "pad"]
     ball, box, goal = level.thing("ball"), level.thing("box"), level.thing("goal")

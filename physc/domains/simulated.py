@@ -31,6 +31,7 @@ import math
 import random
 
 from physc.domains.base import Domain, MissingCapability, _no_default, require
+from physc.generation.settings import SETTINGS, SearchSettings
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 from physc.simulation.scene import Scene, play
@@ -127,6 +128,51 @@ class SimulatedDomain(Domain):
         default: the level as it is)."""
         return level
 
+    # ---- what the search asks, with defaults ----------------------------------------------
+    search_settings: SearchSettings = SETTINGS
+    """The search's budgets and beams (physc.generation.settings)."""
+
+    def actions_at(self, level, name: str) -> list[tuple[str, object]]:
+        """(label, action) aimed at the object `name`: what the guards try against forbidden
+        direct hits and shortcuts (the default: none, so nothing is guarded)."""
+        return []
+
+    def bodies(self, placed, scenario) -> list:
+        """The other bodies `placed` (a PlacedObject) may take, as PlacedObjects of the same
+        name with their concrete object, material and size: what the search chooses a new
+        object's body from (physc.generation.choosing). The default: none."""
+        return []
+
+    def mass(self, placed) -> float:
+        """The mass of a placed body, in the units of the domain's physics (the default: its
+        box's area at density 1)."""
+        return placed.width * placed.height
+
+    def friction(self, placed) -> float:
+        """The friction of a placed body (the default: 0.5)."""
+        return 0.5
+
+    blocker: str | None = None
+    """The concrete object of an obstacle the guards place (a static bar); None: the domain
+    places none, and its restrictions are only judged."""
+    blocker_length: float = 1.0
+    blocker_thickness: float = 0.1
+
+    def distractor_count(self, rng: random.Random, most: int) -> int:
+        """How many distractors to try to add (the default: none)."""
+        return 0
+
+    def distractors(self, layout, index: int, rng: random.Random):
+        """Candidate distractors (PlacedObjects named for `index`), tried in turn until one is
+        kept (the default: none)."""
+        return ()
+
+    def proposals(self, layout, scenario, failed, start: int):
+        """(description, layout): the domain's own local changes for a stage starting at
+        interaction `start` that `failed` (the best failed attempt) did not realise (the
+        default: none)."""
+        return ()
+
     # ---- what physc does with them --------------------------------------------------------
     def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True) -> Trace:
         """`level` played with `action` in the selected backend; judged against `scenario`'s
@@ -150,11 +196,12 @@ class SimulatedDomain(Domain):
         return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
 
     def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
-        """The generic search (physc.generation.search.ActionSearch) with this domain's hooks."""
-        from physc.generation.search import ActionSearch
+        """The one generation search (physc.generation.search.Search) with this domain's hooks."""
+        from physc.generation.search import Search
 
-        require(self, HOOKS, "generating a task")
-        return ActionSearch(self, scenario, layout, self.robustness_replays if accept is None else accept, validate).run()
+        overrides_play = type(self).play is not SimulatedDomain.play  # then it needs no `scene`
+        require(self, tuple(h for h in HOOKS if not (overrides_play and h == "scene")), "generating a task")
+        return Search(self, scenario, layout, rng, (self.robustness_replays or 0) if accept is None else accept, validate).run()
 
     def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
         """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn

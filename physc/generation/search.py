@@ -1,200 +1,165 @@
-"""The action search: a placed layout made a task by simulating candidate actions.
+"""The one generation search: a placed layout made a task, along its causal chain.
 
-The generic satisfier of a one-action domain (physc.domains.simulated): the paper's
-step 4 without a domain's own repairs. For one placed layout it
+Every domain goes through it (angrybirds and the PHYRE-like plugin alike); a domain
+supplies hooks (physc.domains.simulated.SimulatedDomain), never a search of its own.
+For one placed layout (a value: every step returns a new layout, none is changed in place):
 
-1. gives the layout up unless it stands (left alone, nothing moves more than the
-   domain's limit);
-2. simulates every candidate action the domain offers (the first target's points of
-   interest), judging each trace against the scenario (sequence fidelity, restrictions,
-   goal);
-3. a working action that fails some noisy replays is first centred: moved to the middle of
-   the run of working actions around it, along the line the domain's `nudged` draws (PHYRE:
-   the ball a pixel at a time sideways), and replayed again;
-4. if none realises the sequence, makes liesOnPath true in simulation: the play that came
-   furthest stops at a hit or fall, and that target (with its structure) is moved onto
-   the actor's simulated path (on_path.py), one interaction at a time;
-5. keeps the first working action that passes `accept` of the domain's noisy replays,
-   and as many fresh ones (a confirmation: it was chosen for passing the first);
-6. validates it once more (unless told not to).
+1. **Stages** (stages.py): the sequence is cut where it brings objects in; a stage's scene
+   holds only what has entered so far.
+2. **Depth first over stages, with a beam.** The first stage is simulated with every
+   candidate action of the domain; each later stage with the actions that realised the
+   one before (the `beam` best, by how much speed or drop they leave the next actor).
+   A stage's *variants* are its new objects put where the simulated prefix says their actor
+   goes (placing.py), each with the bodies the physics of the meeting favours
+   (choosing.py), then the layout as placed, then the domain's own proposals. The first
+   variant that realises the stage is the parent of the next; when none does, the
+   search goes back a stage. `variants` bounds the variants a layout may cost.
+3. **Robustness** (robustness.py): the first working action that passes the domain's
+   noisy replays, centred if needed, and as many fresh ones.
+4. **Guards** (guards.py): obstacles against forbidden direct hits (`cannotHit` of the
+   player) and against shortcuts, kept only if the solution still holds up.
+5. **Distraction**: the domain's distractors, each kept only if the level still stands and
+   the solution still holds up, and it is no way to solve the task.
+6. **Stability** of the finished level, and **validation** (unless told not to).
 
-Every simulation goes through an Evaluator, which counts it: the figure generation's
-cost is measured in. Noise is drawn from generators named after the action's label, so a
-seed gives the same task in any process.
+Every simulation goes through an Evaluator, which counts it: the figure generation's cost
+is measured in. Noise is drawn from generators named after the action's label, so a seed
+gives the same task in any process.
 """
 
 from __future__ import annotations
 
-import random
+import itertools
+import time
 
 import attrs
+import numpy as np
 
-from physc.generation import on_path
+from physc import budget
+from physc.generation import choosing, placing, settings as reasons
+from physc.generation.attempt import Attempt, reaches
 from physc.generation.evaluator import Evaluator
+from physc.generation.guards import Guards
 from physc.generation.outcome import Outcome, Parts
-from physc.simulation.fidelity import Fidelity, fidelity
+from physc.generation.robustness import Robustness
+from physc.generation.stages import Stage, introduced, prefix, stages
+from physc.simulation.fidelity import fidelity
 from physc.simulation.stopped import why_stopped
-from physc.simulation.trace import Trace
 
-NOISE_STREAMS = ("robustness", "confirmation")  # the replays an action is chosen for, and the fresh ones that confirm it
-CANDIDATES = 3  # working actions put through the noisy replays at most, per layout
-MOVES = 6  # liesOnPath proposals simulated per interaction brought about
-CENTRING_STEPS = 6  # nudges tried each way around a fragile action
-# Why a layout is given up (`Outcome.given_up`), in the order of the steps.
-UNSTABLE = "the level did not stand"
-NO_ACTION = "no candidate action"
-NOT_REALISED = "the sequence was not realised"
-FRAGILE = "the solution was too fragile"
-NOT_VALIDATED = "validation failed"
+ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is not met on the path (what it moves on, or what it already met)
+KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
 
 
 @attrs.frozen
-class Attempt:
-    """One candidate action played: its label, the action, the judged trace and its fidelity."""
+class Node:
+    """A layout that realises the sequence up to the end of stage `stage`, with the attempts
+    that realise it (best first) and the steps that built it."""
 
-    label: str
-    action: object
-    trace: Trace
-    fidelity: Fidelity
+    layout: object
+    attempts: tuple
+    stage: int
+    steps: tuple[str, ...] = ()
 
 
-class ActionSearch:
-    """The search for one layout (module docstring)."""
+class Search(Robustness, Guards):
+    """The search for one placed layout (module docstring)."""
 
-    def __init__(self, domain, scenario, layout, accept: int, validate: bool = True):
+    def __init__(self, domain, scenario, layout, rng, accept: int, validate: bool = True):
         self.domain = domain
         self.scenario = scenario
+        self.interactions = scenario.interactions
         self.layout = layout
-        self.level = domain.level_from_layout(layout, scenario)
-        self.repairs: list[str] = []
+        self.rng = rng
         self.accept = accept
         self.validate = validate
-        self.evaluator = Evaluator(0)
+        self.settings = domain.search_settings
+        self.parameters = domain.layout_parameters
+        self.scale = domain.trace_scale
+        self.frame = placing.Frame.of(layout, scenario, domain.layout_parameters)
+        self.entry = introduced(layout, scenario.interactions)
+        self.plan = stages(scenario.interactions, self.entry)
+        self.evaluator = Evaluator(KEPT_SIMULATIONS)
+        self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
+        self.steps: list[str] = []
+        self.obstacles: list[str] = []
         self.best = 0  # most interactions realised in order by one play
         self.furthest: Attempt | None = None
         self.nearest = 0  # most noisy replays passed by a working action given up as fragile
         self.tried = 0  # working actions put through the noisy replays
+        self.variants_tried = 0
+        self.screened: list[str] = []  # labels of the first stage's actions that came nearest
+        self.failed: dict[int, Attempt] = {}  # stage → the best attempt of a variant that failed there
 
-    def simulate(self, label: str, action, level=None) -> Attempt:
-        """`action` played in `level` (default: the layout's), judged against the scenario."""
-        trace = self.evaluator.run(lambda: self.domain.play(level or self.level, action, self.scenario))
-        attempt = Attempt(label, action, trace, fidelity(self.scenario, trace))
-        if level is None:
-            self.best = max(self.best, attempt.fidelity.matched)
-            if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
-                self.furthest = attempt
+    # ---- simulation ----------------------------------------------------------------------
+    def level_of(self, layout):
+        return self.domain.level_from_layout(layout, self.scenario)
+
+    def play(self, level, action, seconds: float | None = None) -> Attempt:
+        """`action` played in `level` (uncached: a noisy replay), judged against the scenario."""
+        trace = self.evaluator.run(lambda: self.domain.play(level, action, self.scenario, seconds))
+        return Attempt("", action, trace, fidelity(self.scenario, trace))
+
+    def simulate(self, layout, action, seconds: float | None = None) -> Attempt:
+        """`action` played in `layout`'s level for `seconds` (default: the domain's), judged
+        against the scenario; run once while among the last KEPT_SIMULATIONS asked for."""
+        key = (seconds, layout.objects, action)
+        trace = self.evaluator.kept(key, lambda: self.domain.play(self.level_of(layout), action, self.scenario, seconds))
+        attempt = Attempt("", action, trace, fidelity(self.scenario, trace))
+        self.best = max(self.best, attempt.fidelity.matched)
+        if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
+            self.furthest = attempt
         return attempt
 
-    def robustness(self, attempt: Attempt, stream: str) -> int:
-        """How many of the domain's noisy replays of the attempt realise the sequence."""
-        noise = random.Random(f"{stream}/{attempt.label}")
-        passed = 0
-        for _ in range(self.domain.robustness_replays):
-            level, action = self.domain.noisy(self.level, attempt.action, noise)
-            passed += self.simulate(attempt.label, action, level).fidelity.valid
-        return passed
-
+    # ---- the whole step ------------------------------------------------------------------
     def run(self) -> Outcome:
-        if not self.evaluator.run(lambda: self.domain.stability(self.level))[0]:
-            return self.give_up(UNSTABLE)
-        candidates = self.domain.actions(self.level, self.scenario)
-        if not candidates:
-            return self.give_up(NO_ACTION)
-        chosen = self.robust(self.simulate(label, action) for label, action in candidates)
-        if chosen is None and self.tried == 0:
-            chosen = self.robust(self.moved_onto_paths())
+        started = time.perf_counter()
+        if not self.domain.actions(self.level_of(self.layout), self.scenario):
+            return self.give_up(reasons.NO_ACTION)
+        found = self.chain(Node(self.layout, (), -1), 0)
+        if found is None:
+            return self.give_up(reasons.NOT_REALISED)
+        self.layout = found.layout
+        self.steps.extend(found.steps)
+        chosen = self.robust(found.attempts)
         if chosen is None:
-            return self.give_up(FRAGILE if self.tried else NOT_REALISED)
+            return self.give_up(reasons.FRAGILE if self.tried else reasons.NOT_REALISED)
         attempt, passed = chosen
+        before = len(self.obstacles)
+        if not self.obstruct(attempt):
+            return self.give_up(reasons.NOT_OBSTRUCTED)
+        if len(self.obstacles) > before:
+            again = min(self.robustness(attempt, stream=stream) for stream in reasons.NOISE_STREAMS)
+            if again < self.accept:
+                self.nearest = max(self.nearest, again)
+                return self.give_up(reasons.OBSTRUCTED_FRAGILE)
+            passed = min(passed, again)
+        self.guard(attempt)
+        if not self.evaluator.run(lambda: self.domain.stability(self.level_of(self.layout)))[0]:
+            return self.give_up(reasons.UNSTABLE)
+        distracting = time.perf_counter()
+        distractors = self.distract(attempt)
+        validating = time.perf_counter()
         validated, trace = None, attempt.trace
         if self.validate:
-            final = self.simulate(attempt.label, attempt.action)
+            final = self.play(self.level_of(self.layout), attempt.action)
             if not final.fidelity.valid:
-                return self.give_up(NOT_VALIDATED)
+                return self.give_up(reasons.NOT_VALIDATED)
             validated, trace = True, final.trace
         solution = self.domain.solution(attempt.label, attempt.action)
+        level = self.level_of(self.layout)
         parts = Parts(
-            level=self.domain.with_solution(self.level, solution),
+            level=self.domain.with_solution(level, solution),
             solution=solution,
             trace=trace.sequence(),
             validated=validated,
-            robustness=(passed, self.domain.robustness_replays),
-            repairs=tuple(self.repairs),
-            obstacles=(),
-            distractors=(),
+            robustness=(passed, self.domain.robustness_replays or 0),
+            repairs=tuple(self.steps),
+            obstacles=tuple(self.obstacles),
+            distractors=tuple(distractors),
         )
-        return Outcome(True, self.evaluator.simulations, parts, best=self.best, stopped=self.stopped)
-
-    def robust(self, attempts) -> tuple[Attempt, int] | None:
-        """The first of `attempts` (simulated lazily, in order) that realises the sequence and
-        passes `accept` noisy replays and as many fresh ones, with the replays it passed; at
-        most CANDIDATES working ones are put through the replays."""
-        for attempt in attempts:
-            if not attempt.fidelity.valid:
-                continue
-            self.tried += 1
-            passed = self.robustness(attempt, NOISE_STREAMS[0])
-            if passed < self.domain.robustness_replays:
-                centred = self.centred(attempt)
-                if centred is not None:
-                    again = self.robustness(centred, NOISE_STREAMS[0])
-                    if again > passed:
-                        attempt, passed = centred, again
-            if passed >= self.accept:
-                passed = min(passed, self.robustness(attempt, NOISE_STREAMS[1]))
-            if passed >= self.accept:
-                return attempt, passed
-            self.nearest = max(self.nearest, passed)
-            if self.tried == CANDIDATES:
-                return None
-        return None
-
-    def centred(self, attempt: Attempt) -> Attempt | None:
-        """The action in the middle of the run of working actions around `attempt` along the
-        domain's `nudged` line (at most CENTRING_STEPS each way), if that is another action
-        and works; None otherwise (or when the domain draws no such line)."""
-        def nudge(step: int) -> Attempt | None:
-            action = self.domain.nudged(attempt.action, step)
-            if action is None or not self.domain.valid(self.level, action):
-                return None
-            return self.simulate(f"{attempt.label}, nudged {step:+d}", action)
-
-        low = high = 0
-        while low > -CENTRING_STEPS and (found := nudge(low - 1)) is not None and found.fidelity.valid:
-            low -= 1
-        while high < CENTRING_STEPS and (found := nudge(high + 1)) is not None and found.fidelity.valid:
-            high += 1
-        middle = (low + high) // 2
-        if middle == 0:
-            return None
-        centre = nudge(middle)
-        return centre if centre is not None and centre.fidelity.valid else None
-
-    def moved_onto_paths(self) -> list[Attempt]:
-        """Step 3: while the furthest play stops at a hit or a fall, the layout with that
-        target moved onto the actor's path (the first of MOVES proposals that gets further
-        and still stands) is adopted; the play, once it realises the whole sequence."""
-        domain = self.domain
-        for _ in range(len(self.scenario.interactions)):
-            furthest = self.furthest
-            proposed = on_path.proposals(
-                self.layout, self.scenario, furthest.trace, furthest.fidelity, domain.layout_parameters, domain.trace_scale
-            )
-            for description, layout in proposed[:MOVES]:
-                level = domain.level_from_layout(layout, self.scenario)
-                if not domain.valid(level, furthest.action):
-                    continue
-                trial = self.simulate(furthest.label, furthest.action, level)
-                if trial.fidelity.matched > furthest.fidelity.matched and self.evaluator.run(lambda: domain.stability(level))[0]:
-                    break
-            else:
-                return []
-            self.layout, self.level, self.furthest = layout, level, trial
-            self.best = max(self.best, trial.fidelity.matched)
-            self.repairs.append(description)
-            if trial.fidelity.valid:
-                return [trial]
-        return []
+        seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
+        del started
+        return Outcome(True, self.evaluator.simulations, parts, seconds=seconds, best=self.best, stopped=self.stopped)
 
     @property
     def stopped(self) -> str:
@@ -203,3 +168,158 @@ class ActionSearch:
 
     def give_up(self, why: str) -> Outcome:
         return Outcome(False, self.evaluator.simulations, nearest=self.nearest, given_up=why, best=self.best, stopped=self.stopped)
+
+    # ---- the stage search ----------------------------------------------------------------
+    def chain(self, parent: Node, i: int) -> Node | None:
+        """Depth first over the stages from `self.plan[i]` (module docstring)."""
+        if i == len(self.plan):
+            return parent
+        stage = self.plan[i]
+        offered = 0
+        for description, layout, lead in self.variants(parent, stage):
+            if self.variants_tried >= self.settings.variants or offered >= self.settings.variants_per_stage:
+                break
+            budget.check()
+            offered += 1
+            self.variants_tried += 1
+            attempts = self.realised(layout, parent, stage, lead)
+            if not attempts:
+                continue
+            steps = parent.steps + ((description,) if description else ())
+            found = self.chain(Node(layout, attempts, stage.index, steps), i + 1)
+            if found is not None:
+                return found
+        return None
+
+    def horizon(self, parent: Node, stage: Stage) -> float | None:
+        """How long a stage's scene is simulated: the domain's whole run (None). A stage's
+        path must go on long enough for the next stage to read where its actor goes, which
+        a slow roll may take most of the run to show."""
+        return None
+
+    def realised(self, layout, parent: Node, stage: Stage, lead: int = 0) -> tuple | None:
+        """The attempts, best first, that realise every interaction up to the stage's end in
+        the stage's scene of `layout`: the parent's actions (the lead's first), or at the
+        first stage every candidate action (those that came nearest before, first)."""
+        scene = prefix(layout, self.entry, stage.start)
+        total = len(self.interactions)
+        if parent.attempts:
+            order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
+            actions, screen = [(a.label, a.action) for a in order], 1
+        else:
+            actions = self.domain.actions(self.level_of(scene), self.scenario)
+            actions = [c for c in actions if c[0] in self.screened] + [c for c in actions if c[0] not in self.screened]
+            screen = len(self.screened) or len(actions)
+        good, failed = [], []
+        seconds = self.horizon(parent, stage)
+        for j, (label, action) in enumerate(actions):
+            attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
+            (good if reaches(attempt, stage.end, total) else failed).append(attempt)
+            if j + 1 == screen and not good:
+                break  # those most likely to have missed it: so will the rest, mostly
+        if failed:
+            best = max(failed, key=lambda a: a.fidelity.score)
+            if stage.index not in self.failed or best.fidelity.score > self.failed[stage.index].fidelity.score:
+                self.failed[stage.index] = best
+            if not parent.attempts and not self.screened:
+                self.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: self.settings.screen]]
+        good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
+        return tuple(good[: self.settings.beam]) or None
+
+    def promise(self, attempt: Attempt, end: int) -> float:
+        """How well `attempt` sets up the interaction after the first `end`: how far its actor
+        comes down, for a fall, else how fast it moves, after the last of them."""
+        if end >= len(self.interactions) or not end:
+            return 0.0
+        actor = self.interactions[end].objects[0]
+        trace = attempt.trace
+        if actor not in trace.names:
+            return 0.0
+        rows = trace.states[int(attempt.fidelity.times[end - 1] / trace.dt) :, trace.index(actor), :]
+        rows = rows[~np.isnan(rows[:, 0])]
+        if not len(rows):
+            return 0.0
+        if self.interactions[end].name == "fall":
+            return float(rows[0, 1] - rows[:, 1].min())
+        return float(np.hypot(rows[:, 3], rows[:, 4]).max())
+
+    # ---- variants ------------------------------------------------------------------------
+    def variants(self, parent: Node, stage: Stage):
+        """(description, layout, lead): the new objects on the path with the bodies the
+        meeting favours, the layout as placed (with those bodies), then the domain's own."""
+        seen = set()
+        offered = []
+        if parent.attempts and stage.start < len(self.interactions):
+            declared = self.interactions[stage.start]
+            for lead, attempt in enumerate(parent.attempts[:2]):
+                offered.append((lead, itertools.islice(self.on_path(parent.layout, declared, stage, attempt), self.settings.places)))
+        offered.append((0, iter([("", parent.layout)])))
+        for lead, proposals in offered:
+            for description, layout in proposals:
+                for body_note, bodied in self.with_bodies(layout, parent, stage, lead):
+                    if bodied.objects not in seen:
+                        seen.add(bodied.objects)
+                        yield ", ".join(x for x in (description, body_note) if x), bodied, lead
+        failed = self.failed.get(stage.index)
+        if failed is not None:
+            for description, layout in self.domain.proposals(parent.layout, self.scenario, failed, stage.start):
+                if layout.objects not in seen:
+                    seen.add(layout.objects)
+                    yield description, layout, 0
+
+    def with_bodies(self, layout, parent: Node, stage: Stage, lead: int):
+        """`layout` as it is, then with other bodies for the stage's new object that the
+        meeting's physics favours (choosing.py)."""
+        yield "", layout
+        if not parent.attempts or stage.start >= len(self.interactions):
+            return
+        declared = self.interactions[stage.start]
+        attempt = parent.attempts[min(lead, len(parent.attempts) - 1)]
+        for note, changed in itertools.islice(choosing.alternatives(self, layout, declared, stage, attempt), self.settings.bodies - 1):
+            yield note, changed
+
+    def on_path(self, layout, declared, stage: Stage, attempt: Attempt):
+        """Layouts with the stage's first new object where `attempt`'s actor meets it: under
+        where it comes down, for a fall; touching it from a declared side, for a hit or any
+        other meeting of two objects (PHYRE's and other domains' `touch`)."""
+        actor, target = (tuple(declared.objects) + (None,))[:2]
+        if declared.name in ALONG or target not in stage.new or actor not in attempt.trace.names:
+            return
+        objects = {o.name: o for o in layout.objects}
+        if target not in objects or target in self.frame.fixed:
+            return  # a surface is placed by the layout, with the shelf it belongs to
+        trace = attempt.trace
+        k = stage.start
+        since = attempt.fidelity.times[k - 1] if k else 0.0
+        if k and self.interactions[k - 1].name in ("roll", "slide", "fall"):
+            since += self.settings.settle
+        first = int(since / trace.dt)
+        rows = trace.states[first:, trace.index(actor), :]
+        members = self.frame.movers(target, self.entry)
+        sizes = {o.name: (o.width, o.height) for o in layout.objects}
+        actor_size = sizes.get(actor, (0.0, 0.0))
+        if declared.name != "fall":
+            sideways = self.frame.sideways_only(target)
+            places = list(placing.hit_places(actor_size, objects[target], rows, declared.directions, sideways, self.scale, self.settings))
+            if sideways and "above" in declared.directions:
+                places = list(placing.landings(actor_size, objects[target], rows, self.scale)) + places
+        else:
+            heading = self.heading_after(target, k + 1)
+            behind = None if heading is None else (1.0 if heading == "left" else -1.0)
+            places = list(placing.landings(actor_size, objects[target], rows, self.scale, behind))
+        for step, x, y in places:
+            moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, self.frame)
+            if moved is None:
+                continue
+            changed = [o for o in moved.objects if o.name in members]
+            if not placing.clear(trace, first + step, changed, actor, sizes, self.scale, self.settings.clear):
+                continue
+            if not placing.consistent(prefix(moved, self.entry, stage.start), self.parameters, members, members):
+                continue
+            where = next(o for o in changed if o.name == target)
+            yield f"{declared.text}: {target} on its path, at ({where.x:.2f}, {where.y:.2f})", moved
+
+    def heading_after(self, name: str, index: int) -> str | None:
+        """The way `name` next rolls or slides, from interaction `index` on."""
+        term = next((t for t in self.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name), None)
+        return None if term is None else term.directions[0]

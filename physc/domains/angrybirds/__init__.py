@@ -1,10 +1,15 @@
 """The angrybirds domain: Science Birds levels (the paper's demonstration domain).
 
-It has every capability of the domain interface (physc.domains.base.Domain) and
-overrides every default: the bird must reach the first hit's target, a point is in
-reach when a full-stretch shot can pass through it, and a solution is put through 6
-noisy replays.
+A one-action simulated domain (physc.domains.simulated.SimulatedDomain): the generation
+search is physc's own (physc.generation.search); what this package writes is what differs
+in Science Birds: its shot and candidate actions (the paper's points of interest), the game
+played with its rules (game.py), its catalogue, masses and frictions, its noise model, its
+obstacles (a platform) and distractors, its level file and picture.
 """
+
+from __future__ import annotations
+
+import random
 
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
@@ -13,12 +18,15 @@ from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
-from physc.domains.base import Domain
+from physc.domains.simulated import SimulatedDomain
 
 REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
+PLAY_SECONDS = 9.0  # a play's simulated time at most while generating
+CENTRING_STEP = 0.05  # degrees of release angle between the shots tried around a fragile solution
+OBSTACLE_LENGTH = 1.4  # an obstacle platform's length
 
 
-class AngryBirds(Domain):
+class AngryBirds(SimulatedDomain):
     name = "angrybirds"
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY
@@ -26,6 +34,7 @@ class AngryBirds(Domain):
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
     level_suffix = "xml"  # Science Birds level files
+    seconds = PLAY_SECONDS
     layout_parameters = LayoutParameters(
         clearance=0.1,
         far=1.5,
@@ -34,6 +43,14 @@ class AngryBirds(Domain):
         bottom=world.PLACEMENT_AREA.bottom,
         top=world.PLACEMENT_AREA.top,
     )
+    blocker = "flatPlatform"
+    blocker_length = OBSTACLE_LENGTH
+
+    @property
+    def blocker_thickness(self) -> float:
+        from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
+
+        return PLATFORM_THICKNESS
 
     @staticmethod
     def concretize(graph, scenario, rng):
@@ -49,6 +66,91 @@ class AngryBirds(Domain):
     def reachable(x: float, y: float) -> bool:
         return world.reachable(x, y)
 
+    # ---- the search's hooks ------------------------------------------------------------
+    @staticmethod
+    def level_from_layout(layout, scenario=None) -> Level:
+        from physc.domains.angrybirds.to_level import level_from_layout
+
+        return level_from_layout(layout)
+
+    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True):
+        """The level played with the shot `action` (None: no shot), judged against the
+        scenario's restrictions and declared bounces."""
+        from physc.domains.angrybirds.game import Game
+
+        restrictions = scenario.restrictions if scenario is not None else ()
+        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
+        game = Game(level)
+        if not recognise:
+            return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0)
+        return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3)
+
+    def actions(self, level, scenario) -> list:
+        """The paper's candidate shots: at the points of interest of the first hit's target."""
+        first = scenario.interactions[0]
+        return self.actions_at(level, first.objects[1]) if first.name == "hit" else []
+
+    @staticmethod
+    def actions_at(level, name: str) -> list:
+        from physc.domains.angrybirds.actions import candidate_shots
+
+        obj = next((o for o in level.objects if o.name == name), None)
+        return [] if obj is None else candidate_shots(obj)
+
+    @staticmethod
+    def noisy(level, action, rng: random.Random):
+        """The evaluation's noise: blocks and pigs jittered, the release angle too."""
+        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
+
+        noisy = jitter(level, rng)
+        return noisy, Shot(angle=action.release_angle() + rng.gauss(0.0, ANGLE_SIGMA))
+
+    @staticmethod
+    def nudged(action, step: int):
+        return action.at_angle(action.release_angle() + step * CENTRING_STEP)
+
+    @staticmethod
+    def solution(label: str, action):
+        from physc.compiler.task import Solution
+
+        return Solution(label, action.target, action.trajectory, round(action.release_angle(), 5))
+
+    @staticmethod
+    def action_of(solution):
+        from physc.domains.angrybirds.launch import Shot
+
+        return Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+
+    @staticmethod
+    def bodies(placed, scenario) -> list:
+        from physc.domains.angrybirds.bodies import bodies
+
+        return bodies(placed, scenario)
+
+    @staticmethod
+    def mass(placed) -> float:
+        from physc.domains.angrybirds.bodies import mass
+
+        return mass(placed)
+
+    @staticmethod
+    def friction(placed) -> float:
+        from physc.domains.angrybirds.bodies import friction
+
+        return friction(placed)
+
+    @staticmethod
+    def distractor_count(rng: random.Random, most: int) -> int:
+        return rng.randint(0, most)
+
+    @staticmethod
+    def distractors(layout, index: int, rng: random.Random):
+        from physc.domains.angrybirds.distract import distractors
+
+        return distractors(layout, index, rng)
+
+    # ---- files, pictures, evaluation ------------------------------------------------------
     @staticmethod
     def emit_level(level) -> str:
         from physc.domains.angrybirds.level_xml import emit_level
@@ -67,17 +169,15 @@ class AngryBirds(Domain):
         if isinstance(task, ConcreteLayout):
             return render(task, fmt)
         shot = Shot(target=task.solution.target, trajectory=task.solution.trajectory)
-        trace = Game(task.level).simulate(shot, 9.0, settle_after_solved=0.5)
+        trace = Game(task.level).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, title, trace.paths(), supports), fmt)
 
-    @staticmethod
-    def replay(level, solution, scenario, rng=None):
+    def replay(self, level, solution, scenario, rng=None):
         """The solution's shot (or, with `rng`, the evaluation's noise: release angle and
         object positions jittered), played with the scenario's restrictions and declared
         bounces."""
-        from physc.domains.angrybirds.game import Game
         from physc.domains.angrybirds.launch import Shot
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 
@@ -86,8 +186,7 @@ class AngryBirds(Domain):
         else:
             shot = Shot(angle=solution.release_angle + rng.gauss(0.0, ANGLE_SIGMA))
             level = jitter(level, rng)
-        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
-        return Game(level).play(shot, REPLAY_SECONDS, restrictions=scenario.restrictions, redirects=redirects, settle_after_solved=0.3)
+        return self.play(level, shot, scenario, REPLAY_SECONDS)
 
     @staticmethod
     def stability(level) -> tuple[bool, float]:
@@ -103,13 +202,6 @@ class AngryBirds(Domain):
 
         fraction, plays = accidental(level, scenario.interactions[0].objects[1])
         return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}
-
-    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
-        """Simulation-based satisfaction, distractions and validation of one layout; the
-        solution must pass `accept` of the noisy replays (default: all of them)."""
-        from physc.domains.angrybirds.generate import satisfy
-
-        return satisfy(self, scenario, layout, rng, validate, accept)
 
 
 DOMAIN = AngryBirds()

@@ -1,0 +1,91 @@
+"""A stage's new object given the body that the meeting's physics favours.
+
+The body of a new object (its kind, material and size, among those its scenario allows)
+is chosen when the stage is built, after the prefix has been simulated, from what the
+arriving actor brings, instead of drawn before any simulation. A collision gives its
+target at most (1 + e)·m₁/(m₁ + m₂) of the hitter's speed, so what the target must do next
+decides which body is best:
+
+* to roll, fall or hit on: as fast as it can start, a lighter body (speed u);
+* to slide on: as far as it can go, u²/μ, a lighter or slipperier body;
+* to destroy the goal: the momentum it brings, m₂·u, a heavier one.
+
+The domain says what bodies an object may take and their masses and frictions
+(`SimulatedDomain.bodies`, `mass`, `friction`); the search simulates the best few and keeps
+what works. The body drawn by the layout stays the first variant tried.
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.generation import placing
+from physc.generation.stages import prefix
+
+
+def next_act(interactions, name: str, start: int) -> str | None:
+    """What `name` does next as an actor from interaction `start` on: "destroy" if it
+    destroys something before it stops acting, else the first term it acts in."""
+    acts = [t.name for t in interactions[start:] if t.objects and t.objects[0] == name]
+    if not acts:
+        return None
+    return "destroy" if "destroy" in acts else next((a for a in acts if a != "hit"), acts[0])
+
+
+def worth(act: str, mass: float, friction: float, actor_mass: float | None) -> float:
+    """The estimate of how well a body of `mass` and `friction` does `act` after a hit by an
+    actor of `actor_mass` (None: much heavier than anything it hits)."""
+    share = 1.0 if actor_mass is None else actor_mass / (actor_mass + mass)
+    if act == "destroy":
+        return mass * share
+    if act == "slide":
+        return share * share / max(friction, 1e-3)
+    return share
+
+
+def refitted(old, new, directions) -> object:
+    """`new` (a body for `old`'s object) where `old` was: on the same bottom, and touching
+    the same side that its actor comes from."""
+    x = old.x
+    if directions == ("left",):
+        x = old.x - old.width / 2 + new.width / 2
+    elif directions == ("right",):
+        x = old.x + old.width / 2 - new.width / 2
+    return attrs.evolve(new, x=round(x, 5), y=round(old.y - old.height / 2 + new.height / 2, 5))
+
+
+def alternatives(search, layout, declared, stage, attempt):
+    """(note, layout) with the stage's target given each other body it may take that the
+    estimate ranks above the body it has, best first."""
+    if declared.name in ("roll", "slide", "bounce", "destroy") or len(declared.objects) < 2:
+        return
+    actor, target = declared.objects[0], declared.objects[1]
+    objects = {o.name: o for o in layout.objects}
+    if target not in stage.new or target not in objects or target in search.frame.fixed:
+        return
+    act = next_act(search.interactions, target, stage.start + 1)
+    if act is None:
+        return
+    domain = search.domain
+    current = objects[target]
+    options = domain.bodies(current, search.scenario)
+    if not options:
+        return
+    actor_mass = domain.mass(objects[actor]) if actor in objects else None
+
+    def estimate(body) -> float:
+        return worth(act, domain.mass(body), domain.friction(body), actor_mass)
+
+    here = estimate(current)
+    ranked = sorted(options, key=estimate, reverse=True)
+    for body in ranked:
+        if estimate(body) <= here * (1 + 1e-6) or (body.concrete, body.material) == (current.concrete, current.material):
+            continue
+        fitted = refitted(current, body, tuple(declared.directions))
+        changed = attrs.evolve(layout, objects=tuple(fitted if o.name == target else o for o in layout.objects))
+        if not placing.consistent(prefix(changed, search.entry, stage.start), search.parameters, {target}, {target}):
+            continue
+        material = f" {body.material}" if body.material else ""
+        yield f"{target}: a{material} {body.concrete} ({act}: ×{estimate(body) / here if here else math.inf:.2f})", changed

@@ -1,0 +1,151 @@
+"""Obstacles against what a task must not allow: forbidden direct hits and shortcuts.
+
+`cannotHit(p, b, d)` of the player's object `p` asks for `pathObstructed`: once the search
+has a robust solution, every action the domain aims at `b` (`actions_at`) that hits `b`
+from a forbidden side is blocked by an obstacle (the domain's `blocker`, a static bar)
+across the flight before the hit, a little further back each time, kept only when the
+solution still realises the sequence. Then the shortcut guard does the same for actions
+at other objects that solve the task without the sequence, at most `shortcuts` of them.
+An obstacle is a placed object of the layout like any other, role "obstacle".
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.compiler.concrete_layout import PlacedObject
+from physc.generation import placing
+from physc.generation.attempt import Attempt
+
+BACKS = (0.9, 1.3, 1.8, 2.4, 3.0, 3.7, 4.5)  # layout units back along the flight from the hit, tried in turn
+SHORTCUT_BACKS = (0.9, 1.3, 1.8)
+
+
+def breaks(attempt: Attempt, restriction) -> bool:
+    """Whether `attempt`'s play breaks `restriction`."""
+    return any(v.restriction == restriction.text for v in attempt.trace.violations)
+
+
+class Guards:
+    """The search's obstacles (mixed into physc.generation.search.Search)."""
+
+    def obstruct(self, solution: Attempt) -> bool:
+        """Block every action at a restricted object that breaks its cannotHit; False when one
+        cannot be blocked."""
+        player = self.domain.vocabulary.player
+        players = {o.name for o in self.scenario.objects if o.term == player}
+        for restriction in self.scenario.restrictions:
+            if restriction.name != "cannotHit" or restriction.objects[0] not in players:
+                continue
+            for _ in range(self.settings.obstacles):
+                offending = self.offending(restriction)
+                if offending is None:
+                    break
+                if not self.block(offending, restriction.objects[0], solution, BACKS, lambda a: breaks(a, restriction)):
+                    return False
+            if self.offending(restriction) is not None:
+                return False
+        return True
+
+    def offending(self, restriction) -> Attempt | None:
+        """An action at the restricted object that breaks the restriction."""
+        level = self.level_of(self.layout)
+        for label, action in self.domain.actions_at(level, restriction.objects[1]):
+            attempt = attrs.evolve(self.simulate(self.layout, action), label=label)
+            if breaks(attempt, restriction):
+                return attempt
+        return None
+
+    def block(self, offending: Attempt, actor: str, solution: Attempt, backs, bad) -> bool:
+        """An obstacle across `actor`'s flight in `offending` after which the solution still
+        works and `bad` no longer holds of the offending action: adopted, True; or False."""
+        blocker = self.domain.blocker
+        if blocker is None or actor not in offending.trace.names:
+            return False
+        trace = offending.trace
+        contact = next((c.time for c in trace.contacts if actor in (c.a, c.b)), None)
+        end = int(contact / trace.dt) if contact is not None else trace.states.shape[0]
+        path = trace.states[:end, trace.index(actor), :]
+        name = f"obstacle{len(self.obstacles) + 1}"
+        for back in backs:
+            at = self.back_along(path, back)
+            if at is None:
+                continue
+            x, y, vx, vy = at
+            angle = math.degrees(math.atan2(vy, vx)) + 90.0
+            angle = (angle + 90.0) % 180.0 - 90.0
+            obstacle = PlacedObject(name, "obstacle", blocker, None, round(x, 5), round(y, 5), round(angle, 3), self.domain.blocker_length, self.domain.blocker_thickness)
+            layout = attrs.evolve(self.layout, objects=self.layout.objects + (obstacle,))
+            if not placing.consistent(layout, self.parameters, {name}):
+                continue
+            trial = self.simulate(layout, solution.action)
+            if not trial.fidelity.valid:
+                continue
+            if bad(self.simulate(layout, offending.action)):
+                continue
+            self.layout = layout
+            self.entry = {**self.entry, name: 0}
+            self.obstacles.append(f"{name} across the flight of {offending.label}, {back:g} back")
+            return True
+        return False
+
+    def back_along(self, path, distance: float):
+        """(x, y, vx, vy) in layout units `distance` back along `path` from its end."""
+        travelled = 0.0
+        rows = [row for row in path if not math.isnan(row[0])]
+        for later, earlier in zip(reversed(rows), list(reversed(rows))[1:]):
+            travelled += math.hypot(later[0] - earlier[0], later[1] - earlier[1]) * self.scale
+            if travelled >= distance:
+                return earlier[0] * self.scale, earlier[1] * self.scale, earlier[3], earlier[4]
+        return None
+
+    def guard(self, solution: Attempt) -> None:
+        """Block shortcuts: actions at other objects than the first target that solve the
+        task, each with an obstacle that keeps the solution holding up, at most `shortcuts`."""
+        first = self.interactions[0].objects[1] if len(self.interactions[0].objects) > 1 else None
+        player = self.domain.vocabulary.player
+        actor = next((o.name for o in self.scenario.objects if o.term == player), None)
+        if self.domain.blocker is None or actor is None:
+            return
+        left = self.settings.shortcuts
+        for obj in self.layout.objects:
+            if left <= 0:
+                return
+            if obj.name == first or obj.name in self.frame.fixed:
+                continue
+            for label, action in self.domain.actions_at(self.level_of(self.layout), obj.name):
+                attempt = attrs.evolve(self.simulate(self.layout, action), label=label)
+                if not attempt.trace.solved or attempt.fidelity.valid:
+                    continue
+                left -= 1
+                saved = (self.layout, list(self.obstacles), dict(self.entry))
+                blocked = self.block(attempt, actor, solution, SHORTCUT_BACKS, lambda a: a.trace.solved and not a.fidelity.valid)
+                if blocked and not self.holds_up(solution, self.layout):
+                    self.layout, self.obstacles, self.entry = saved
+                break
+
+    def distract(self, solution: Attempt) -> list[str]:
+        """The domain's distractors, each kept only if the level still stands, the solution
+        still holds up, and it is no way to solve the task."""
+        added = []
+        for index in range(self.domain.distractor_count(self.rng, self.settings.distractors)):
+            for obj in self.domain.distractors(self.layout, index + 1, self.rng):
+                layout = attrs.evolve(self.layout, objects=self.layout.objects + (obj,))
+                if not placing.consistent(layout, self.parameters, {obj.name}):
+                    continue
+                if not self.simulate(layout, solution.action).fidelity.valid:
+                    continue
+                if not self.evaluator.run(lambda: self.domain.stability(self.level_of(layout)))[0]:
+                    continue
+                if not self.holds_up(solution, layout):
+                    continue
+                level = self.level_of(layout)
+                if any(self.play(level, action).trace.solved for _, action in self.domain.actions_at(level, obj.name)):
+                    continue
+                self.layout = layout
+                self.entry = {**self.entry, obj.name: 0}
+                added.append(obj.name)
+                break
+        return added

@@ -1,0 +1,63 @@
+"""The search's settings in one place: budgets, beams and the noise streams.
+
+Every number that bounds the one generation search (physc.generation.search) is a field
+of `SearchSettings`, with its default here and nowhere else; a domain that needs other
+values sets its own `search_settings` (PHYRE-like: the same; angrybirds: the same). The
+measurements that chose them are in docs/generation.md.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
+
+# Why a layout is given up (`Outcome.given_up`), in the order of the search's steps.
+NO_ACTION = "no candidate action"
+NOT_REALISED = "the sequence was not realised"
+FRAGILE = "the solution was too fragile"
+NOT_OBSTRUCTED = "a forbidden hit could not be blocked"
+OBSTRUCTED_FRAGILE = "the obstacles made the solution fragile"
+UNSTABLE = "the level did not stand"
+NOT_VALIDATED = "validation failed"
+
+
+@attrs.frozen
+class SearchSettings:
+    """What bounds the search of one placed layout."""
+
+    variants: int = 60
+    """Variants of stages simulated per layout at most (the budget of the stage search)."""
+    variants_per_stage: int = 12
+    """Variants tried per stage and parent at most, before the search backtracks."""
+    beam: int = 3
+    """Actions that realise a stage, kept for the next."""
+    screen: int = 4
+    """Candidate actions a changed first stage is tried with before the rest."""
+    places: int = 6
+    """Places offered along the path of each of the beam's first two actions."""
+    bodies: int = 3
+    """Bodies (kind, material, size) offered for a new object at each place."""
+    step: float = 0.3
+    """Layout units of travel between the places a target is offered along a path."""
+    gap: float = 0.02
+    """Layout units between a placed target and the actor that is to meet it."""
+    clear: float = 0.05
+    """Layout units a placed target keeps from where the prefix's bodies pass before the hit."""
+    moving: float = 0.25
+    """Trace units per second: an actor slower than this is offered no targets further on."""
+    settle: float = 0.3
+    """Seconds after a roll, slide or fall is recognised before its path is read for the next target."""
+    candidates: int = 3
+    """Working actions put through the noisy replays at most, per layout."""
+    centring_steps: int = 8
+    """Nudges tried each way around a fragile action (the domain's `nudged`)."""
+    obstacles: int = 6
+    """Obstacles tried per forbidden hit."""
+    shortcuts: int = 3
+    """Shortcuts (solving actions at other objects) blocked at most."""
+    distractors: int = 3
+    """Distractors added at most."""
+
+
+SETTINGS = SearchSettings()
