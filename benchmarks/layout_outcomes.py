@@ -21,7 +21,7 @@ import statistics
 from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
-from physc.domains.angrybirds.satisfy import NOT_REALISED
+from physc.generation.settings import NOT_REALISED
 from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze

@@ -14,7 +14,6 @@ from physc.compiler.qsr import joined
 from physc.domains.angrybirds.actions import candidate_shots
 from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.preferences import choose_concrete
-from physc.domains.angrybirds.satisfy import Attempt, Satisfier
 
 
 def draws(name: str, seeds=range(40)):
@@ -72,26 +71,6 @@ def test_joined_platforms_may_overlap_at_the_joint_and_nothing_else_may():
     assert overlap_depth(polygon(flat_points), polygon(ramp_points)) > 1e-3  # a mitred joint
     pairs = joined([ChosenRelation("MeetNW", "a", "b", ""), ChosenRelation("W", "a", "c", "")])
     assert pairs == {frozenset(("a", "b"))}
-
-
-def test_a_bird_breaking_cannot_hit_gets_a_platform_across_its_flight():
-    scenario = paper_scenarios()["R"]  # cannotHit(bird, pig, any)
-    offending = None
-    for seed in range(10):  # the first layout whose pig a direct shot reaches
-        satisfier = Satisfier(DOMAIN, scenario, pipeline("R", seed=seed).placed.layout)
-        for label, shot in candidate_shots(satisfier.objects["pig"]):
-            attempt = satisfier.simulate(shot)
-            if satisfier.bird_intrusions(attempt):
-                offending = attrs.evolve(attempt, label=label)
-                break
-        if offending is not None:
-            break
-    assert offending is not None, "a shot at the pig breaks cannotHit"
-    proposals = list(satisfier.obstruct_flight(offending))
-    assert proposals and all(d.startswith("pathObstructed(bird, pig)") for d, _ in proposals)
-    cleared = [satisfier.simulate(offending.shot, level) for _, level in proposals]
-    assert any(not satisfier.bird_intrusions(a) for a in cleared)
-    assert isinstance(cleared[0], Attempt) and fidelity(scenario, cleared[0].trace).total == 4
 
 
 def materials_drawn(name: str, seeds=range(30)):

@@ -1,6 +1,6 @@
 """The core a second domain is written on: compound bodies in both engines, the touch
 goal recognised, PHYRE's AUCCESS, the generic goal check (E0404), and the liesOnPath
-proposals of the generic action search."""
+placing of a stage's new objects by the one search."""
 
 from __future__ import annotations
 
@@ -14,7 +14,6 @@ from physc.backends.settings import EngineSettings
 from physc.compiler.concrete_layout import ChosenRelation, ConcreteLayout, PlacedObject
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.domains.simulated import auccess
-from physc.generation import on_path
 from physc.simulation.fidelity import Fidelity
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
@@ -118,7 +117,7 @@ def _placed(name, x, y, w, h, role="object", concrete="thing"):
     return PlacedObject(name, role, concrete, None, x, y, 0.0, w, h)
 
 
-def test_lies_on_path_moves_the_target_with_its_support_onto_the_actors_path():
+def test_the_next_target_goes_with_its_support_onto_the_actors_path():
     """A ball (the actor, rObj) falls at x = 2; the target resting on its ledge at x = 8 is moved,
     ledge and all, so that its top is under the path; the actor's own ledge does not move."""
     import numpy as np
@@ -142,16 +141,25 @@ def test_lies_on_path_moves_the_target_with_its_support_onto_the_actors_path():
     states[:, 0, 1] = np.linspace(5.5, 1.0, steps)
     trace = Trace(1 / 60, ("rObj",), {"rObj": "object"}, states)
     fidelity = Fidelity(1, 3, (), False, (0.1,))
-    parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
-    proposals = on_path.proposals(layout, scenario, trace, fidelity, parameters)
+    from physc.domains import load_domain
+    from physc.generation.attempt import Attempt
+    from physc.generation.placing import consistent
+    from physc.generation.search import Search
+
+    search = Search(load_domain("phyre"), scenario, layout, None, 0)
+    search.parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
+    search.scale = 1.0
+    stage = search.plan[1]
+    assert stage.start == 1 and set(stage.new) == {"green", "support_green"}
+    proposals = list(search.on_path(layout, scenario.interactions[1], stage, Attempt("", None, trace, fidelity)))
     assert proposals
     description, moved = proposals[0]
-    assert description.startswith("liesOnPath: green moved")
+    assert description.startswith("hit(rObj, green, above): green on its path")
     after = {o.name: o for o in moved.objects}
     assert after["green"].x == pytest.approx(2.0) and after["support_green"].x == pytest.approx(2.0)
     assert after["green"].y - after["support_green"].y == pytest.approx(0.6)  # still resting on it
     assert after["rObj"] == objects[0] and after["ledge"] == objects[1]  # the prefix never moves
-    assert all(on_path.consistent(m, parameters, {"green", "support_green"}) for _, m in proposals)
+    assert all(consistent(m, search.parameters, {"green", "support_green"}) for _, m in proposals)
 
 
 def test_a_selected_backend_plays_a_scene():

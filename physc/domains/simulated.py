@@ -17,10 +17,16 @@ does:
   `valid(level, action)`;
 * `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
   and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
-  its solutions).
+  its solutions);
+* optionally, for the search: `bodies`, `mass` and `friction` (the bodies a new object may
+  take, which the search chooses by the physics of its meeting), `actions_at` and
+  `blocker` (the actions aimed at an object, and the static bar that blocks forbidden
+  hits and shortcuts), `distractors`, `proposals` (the domain's own local changes), and
+  `search_settings`. A domain with a game of its own (angrybirds) overrides `play`
+  instead of writing `scene` and `rules`.
 
 Everything else is physc's: the search that makes a placed layout a task
-(physc.generation.search.ActionSearch, behind `satisfy`), the robustness replays,
+(physc.generation.search.Search, behind `satisfy`), the robustness replays,
 stability, the replays of `physc verify` and the evaluation's measurements
 (intended solvability, the random agent's accidental solvability and AUCCESS).
 """
@@ -72,7 +78,7 @@ class SimulatedDomain(Domain):
 
     trace_scale: float = 1.0
     """Layout lengths per length of the simulation (PHYRE: pixels per metre): how a
-    simulated path is read in the placed layout (physc.generation.on_path)."""
+    simulated path is read in the placed layout (physc.generation.placing)."""
 
     # ---- what the domain writes ---------------------------------------------------------
     @_no_default

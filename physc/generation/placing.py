@@ -85,7 +85,7 @@ class Frame:
             carried[s] = carried.get(s, 0) + 1
         roles = {o.name: o.role for o in layout.objects}
         concretes = {o.name: o.concrete for o in layout.objects}
-        own = {a: s for a, s in support_of.items() if roles.get(s) == "support" and carried[s] == 1}
+        own = {a: s for a, s in support_of.items() if roles.get(s) == "support" and carried[s] == 1 and concretes[s] not in GROUND}
         ground = {a for a, s in support_of.items() if concretes.get(s) in GROUND or s not in roles}
         ground |= {o.name for o in layout.objects if o.name not in support_of and abs(box(o)[1] - parameters.bottom) < 1e-3}
         ground = frozenset(ground)
