@@ -36,7 +36,7 @@ import attrs
 import numpy as np
 
 from physc import budget
-from physc.generation import choosing, placing, settings as reasons
+from physc.generation import choosing, placing, proposals, settings as reasons
 from physc.generation.attempt import Attempt, reaches
 from physc.generation.evaluator import Evaluator
 from physc.generation.guards import Guards
@@ -89,6 +89,7 @@ class Search(Robustness, Guards):
         self.variants_tried = 0
         self.screened: list[str] = []  # labels of the first stage's actions that came nearest
         self.failed: dict[int, Attempt] = {}  # stage → the best attempt of a variant that failed there
+        self.failed_layout: dict[int, object] = {}  # stage → the layout it failed in
 
     # ---- simulation ----------------------------------------------------------------------
     def level_of(self, layout):
@@ -221,6 +222,7 @@ class Search(Robustness, Guards):
             best = max(failed, key=lambda a: a.fidelity.score)
             if stage.index not in self.failed or best.fidelity.score > self.failed[stage.index].fidelity.score:
                 self.failed[stage.index] = best
+                self.failed_layout[stage.index] = layout
             if not parent.attempts and not self.screened:
                 self.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: self.settings.screen]]
         good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
@@ -260,12 +262,28 @@ class Search(Robustness, Guards):
                     if bodied.objects not in seen:
                         seen.add(bodied.objects)
                         yield ", ".join(x for x in (description, body_note) if x), bodied, lead
+        yield from self.repaired(parent, stage, seen)
+
+    def repaired(self, parent: Node, stage: Stage, seen: set, depth: int = 0):
+        """Local changes (proposals.py, then the domain's own) for the first interaction the
+        stage's best failed attempt missed; a change that comes nearer, but not all the way,
+        is changed in turn (up to `repair_depth` on top of one another)."""
         failed = self.failed.get(stage.index)
-        if failed is not None:
-            for description, layout in self.domain.proposals(parent.layout, self.scenario, failed, stage.start):
-                if layout.objects not in seen:
-                    seen.add(layout.objects)
-                    yield description, layout, 0
+        if failed is None:
+            return
+        base = parent.layout if depth == 0 else self.failed_layout.get(stage.index, parent.layout)
+        lead = next((j for j, a in enumerate(parent.attempts) if a.label == failed.label), 0)
+        changes = itertools.chain(
+            proposals.offered(self, base, failed, stage.start), self.domain.proposals(base, self.scenario, failed, stage.start)
+        )
+        for description, layout in itertools.islice(changes, self.settings.proposals):
+            if layout.objects in seen:
+                continue
+            seen.add(layout.objects)
+            yield description, layout, lead
+            if depth < self.settings.repair_depth and self.failed_layout.get(stage.index) is layout:  # nearer: change it further
+                yield from self.repaired(parent, stage, seen, depth + 1)
+                return
 
     def with_bodies(self, layout, parent: Node, stage: Stage, lead: int):
         """`layout` as it is, then with other bodies for the stage's new object that the

@@ -48,6 +48,10 @@ class SearchSettings:
     """Trace units per second: an actor slower than this is offered no targets further on."""
     settle: float = 0.3
     """Seconds after a roll, slide or fall is recognised before its path is read for the next target."""
+    proposals: int = 6
+    """Local changes offered per stage and changed layout (physc.generation.proposals)."""
+    repair_depth: int = 3
+    """Local changes on top of one another."""
     candidates: int = 3
     """Working actions put through the noisy replays at most, per layout."""
     centring_steps: int = 8

@@ -1,0 +1,178 @@
+"""Local changes for a stage that no variant realised: what kept an interaction from happening.
+
+When a stage's best attempt stops at an interaction of its own (not at the meeting with a
+new object, which placing.py and choosing.py answer), the search offers changes aimed at
+what the simulation shows was wrong, each a new layout that the stage then simulates:
+
+* `bounce(a, s, d)` did not happen: the surface turned a little either way (8°, 15°), or
+  mirrored when `a` bounced away from what it must hit next;
+* `fall(a, b)` did not happen: `a` at the edge of its support on the side it is pushed
+  to, or its support ending there; a body for `a` that falls more readily (lighter);
+* `roll`/`slide` did not happen: a body for the mover that the physics of its push favours
+  (lighter; for a slide, slipperier), the mover next to the surface it must move onto;
+* `destroy(a, b)` did not happen: a body for the attacker that brings more momentum;
+* the first hit did not happen: the target's own support no longer reaching out beyond it.
+
+Everything works on the placed layout; a change is offered only where every QSR of the
+chosen conjunction about what moved still holds.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.compiler.layout_rules import OPPOSITE, last_hit_on, pushes
+from physc.generation import choosing, placing
+from physc.generation.stages import prefix
+
+TURNS = (-8.0, 8.0, -15.0, 15.0)  # degrees a bounce surface is turned, tried in turn
+TILT = (5.0, 60.0)  # a turned bounce surface stays this inclined, in degrees
+EDGE_GAP = 0.02  # layout units a faller put at the edge of its support keeps from it
+SHORTEST = 0.64  # layout units a support cut to end at its faller keeps at least
+
+
+def offered(search, layout, failed, start: int):
+    """(description, layout) for the first interaction `failed` (the best failed attempt of a
+    stage beginning at `start`) did not realise."""
+    index = failed.fidelity.matched
+    interactions = search.interactions
+    if index >= len(interactions):
+        return
+    declared = interactions[index]
+    objects = {o.name: o for o in layout.objects}
+    if declared.name == "bounce":
+        after = interactions[index + 1] if index + 1 < len(interactions) else None
+        yield from turned(search, layout, objects, declared.objects[1], start, mirror=False)
+    elif declared.name == "fall":
+        yield from to_the_edge(search, layout, objects, declared.objects[0], index, start)
+        yield from bodies_for(search, layout, objects, declared.objects[0], "fall", start)
+    elif declared.name in ("roll", "slide"):
+        yield from bodies_for(search, layout, objects, declared.objects[0], declared.name, start)
+        yield from next_to(search, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
+    elif declared.name == "destroy":
+        yield from bodies_for(search, layout, objects, declared.objects[0], "destroy", start)
+    elif declared.name == "hit" and index == 0:
+        yield from exposed(search, layout, objects, declared, start)
+    elif declared.name == "hit" and index > 0 and interactions[index - 1].name == "bounce":
+        after = interactions[index - 1]
+        if after.objects[0] == declared.objects[0]:
+            yield from turned(search, layout, objects, after.objects[1], start, mirror=True)
+
+
+def _kept(search, layout, start: int, moved, resting=frozenset()):
+    return placing.consistent(prefix(layout, search.entry, start), search.parameters, moved, resting)
+
+
+def _with(layout, changed):
+    return attrs.evolve(layout, objects=tuple(changed.get(o.name, o) for o in layout.objects))
+
+
+def turned(search, layout, objects, name: str, start: int, mirror: bool):
+    """The bounce surface `name` turned a little either way (and, with `mirror`, tilted the
+    other way: a bounce off its underside then goes the other way)."""
+    surface = objects.get(name)
+    if surface is None:
+        return
+    angles = [surface.rotation + step for step in TURNS] + ([-surface.rotation] if mirror else [])
+    for angle in angles:
+        if not TILT[0] <= abs(angle) <= TILT[1]:
+            continue
+        candidate = _with(layout, {name: attrs.evolve(surface, rotation=round(angle, 3))})
+        if _kept(search, candidate, start, {name}):
+            yield f"bounce: {name} turned to {angle:.1f}°", candidate
+
+
+def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
+    """`faller` at the edge of its support on the side its last hit pushes it to, then the
+    support cut to end just beyond it there."""
+    hit_at = next((i for i in reversed(range(index)) if search.interactions[i].name == "hit" and search.interactions[i].objects[1] == faller), None)
+    support = search.frame.support_of.get(faller)
+    if hit_at is None or faller not in objects or support not in objects or support not in search.frame.own_support.values():
+        return
+    players = {o.name for o in search.scenario.objects if o.term == search.domain.vocabulary.player}
+    layout_rules = search.domain.layout_rules
+    pushed = pushes(search.interactions, hit_at, players, getattr(layout_rules, "player_heading", None))
+    if pushed not in ("left", "right"):
+        return
+    block, ledge = objects[faller], objects[support]
+    sign = 1.0 if pushed == "right" else -1.0
+    left, _, right, _ = placing.box(ledge)
+    x = right - block.width / 2 - EDGE_GAP if sign > 0 else left + block.width / 2 + EDGE_GAP
+    if abs(x - block.x) >= 0.05:
+        candidate = _with(layout, {faller: attrs.evolve(block, x=round(x, 5))})
+        if _kept(search, candidate, start, {faller}, {faller}):
+            yield f"fall({faller}): at the {pushed} edge of {support}", candidate
+    b_left, _, b_right, _ = placing.box(block)
+    new_left, new_right = (left, b_right + EDGE_GAP) if sign > 0 else (b_left - EDGE_GAP, right)
+    if new_right - new_left >= SHORTEST and new_right - new_left < ledge.width - 0.05 and not ledge.rotation:
+        cut = attrs.evolve(ledge, x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
+        candidate = _with(layout, {support: cut})
+        if _kept(search, candidate, start, {support, faller}, {faller}):
+            yield f"fall({faller}): {support} ends at {faller}", candidate
+
+
+def bodies_for(search, layout, objects, name: str, act: str, start: int):
+    """`name` as each other body it may take that does `act` better, by the estimate of
+    physc.generation.choosing, best first."""
+    current = objects.get(name)
+    if current is None:
+        return
+    hit = last_hit_on(search.interactions, name)
+    actor = objects.get(hit.objects[0]) if hit is not None else None
+    domain = search.domain
+    actor_mass = domain.mass(actor) if actor is not None else None
+
+    def estimate(body) -> float:
+        return choosing.worth(act, domain.mass(body), domain.friction(body), actor_mass)
+
+    here = estimate(current)
+    for body in sorted(domain.bodies(current, search.scenario), key=estimate, reverse=True):
+        if estimate(body) <= here * (1 + 1e-6):
+            break
+        fitted = choosing.refitted(current, body, ())
+        candidate = _with(layout, {name: fitted})
+        if _kept(search, candidate, start, {name}, {name}):
+            material = f" {body.material}" if body.material else ""
+            yield f"{act}({name}): a{material} {body.concrete}", candidate
+
+
+def next_to(search, layout, objects, mover: str, surface: str, heading: str, start: int):
+    """`mover` along its support to just before the start of `surface`."""
+    if mover not in objects or surface not in objects or heading not in ("left", "right"):
+        return
+    block = objects[mover]
+    left, _, right, _ = placing.box(objects[surface])
+    gap = search.parameters.clearance + 0.02
+    x = left - block.width / 2 - gap if heading == "right" else right + block.width / 2 + gap
+    if abs(x - block.x) < 0.05:
+        return
+    candidate = _with(layout, {mover: attrs.evolve(block, x=round(x, 5))})
+    if _kept(search, candidate, start, {mover}, {mover}):
+        yield f"{mover} next to {surface}", candidate
+
+
+def exposed(search, layout, objects, declared, start: int):
+    """The first hit did not happen from an allowed side: the target's own support reaches
+    out beyond it on that side and shields it, so it gets shorter."""
+    target = declared.objects[1]
+    support = search.frame.own_support.get(target)
+    if target not in objects or support not in objects or objects[support].rotation:
+        return
+    left, _, right, _ = placing.box(objects[target])
+    s_left, _, s_right, _ = placing.box(objects[support])
+    for side in declared.directions:
+        if side == "left" and s_left < left - 0.1:
+            new_left, new_right = left - 0.05, s_right
+        elif side == "right" and s_right > right + 0.1:
+            new_left, new_right = s_left, right + 0.05
+        else:
+            continue
+        if new_right - new_left < SHORTEST:
+            continue
+        cut = attrs.evolve(objects[support], x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
+        candidate = _with(layout, {support: cut})
+        if _kept(search, candidate, start, {target, support}, {target}):
+            yield f"{declared.text}: {support} no longer shields {target}", candidate
+
+
+__all__ = ["offered", "OPPOSITE"]
