@@ -155,7 +155,8 @@ def _valid_for(s, action):
 
 
 def test_settings_are_one_value_with_the_defaults():
-    assert SearchSettings().beam == 3 and load_domain("angrybirds").search_settings == SearchSettings()
+    assert SearchSettings().beam == 3 and load_domain("angrybirds").search_settings is None  # physc's defaults
+    assert search("F").settings == SearchSettings()
 
 
 def _compile(*arguments, cwd=None):

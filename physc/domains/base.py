@@ -99,6 +99,8 @@ def provides(domain: Any, hook: str) -> bool:
     has only what it defines itself, a subclass also the base class's defaults."""
     if not hasattr(domain, hook):
         return False
+    if hook == "satisfy" and getattr(domain, "searched", False):
+        return True  # physc's one search makes its tasks (physc.domains.simulated)
     value = getattr(domain, hook)
     if value is None and hook in CAPABILITIES:  # layout_rules, layout_parameters: None is none
         return False

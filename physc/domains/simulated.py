@@ -26,7 +26,8 @@ does:
   instead of writing `scene` and `rules`.
 
 Everything else is physc's: the search that makes a placed layout a task
-(physc.generation.search.Search, behind `satisfy`), the robustness replays,
+(physc.generation.search.Search, which the layout loop runs for a domain that is
+`searched`), the robustness replays,
 stability, the replays of `physc verify` and the evaluation's measurements
 (intended solvability, the random agent's accidental solvability and AUCCESS).
 """
@@ -36,8 +37,7 @@ from __future__ import annotations
 import math
 import random
 
-from physc.domains.base import Domain, MissingCapability, _no_default, require
-from physc.generation.settings import SETTINGS, SearchSettings
+from physc.domains.base import Domain, MissingCapability, _no_default
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 from physc.simulation.scene import Scene, play
@@ -135,8 +135,9 @@ class SimulatedDomain(Domain):
         return level
 
     # ---- what the search asks, with defaults ----------------------------------------------
-    search_settings: SearchSettings = SETTINGS
-    """The search's budgets and beams (physc.generation.settings)."""
+    search_settings = None
+    """The search's budgets and beams, a physc.generation.settings.SearchSettings (None:
+    physc's defaults)."""
 
     def actions_at(self, level, name: str) -> list[tuple[str, object]]:
         """(label, action) aimed at the object `name`: what the guards try against forbidden
@@ -201,13 +202,15 @@ class SimulatedDomain(Domain):
         something that starts to tip slowly must not pass for standing)."""
         return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
 
-    def satisfy(self, scenario, layout, rng, validate: bool = True, accept: int | None = None):
-        """The one generation search (physc.generation.search.Search) with this domain's hooks."""
-        from physc.generation.search import Search
+    searched = True
+    """Physc's one generation search (physc.generation.search) makes this domain's tasks from
+    its hooks: the domain writes no `satisfy` (base.provides counts it as provided)."""
 
-        overrides_play = type(self).play is not SimulatedDomain.play  # then it needs no `scene`
-        require(self, tuple(h for h in HOOKS if not (overrides_play and h == "scene")), "generating a task")
-        return Search(self, scenario, layout, rng, (self.robustness_replays or 0) if accept is None else accept, validate).run()
+    def search_hooks(self) -> tuple[str, ...]:
+        """The hooks the search needs that this domain must write (E0703 before any work if it
+        lacks one): a domain with a game of its own overrides `play` and needs no `scene`."""
+        overrides_play = type(self).play is not SimulatedDomain.play
+        return tuple(h for h in HOOKS if not (overrides_play and h == "scene"))
 
     def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
         """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn

@@ -1,8 +1,8 @@
 """The layout loop: placed layouts, one after another, until one gives a task.
 
-Generation is a search over layouts. For each layout the placement passes offer, the
-domain's `satisfy` (angrybirds: the chain built along its simulation) says whether it gives
-a task, and if not, why it was given up and how robust its best solution was. The
+Generation is a search over layouts. For each layout the placement passes offer, physc's
+one search (search.py, for a SimulatedDomain; a domain of another kind: its own
+`satisfy`) says whether it gives a task, and if not, why it was given up and how robust its best solution was. The
 loop keeps the budgets (`--layouts`, and `--time-budget` through `physc.budget`),
 counts what each layout cost and why it was given up, reports progress, and when the
 budget ends without a robust task, tries the most robust fragile layouts again as
@@ -19,6 +19,8 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
+from physc.domains.base import require
+from physc.generation.search import Search
 from physc.generation.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
@@ -67,8 +69,14 @@ class LayoutLoop:
     def satisfy(self, layout, accept: int | None = None):
         """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a
         fallback), then the check in the second backend, if one is asked for."""
-        options = {} if accept is None else {"accept": accept}
-        result = self.domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
+        domain = self.domain
+        if getattr(domain, "searched", False):  # a SimulatedDomain: physc's one search, with its hooks
+            require(domain, domain.search_hooks(), "generating a task")
+            replays = domain.robustness_replays or 0
+            result = Search(domain, self.scenario, layout, self.rng, replays if accept is None else accept, self.validate).run()
+        else:
+            options = {} if accept is None else {"accept": accept}
+            result = domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
         if result.satisfied and self.verify_backend is not None:
             result = self.cross_checked(result, accept)
         return result

@@ -42,6 +42,7 @@ from physc.generation.evaluator import Evaluator
 from physc.generation.guards import Guards
 from physc.generation.outcome import Outcome, Parts
 from physc.generation.robustness import Robustness
+from physc.generation.settings import SETTINGS
 from physc.generation.stages import Stage, introduced, prefix, stages
 from physc.simulation.fidelity import fidelity
 from physc.simulation.stopped import why_stopped
@@ -72,7 +73,7 @@ class Search(Robustness, Guards):
         self.rng = rng
         self.accept = accept
         self.validate = validate
-        self.settings = domain.search_settings
+        self.settings = domain.search_settings or SETTINGS
         self.parameters = domain.layout_parameters
         self.scale = domain.trace_scale
         self.frame = placing.Frame.of(layout, scenario, domain.layout_parameters)
