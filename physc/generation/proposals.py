@@ -8,8 +8,10 @@ what the simulation shows was wrong, each a new layout that the stage then simul
   mirrored when `a` bounced away from what it must hit next;
 * `fall(a, b)` did not happen: `a` at the edge of its support on the side it is pushed
   to, or its support ending there; a body for `a` that falls more readily (lighter);
-* `roll`/`slide` did not happen: a body for the mover that the physics of its push favours
-  (lighter; for a slide, slipperier), the mover next to the surface it must move onto;
+* `roll`/`slide` did not happen: the surface it must move onto (and the world beyond) brought
+  to the end of the one it rests on, level with it or a step down (a body set moving on one
+  platform must cross onto the next); a body for the mover that the physics of its push
+  favours (lighter; for a slide, slipperier); the mover next to the surface;
 * `destroy(a, b)` did not happen: a body for the attacker that brings more momentum;
 * the first hit did not happen: the target's own support no longer reaching out beyond it.
 
@@ -47,6 +49,7 @@ def offered(search, layout, failed, start: int):
         yield from to_the_edge(search, layout, objects, declared.objects[0], index, start)
         yield from bodies_for(search, layout, objects, declared.objects[0], "fall", start)
     elif declared.name in ("roll", "slide"):
+        yield from closer(search, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
         yield from bodies_for(search, layout, objects, declared.objects[0], declared.name, start)
         yield from next_to(search, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
     elif declared.name == "destroy":
@@ -134,6 +137,56 @@ def bodies_for(search, layout, objects, name: str, act: str, start: int):
         if _kept(search, candidate, start, {name}, {name}):
             material = f" {body.material}" if body.material else ""
             yield f"{act}({name}): a{material} {body.concrete}", candidate
+
+
+STEPS_DOWN = (0.0, 0.15)  # layout units the next surface's top is tried below the end of the one before
+SEAM = 0.02  # layout units left between a surface brought closer and the end of the one before
+
+
+def beyond(layout, cut: float, sign: float, fixed) -> set[str] | None:
+    """The objects wholly beyond `cut` along the heading `sign` (the ground and the player's
+    object aside); None if another object straddles the cut."""
+    names = set()
+    for o in layout.objects:
+        if o.concrete in placing.GROUND or o.role == "player":
+            continue
+        left, _, right, _ = placing.box(o)
+        near, far = (left, right) if sign > 0 else (-right, -left)
+        if near >= sign * cut - 1e-9:
+            names.add(o.name)
+        elif far > sign * cut + 1e-9:
+            return None
+    return names
+
+
+def closer(search, layout, objects, mover: str, surface: str, heading: str, start: int):
+    """`surface`, which `mover` must roll or slide onto from the support it rests on, and the
+    world beyond it, brought back to the end of that support: level with it, or a step down."""
+    support = search.frame.support_of.get(mover)
+    if heading not in ("left", "right") or support in (None, surface) or surface not in objects or support not in objects:
+        return
+    sign = 1.0 if heading == "right" else -1.0
+    s_left, _, s_right, s_top = placing.box(objects[support])
+    t_left, _, t_right, t_top = placing.box(objects[surface])
+    end, near = (s_right, t_left) if sign > 0 else (s_left, t_right)
+    gap = sign * (near - end)
+    if gap < SEAM + 0.05 and t_top <= s_top + 1e-6:
+        return
+    names = beyond(layout, end + sign * 1e-6, sign, search.frame.fixed)
+    if not names or surface not in names:
+        return
+    dx = -sign * (gap - SEAM)
+    for drop in STEPS_DOWN:
+        dy = (s_top - drop) - t_top
+        moved = {n: attrs.evolve(objects[n], x=round(objects[n].x + dx, 5), y=round(objects[n].y + dy, 5)) for n in names}
+        candidate = _with(layout, moved)
+        if _kept(search, candidate, start, set(names)):
+            step = f", {drop:g} lower" if drop else ", level"
+            yield f"{declared_text(mover, surface)}: {surface} and the world beyond brought to the end of {support}{step}", candidate
+
+
+def declared_text(mover: str, surface: str) -> str:
+    return f"{mover} onto {surface}"
 
 
 def next_to(search, layout, objects, mover: str, surface: str, heading: str, start: int):
