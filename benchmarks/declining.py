@@ -1,6 +1,6 @@
 """Whether gravity could give a chain's last ball the speed to destroy a small pig.
 
-The measurement behind "Why RRR rarely generates" (docs/generation.md). Two tables:
+The measurement behind "Why RRR rarely generates" (docs/generation-history.md). Two tables:
 
 1. A ball starts at rest 0.5 units down a surface declining at `theta` degrees, of a
    given length, and rolls onto a flat platform where a small pig stands 0.8 units

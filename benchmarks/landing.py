@@ -1,6 +1,6 @@
 """How far a block falling on a ball at rest sets it rolling, by where it lands.
 
-The measurement behind two choices of the angrybirds generator (docs/generation.md):
+The measurement behind two choices of the angrybirds generator (docs/generation-history.md):
 a block that falls on a block that then rolls is not round, and a fall onto a block
 that is to move next is aimed behind that block's centre. A block is dropped from
 `--height` units above a ball resting on a long flat platform, its centre off the

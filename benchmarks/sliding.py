@@ -1,6 +1,6 @@
 """Which blocks slide when the bird strikes them, and which tip over or break.
 
-The measurement behind the satisfier's slide repairs (docs/generation.md, "Which blocks
+The measurement behind the satisfier's slide repairs (docs/generation-history.md, "Which blocks
 slide"). A block rests on a long flat platform, `--distance`s from the slingshot; the
 bird is shot at a point of interest of the block on the low trajectory, at full stretch.
 Printed per block, material and place: how far the block travelled, how far it turned

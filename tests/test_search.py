@@ -168,3 +168,52 @@ def test_a_failure_says_what_the_furthest_simulation_shows(tmp_path):
     assert done.returncode == 3, done.stderr
     assert re.search(r"never `[^`]+` after them: (rBlock\d|pig|bird) [^;]*(units/s|did not|damage|nearer)", done.stderr), done.stderr
     assert not (tmp_path / "l.xml").exists()
+
+
+GAPPED = """
+scenario Gapped {
+    interactions {
+        hit(bird, rBlock, left) > roll(rBlock, surface, right) > hit(rBlock, sBlock, left)
+        > slide(sBlock, hSurface, right) > hit(sBlock, pig, left) > destroy(sBlock, pig)
+    }
+}
+"""
+
+
+def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own():
+    from middle_end import scenario_from_text
+
+    from physc.generation import placing, proposals
+
+    scenario = scenario_from_text(GAPPED)  # no cannotFall: surface and hSurface need not touch
+    domain = load_domain("angrybirds")
+    for seed in range(10):
+        layout = Pipeline(domain, scenario, seed).placed.layout
+        s = Search(domain, scenario, layout, random.Random(seed), 6)
+        objects = {o.name: o for o in layout.objects}
+        _, _, end, top = placing.box(objects[s.frame.support_of["sBlock"]])
+        near, _, _, next_top = placing.box(objects["hSurface"])
+        if near - end > 0.2:
+            break
+    offered = list(proposals.closer(s, layout, objects, "sBlock", "hSurface", "right", 0))
+    assert offered, "a gap of more than 0.2 units before hSurface is closed"
+    for description, changed in offered:
+        moved = {o.name: o for o in changed.objects}
+        left, _, _, new_top = placing.box(moved["hSurface"])
+        assert left - end == pytest.approx(proposals.SEAM, abs=1e-4)
+        assert top - new_top in (pytest.approx(0.0, abs=1e-4), pytest.approx(0.15, abs=1e-4))
+        # What rests beyond moved with it; what came before did not.
+        assert moved["pig"].x - objects["pig"].x == pytest.approx(moved["hSurface"].x - objects["hSurface"].x, abs=1e-4)
+        assert moved["rBlock"] == objects["rBlock"] and moved["sBlock"] == objects["sBlock"]
+
+
+def test_a_bounce_surface_is_turned_within_its_tilt():
+    from physc.generation import proposals
+
+    s = search("B", seed=0)
+    objects = {o.name: o for o in s.layout.objects}
+    offered = list(proposals.turned(s, s.layout, objects, "iSurface", 0, mirror=True))
+    assert offered
+    for description, changed in offered:
+        angle = next(o for o in changed.objects if o.name == "iSurface").rotation
+        assert proposals.TILT[0] <= abs(angle) <= proposals.TILT[1] and "turned" in description

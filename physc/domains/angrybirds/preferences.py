@@ -13,7 +13,7 @@ block; FR's and SFR's when the block falling on it was drawn square or triangle)
 large circle: damage grows with the attacker's mass, and an ice circleSmall (0.10) must
 reach a small pig at 3.4 units/s to kill it, an ice circle (0.33) at 1.1. (Evaluation
 seeds 0–29: SR 24 → 26 tasks, fallbacks 7 → 5, noisy intended solvability 0.87 → 0.93;
-FR 30 as before, 0.89 → 0.92; docs/generation.md.)
+FR 30 as before, 0.89 → 0.92; docs/generation-history.md.)
 
 A pig at the end of a chain is small. Its destroyer is a block the bird does not
 hit itself: the bird's momentum (0.545 × at most 10) has passed through at least
@@ -47,7 +47,7 @@ falling ball rolls off the top of the ball it lands on and hardly moves it (a wo
 square dropped 2.5 units behind the centre of an ice ball moves it 2.21 units, a
 wooden circle 0.58; benchmarks/landing.py).
 
-Other preferences were measured and dropped (docs/generation.md): a small pig for
+Other preferences were measured and dropped (docs/generation-history.md): a small pig for
 every block attacker, the bird's direct targets included (R needed 10.9 instead of
 7.6 layouts per task), square sliders (S lost 4 of 30 tasks), and fixed materials
 along a chain (no gain).
