@@ -6,9 +6,12 @@ arriving actor brings, instead of drawn before any simulation. A collision gives
 target at most (1 + e)·m₁/(m₁ + m₂) of the hitter's speed, so what the target must do next
 decides which body is best:
 
-* to roll, fall or hit on: as fast as it can start, a lighter body (speed u);
-* to slide on: as far as it can go, u²/μ, a lighter or slipperier body;
-* to destroy the goal: the momentum it brings, m₂·u, a heavier one.
+* to roll or hit on: as fast as it can start, a lighter body (speed u);
+* to slide on, or be pushed off its ledge to fall: as far as it can go, u²/μ, a lighter or
+  slipperier body;
+* to destroy the goal straight away, with no motion of its own between: the momentum it
+  brings, m₂·u, a heavier one. (What must first fall or roll is chosen for that: a fall's
+  speed comes from its height, whatever its mass.)
 
 The domain says what bodies an object may take and their masses and frictions
 (`SimulatedDomain.bodies`, `mass`, `friction`); the search simulates the best few and keeps
@@ -26,12 +29,14 @@ from physc.generation.stages import prefix
 
 
 def next_act(interactions, name: str, start: int) -> str | None:
-    """What `name` does next as an actor from interaction `start` on: "destroy" if it
-    destroys something before it stops acting, else the first term it acts in."""
+    """What `name` does next as an actor from interaction `start` on: the first motion it
+    makes (roll, slide, fall: what its push must give it), else "destroy" if it destroys
+    something, else the first term it acts in."""
     acts = [t.name for t in interactions[start:] if t.objects and t.objects[0] == name]
     if not acts:
         return None
-    return "destroy" if "destroy" in acts else next((a for a in acts if a != "hit"), acts[0])
+    motion = next((a for a in acts if a not in ("hit", "destroy")), None)
+    return motion or ("destroy" if "destroy" in acts else acts[0])
 
 
 def worth(act: str, mass: float, friction: float, actor_mass: float | None) -> float:
@@ -40,7 +45,7 @@ def worth(act: str, mass: float, friction: float, actor_mass: float | None) -> f
     share = 1.0 if actor_mass is None else actor_mass / (actor_mass + mass)
     if act == "destroy":
         return mass * share
-    if act == "slide":
+    if act in ("slide", "fall"):  # it must travel (to the edge, for a fall) against its friction
         return share * share / max(friction, 1e-3)
     return share
 

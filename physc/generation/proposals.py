@@ -90,7 +90,7 @@ def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
     support cut to end just beyond it there."""
     hit_at = next((i for i in reversed(range(index)) if search.interactions[i].name == "hit" and search.interactions[i].objects[1] == faller), None)
     support = search.frame.support_of.get(faller)
-    if hit_at is None or faller not in objects or support not in objects or support not in search.frame.own_support.values():
+    if hit_at is None or faller not in objects or support not in objects or objects[support].concrete in placing.GROUND:
         return
     players = {o.name for o in search.scenario.objects if o.term == search.domain.vocabulary.player}
     layout_rules = search.domain.layout_rules
@@ -105,13 +105,26 @@ def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
         candidate = _with(layout, {faller: attrs.evolve(block, x=round(x, 5))})
         if _kept(search, candidate, start, {faller}, {faller}):
             yield f"fall({faller}): at the {pushed} edge of {support}", candidate
+    cut = ledge_ends_at(search, layout, objects, faller, support, pushed, start)
+    if cut is not None:
+        yield f"fall({faller}): {support} ends at {faller}", cut
+
+
+def ledge_ends_at(search, layout, objects, faller: str, support: str, pushed: str, start: int):
+    """`layout` with `faller`'s `support` ending just beyond it on the side it is `pushed` to
+    (the platform shorter at that end only; what else rests on it must still), or None: a
+    smaller push then takes it over the edge."""
+    block, ledge = objects.get(faller), objects.get(support)
+    if block is None or ledge is None or ledge.rotation or ledge.concrete in placing.GROUND:
+        return None
+    left, _, right, _ = placing.box(ledge)
     b_left, _, b_right, _ = placing.box(block)
-    new_left, new_right = (left, b_right + EDGE_GAP) if sign > 0 else (b_left - EDGE_GAP, right)
-    if new_right - new_left >= SHORTEST and new_right - new_left < ledge.width - 0.05 and not ledge.rotation:
-        cut = attrs.evolve(ledge, x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
-        candidate = _with(layout, {support: cut})
-        if _kept(search, candidate, start, {support, faller}, {faller}):
-            yield f"fall({faller}): {support} ends at {faller}", candidate
+    new_left, new_right = (left, b_right + EDGE_GAP) if pushed == "right" else (b_left - EDGE_GAP, right)
+    if not SHORTEST <= new_right - new_left < ledge.width - 0.05:
+        return None
+    cut = attrs.evolve(ledge, x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
+    candidate = _with(layout, {support: cut})
+    return candidate if _kept(search, candidate, start, {support, faller}, {faller}) else None
 
 
 def bodies_for(search, layout, objects, name: str, act: str, start: int):

@@ -37,6 +37,7 @@ import numpy as np
 
 from physc import budget
 from physc.generation import choosing, placing, proposals, settings as reasons
+from physc.compiler.layout_rules import pushes
 from physc.generation.attempt import Attempt, reaches
 from physc.generation.evaluator import Evaluator
 from physc.generation.guards import Guards
@@ -326,6 +327,13 @@ class Search(Robustness, Guards):
             heading = self.heading_after(target, k + 1)
             behind = None if heading is None else (1.0 if heading == "left" else -1.0)
             places = list(placing.landings(actor_size, objects[target], rows, self.scale, behind))
+        pushed = None
+        if declared.name == "hit" and choosing.next_act(self.interactions, target, k + 1) == "fall" and target in self.frame.support_of:
+            falls = next((t for t in self.interactions[k + 1 :] if t.objects and t.objects[0] == target), None)
+            if falls is not None and falls.name == "fall":
+                players = {o.name for o in self.scenario.objects if o.term == self.domain.vocabulary.player}
+                pushed = pushes(self.interactions, k, players, getattr(self.domain.layout_rules, "player_heading", None))
+                pushed = pushed if pushed in ("left", "right") else None
         for step, x, y in places:
             moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, self.frame)
             if moved is None:
@@ -336,7 +344,13 @@ class Search(Robustness, Guards):
             if not placing.consistent(prefix(moved, self.entry, stage.start), self.parameters, members, members):
                 continue
             where = next(o for o in changed if o.name == target)
-            yield f"{declared.text}: {target} on its path, at ({where.x:.2f}, {where.y:.2f})", moved
+            description = f"{declared.text}: {target} on its path, at ({where.x:.2f}, {where.y:.2f})"
+            if pushed is not None:  # it falls next: its ledge ending at it first, so that the push takes it over
+                support = self.frame.support_of[target]
+                edged = proposals.ledge_ends_at(self, moved, {o.name: o for o in moved.objects}, target, support, pushed, stage.start)
+                if edged is not None:
+                    yield f"{description}, {support} ending at it", edged
+            yield description, moved
 
     def heading_after(self, name: str, index: int) -> str | None:
         """The way `name` next rolls or slides, from interaction `index` on."""
