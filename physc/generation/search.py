@@ -217,7 +217,7 @@ class Search(Robustness, Guards):
         seconds = self.horizon(parent, stage)
         for j, (label, action) in enumerate(actions):
             attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
-            (good if reaches(attempt, stage.end, total) else failed).append(attempt)
+            (good if reaches(attempt, stage.end, total) and self.sets_up(attempt, stage.end) else failed).append(attempt)
             if j + 1 == screen and not good:
                 break  # those most likely to have missed it: so will the rest, mostly
         if failed:
@@ -229,6 +229,22 @@ class Search(Robustness, Guards):
                 self.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: self.settings.screen]]
         good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
         return tuple(good[: self.settings.beam]) or None
+
+    def sets_up(self, attempt: Attempt, end: int) -> bool:
+        """Whether `attempt` leaves the next stage something to place its new object on: the
+        actor of the interaction after the first `end` comes down (by half its height) when
+        it is to fall, and still moves when it is to hit; a stage whose attempts do not is a
+        dead end, however its own interactions went."""
+        if end >= len(self.interactions) or not end:
+            return True
+        term = self.interactions[end]
+        actor = term.objects[0]
+        objects = {o.name: o for o in self.layout.objects}
+        if term.name not in ("fall", "hit") or actor not in objects or actor not in attempt.trace.names:
+            return True
+        if term.name == "fall":
+            return self.promise(attempt, end) * self.scale >= objects[actor].height / 2
+        return self.promise(attempt, end) >= self.settings.moving
 
     def promise(self, attempt: Attempt, end: int) -> float:
         """How well `attempt` sets up the interaction after the first `end`: how far its actor
