@@ -21,6 +21,7 @@ import statistics
 from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
+from physc.generation import search
 from physc.generation.settings import NOT_REALISED
 from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
@@ -34,6 +35,8 @@ class Watched:
     """The domain, with every layout's outcome noted: (why it was given up, how many
     interactions its best simulation realised in order)."""
 
+    searched = False  # the layout loop calls `satisfy` below, which runs physc's search
+
     def __init__(self, domain):
         self.domain = domain
         self.outcomes: list[tuple[str, int]] = []
@@ -42,7 +45,7 @@ class Watched:
         return getattr(self.domain, name)
 
     def satisfy(self, *args, **kwargs):
-        result = self.domain.satisfy(*args, **kwargs)
+        result = search.satisfy(self.domain, *args, **kwargs)
         self.outcomes.append(("" if result.satisfied else result.given_up, result.best))
         return result
 

@@ -21,6 +21,8 @@ class Scripted:
     placement) is given up with `nearest[i]` replays passed, and a second try of layout i
     succeeds, passing works[i] replays, when `accept` is at most that."""
 
+    searched = False  # its own `satisfy`, not physc's search
+
     def __init__(self, nearest, works=None):
         self.nearest = nearest
         self.works = works or {}

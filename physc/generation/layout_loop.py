@@ -19,8 +19,7 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
-from physc.domains.base import require
-from physc.generation.search import Search
+from physc.generation import search
 from physc.generation.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
@@ -71,9 +70,7 @@ class LayoutLoop:
         fallback), then the check in the second backend, if one is asked for."""
         domain = self.domain
         if getattr(domain, "searched", False):  # a SimulatedDomain: physc's one search, with its hooks
-            require(domain, domain.search_hooks(), "generating a task")
-            replays = domain.robustness_replays or 0
-            result = Search(domain, self.scenario, layout, self.rng, replays if accept is None else accept, self.validate).run()
+            result = search.satisfy(domain, self.scenario, layout, self.rng, self.validate, accept)
         else:
             options = {} if accept is None else {"accept": accept}
             result = domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)

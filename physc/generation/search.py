@@ -36,6 +36,7 @@ import attrs
 import numpy as np
 
 from physc import budget
+from physc.domains.base import require
 from physc.generation import choosing, placing, proposals, settings as reasons
 from physc.compiler.layout_rules import pushes
 from physc.generation.attempt import Attempt, reaches
@@ -50,6 +51,14 @@ from physc.simulation.stopped import why_stopped
 
 ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is not met on the path (what it moves on, or what it already met)
 KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
+
+
+def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | None = None) -> Outcome:
+    """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
+    or why not; `accept`: the noisy replays a solution must pass (default: all of them)."""
+    require(domain, domain.search_hooks(), "generating a task")
+    replays = domain.robustness_replays or 0
+    return Search(domain, scenario, layout, rng, replays if accept is None else accept, validate).run()
 
 
 @attrs.frozen
