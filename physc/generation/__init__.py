@@ -1,2 +1,3 @@
-"""Generation: from placed layouts to a task, whatever the domain (the layout loop, its
-budgets and fallbacks). The domain supplies the strategy that satisfies one layout."""
+"""Generation: from placed layouts to a task, whatever the domain. The one search
+(search.py) makes a placed layout a task with a domain's hooks; the layout loop
+(layout_loop.py) runs it over layouts, with the budgets and fallbacks."""
