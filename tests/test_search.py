@@ -61,23 +61,23 @@ def test_a_shelf_enters_with_the_first_ball_on_it():
 
 def test_a_stage_scene_holds_only_what_has_entered():
     s = search("SRF")
-    first = {o.name for o in prefix(s.layout, s.entry, 0).objects}
+    first = {o.name for o in prefix(s.placed, s.entry, 0).objects}
     assert "sBlock" in first and "pig" not in first and "rBlock" not in first
-    assert {o.name for o in prefix(s.layout, s.entry, 8).objects} == {o.name for o in s.layout.objects}
+    assert {o.name for o in prefix(s.placed, s.entry, 8).objects} == {o.name for o in s.placed.objects}
 
 
 def test_the_next_target_goes_on_its_actors_simulated_path():
     s = search("F", seed=2)
-    root = Node(s.layout, (), -1)
-    attempts = s.realised(s.layout, root, s.plan[0])
+    root = Node(s.placed, (), -1)
+    attempts = s.realised(s.placed, root, s.plan[0])
     assert attempts, "F seed 2's first stage is realised as placed"
-    parent = Node(s.layout, attempts, 0)
+    parent = Node(s.placed, attempts, 0)
     offered = list(s.variants(parent, s.plan[1]))
     placed = [v for v in offered if "on its path" in v[0]]
     assert placed, [d for d, _, _ in offered[:3]]
     # The target moved; nothing of the realised prefix did.
     description, layout, lead = placed[0]
-    before, after = {o.name: o for o in s.layout.objects}, {o.name: o for o in layout.objects}
+    before, after = {o.name: o for o in s.placed.objects}, {o.name: o for o in layout.objects}
     assert (after["pig"].x, after["pig"].y) != (before["pig"].x, before["pig"].y)
     assert all(after[n] == before[n] for n in ("bird", "fBlock"))
     assert s.realised(layout, parent, s.plan[1], lead)
@@ -106,12 +106,12 @@ def test_a_new_object_is_offered_the_bodies_its_next_act_favours():
     stage = s.plan[1]
     declared = s.interactions[stage.start]
     actor, target = declared.objects[0], declared.objects[1]
-    attempt = next(a for a in [s.simulate(s.layout, action) for _, action in s.domain.actions(s.level_of(s.layout), s.scenario)])
+    attempt = next(a for a in [s.simulate(s.placed, action) for _, action in s.domain.actions(s.level_of(s.placed), s.scenario)])
     act = choosing.next_act(s.interactions, target, stage.start + 1)
     assert (declared.name, act) == ("hit", "fall")  # pushed off, it falls onto the pig (and destroys it)
-    current = {o.name: o for o in s.layout.objects}
+    current = {o.name: o for o in s.placed.objects}
     worth = lambda body: choosing.worth(act, s.domain.mass(body), s.domain.friction(body), s.domain.mass(current[actor]))  # noqa: E731
-    offered = list(choosing.alternatives(s, s.layout, declared, stage, attempt))
+    offered = list(choosing.alternatives(s, s.placed, declared, stage, attempt))
     assert offered
     for note, layout in offered:
         body = next(o for o in layout.objects if o.name == target)
@@ -125,19 +125,20 @@ def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight():
     for seed in range(10):  # the first layout whose pig a direct shot reaches
         s = search("R", seed=seed)
         restriction = next(r for r in s.scenario.restrictions if r.name == "cannotHit")
-        offending = s.offending(restriction)
+        offending = s.offending(s.placed, restriction)
         if offending is not None:
             break
     assert offending is not None, "a shot at the pig breaks cannotHit"
     # Any action will do as "the solution" the obstacle must leave working: here, one whose
     # play is valid is not needed, so the check is against a shot that misses everything.
     solution = offending
-    before = len(s.layout.objects)
     s.simulate = _valid_for(s, solution.action)
-    assert s.block(offending, "bird", solution, (0.9, 1.3, 1.8, 2.4, 3.0), lambda a: guards.breaks(a, restriction))
-    obstacle = s.layout.objects[-1]
-    assert len(s.layout.objects) == before + 1 and obstacle.role == "obstacle" and obstacle.concrete == s.domain.blocker
-    assert s.obstacles and "across the flight" in s.obstacles[0]
+    blocked = s.block(s.placed, offending, "bird", solution, (0.9, 1.3, 1.8, 2.4, 3.0), lambda a: guards.breaks(a, restriction), 0)
+    assert blocked is not None
+    layout, note = blocked
+    obstacle = layout.objects[-1]
+    assert len(layout.objects) == len(s.placed.objects) + 1 and obstacle.role == "obstacle" and obstacle.concrete == s.domain.blocker
+    assert obstacle.name == "obstacle1" and "across the flight" in note
 
 
 def _valid_for(s, action):
@@ -211,8 +212,8 @@ def test_a_bounce_surface_is_turned_within_its_tilt():
     from physc.generation import proposals
 
     s = search("B", seed=0)
-    objects = {o.name: o for o in s.layout.objects}
-    offered = list(proposals.turned(s, s.layout, objects, "iSurface", 0, mirror=True))
+    objects = {o.name: o for o in s.placed.objects}
+    offered = list(proposals.turned(s, s.placed, objects, "iSurface", 0, mirror=True))
     assert offered
     for description, changed in offered:
         angle = next(o for o in changed.objects if o.name == "iSurface").rotation

@@ -29,67 +29,67 @@ def breaks(attempt: Attempt, restriction) -> bool:
 
 
 class Guards:
-    """The search's obstacles (mixed into physc.generation.search.Search)."""
+    """The search's obstacles and distractors (mixed into physc.generation.search.Search):
+    each step takes a layout and returns the layout it makes, with what it added."""
 
-    def obstruct(self, solution: Attempt) -> bool:
-        """Block every action at a restricted object that breaks its cannotHit; False when one
-        cannot be blocked."""
+    def obstruct(self, layout, solution: Attempt) -> tuple[object, list[str]] | None:
+        """`layout` with every action at a restricted object that breaks its cannotHit
+        blocked, and the obstacles' descriptions; None when one cannot be blocked."""
         player = self.domain.vocabulary.player
         players = {o.name for o in self.scenario.objects if o.term == player}
+        added: list[str] = []
         for restriction in self.scenario.restrictions:
             if restriction.name != "cannotHit" or restriction.objects[0] not in players:
                 continue
             for _ in range(self.settings.obstacles):
-                offending = self.offending(restriction)
+                offending = self.offending(layout, restriction)
                 if offending is None:
                     break
-                if not self.block(offending, restriction.objects[0], solution, BACKS, lambda a: breaks(a, restriction)):
-                    return False
-            if self.offending(restriction) is not None:
-                return False
-        return True
+                blocked = self.block(layout, offending, restriction.objects[0], solution, BACKS, lambda a: breaks(a, restriction), len(added))
+                if blocked is None:
+                    return None
+                layout, note = blocked
+                added.append(note)
+            if self.offending(layout, restriction) is not None:
+                return None
+        return layout, added
 
-    def offending(self, restriction) -> Attempt | None:
-        """An action at the restricted object that breaks the restriction."""
-        level = self.level_of(self.layout)
-        for label, action in self.domain.actions_at(level, restriction.objects[1]):
-            attempt = attrs.evolve(self.simulate(self.layout, action), label=label)
+    def offending(self, layout, restriction) -> Attempt | None:
+        """An action at the restricted object that breaks the restriction in `layout`."""
+        for label, action in self.domain.actions_at(self.level_of(layout), restriction.objects[1]):
+            attempt = attrs.evolve(self.simulate(layout, action), label=label)
             if breaks(attempt, restriction):
                 return attempt
         return None
 
-    def block(self, offending: Attempt, actor: str, solution: Attempt, backs, bad) -> bool:
-        """An obstacle across `actor`'s flight in `offending` after which the solution still
-        works and `bad` no longer holds of the offending action: adopted, True; or False."""
+    def block(self, layout, offending: Attempt, actor: str, solution: Attempt, backs, bad, count: int):
+        """(`layout` with an obstacle across `actor`'s flight in `offending` after which the
+        solution still works and `bad` no longer holds of the offending action, its
+        description), or None."""
         blocker = self.domain.blocker
         if blocker is None or actor not in offending.trace.names:
-            return False
+            return None
         trace = offending.trace
         contact = next((c.time for c in trace.contacts if actor in (c.a, c.b)), None)
         end = int(contact / trace.dt) if contact is not None else trace.states.shape[0]
         path = trace.states[:end, trace.index(actor), :]
-        name = f"obstacle{len(self.obstacles) + 1}"
+        name = f"obstacle{count + 1}"
         for back in backs:
             at = self.back_along(path, back)
             if at is None:
                 continue
             x, y, vx, vy = at
-            angle = math.degrees(math.atan2(vy, vx)) + 90.0
-            angle = (angle + 90.0) % 180.0 - 90.0
+            angle = (math.degrees(math.atan2(vy, vx)) + 180.0) % 180.0 - 90.0  # across the flight
             obstacle = PlacedObject(name, "obstacle", blocker, None, round(x, 5), round(y, 5), round(angle, 3), self.domain.blocker_length, self.domain.blocker_thickness)
-            layout = attrs.evolve(self.layout, objects=self.layout.objects + (obstacle,))
-            if not placing.consistent(layout, self.parameters, {name}):
+            candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
+            if not placing.consistent(candidate, self.parameters, {name}):
                 continue
-            trial = self.simulate(layout, solution.action)
-            if not trial.fidelity.valid:
+            if not self.simulate(candidate, solution.action).fidelity.valid:
                 continue
-            if bad(self.simulate(layout, offending.action)):
+            if bad(self.simulate(candidate, offending.action)):
                 continue
-            self.layout = layout
-            self.entry = {**self.entry, name: 0}
-            self.obstacles.append(f"{name} across the flight of {offending.label}, {back:g} back")
-            return True
-        return False
+            return candidate, f"{name} across the flight of {offending.label}, {back:g} back"
+        return None
 
     def back_along(self, path, distance: float):
         """(x, y, vx, vy) in layout units `distance` back along `path` from its end."""
@@ -101,51 +101,54 @@ class Guards:
                 return earlier[0] * self.scale, earlier[1] * self.scale, earlier[3], earlier[4]
         return None
 
-    def guard(self, solution: Attempt) -> None:
-        """Block shortcuts: actions at other objects than the first target that solve the
-        task, each with an obstacle that keeps the solution holding up, at most `shortcuts`."""
+    def guard(self, layout, solution: Attempt, count: int) -> tuple[object, list[str]]:
+        """`layout` with shortcuts blocked (actions at other objects than the first target
+        that solve the task), each by an obstacle that keeps the solution holding up, at most
+        `shortcuts` tried; and the obstacles' descriptions. `count`: obstacles so far."""
         first = self.interactions[0].objects[1] if len(self.interactions[0].objects) > 1 else None
         player = self.domain.vocabulary.player
         actor = next((o.name for o in self.scenario.objects if o.term == player), None)
+        added: list[str] = []
         if self.domain.blocker is None or actor is None:
-            return
+            return layout, added
         left = self.settings.shortcuts
-        for obj in self.layout.objects:
+        for obj in layout.objects:
             if left <= 0:
-                return
+                break
             if obj.name == first or obj.name in self.frame.fixed:
                 continue
-            for label, action in self.domain.actions_at(self.level_of(self.layout), obj.name):
-                attempt = attrs.evolve(self.simulate(self.layout, action), label=label)
+            for label, action in self.domain.actions_at(self.level_of(layout), obj.name):
+                attempt = attrs.evolve(self.simulate(layout, action), label=label)
                 if not attempt.trace.solved or attempt.fidelity.valid:
                     continue
                 left -= 1
-                saved = (self.layout, list(self.obstacles), dict(self.entry))
-                blocked = self.block(attempt, actor, solution, SHORTCUT_BACKS, lambda a: a.trace.solved and not a.fidelity.valid)
-                if blocked and not self.holds_up(solution, self.layout):
-                    self.layout, self.obstacles, self.entry = saved
+                shortcut = lambda a: a.trace.solved and not a.fidelity.valid  # noqa: E731
+                blocked = self.block(layout, attempt, actor, solution, SHORTCUT_BACKS, shortcut, count + len(added))
+                if blocked is not None and self.holds_up(solution, blocked[0]):
+                    layout = blocked[0]
+                    added.append(blocked[1])
                 break
+        return layout, added
 
-    def distract(self, solution: Attempt) -> list[str]:
-        """The domain's distractors, each kept only if the level still stands, the solution
-        still holds up, and it is no way to solve the task."""
-        added = []
+    def distract(self, layout, solution: Attempt) -> tuple[object, list[str]]:
+        """`layout` with the domain's distractors, each kept only if the level still stands,
+        the solution still holds up, and it is no way to solve the task; and their names."""
+        added: list[str] = []
         for index in range(self.domain.distractor_count(self.rng, self.settings.distractors)):
-            for obj in self.domain.distractors(self.layout, index + 1, self.rng):
-                layout = attrs.evolve(self.layout, objects=self.layout.objects + (obj,))
-                if not placing.consistent(layout, self.parameters, {obj.name}):
+            for obj in self.domain.distractors(layout, index + 1, self.rng):
+                candidate = attrs.evolve(layout, objects=layout.objects + (obj,))
+                if not placing.consistent(candidate, self.parameters, {obj.name}):
                     continue
-                if not self.simulate(layout, solution.action).fidelity.valid:
+                if not self.simulate(candidate, solution.action).fidelity.valid:
                     continue
-                if not self.evaluator.run(lambda: self.domain.stability(self.level_of(layout)))[0]:
+                if not self.evaluator.run(lambda: self.domain.stability(self.level_of(candidate)))[0]:
                     continue
-                if not self.holds_up(solution, layout):
+                if not self.holds_up(solution, candidate):
                     continue
-                level = self.level_of(layout)
+                level = self.level_of(candidate)
                 if any(self.play(level, action).trace.solved for _, action in self.domain.actions_at(level, obj.name)):
                     continue
-                self.layout = layout
-                self.entry = {**self.entry, obj.name: 0}
+                layout = candidate
                 added.append(obj.name)
                 break
-        return added
+        return layout, added

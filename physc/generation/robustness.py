@@ -23,11 +23,10 @@ class Robustness:
     """The noisy replays of a search (mixed into physc.generation.search.Search, whose
     `simulate`, `domain`, `settings` and `accept` they use)."""
 
-    def robustness(self, attempt: Attempt, layout=None, stream: str = NOISE_STREAMS[0]) -> int:
-        """How many of the domain's noisy replays of the attempt realise the sequence
-        (`stream` names the noise drawn: another name, other replays)."""
+    def robustness(self, attempt: Attempt, layout, stream: str = NOISE_STREAMS[0]) -> int:
+        """How many of the domain's noisy replays of the attempt in `layout` realise the
+        sequence (`stream` names the noise drawn: another name, other replays)."""
         noise = random.Random(f"{stream}/{attempt.label}")
-        layout = layout if layout is not None else self.layout
         level = self.level_of(layout)
         passed = 0
         for _ in range(self.domain.robustness_replays or 0):
@@ -41,17 +40,17 @@ class Robustness:
         passing the replays it is checked with)."""
         return all(self.robustness(attempt, layout, stream) >= self.accept for stream in NOISE_STREAMS)
 
-    def centred(self, attempt: Attempt) -> Attempt | None:
+    def centred(self, attempt: Attempt, layout) -> Attempt | None:
         """The action in the middle of the run of working actions around `attempt` along the
         domain's `nudged` line (at most `centring_steps` each way), if that is another action
         and works; None otherwise (or when the domain draws no such line)."""
-        level = self.level_of(self.layout)
+        level = self.level_of(layout)
 
         def nudge(step: int) -> Attempt | None:
             action = self.domain.nudged(attempt.action, step)
             if action is None or not self.domain.valid(level, action):
                 return None
-            return attrs.evolve(self.simulate(self.layout, action), label=f"{attempt.label}, nudged {step:+d}")
+            return attrs.evolve(self.simulate(layout, action), label=f"{attempt.label}, nudged {step:+d}")
 
         steps = self.settings.centring_steps
         low = high = 0
@@ -65,8 +64,8 @@ class Robustness:
         centre = nudge(middle)
         return centre if centre is not None and centre.fidelity.valid else None
 
-    def robust(self, attempts) -> tuple[Attempt, int] | None:
-        """The first of `attempts` that realises the sequence and passes `accept` noisy
+    def robust(self, attempts, layout) -> tuple[Attempt, int] | None:
+        """The first of `attempts` (in `layout`) that realises the sequence and passes `accept` noisy
         replays (centred first if it fails some) and as many fresh ones, with the replays it
         passed; at most `candidates` working ones are put through the replays."""
         replays = self.domain.robustness_replays or 0
@@ -74,15 +73,15 @@ class Robustness:
             if not attempt.fidelity.valid:
                 continue
             self.tried += 1
-            passed = self.robustness(attempt)
+            passed = self.robustness(attempt, layout)
             if passed < replays:
-                centred = self.centred(attempt)
+                centred = self.centred(attempt, layout)
                 if centred is not None:
-                    again = self.robustness(centred)
+                    again = self.robustness(centred, layout)
                     if again > passed:
                         attempt, passed = centred, again
             if passed >= self.accept:
-                passed = min(passed, self.robustness(attempt, stream=NOISE_STREAMS[1]))
+                passed = min(passed, self.robustness(attempt, layout, NOISE_STREAMS[1]))
             if passed >= self.accept:
                 return attempt, passed
             self.nearest = max(self.nearest, passed)

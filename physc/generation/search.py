@@ -79,7 +79,7 @@ class Search(Robustness, Guards):
         self.domain = domain
         self.scenario = scenario
         self.interactions = scenario.interactions
-        self.layout = layout
+        self.placed = layout  # the layout as placed (the search's steps make new ones)
         self.rng = rng
         self.accept = accept
         self.validate = validate
@@ -91,8 +91,6 @@ class Search(Robustness, Guards):
         self.plan = stages(scenario.interactions, self.entry)
         self.evaluator = Evaluator(KEPT_SIMULATIONS)
         self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
-        self.steps: list[str] = []
-        self.obstacles: list[str] = []
         self.best = 0  # most interactions realised in order by one play
         self.furthest: Attempt | None = None
         self.nearest = 0  # most noisy replays passed by a working action given up as fragile
@@ -124,53 +122,51 @@ class Search(Robustness, Guards):
 
     # ---- the whole step ------------------------------------------------------------------
     def run(self) -> Outcome:
-        started = time.perf_counter()
-        if not self.domain.actions(self.level_of(self.layout), self.scenario):
+        if not self.domain.actions(self.level_of(self.placed), self.scenario):
             return self.give_up(reasons.NO_ACTION)
-        found = self.chain(Node(self.layout, (), -1), 0)
+        found = self.chain(Node(self.placed, (), -1), 0)
         if found is None:
             return self.give_up(reasons.NOT_REALISED)
-        self.layout = found.layout
-        self.steps.extend(found.steps)
-        chosen = self.robust(found.attempts)
+        layout = found.layout
+        chosen = self.robust(found.attempts, layout)
         if chosen is None:
             return self.give_up(reasons.FRAGILE if self.tried else reasons.NOT_REALISED)
         attempt, passed = chosen
-        before = len(self.obstacles)
-        if not self.obstruct(attempt):
+        obstructed = self.obstruct(layout, attempt)
+        if obstructed is None:
             return self.give_up(reasons.NOT_OBSTRUCTED)
-        if len(self.obstacles) > before:
-            again = min(self.robustness(attempt, stream=stream) for stream in reasons.NOISE_STREAMS)
+        layout, obstacles = obstructed
+        if obstacles:
+            again = min(self.robustness(attempt, layout, stream) for stream in reasons.NOISE_STREAMS)
             if again < self.accept:
                 self.nearest = max(self.nearest, again)
                 return self.give_up(reasons.OBSTRUCTED_FRAGILE)
             passed = min(passed, again)
-        self.guard(attempt)
-        if not self.evaluator.run(lambda: self.domain.stability(self.level_of(self.layout)))[0]:
+        layout, shortcuts = self.guard(layout, attempt, len(obstacles))
+        if not self.evaluator.run(lambda: self.domain.stability(self.level_of(layout)))[0]:
             return self.give_up(reasons.UNSTABLE)
         distracting = time.perf_counter()
-        distractors = self.distract(attempt)
+        layout, distractors = self.distract(layout, attempt)
         validating = time.perf_counter()
         validated, trace = None, attempt.trace
         if self.validate:
-            final = self.play(self.level_of(self.layout), attempt.action)
+            final = self.play(self.level_of(layout), attempt.action)
             if not final.fidelity.valid:
                 return self.give_up(reasons.NOT_VALIDATED)
             validated, trace = True, final.trace
         solution = self.domain.solution(attempt.label, attempt.action)
-        level = self.level_of(self.layout)
+        level = self.level_of(layout)
         parts = Parts(
             level=self.domain.with_solution(level, solution),
             solution=solution,
             trace=trace.sequence(),
             validated=validated,
             robustness=(passed, self.domain.robustness_replays or 0),
-            repairs=tuple(self.steps),
-            obstacles=tuple(self.obstacles),
+            repairs=found.steps,
+            obstacles=tuple(obstacles + shortcuts),
             distractors=tuple(distractors),
         )
         seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
-        del started
         return Outcome(True, self.evaluator.simulations, parts, seconds=seconds, best=self.best, stopped=self.stopped)
 
     @property
@@ -226,7 +222,7 @@ class Search(Robustness, Guards):
         seconds = self.horizon(parent, stage)
         for j, (label, action) in enumerate(actions):
             attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
-            (good if reaches(attempt, stage.end, total) and self.sets_up(attempt, stage.end) else failed).append(attempt)
+            (good if reaches(attempt, stage.end, total) and self.sets_up(attempt, stage.end, layout) else failed).append(attempt)
             if j + 1 == screen and not good:
                 break  # those most likely to have missed it: so will the rest, mostly
         if failed:
@@ -239,7 +235,7 @@ class Search(Robustness, Guards):
         good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
         return tuple(good[: self.settings.beam]) or None
 
-    def sets_up(self, attempt: Attempt, end: int) -> bool:
+    def sets_up(self, attempt: Attempt, end: int, layout) -> bool:
         """Whether `attempt` leaves the next stage something to place its new object on: the
         actor of the interaction after the first `end` comes down (by half its height) when
         it is to fall, and still moves when it is to hit; a stage whose attempts do not is a
@@ -248,7 +244,7 @@ class Search(Robustness, Guards):
             return True
         term = self.interactions[end]
         actor = term.objects[0]
-        objects = {o.name: o for o in self.layout.objects}
+        objects = {o.name: o for o in layout.objects}
         if term.name not in ("fall", "hit") or actor not in objects or actor not in attempt.trace.names:
             return True
         if term.name == "fall":
