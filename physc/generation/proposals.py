@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.layout_rules import OPPOSITE, last_hit_on, pushes
+from physc.compiler.layout_rules import last_hit_on, pushes
 from physc.generation import choosing, placing
 from physc.generation.stages import prefix
 
@@ -43,7 +43,6 @@ def offered(search, layout, failed, start: int):
     declared = interactions[index]
     objects = {o.name: o for o in layout.objects}
     if declared.name == "bounce":
-        after = interactions[index + 1] if index + 1 < len(interactions) else None
         yield from turned(search, layout, objects, declared.objects[1], start, mirror=False)
     elif declared.name == "fall":
         yield from to_the_edge(search, layout, objects, declared.objects[0], index, start)
@@ -57,9 +56,9 @@ def offered(search, layout, failed, start: int):
     elif declared.name == "hit" and index == 0:
         yield from exposed(search, layout, objects, declared, start)
     elif declared.name == "hit" and index > 0 and interactions[index - 1].name == "bounce":
-        after = interactions[index - 1]
-        if after.objects[0] == declared.objects[0]:
-            yield from turned(search, layout, objects, after.objects[1], start, mirror=True)
+        bounce = interactions[index - 1]  # it bounced, but away from what it must hit
+        if bounce.objects[0] == declared.objects[0]:
+            yield from turned(search, layout, objects, bounce.objects[1], start, mirror=True)
 
 
 def _kept(search, layout, start: int, moved, resting=frozenset()):
@@ -156,7 +155,7 @@ STEPS_DOWN = (0.0, 0.15)  # layout units the next surface's top is tried below t
 SEAM = 0.02  # layout units left between a surface brought closer and the end of the one before
 
 
-def beyond(layout, cut: float, sign: float, fixed) -> set[str] | None:
+def beyond(layout, cut: float, sign: float) -> set[str] | None:
     """The objects wholly beyond `cut` along the heading `sign` (the ground and the player's
     object aside); None if another object straddles the cut."""
     names = set()
@@ -185,7 +184,7 @@ def closer(search, layout, objects, mover: str, surface: str, heading: str, star
     gap = sign * (near - end)
     if gap < SEAM + 0.05 and t_top <= s_top + 1e-6:
         return
-    names = beyond(layout, end + sign * 1e-6, sign, search.frame.fixed)
+    names = beyond(layout, end + sign * 1e-6, sign)
     if not names or surface not in names:
         return
     dx = -sign * (gap - SEAM)
@@ -195,11 +194,7 @@ def closer(search, layout, objects, mover: str, surface: str, heading: str, star
         candidate = _with(layout, moved)
         if _kept(search, candidate, start, set(names)):
             step = f", {drop:g} lower" if drop else ", level"
-            yield f"{declared_text(mover, surface)}: {surface} and the world beyond brought to the end of {support}{step}", candidate
-
-
-def declared_text(mover: str, surface: str) -> str:
-    return f"{mover} onto {surface}"
+            yield f"{mover} onto {surface}: {surface} and the world beyond brought to the end of {support}{step}", candidate
 
 
 def next_to(search, layout, objects, mover: str, surface: str, heading: str, start: int):
@@ -240,5 +235,3 @@ def exposed(search, layout, objects, declared, start: int):
         if _kept(search, candidate, start, {target, support}, {target}):
             yield f"{declared.text}: {support} no longer shields {target}", candidate
 
-
-__all__ = ["offered", "OPPOSITE"]

@@ -90,7 +90,6 @@ class Search(Robustness, Guards):
         self.entry = introduced(layout, scenario.interactions)
         self.plan = stages(scenario.interactions, self.entry)
         self.evaluator = Evaluator(KEPT_SIMULATIONS)
-        self.redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
         self.best = 0  # most interactions realised in order by one play
         self.furthest: Attempt | None = None
         self.nearest = 0  # most noisy replays passed by a working action given up as fragile
@@ -199,12 +198,6 @@ class Search(Robustness, Guards):
                 return found
         return None
 
-    def horizon(self, parent: Node, stage: Stage) -> float | None:
-        """How long a stage's scene is simulated: the domain's whole run (None). A stage's
-        path must go on long enough for the next stage to read where its actor goes, which
-        a slow roll may take most of the run to show."""
-        return None
-
     def realised(self, layout, parent: Node, stage: Stage, lead: int = 0) -> tuple | None:
         """The attempts, best first, that realise every interaction up to the stage's end in
         the stage's scene of `layout`: the parent's actions (the lead's first), or at the
@@ -219,7 +212,10 @@ class Search(Robustness, Guards):
             actions = [c for c in actions if c[0] in self.screened] + [c for c in actions if c[0] not in self.screened]
             screen = len(self.screened) or len(actions)
         good, failed = [], []
-        seconds = self.horizon(parent, stage)
+        # The domain's whole run (it stops once all is at rest): a stage's path must go on long
+        # enough for the next stage to read where its actor goes, which a slow roll may take
+        # most of the run to show (PHYRE: a green ball reaching its ledge's end after 6 s).
+        seconds = None
         for j, (label, action) in enumerate(actions):
             attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
             (good if reaches(attempt, stage.end, total) and self.sets_up(attempt, stage.end, layout) else failed).append(attempt)
