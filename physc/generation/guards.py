@@ -35,11 +35,9 @@ class Guards:
     def obstruct(self, layout, solution: Attempt) -> tuple[object, list[str]] | None:
         """`layout` with every action at a restricted object that breaks its cannotHit
         blocked, and the obstacles' descriptions; None when one cannot be blocked."""
-        player = self.domain.vocabulary.player
-        players = {o.name for o in self.scenario.objects if o.term == player}
         added: list[str] = []
         for restriction in self.scenario.restrictions:
-            if restriction.name != "cannotHit" or restriction.objects[0] not in players:
+            if restriction.name != "cannotHit" or restriction.objects[0] not in self.players:
                 continue
             for _ in range(self.settings.obstacles):
                 offending = self.offending(layout, restriction)
@@ -106,8 +104,7 @@ class Guards:
         that solve the task), each by an obstacle that keeps the solution holding up, at most
         `shortcuts` tried; and the obstacles' descriptions. `count`: obstacles so far."""
         first = self.interactions[0].objects[1] if len(self.interactions[0].objects) > 1 else None
-        player = self.domain.vocabulary.player
-        actor = next((o.name for o in self.scenario.objects if o.term == player), None)
+        actor = next((o.name for o in self.scenario.objects if o.name in self.players), None)
         added: list[str] = []
         if self.domain.blocker is None or actor is None:
             return layout, added

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.layout_rules import last_hit_on, pushes
+from physc.compiler.layout_rules import last_hit_at, last_hit_on
 from physc.generation import choosing, placing
 from physc.generation.stages import prefix
 
@@ -87,14 +87,12 @@ def turned(search, layout, objects, name: str, start: int, mirror: bool):
 def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
     """`faller` at the edge of its support on the side its last hit pushes it to, then the
     support cut to end just beyond it there."""
-    hit_at = next((i for i in reversed(range(index)) if search.interactions[i].name == "hit" and search.interactions[i].objects[1] == faller), None)
+    hit_at = last_hit_at(search.interactions[:index], faller)
     support = search.frame.support_of.get(faller)
     if hit_at is None or faller not in objects or support not in objects or objects[support].concrete in placing.GROUND:
         return
-    players = {o.name for o in search.scenario.objects if o.term == search.domain.vocabulary.player}
-    layout_rules = search.domain.layout_rules
-    pushed = pushes(search.interactions, hit_at, players, getattr(layout_rules, "player_heading", None))
-    if pushed not in ("left", "right"):
+    pushed = search.pushed_by(hit_at)
+    if pushed is None:
         return
     block, ledge = objects[faller], objects[support]
     sign = 1.0 if pushed == "right" else -1.0

@@ -88,6 +88,7 @@ class Search(Robustness, Guards):
         self.scale = domain.trace_scale
         self.frame = placing.Frame.of(layout, scenario, domain.layout_parameters)
         self.entry = introduced(layout, scenario.interactions)
+        self.players = {o.name for o in scenario.objects if o.term == domain.vocabulary.player}  # the player's objects
         self.plan = stages(scenario.interactions, self.entry)
         self.evaluator = Evaluator(KEPT_SIMULATIONS)
         self.best = 0  # most interactions realised in order by one play
@@ -345,12 +346,10 @@ class Search(Robustness, Guards):
             behind = None if heading is None else (1.0 if heading == "left" else -1.0)
             places = list(placing.landings(actor_size, objects[target], rows, self.scale, behind))
         pushed = None
-        if declared.name == "hit" and choosing.next_act(self.interactions, target, k + 1) == "fall" and target in self.frame.support_of:
-            falls = next((t for t in self.interactions[k + 1 :] if t.objects and t.objects[0] == target), None)
-            if falls is not None and falls.name == "fall":
-                players = {o.name for o in self.scenario.objects if o.term == self.domain.vocabulary.player}
-                pushed = pushes(self.interactions, k, players, getattr(self.domain.layout_rules, "player_heading", None))
-                pushed = pushed if pushed in ("left", "right") else None
+        if declared.name == "hit" and target in self.frame.support_of:
+            acts_next = next((t for t in self.interactions[k + 1 :] if t.objects and t.objects[0] == target), None)
+            if acts_next is not None and acts_next.name == "fall":
+                pushed = self.pushed_by(k)
         for step, x, y in places:
             moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, self.frame)
             if moved is None:
@@ -368,6 +367,12 @@ class Search(Robustness, Guards):
                 if edged is not None:
                     yield f"{description}, {support} ending at it", edged
             yield description, moved
+
+    def pushed_by(self, k: int) -> str | None:
+        """The way ("left" or "right") the hit `interactions[k]` pushes its target, if known
+        (physc.compiler.layout_rules.pushes, with the domain's heading of the player's object)."""
+        pushed = pushes(self.interactions, k, self.players, getattr(self.domain.layout_rules, "player_heading", None))
+        return pushed if pushed in ("left", "right") else None
 
     def heading_after(self, name: str, index: int) -> str | None:
         """The way `name` next rolls or slides, from interaction `index` on."""

@@ -14,6 +14,7 @@ import random
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.angrybirds import world
+from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
 from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
@@ -45,12 +46,7 @@ class AngryBirds(SimulatedDomain):
     )
     blocker = "flatPlatform"
     blocker_length = OBSTACLE_LENGTH
-
-    @property
-    def blocker_thickness(self) -> float:
-        from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
-
-        return PLATFORM_THICKNESS
+    blocker_thickness = PLATFORM_THICKNESS
 
     @staticmethod
     def concretize(graph, scenario, rng):
