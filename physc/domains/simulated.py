@@ -181,14 +181,24 @@ class SimulatedDomain(Domain):
         return ()
 
     # ---- what physc does with them --------------------------------------------------------
-    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True) -> Trace:
+    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True, resume=None) -> Trace:
         """`level` played with `action` in the selected backend; judged against `scenario`'s
-        restrictions and declared bounces when one is given."""
+        restrictions and declared bounces when one is given; `resume`: a snapshot of an
+        earlier run to go on from (physc.simulation.snapshot), which a domain that overrides
+        `play` passes on to the run loop."""
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
         return play(
-            self.scene(level, action), self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise
+            self.scene(level, action), self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise,
+            resume,
         )
+
+    @property
+    def resumable(self) -> bool:
+        """Whether `play` goes on from a snapshot (its `resume`): the generic play does; a
+        domain that overrides `play` sets `resumable = True` once it passes `resume` on to
+        the run loop (otherwise the search replays every prefix from the start)."""
+        return type(self).play is SimulatedDomain.play
 
     def replay(self, level, solution, scenario, rng=None):
         action = self.action_of(solution)

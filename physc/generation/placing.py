@@ -176,18 +176,23 @@ def landings(faller_size, target, rows, scale: float, behind: float | None = Non
             yield step, x + share * reach, target.y
 
 
+def approach(trace, objects, sizes: dict, scale: float, margin: float, until: int | None = None, centre_only: str | None = None) -> int | None:
+    """The first row of `trace` (before `until`) at which one of its bodies comes within
+    `margin` of one of `objects` (their boxes), or None; a body is a disc of half its larger
+    side (`sizes`: name → (width, height)), but `centre_only`'s centre only has to stay out."""
+    first = None
+    rows = trace.states[:until, :, :2] * scale
+    for index, name in enumerate(trace.names):
+        radius, gap = (0.0, 0.0) if name == centre_only else (max(sizes.get(name, (0.0, 0.0))) / 2, margin)
+        x, y = rows[:, index, 0], rows[:, index, 1]
+        for obj in objects:
+            near = np.flatnonzero((np.abs(x - obj.x) - obj.width / 2 - radius - gap < 0) & (np.abs(y - obj.y) - obj.height / 2 - radius - gap < 0))
+            if len(near) and (first is None or near[0] < first):
+                first = int(near[0])
+    return first
+
+
 def clear(trace, row: int, changed, actor: str, sizes: dict, scale: float, margin: float) -> bool:
     """Whether the bodies of the prefix pass clear of the `changed` objects before `row` (the
     moment the actor is to meet them); the actor's own centre only has to stay out."""
-    for index, name in enumerate(trace.names):
-        path = trace.states[:row, index, :2] * scale
-        path = path[~np.isnan(path[:, 0])]
-        if not len(path):
-            continue
-        radius, gap = (0.0, 0.0) if name == actor else (max(sizes.get(name, (0.0, 0.0))) / 2, margin)
-        for obj in changed:
-            dx = np.abs(path[:, 0] - obj.x) - obj.width / 2 - radius - gap
-            dy = np.abs(path[:, 1] - obj.y) - obj.height / 2 - radius - gap
-            if ((dx < 0) & (dy < 0)).any():
-                return False
-    return True
+    return approach(trace, changed, sizes, scale, margin, row, actor) is None

@@ -47,6 +47,7 @@ from physc.generation.robustness import Robustness
 from physc.generation.settings import SETTINGS
 from physc.generation.stages import Stage, introduced, prefix, stages
 from physc.simulation.fidelity import fidelity
+from physc.simulation.snapshot import Snapshot
 from physc.simulation.stopped import why_stopped
 
 ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is not met on the path (what it moves on, or what it already met)
@@ -109,11 +110,13 @@ class Search(Robustness, Guards):
         trace = self.evaluator.run(lambda: self.domain.play(level, action, self.scenario, seconds))
         return Attempt("", action, trace, fidelity(self.scenario, trace))
 
-    def simulate(self, layout, action, seconds: float | None = None) -> Attempt:
-        """`action` played in `layout`'s level for `seconds` (default: the domain's), judged
-        against the scenario; run once while among the last KEPT_SIMULATIONS asked for."""
-        key = (seconds, layout.objects, action)
-        trace = self.evaluator.kept(key, lambda: self.domain.play(self.level_of(layout), action, self.scenario, seconds))
+    def simulate(self, layout, action, seconds: float | None = None, resume: Snapshot | None = None) -> Attempt:
+        """`action` played in `layout`'s level for `seconds` (default: the domain's), from the
+        snapshot `resume` if given, judged against the scenario; run once while among the
+        last KEPT_SIMULATIONS asked for."""
+        key = (seconds, layout.objects, action, resume is not None and resume.step)
+        options = {} if resume is None else {"resume": resume}
+        trace = self.evaluator.kept(key, lambda: self.domain.play(self.level_of(layout), action, self.scenario, seconds, **options))
         attempt = Attempt("", action, trace, fidelity(self.scenario, trace))
         self.best = max(self.best, attempt.fidelity.matched)
         if self.furthest is None or attempt.fidelity.score > self.furthest.fidelity.score:
@@ -218,8 +221,11 @@ class Search(Robustness, Guards):
         # most of the run to show (PHYRE: a green ball reaching its ledge's end after 6 s).
         seconds = None
         for j, (label, action) in enumerate(actions):
-            attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
-            (good if reaches(attempt, stage.end, total) and self.sets_up(attempt, stage.end, layout) else failed).append(attempt)
+            resume = self.snapshot(scene, parent, stage, order[j]) if parent.attempts else None
+            attempt = attrs.evolve(self.simulate(scene, action, seconds, resume), label=label)
+            if resume is not None and self.passes(attempt, stage, layout):  # confirmed from the start
+                attempt = attrs.evolve(self.simulate(scene, action, seconds), label=label)
+            (good if self.passes(attempt, stage, layout) else failed).append(attempt)
             if j + 1 == screen and not good:
                 break  # those most likely to have missed it: so will the rest, mostly
         if failed:
@@ -231,6 +237,30 @@ class Search(Robustness, Guards):
                 self.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: self.settings.screen]]
         good.sort(key=lambda a: (a.fidelity.score[:3], self.promise(a, stage.end)), reverse=True)
         return tuple(good[: self.settings.beam]) or None
+
+    def passes(self, attempt: Attempt, stage: Stage, layout) -> bool:
+        """Whether `attempt` realises the stage and sets up the next."""
+        return reaches(attempt, stage.end, len(self.interactions)) and self.sets_up(attempt, stage.end, layout)
+
+    def snapshot(self, scene, parent: Node, stage: Stage, source: Attempt) -> Snapshot | None:
+        """Where the stage's `scene` may go on from `source`, the parent's play of the same
+        action (physc.simulation.snapshot): cut `snapshot_lead` before a body of the prefix
+        first comes near a new object. None (a run from the start) when snapshots are off,
+        the scene differs from the parent's by more than the stage's new objects, or the cut
+        would save less than `snapshot_least`."""
+        settings = self.settings
+        if not (settings.snapshots and self.domain.resumable) or parent.stage < 0:
+            return None
+        before = prefix(parent.layout, self.entry, self.plan[parent.stage].start).objects
+        new = [o for o in scene.objects if o.name in stage.new]
+        if not new or set(before) != {o for o in scene.objects if o.name not in stage.new}:
+            return None
+        trace = source.trace
+        met = placing.approach(trace, new, {o.name: (o.width, o.height) for o in scene.objects}, self.scale, settings.clear)
+        step = (trace.steps - 1 if met is None else met) - int(round(settings.snapshot_lead / trace.dt))
+        if step * trace.dt < settings.snapshot_least or step >= trace.steps:
+            return None
+        return Snapshot.of(trace, step)
 
     def sets_up(self, attempt: Attempt, end: int, layout) -> bool:
         """Whether `attempt` leaves the next stage something to place its new object on: the

@@ -48,6 +48,14 @@ class SearchSettings:
     """Trace units per second: an actor slower than this is offered no targets further on."""
     settle: float = 0.3
     """Seconds after a roll, slide or fall is recognised before its path is read for the next target."""
+    snapshots: bool = True
+    """Whether a stage's variants go on from a snapshot of the parent's play (confirmed by a
+    full run when they pass; physc.simulation.snapshot) instead of replaying the prefix."""
+    snapshot_lead: float = 0.25
+    """Seconds before a body of the prefix first comes within `clear` of a new object that
+    the snapshot is cut."""
+    snapshot_least: float = 0.5
+    """Seconds of the prefix a snapshot must save (less: the variant is run in full)."""
     proposals: int = 6
     """Local changes offered per stage and changed layout (physc.generation.proposals)."""
     repair_depth: int = 3

@@ -14,7 +14,9 @@ hooks per simulator):
   every step), why a body leaves (the destruction's cause and author), and what its
   leaving does (a TNT's blast);
 * `finished`: the run is over before its time (everything at rest, the goal met);
-* `solved`: whether the recorded run met the domain's goal.
+* `solved`: whether the recorded run met the domain's goal;
+* `resume`: the run continues from a snapshot (physc.simulation.snapshot): the rules'
+  state as the events before it leave it (Science Birds: lives, the bird's checks).
 
 The loop is generic and hot: it runs once per simulated step (0.02 s of game time), so
 each hook is one call per step at most and the state rows are handed over as plain
@@ -29,6 +31,7 @@ import attrs
 import numpy as np
 
 from physc import budget
+from physc.simulation.snapshot import Snapshot
 from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, SeparationRecord
 
 
@@ -62,6 +65,10 @@ class RunRules:
         """Whether the run met the domain's goal (read once, after the run)."""
         return False
 
+    def resume(self, world, snapshot: Snapshot) -> None:
+        """The run goes on from `snapshot` (after `on_start`): set the state the events
+        before it leave (the default: the rules keep none)."""
+
 
 @attrs.frozen
 class Recording:
@@ -75,20 +82,28 @@ class Recording:
     destructions: tuple[DestructionRecord, ...]
 
 
-def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float) -> Recording:
+def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None) -> Recording:
     """Step `world` for `seconds` (or until `rules.finished`), recording the bodies in
-    `dynamic` and every contact, damage and destruction."""
+    `dynamic` and every contact, damage and destruction; from `resume`'s step on, if given
+    (physc.simulation.snapshot)."""
     index = {name: i for i, name in enumerate(dynamic)}
     steps = int(round(seconds / dt))
     states = np.full((steps, len(dynamic), 6), np.nan)
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
     rules.on_start(world)
-    for step in range(steps):
+    first, already = 0, frozenset()
+    if resume is not None:
+        first, already = _continued(world, dynamic, rules, resume, states, alive), resume.touching
+        contacts, separations = list(resume.contacts), list(resume.separations)
+        damage, destructions = list(resume.damage), list(resume.destructions)
+    for step in range(first, steps):
         budget.check()  # Ctrl-C and the time budget stop a run between steps
         world.step(dt)
         time = (step + 1) * dt
         for event in world.begun():
+            if already and step == first and frozenset((event.a, event.b)) in already:
+                continue  # touching at the snapshot already: no new contact
             record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
             contacts.append(record)
             rules.on_contact(world, record, damage, time)
@@ -115,3 +130,23 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
             states = states[: step + 1]
             break
     return Recording(states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions))
+
+
+def _continued(world, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]) -> int:
+    """`world` (built as at the start) put in `snapshot`'s state: its bodies restored, the
+    ones gone by then removed, the rows before it filled in (a body the snapshot lacks:
+    its pose at the start, at rest), the rules resumed. The step to go on from."""
+    first = min(snapshot.step, len(states))
+    gone = snapshot.gone
+    for i, name in enumerate(dynamic):
+        if name in snapshot.names:
+            states[:first, i] = snapshot.states[:first, snapshot.names.index(name)]
+            if name in gone:
+                world.remove(name)
+                alive.discard(name)
+            else:
+                world.restore(name, snapshot.state(name))
+        else:
+            states[:first, i] = (*world.state(name)[:3], 0.0, 0.0, 0.0)
+    rules.resume(world, snapshot)
+    return first

@@ -43,18 +43,20 @@ class Scene:
 
 
 def play(
-    scene: Scene, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True
+    scene: Scene, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
+    resume=None,
 ) -> Trace:
-    """`scene` run for `seconds` at most under `rules`, in the selected backend; with
-    `recognise`, the interactions recognised and the restrictions (`redirects`: the declared
-    bounces, see physc.simulation.recognise.violations) checked."""
+    """`scene` run for `seconds` at most under `rules`, in the selected backend (from the
+    snapshot `resume`, if given); with `recognise`, the interactions recognised and the
+    restrictions (`redirects`: the declared bounces, see physc.simulation.recognise.violations)
+    checked."""
     world = current().create_world(scene.gravity, scene.engine)
     for body in scene.bodies:
         world.add(body)
     for name, velocity in scene.velocities.items():
         world.set_velocity(name, *velocity)
     dynamic = scene.dynamic
-    recorded = run(world, dynamic, rules, seconds, scene.dt)
+    recorded = run(world, dynamic, rules, seconds, scene.dt, resume)
     trace = Trace(
         scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
         recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded),

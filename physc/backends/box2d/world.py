@@ -173,6 +173,17 @@ class Box2DWorld(ContactLog):
         body.angularVelocity = angular
         self._asleep_in_table.discard(name)
 
+    def restore(self, name: str, state) -> None:
+        """A body still in `state` was asleep (Box2D zeroes a sleeping body's velocity) and is
+        put back asleep: the solver then skips it until something touches it, as it did."""
+        x, y, angle, vx, vy, w = state
+        body = self.bodies[name]
+        body.transform = ((x, y), angle)
+        if vx or vy or w:
+            self.set_velocity(name, vx, vy, w)
+        else:
+            body.awake = False
+
     def mass(self, name: str) -> float:
         return self.bodies[name].mass
 

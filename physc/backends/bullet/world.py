@@ -193,7 +193,7 @@ class BulletWorld(ContactLog):
         bouncing = self._bouncing(pairs, events)
         if bouncing:  # once more from the start, with Box2D's restitution for those pairs
             for name, state in before.items():
-                self._restore(name, state)
+                self.restore(name, state)
             self._restitution(bouncing)
             pairs = self._substeps(before)
             self._restitution({name: self._dynamic[name].bounciness for name in bouncing})
@@ -243,8 +243,8 @@ class BulletWorld(ContactLog):
         for name, value in values.items():
             pybullet.changeDynamics(self._id[name], BODY_LINK, restitution=value, physicsClientId=self.client)
 
-    def _restore(self, name: str, state: tuple) -> None:
-        """Put a body back where and as it was (a step taken again)."""
+    def restore(self, name: str, state: tuple) -> None:
+        """Put a body back where and as it was (a step taken again, a snapshot)."""
         self._set_joints(name, state[:3], state[3:])
 
     def _touched(self, pairs: dict[tuple[int, int], tuple]) -> None:

@@ -201,6 +201,13 @@ class PymunkWorld(ContactLog):
         body.angular_velocity = angular
         body.activate() if body.body_type == pymunk.Body.DYNAMIC else None
 
+    def restore(self, name: str, state) -> None:
+        x, y, angle, vx, vy, w = state
+        body = self.bodies[name]
+        body.position, body.angle = (x, y), angle
+        self.space.reindex_shapes_for_body(body)
+        self.set_velocity(name, vx, vy, w)
+
     def mass(self, name: str) -> float:
         return self.bodies[name].mass
 

@@ -69,17 +69,19 @@ class AngryBirds(SimulatedDomain):
 
         return level_from_layout(layout)
 
-    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True):
+    resumable = True  # `play` passes a snapshot on to the game's run
+
+    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None):
         """The level played with the shot `action` (None: no shot), judged against the
-        scenario's restrictions and declared bounces."""
+        scenario's restrictions and declared bounces; from the snapshot `resume`, if given."""
         from physc.domains.angrybirds.game import Game
 
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
         game = Game(level)
         if not recognise:
-            return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0)
-        return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3)
+            return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0, resume=resume)
+        return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3, resume=resume)
 
     def actions(self, level, scenario) -> list:
         """The paper's candidate shots: at the points of interest of the first hit's target."""

@@ -131,6 +131,7 @@ class Game(RunRules):
         stop_at_rest: bool = True,
         invulnerable: float | None = None,
         settle_after_solved: float | None = None,
+        resume=None,
     ) -> Trace:
         """Run the level for `seconds`, with a shot at t = 0 or none.
 
@@ -139,7 +140,8 @@ class Game(RunRules):
         when the level loads. With `stop_at_rest` the run ends once everything has
         come to rest (and the bird is gone or still); with `settle_after_solved`, that
         many seconds after the last pig is destroyed, once nothing is falling (a fall
-        that began while the sequence ran is recognised where it lands)."""
+        that began while the sequence ran is recognised where it lands). `resume`: a
+        snapshot to go on from (physc.simulation.snapshot)."""
         rules = self.rules
         world = self.build()
         if invulnerable is None:
@@ -156,7 +158,7 @@ class Game(RunRules):
         self._stop_at_rest, self._resting_since = stop_at_rest, None
         self._bird_check_at = rules.bird_lifetime  # the next time the bird may be removed (ABBird.cs)
         self._bird_struck = False  # whether the bird has collided yet
-        recorded = run(world, dynamic, self, seconds, rules.dt)
+        recorded = run(world, dynamic, self, seconds, rules.dt, resume)
         return Trace(
             rules.dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
             recorded.damage, recorded.destructions, self._pigs, self._solved(recorded),
@@ -175,6 +177,23 @@ class Game(RunRules):
             self._bird_check_at = min(time + self.rules.bird_still_after, self.rules.bird_lifetime)
         if time > self._invulnerable:
             self._damage(world, contact, damage, time)
+
+    def resume(self, world, snapshot) -> None:
+        """The game's state as the events before `snapshot` leave it: every life less its
+        damage, whether the bird has struck, when it is next checked, when the last pig went."""
+        for record in snapshot.damage:
+            self.life[record.target] = record.life
+        self.spent = {name for name, life in self.life.items() if life <= 0} - {d.name for d in snapshot.destructions}
+        struck = next((c.time for c in snapshot.contacts if BIRD in (c.a, c.b)), None)
+        if struck is not None:
+            self._bird_struck = True
+            check = min(struck + self.rules.bird_still_after, self.rules.bird_lifetime)
+            while check <= snapshot.time + 1e-9 and check < self.rules.bird_lifetime:
+                check = min(check + self.rules.bird_still_every, self.rules.bird_lifetime)
+            self._bird_check_at = check
+        gone = {d.name: d.time for d in snapshot.destructions}
+        if self._pigs and set(self._pigs) <= set(gone):
+            self._solved_at = max(gone[p] for p in self._pigs)
 
     def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":

@@ -66,8 +66,22 @@ class BallAction:
     aimed_at: str = ""  # the candidate it came from (a point of interest of the first target)
 
     def unit(self) -> tuple[float, float, float]:
-        """The action as PHYRE's agents give it, in [0, 1]³ (action_mappers.py's BallScaler)."""
-        return (round(self.x / (SCENE - 1), 6), round(self.y / (SCENE - 1), 6), round((self.radius - 2) / 30, 6))
+        """The action as PHYRE's agents give it, in [0, 1]³ (action_mappers.py's BallScaler:
+        x = int(a·255), y likewise, r = round(2 + a·30)): for each whole pixel p the least
+        double a whose a·255 is p, so that PHYRE's truncation gives p back and its bounds test
+        (on a·255 before truncating) sees p itself. p/255 rounded, as before, came back a
+        pixel low for 125 of the 256 values."""
+        return (unit_of(self.x, SCENE - 1), unit_of(self.y, SCENE - 1), (self.radius - 2) / 30)
+
+
+def unit_of(pixel: float, scale: int) -> float:
+    """The least double a with int(a · scale) == pixel (a whole pixel, 0 ≤ pixel ≤ scale)."""
+    a = pixel / scale
+    while int(a * scale) < pixel:
+        a = math.nextafter(a, math.inf)
+    while a > 0 and int(math.nextafter(a, -math.inf) * scale) >= pixel:
+        a = math.nextafter(a, -math.inf)
+    return a
 
 
 @attrs.frozen

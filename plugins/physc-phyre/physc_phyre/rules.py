@@ -44,5 +44,13 @@ class GoalRules(RunRules):
         self.still = 0 if moving or self.held else self.still + 1
         return self.still >= STILL_STEPS
 
+    def resume(self, world, snapshot) -> None:
+        """Going on from a snapshot: the goal has held since the goal bodies last began
+        touching, if they touch then (a snapshot is cut while something still moves)."""
+        pair = frozenset(self.goal)
+        if pair in snapshot.touching:
+            since = max(c.time for c in snapshot.contacts if frozenset((c.a, c.b)) == pair)
+            self.held = int(round((snapshot.time - since) / snapshot.dt)) + 1
+
     def solved(self, recording) -> bool:
         return self.met

@@ -144,3 +144,18 @@ def test_the_scene_runs_in_box2d_with_phyres_step_and_iterations():
     assert DEFAULT_BACKEND == "box2d"
     created = load_backend("box2d").create_world(world.GRAVITY, world.ENGINE)  # Box2D's compiled constants are PHYRE's
     assert created.settings is world.ENGINE
+
+
+def test_every_pixel_and_radius_survives_phyres_scaling():
+    """An exported action read the way PHYRE's ball tier reads it (action_mappers.py:
+    x = int(a·255), y likewise, r = round(2 + a·30), bounds tested on a·255) is the same
+    ball, for every whole pixel and radius."""
+    from physc_phyre.level import BallAction
+
+    for p in range(256):
+        for r in (2, 17, 32):
+            a = BallAction(p, 255 - p, r).unit()
+            assert all(0.0 <= v <= 1.0 for v in a)
+            x, y, radius = a[0] * 255, a[1] * 255, 2 + a[2] * 30
+            assert (int(x), int(y), round(radius)) == (p, 255 - p, r)
+            assert (x, y) == (p, 255 - p)  # PHYRE's bounds test sees the pixel itself
