@@ -13,6 +13,7 @@ from pathlib import Path
 from physc import budget
 from physc.dataset import manifest, readme
 from physc.dataset.job import TaskJob, make
+from physc.domains import load_domain
 from physc.dsl import ast
 from physc.dsl.fmt import format_file
 from physc.dsl.frontend import analyze
@@ -27,6 +28,17 @@ def _finished(folder: Path, job: TaskJob, row: dict | None) -> bool:
     if row is None or row.get("settings") != job.settings:
         return False
     return all((folder / row[name]).is_file() for name in ("level", "task", "picture") if row.get(name))
+
+
+def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
+    """Each domain's files in its target world's own format (Domain.benchmark_files), from
+    the tasks generated."""
+    files: dict[str, bytes] = {}
+    for name in dict.fromkeys(row["domain"] for row in rows):
+        tasks = [(row, (folder / row["level"]).read_text(encoding="utf-8")) for row in rows if row["domain"] == name and row.get("level")]
+        if tasks:
+            files.update(load_domain(name).benchmark_files(tasks))
+    return files
 
 
 def sources(jobs: list[TaskJob]) -> dict[str, str]:
@@ -83,5 +95,8 @@ def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, 
     final = [rows[job.key] for job in jobs]
     manifest.write_jsonl(folder, final)
     manifest.write_parquet(folder, final)
+    for name, content in benchmark_files(folder, final).items():
+        ensure_folder((folder / name).parent)
+        write_atomic(folder / name, content)
     write_atomic(folder / README, readme.render(folder, jobs, final, sources(jobs), command))
     return final

@@ -229,6 +229,13 @@ class Domain(abc.ABC):
         none; `agent_plays`; optionally `auccess`). Default: {} (no agent: not measured)."""
         return {}
 
+    def benchmark_files(self, tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
+        """The files of the target world's own benchmark format that a dataset of this domain
+        holds beside physc's (`physc generate`; PHYRE: its TaskCollection, observations and
+        folds): {path relative to the dataset: contents}, from each generated task's manifest
+        row and level file (text), in the dataset's order. Default: none."""
+        return {}
+
     def reach_targets(self, scenario: ScenarioIR) -> list[str]:
         """The objects the player's action must reach directly (angrybirds: the first hit's
         target); placement gives up a layout that puts none of such an object's points in

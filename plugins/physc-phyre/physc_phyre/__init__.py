@@ -110,6 +110,13 @@ class Phyre(SimulatedDomain):
         """The task in PHYRE's task structure, as JSON (task_file.py)."""
         return task_json(level)
 
+    @staticmethod
+    def benchmark_files(tasks) -> dict[str, bytes]:
+        """PHYRE's own benchmark files beside the dataset (benchmark.py)."""
+        from physc_phyre.benchmark import benchmark_files
+
+        return benchmark_files(tasks)
+
     def picture(self, task, fmt: str = "png") -> bytes:
         """The scene in PHYRE's look with the red ball of the solution and the paths it makes;
         a placed layout as the level it becomes."""

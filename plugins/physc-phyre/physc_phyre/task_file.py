@@ -6,7 +6,8 @@ with `position`, `bodyType` (1 static, 2 dynamic), `angle` (radians), `shapes` (
 polygons with vertices relative to the position, counter-clockwise, or circles),
 `color` (1 red, 2 green, 3 blue, 4 purple, 5 gray, 6 black), `shapeType` (1 ball, 2 bar,
 3 jar, 4 standing sticks; 0 for walls) and `diameter`; the goal as `bodyId1`, `bodyId2`
-(indices into the bodies) and `relationships` ([6]: TOUCHING); `tier` ("BALL");
+(indices into the bodies) and `relationships` ([6]: TOUCHING); the scene's
+`user_input_status` (0, as in PHYRE's own task files); `tier` ("BALL");
 `description` as PHYRE writes it; and `solutions`, PHYRE's UserInput: the red ball of
 the intended action. `physc` adds the bodies' names, so a reader can map a task back to
 its scenario. Numbers are rounded to 1e-6 px: the same level gives the same bytes.
@@ -90,7 +91,7 @@ def describe(level: PhyreLevel) -> str:
 def task_json(level: PhyreLevel) -> str:
     names = ["wall_bottom", "wall_left", "wall_top", "wall_right"] + [b.name for b in level.bodies]
     data = {
-        "scene": {"bodies": _walls() + [_body(b) for b in level.bodies], "width": SCENE, "height": SCENE},
+        "scene": {"bodies": _walls() + [_body(b) for b in level.bodies], "width": SCENE, "height": SCENE, "user_input_status": 0},
         "bodyId1": names.index(level.goal[0]),
         "bodyId2": names.index(level.goal[1]),
         "relationships": [TOUCHING],

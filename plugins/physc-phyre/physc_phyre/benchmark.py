@@ -1,0 +1,101 @@
+"""A PHYRE-like dataset as PHYRE's own benchmark: what `physc generate` writes under `phyre/`.
+
+* `tasks.bin.lzma` (and `tasksNN.bin.lzma` for templates from 01000 on): the tasks as PHYRE's
+  `TaskCollection`s (phyre_format.py), which PHYRE's loader reads as they are;
+* `observations.npy`: each task's first observation, PHYRE's 256 × 256 picture of colour
+  indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
+* `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
+  `scenario` and `seed` it came from, its `level` file, the intended `action` in PHYRE's
+  [0, 1]³, the `description`, and `features` (PHYRE's 14 numbers per object);
+* `folds.json`: PHYRE's folds 0-9 of the cross- and within-template setups (folds.py).
+
+A scenario is a template, numbered in the order the dataset names them (00000, 00001, …);
+its generated tasks are its instances, numbered in seed order (000, 001, …), as PHYRE numbers
+the parameter sets of a template that were not skipped.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+
+import numpy as np
+from physc.domains.base import DomainError
+
+from physc_phyre import folds, observation, phyre_format
+
+FOLDER = "phyre"
+
+
+def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
+    """(task id, manifest row, task structure with its `taskId`) of every task, by task id."""
+    templates: dict[str, int] = {}
+    for row, _ in tasks:
+        templates.setdefault(row["scenario"], len(templates))
+    out = []
+    for scenario, template in templates.items():
+        mine = sorted(((row, text) for row, text in tasks if row["scenario"] == scenario), key=lambda t: t[0]["seed"])
+        if len(mine) > phyre_format.INSTANCES:
+            raise DomainError(
+                "E0703", f"scenario '{scenario}' has {len(mine)} tasks, but a PHYRE template holds {phyre_format.INSTANCES} at most (its instance ids have three digits)",
+                help="generate fewer --tasks per scenario",
+            )
+        for instance, (row, text) in enumerate(mine):
+            task = json.loads(text)
+            task.pop("physc", None)
+            task["taskId"] = phyre_format.task_id(template, instance)
+            out.append((task["taskId"], row, task))
+    return sorted(out, key=lambda t: t[0])
+
+
+def _npy(array: np.ndarray) -> bytes:
+    buffer = io.BytesIO()
+    np.save(buffer, array, allow_pickle=False)
+    return buffer.getvalue()
+
+
+def _parquet(entries) -> bytes:
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    feature = pa.list_(pa.float32(), observation.FEATURES)
+    columns = {
+        "task_id": pa.array([t for t, _, _ in entries], pa.string()),
+        "template": pa.array([t.split(":")[0] for t, _, _ in entries], pa.string()),
+        "instance": pa.array([t.split(":")[1] for t, _, _ in entries], pa.string()),
+        "scenario": pa.array([row["scenario"] for _, row, _ in entries], pa.string()),
+        "seed": pa.array([row["seed"] for _, row, _ in entries], pa.int64()),
+        "level": pa.array([row["level"] for _, row, _ in entries], pa.string()),
+        "action": pa.array([_action(task) for _, _, task in entries], pa.list_(pa.float64(), 3)),
+        "description": pa.array([task.get("description") for _, _, task in entries], pa.string()),
+        "features": pa.array([observation.features(task).tolist() for _, _, task in entries], pa.list_(feature)),
+    }
+    buffer = io.BytesIO()
+    pq.write_table(pa.table(columns), buffer)
+    return buffer.getvalue()
+
+
+def _action(task: dict) -> list[float] | None:
+    """The intended action in PHYRE's [0, 1]³ (the task's first solution's ball)."""
+    from physc_phyre.level import BallAction
+
+    balls = [ball for solution in task.get("solutions", ()) for ball in solution.get("balls", ())]
+    if not balls:
+        return None
+    ball = balls[0]
+    return list(BallAction(ball["position"]["x"], ball["position"]["y"], ball["radius"]).unit())
+
+
+def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
+    """The files of `phyre/` (module docstring) for the generated tasks."""
+    entries = identified(tasks)
+    files: dict[str, bytes] = {}
+    by_file: dict[str, list[dict]] = {}
+    for task_id, _, task in entries:
+        by_file.setdefault(phyre_format.collection_file(task_id), []).append(task)
+    for name, collection in by_file.items():
+        files[f"{FOLDER}/{name}"] = phyre_format.collection_bytes(collection)
+    files[f"{FOLDER}/observations.npy"] = _npy(np.stack([observation.raster(task) for _, _, task in entries]))
+    files[f"{FOLDER}/tasks.parquet"] = _parquet(entries)
+    files[f"{FOLDER}/folds.json"] = (json.dumps(folds.folds([t for t, _, _ in entries]), indent=1) + "\n").encode()
+    return files
