@@ -81,6 +81,9 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
     compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
     compile_.add_argument(
+        "--no-acceptance", action="store_true", help="keep the task without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
+    )
+    compile_.add_argument(
         "--layouts", type=arguments.count, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
     )
     compile_.add_argument(

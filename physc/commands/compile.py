@@ -217,6 +217,7 @@ def cmd_compile(args) -> int:
             args.seed,
             args.budget,
             validate=not args.no_validate,
+            acceptance=not args.no_acceptance,
             layout_budget=args.layouts,
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),

@@ -23,7 +23,7 @@ def cmd_eval(args) -> int:
 
     check_batch(args)
     jobs, problems = jobs_for(
-        args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.backend, args.verify_backend
+        args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.backend, args.verify_backend, not args.no_acceptance
     )
     jobs, status = selected_jobs(args, jobs, problems)
     if status is None:  # generation needs the domain's capabilities, and so do its replays and measurements
@@ -53,6 +53,9 @@ def add_command(commands, common) -> None:
     parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds of generation per task at most (default 300; the measurements after it are not counted)")
     add_min_robustness(parser)
     add_backend(parser)
+    parser.add_argument(
+        "--no-acceptance", action="store_true", help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
+    )
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(run=cmd_eval)

@@ -31,7 +31,7 @@ def cmd_generate(args) -> int:
     check_batch(args)
     jobs, problems = jobs_for(
         args.files, args.tasks, args.seed, time_budget=args.time_budget, min_robustness=args.min_robustness,
-        validate=not args.no_validate, picture=args.png, accidental=args.accidental,
+        validate=not args.no_validate, acceptance=not args.no_acceptance, picture=args.png, accidental=args.accidental,
         backend=args.backend, verify_backend=args.verify_backend,
     )
     jobs, status = selected_jobs(args, jobs, problems)
@@ -68,6 +68,9 @@ def add_command(commands, common) -> None:
     parser.add_argument("--png", action="store_true", help="also draw each task (<seed>.png)")
     parser.add_argument("--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)")
     parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each task")
+    parser.add_argument(
+        "--no-acceptance", action="store_true", help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
+    )
     parser.add_argument(
         "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
     )

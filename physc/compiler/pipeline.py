@@ -50,6 +50,7 @@ class Pipeline:
         min_robustness: int = MIN_ROBUSTNESS,
         progress=None,
         verify_backend: str | None = None,
+        acceptance: bool = True,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -70,6 +71,9 @@ class Pipeline:
         self.progress = progress
         # A second physics backend the task's solution must pass in too (--verify-backend).
         self.verify_backend = verify_backend
+        # Whether a task must pass the domain's acceptance rule (PHYRE's GOOD_STABLE, not
+        # TRIVIAL); off: --no-acceptance, for drafts.
+        self.acceptance = acceptance
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -122,7 +126,7 @@ class Pipeline:
         time is spent."""
         loop = LayoutLoop(
             self.domain, self.scenario, self.rng, self.validate, self.layout_budget, self.time_budget,
-            self.min_robustness, self.progress, self.verify_backend,
+            self.min_robustness, self.progress, self.verify_backend, self.acceptance,
         )
         with budget.deadline(self.time_budget):
             generated = loop.run(self.placements())
@@ -141,6 +145,7 @@ class Pipeline:
             repairs=parts.repairs,
             obstacles=parts.obstacles,
             distractors=parts.distractors,
+            acceptance=parts.acceptance,
             layouts_tried=generated.layouts,
             conjunctions_tried=used.conjunctions_tried,
             simulations=generated.simulations,

@@ -42,6 +42,7 @@ class Task:
     # {"layouts": how many, "simulations": what they cost}; the fallbacks' second tries are not counted.
     given_up: dict
     seconds: dict  # stage → time spent
+    acceptance: dict | None = None  # what random actions showed, for a domain with an acceptance rule (PHYRE's flags)
 
 
 def given_up_summary(given_up: dict) -> str:

@@ -36,6 +36,7 @@ class TaskJob:
     time_budget: float
     min_robustness: int = MIN_ROBUSTNESS
     validate: bool = True  # the final validation of a generated task (physc compile's)
+    acceptance: bool = True  # the domain's acceptance rule judges each task (physc compile's --no-acceptance)
     picture: bool = False  # also draw the task (<seed>.png)
     accidental: bool = False  # also measure accidental solvability (the domain's agent)
     backend: str = DEFAULT_BACKEND
@@ -54,7 +55,7 @@ class TaskJob:
         settings is made again."""
         return {
             "time_budget": self.time_budget, "min_robustness": self.min_robustness, "validate": self.validate,
-            "picture": self.picture, "accidental": self.accidental, "backend": self.backend,
+            "acceptance": self.acceptance, "picture": self.picture, "accidental": self.accidental, "backend": self.backend,
             "verify_backend": self.verify_backend, "scenario": self.fingerprint, "physc": __version__, "code": self.code,
         }
 
@@ -97,7 +98,7 @@ def _make(job: TaskJob) -> dict:
     try:
         with budget.deadline(job.time_budget):
             task = Pipeline(
-                domain, scenario, job.seed, validate=job.validate, time_budget=job.time_budget,
+                domain, scenario, job.seed, validate=job.validate, acceptance=job.acceptance, time_budget=job.time_budget,
                 source=format_file(ast.File((written,))), min_robustness=job.min_robustness, verify_backend=job.verify_backend,
             ).task
             picture = domain.picture(task, "png") if job.picture else None

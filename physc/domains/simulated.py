@@ -134,6 +134,16 @@ class SimulatedDomain(Domain):
         default: the level as it is)."""
         return level
 
+    acceptance = None
+    """The benchmark's rule for keeping a task by how random actions fare in it, a
+    physc.generation.acceptance.Acceptance (PHYRE: GOOD_STABLE and not TRIVIAL); None:
+    every task the search finds is kept."""
+
+    def neighbours(self, action) -> list:
+        """The actions a solution's stability is judged by (PHYRE: the ball moved half a pixel
+        in the 8 directions); the default: none, so every solution counts as stable."""
+        return []
+
     # ---- what the search asks, with defaults ----------------------------------------------
     search_settings = None
     """The search's budgets and beams, a physc.generation.settings.SearchSettings (None:

@@ -49,6 +49,13 @@ VERIFY_METRICS = (
 NAMES = {2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six", 7: "Seven", 8: "Eight"}  # interaction counts as the table heads them
 # With a random agent (a simulated domain's evaluation): PHYRE's AUCCESS of its attempts.
 AGENT_METRICS = (("auccess", "Random agent's AUCCESS (100 attempts)", None),)
+# With a domain's acceptance rule (PHYRE's): its flags for every task kept, from random actions.
+ACCEPTANCE_METRICS = (
+    ("good_stable", "GOOD_STABLE (random actions solve it stably, shown above the threshold)", None),
+    ("trivial", "TRIVIAL (stable solutions ≥ 10 % of random actions)", None),
+    ("solution_stable", "Intended solution stable (its neighbours solve it too)", None),
+    ("stable_rate", "Stable solutions per random action", None),
+)
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
@@ -87,7 +94,7 @@ def summarise(records: list[dict]) -> dict:
         # generator's noisy replays.
         fallbacks = sum(1 for r in made if r.get("robustness") and r["robustness"][0] < r["robustness"][1])
         out = {"tasks": len(rows), "generated": len(made), "fallbacks": fallbacks}
-        for metric, _, _ in METRICS + AGENT_METRICS + VERIFY_METRICS:
+        for metric, _, _ in METRICS + AGENT_METRICS + ACCEPTANCE_METRICS + VERIFY_METRICS:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
@@ -98,14 +105,18 @@ def summarise(records: list[dict]) -> dict:
     verified = sorted({r["verify_backend"] for r in records if r.get("verify_backend")})
     domains = sorted({r.get("domain", "angrybirds") for r in records})  # records without one are angrybirds'
     agent = any(r.get("auccess") is not None for r in records)
-    return {"scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None, "domains": domains, "auccess": agent}
+    judged = any(r.get("good_stable") is not None for r in records)
+    return {
+        "scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None, "domains": domains,
+        "auccess": agent, "acceptance": judged,
+    }
 
 
 def metrics(summary: dict) -> tuple:
     """The report's metrics: the paper's (compared with the paper's table only for its own
     domain), the random agent's AUCCESS and the verify backend's when the records have them."""
     own = METRICS if summary.get("domains", ["angrybirds"]) == ["angrybirds"] else tuple((m, title, None) for m, title, _ in METRICS)
-    out = own + (AGENT_METRICS if summary.get("auccess") else ())
+    out = own + (AGENT_METRICS if summary.get("auccess") else ()) + (ACCEPTANCE_METRICS if summary.get("acceptance") else ())
     backend = summary.get("verify_backend")
     if backend:
         out += tuple((metric, title.format(backend=backend), paper) for metric, title, paper in VERIFY_METRICS)
@@ -243,6 +254,7 @@ def write(records: list[dict], folder: Path, command: str, seconds: float) -> di
     write_atomic(folder / "results.json", json.dumps({"command": command, "seconds": round(seconds, 1), **summary}, indent=2, default=str) + "\n")
     out = io.StringIO()
     columns = CSV_COLUMNS + (("auccess",) if summary.get("auccess") else ()) + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
+    columns += tuple(metric for metric, _, _ in ACCEPTANCE_METRICS) if summary.get("acceptance") else ()
     writer = csv.DictWriter(out, fieldnames=columns, extrasaction="ignore")
     writer.writeheader()
     for record in sorted(records, key=lambda r: (r["scenario"], r["seed"])):

@@ -49,6 +49,7 @@ class Job:
     domain: str = ""  # the scenario's domain
     backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
     verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
+    acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -70,6 +71,8 @@ class Job:
             settings["backend"] = self.backend
         if self.verify_backend is not None:
             settings["verify_backend"] = self.verify_backend
+        if not self.acceptance:
+            settings["acceptance"] = False
         return settings
 
 
@@ -97,7 +100,7 @@ def _evaluate(job: Job) -> dict:
     try:
         task = Pipeline(
             domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness,
-            verify_backend=job.verify_backend,
+            verify_backend=job.verify_backend, acceptance=job.acceptance,
         ).task
     except Infeasible as error:
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
@@ -110,6 +113,11 @@ def _evaluate(job: Job) -> dict:
         simulations=task.simulations,
         given_up=task.given_up,
     )
+    if task.acceptance is not None:  # the domain's acceptance rule (PHYRE's flags)
+        record.update(
+            good_stable="GOOD_STABLE" in task.acceptance["flags"], trivial="TRIVIAL" in task.acceptance["flags"],
+            solution_stable=task.acceptance["solution_stable"], stable_rate=task.acceptance["stable_rate"],
+        )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = domain.stability(task.level)
     replay = measure.intended(domain, task.level, task.solution, scenario, rng)
@@ -139,7 +147,7 @@ def _evaluate(job: Job) -> dict:
 
 def jobs_for(
     files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS,
-    backend: str = DEFAULT_BACKEND, verify_backend: str | None = None,
+    backend: str = DEFAULT_BACKEND, verify_backend: str | None = None, acceptance: bool = True,
 ) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs = []
@@ -148,7 +156,7 @@ def jobs_for(
         engines = tuple(name for name in (backend, verify_backend) if name)
         fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
         jobs += [
-            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend)
+            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend, acceptance)
             for index in range(tasks)
         ]
     return jobs, problems

@@ -64,13 +64,15 @@ class LayoutLoop:
     # A second backend the solution must also pass in (--verify-backend): the recorded
     # solution and as many noisy replays as the generator's own acceptance asked for.
     verify_backend: str | None = None
+    # Whether the domain's acceptance rule judges each task (physc.generation.acceptance).
+    acceptance: bool = True
 
     def satisfy(self, layout, accept: int | None = None):
         """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a
         fallback), then the check in the second backend, if one is asked for."""
         domain = self.domain
         if getattr(domain, "searched", False):  # a SimulatedDomain: physc's one search, with its hooks
-            result = search.satisfy(domain, self.scenario, layout, self.rng, self.validate, accept)
+            result = search.satisfy(domain, self.scenario, layout, self.rng, self.validate, accept, self.acceptance)
         else:
             options = {} if accept is None else {"accept": accept}
             result = domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)

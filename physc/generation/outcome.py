@@ -24,6 +24,7 @@ class Parts:
     repairs: tuple[str, ...]
     obstacles: tuple[str, ...]
     distractors: tuple[str, ...]
+    acceptance: dict | None = None  # what random actions showed (physc.generation.acceptance), if the domain has a rule
 
 
 @attrs.frozen

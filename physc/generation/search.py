@@ -38,12 +38,14 @@ import numpy as np
 from physc import budget
 from physc.domains.base import require
 from physc.generation import choosing, placing, proposals, settings as reasons
+from physc.generation.acceptance import verdict as judged
 from physc.compiler.layout_rules import pushes
 from physc.generation.attempt import Attempt, reaches
 from physc.generation.evaluator import Evaluator
 from physc.generation.guards import Guards
 from physc.generation.outcome import Outcome, Parts
 from physc.generation.robustness import Robustness
+from physc.generation.snapshots import Snapshots
 from physc.generation.settings import SETTINGS
 from physc.generation.stages import Stage, introduced, prefix, stages
 from physc.simulation.fidelity import fidelity
@@ -54,12 +56,13 @@ ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is n
 KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
 
 
-def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | None = None) -> Outcome:
+def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | None = None, acceptance: bool = True) -> Outcome:
     """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
-    or why not; `accept`: the noisy replays a solution must pass (default: all of them)."""
+    or why not; `accept`: the noisy replays a solution must pass (default: all of them);
+    `acceptance`: whether the domain's acceptance rule judges the task."""
     require(domain, domain.search_hooks(), "generating a task")
     replays = domain.robustness_replays or 0
-    return Search(domain, scenario, layout, rng, replays if accept is None else accept, validate).run()
+    return Search(domain, scenario, layout, rng, replays if accept is None else accept, validate, acceptance).run()
 
 
 @attrs.frozen
@@ -73,10 +76,10 @@ class Node:
     steps: tuple[str, ...] = ()
 
 
-class Search(Robustness, Guards):
+class Search(Robustness, Guards, Snapshots):
     """The search for one placed layout (module docstring)."""
 
-    def __init__(self, domain, scenario, layout, rng, accept: int, validate: bool = True):
+    def __init__(self, domain, scenario, layout, rng, accept: int, validate: bool = True, acceptance: bool = True):
         self.domain = domain
         self.scenario = scenario
         self.interactions = scenario.interactions
@@ -84,6 +87,7 @@ class Search(Robustness, Guards):
         self.rng = rng
         self.accept = accept
         self.validate = validate
+        self.acceptance = acceptance
         self.settings = domain.search_settings or SETTINGS
         self.parameters = domain.layout_parameters
         self.scale = domain.trace_scale
@@ -157,8 +161,12 @@ class Search(Robustness, Guards):
             if not final.fidelity.valid:
                 return self.give_up(reasons.NOT_VALIDATED)
             validated, trace = True, final.trace
-        solution = self.domain.solution(attempt.label, attempt.action)
         level = self.level_of(layout)
+        accepting = time.perf_counter()
+        verdict = judged(self.domain, level, attempt.label, attempt.action, self.evaluator) if self.acceptance else None
+        if verdict is not None and not verdict.accepted:
+            return self.give_up(reasons.UNSTABLE_SOLUTION if not verdict.solution_stable else reasons.TRIVIAL if verdict.trivial else reasons.NOT_GOOD)
+        solution = self.domain.solution(attempt.label, attempt.action)
         parts = Parts(
             level=self.domain.with_solution(level, solution),
             solution=solution,
@@ -168,8 +176,11 @@ class Search(Robustness, Guards):
             repairs=found.steps,
             obstacles=tuple(obstacles + shortcuts),
             distractors=tuple(distractors),
+            acceptance=None if verdict is None else verdict.record(),
         )
-        seconds = {"distract": validating - distracting, "validate": time.perf_counter() - validating}
+        seconds = {"distract": validating - distracting, "validate": accepting - validating}
+        if verdict is not None:
+            seconds["accept"] = time.perf_counter() - accepting
         return Outcome(True, self.evaluator.simulations, parts, seconds=seconds, best=self.best, stopped=self.stopped)
 
     @property
@@ -241,26 +252,6 @@ class Search(Robustness, Guards):
     def passes(self, attempt: Attempt, stage: Stage, layout) -> bool:
         """Whether `attempt` realises the stage and sets up the next."""
         return reaches(attempt, stage.end, len(self.interactions)) and self.sets_up(attempt, stage.end, layout)
-
-    def snapshot(self, scene, parent: Node, stage: Stage, source: Attempt) -> Snapshot | None:
-        """Where the stage's `scene` may go on from `source`, the parent's play of the same
-        action (physc.simulation.snapshot): cut `snapshot_lead` before a body of the prefix
-        first comes near a new object. None (a run from the start) when snapshots are off,
-        the scene differs from the parent's by more than the stage's new objects, or the cut
-        would save less than `snapshot_least`."""
-        settings = self.settings
-        if not (settings.snapshots and self.domain.resumable) or parent.stage < 0:
-            return None
-        before = prefix(parent.layout, self.entry, self.plan[parent.stage].start).objects
-        new = [o for o in scene.objects if o.name in stage.new]
-        if not new or set(before) != {o for o in scene.objects if o.name not in stage.new}:
-            return None
-        trace = source.trace
-        met = placing.approach(trace, new, {o.name: (o.width, o.height) for o in scene.objects}, self.scale, settings.clear)
-        step = (trace.steps - 1 if met is None else met) - int(round(settings.snapshot_lead / trace.dt))
-        if step * trace.dt < settings.snapshot_least or step >= trace.steps:
-            return None
-        return Snapshot.of(trace, step)
 
     def sets_up(self, attempt: Attempt, end: int, layout) -> bool:
         """Whether `attempt` leaves the next stage something to place its new object on: the

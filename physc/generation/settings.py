@@ -20,6 +20,9 @@ NOT_OBSTRUCTED = "a forbidden hit could not be blocked"
 OBSTRUCTED_FRAGILE = "the obstacles made the solution fragile"
 UNSTABLE = "the level did not stand"
 NOT_VALIDATED = "validation failed"
+TRIVIAL = "random actions solve it too often (TRIVIAL)"
+NOT_GOOD = "random actions do not solve it (not GOOD_STABLE)"
+UNSTABLE_SOLUTION = "the solution's neighbours do not all solve it"
 
 
 @attrs.frozen

@@ -18,6 +18,7 @@ from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.base import MissingCapability
 from physc.domains.simulated import SimulatedDomain
+from physc.generation.acceptance import Acceptance
 from physc.picture import FORMATS
 from physc.simulation.scene import Scene
 
@@ -27,6 +28,15 @@ from physc_phyre.level import BallAction, PhyreLevel, SceneBody, level_from_layo
 from physc_phyre.rules import RECOGNISER, GoalRules
 from physc_phyre.task_file import task_json
 from physc_phyre.vocabulary import VOCABULARY
+
+BALL_THRESHOLD = 1e-5  # PHYRE's SOLVABILITY_THRESHOLD_PROBS["ball"] (docs/phyre-sources.md, section 5)
+# Valid random actions the acceptance draws at most. PHYRE draws 10,000 and needs 2 stable
+# solutions among them (its binomial test: P[X ≥ 2] = 0.005, P[X ≥ 1] = 0.095); among 1,000, one
+# passes (P[X ≥ 1] = 0.01). A task solved stably by 1 random action in 1,000 or more is
+# GOOD_STABLE in both (PHYRE's 10,000 find two or more with probability ≥ 0.995); one solved
+# more rarely is mostly given up (at 2 in 10,000: physc keeps it 18 % of the time, PHYRE 59 %),
+# at a tenth of PHYRE's simulations.
+ACCEPTANCE_DRAWS = 1_000
 
 __all__ = ["DOMAIN", "Phyre", "BallAction", "PhyreLevel", "SceneBody"]
 
@@ -49,6 +59,10 @@ class Phyre(SimulatedDomain):
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
         "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
     )
+    acceptance = Acceptance(threshold=BALL_THRESHOLD, attempts=ACCEPTANCE_DRAWS)
+    """PHYRE's acceptance of a ball-tier task: GOOD_STABLE (random actions solve it stably at a
+    rate shown above 1e-5, SOLVABILITY_THRESHOLD_PROBS["ball"] of eval_task_complexity.py)
+    and not TRIVIAL; its intended solution stable under half-pixel moves."""
     trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
 
@@ -96,6 +110,10 @@ class Phyre(SimulatedDomain):
     @staticmethod
     def random_action(rng: random.Random) -> BallAction:
         return actions.random_action(rng)
+
+    @staticmethod
+    def neighbours(action: BallAction) -> list[BallAction]:
+        return actions.neighbours(action)
 
     @staticmethod
     def valid(level: PhyreLevel, action: BallAction) -> bool:

@@ -69,10 +69,26 @@ def valid(level: PhyreLevel, action: BallAction) -> bool:
 
 
 def random_action(rng: random.Random) -> BallAction:
-    """A draw of PHYRE's random agent: uniform in [0, 1]³, scaled and quantised as PHYRE's
-    ball tier does (x = a·255, y = a·255 truncated, r = 2 + a·30 rounded)."""
-    a, b, c = rng.random(), rng.random(), rng.random()
-    return BallAction(int(a * (SCENE - 1)), int(b * (SCENE - 1)), round(MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)))
+    """A draw of PHYRE's random agent: uniform in [0, 1]³ until the ball lies inside the
+    scene (PHYRE's `sample(valid_only=True)`, tested before quantising), then scaled and
+    quantised as PHYRE's ball tier does (x = a·255, y = a·255 truncated, r = 2 + a·30
+    rounded). Whether it occludes a body is `valid`'s to say, as PHYRE counts such an
+    action as an invalid attempt."""
+    while True:
+        x, y = rng.random() * (SCENE - 1), rng.random() * (SCENE - 1)
+        r = MIN_RADIUS + rng.random() * (MAX_RADIUS - MIN_RADIUS)
+        if r <= x <= SCENE - r and r <= y <= SCENE - r:
+            return BallAction(int(x), int(y), round(r))
+
+
+NEIGHBOUR_SHIFT = 0.5  # pixels: PHYRE's test of a stable solution moves the ball this far each way
+
+
+def neighbours(action: BallAction) -> list[BallAction]:
+    """The 8 balls PHYRE judges a solution's stability by: moved ±NEIGHBOUR_SHIFT px along x,
+    y or both (action_simulator.py's `_yield_user_input_neighborhood`), the radius kept."""
+    d = NEIGHBOUR_SHIFT
+    return [BallAction(action.x + dx, action.y + dy, action.radius, action.aimed_at) for dx in (-d, 0.0, d) for dy in (-d, 0.0, d) if dx or dy]
 
 
 def noisy(action: BallAction, rng: random.Random) -> BallAction:

@@ -28,7 +28,9 @@ def physc(*args) -> tuple[int, str, str]:
 @pytest.fixture(scope="module")
 def ledge(tmp_path_factory):
     folder = tmp_path_factory.mktemp("ledge")
-    status, _, err = physc("compile", LEDGE, "--seed", "1", "-q", "-o", folder / "level.json", "--task", folder / "task.json", "--png", folder / "level.png")
+    status, _, err = physc(
+        "compile", LEDGE, "--seed", "1", "-q", "--no-acceptance", "-o", folder / "level.json", "--task", folder / "task.json", "--png", folder / "level.png"
+    )
     assert status == 0, err
     return folder
 
@@ -70,7 +72,7 @@ def test_the_task_file_holds_the_intended_action_and_its_trace(ledge):
 
 
 def test_same_seed_same_bytes(ledge, tmp_path):
-    assert physc("compile", LEDGE, "--seed", "1", "-q", "-o", tmp_path / "again.json")[0] == 0
+    assert physc("compile", LEDGE, "--seed", "1", "-q", "--no-acceptance", "-o", tmp_path / "again.json")[0] == 0
     assert (tmp_path / "again.json").read_bytes() == (ledge / "level.json").read_bytes()
 
 
@@ -125,14 +127,18 @@ def _layout_classes():
     return {"ChosenRelation": ChosenRelation, "PlacedObject": PlacedObject}
 
 
-def test_eval_measures_the_random_agent(tmp_path):
-    status, _, err = physc("eval", LEDGE, "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
+def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path):
+    """A task kept by PHYRE's acceptance rule (GOOD_STABLE, not TRIVIAL, its solution stable
+    under half-pixel moves), with the figures in the record and the report."""
+    status, _, err = physc("eval", LEDGE, "--seed", "1", "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
     assert status == 0, err
     (record,) = [json.loads(line) for line in (tmp_path / "eval" / "records.jsonl").read_text().splitlines()]
     assert record["generated"] and record["stable"] and record["intended_exact"]
     assert record["agent_plays"] == 100 and 0 <= record["accidental"] <= 1 and 0 <= record["auccess"] <= 1
+    assert record["good_stable"] is True and record["trivial"] is False and record["solution_stable"] is True
+    assert 0 < record["stable_rate"] < 0.1
     report = (tmp_path / "eval" / "results.md").read_text()
-    assert "AUCCESS" in report
+    assert "AUCCESS" in report and "GOOD_STABLE" in report
     assert list((tmp_path / "eval").glob("task_*.png"))
 
 
