@@ -8,16 +8,51 @@ import time
 from pathlib import Path
 
 from physc.commands import arguments
-from physc.commands.common import EXIT_OK, add_backend, add_min_robustness
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_min_robustness
 from physc.commands.running import Progress, add_executor, check_batch, executor_from, refused_domains, selected_jobs
+from physc.files import check_output, ensure_folder
 
 
 def _described(record: dict) -> str:
     return f"{record['scenario']} seed {record['seed']}: {'ok' if record.get('generated') else 'no task'}"
 
 
+def cmd_agent(args) -> int:
+    """`physc eval --agent MODULE:NAME DATASET`: an agent scored on a generated dataset."""
+    import json
+
+    from physc.domains import load_domain
+    from physc.evaluation.agent import AgentError, load
+    from physc.files import read_json_lines, write_atomic
+
+    if len(args.files) != 1 or not Path(args.files[0]).is_dir():
+        raise UsageError("with --agent, physc eval takes one dataset folder (made by physc generate)")
+    folder = Path(args.files[0])
+    rows = read_json_lines(folder / "manifest.jsonl")
+    domains = sorted({row["domain"] for row in rows if isinstance(row, dict) and row.get("level")})
+    if len(domains) != 1:
+        raise UsageError(f"{folder} holds no generated tasks of one domain (manifest.jsonl: {', '.join(domains) or 'none'})")
+    check_output(args.out, folder=True)
+    domain = load_domain(domains[0])
+    try:
+        agent = load(args.agent)
+        scored = domain.score_agent(folder, agent, args.setup, range(args.folds), args.split)
+    except AgentError as error:
+        print(f"physc eval: error: {error}", file=sys.stderr)
+        return EXIT_INPUT
+    out = Path(args.out)
+    ensure_folder(out)
+    write_atomic(out / "agent.json", json.dumps({"agent": args.agent, "dataset": str(folder), **scored}, indent=2) + "\n")
+    if not args.quiet:
+        print(f"{args.agent}: AUCCESS {scored['auccess']} on the {args.split} split of {args.setup}, folds 0-{args.folds - 1}; {out / 'agent.json'}", file=sys.stderr)
+    return EXIT_OK
+
+
 def cmd_eval(args) -> int:
     from physc.evaluation.report import write
+
+    if args.agent:
+        return cmd_agent(args)
     from physc.domains.base import STAGE_NEEDS
     from physc.evaluation.run import jobs_for, run
 
@@ -45,7 +80,7 @@ def cmd_eval(args) -> int:
 
 def add_command(commands, common) -> None:
     parser = commands.add_parser("eval", parents=[common], help="generate tasks and measure them like the paper's results table")
-    parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each is evaluated")
+    parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each is evaluated (with --agent: a dataset folder)")
     parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
     parser.add_argument("--tasks", type=arguments.tasks, default=30, metavar="N", help="tasks per scenario (default 30)")
     add_executor(parser)
@@ -58,4 +93,9 @@ def add_command(commands, common) -> None:
     )
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    agent = parser.add_argument_group("scoring an agent on a generated dataset (a PHYRE-like benchmark)")
+    agent.add_argument("--agent", metavar="MODULE:NAME", help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first (physc_phyre.agents:random_agent)")
+    agent.add_argument("--setup", choices=("cross_template", "within_template"), default="cross_template", help="PHYRE's evaluation setup (default cross_template)")
+    agent.add_argument("--folds", type=arguments.tasks, default=10, metavar="N", help="folds 0 .. N-1 (default 10, as PHYRE reports)")
+    agent.add_argument("--split", choices=("test", "dev"), default="test", help="the split scored (default test; the agent's fit sees train and dev)")
     parser.set_defaults(run=cmd_eval)

@@ -236,6 +236,13 @@ class Domain(abc.ABC):
         row and level file (text), in the dataset's order. Default: none."""
         return {}
 
+    @_no_default
+    def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
+        """An agent (a Python callable) scored on a dataset of this domain made by `physc
+        generate` (`physc eval --agent`; PHYRE: AUCCESS on its folds): a dict for the report,
+        with `auccess`, the mean over `folds`. Default: the domain scores no agent."""
+        raise MissingCapability(self.name, ("score_agent",), "physc eval --agent")
+
     def reach_targets(self, scenario: ScenarioIR) -> list[str]:
         """The objects the player's action must reach directly (angrybirds: the first hit's
         target); placement gives up a layout that puts none of such an object's points in

@@ -34,8 +34,10 @@ stability, the replays of `physc verify` and the evaluation's measurements
 
 from __future__ import annotations
 
+import itertools
 import math
 import random
+from collections.abc import Iterable
 
 from physc.domains.base import Domain, MissingCapability, _no_default
 from physc.simulation.recognise import Recogniser
@@ -232,23 +234,30 @@ class SimulatedDomain(Domain):
         overrides_play = type(self).play is not SimulatedDomain.play
         return tuple(h for h in HOOKS if not (overrides_play and h == "scene"))
 
+    def attempts(self, level, actions: Iterable, until_solved: bool = False) -> list[bool]:
+        """An agent's attempts at `level`, as PHYRE's evaluator counts them: whether each of
+        the first AGENT_ATTEMPTS valid actions of `actions` solves it (None or an invalid
+        action is not an attempt; AGENT_DRAWS actions are read at most); with
+        `until_solved`, none after the first that solves it."""
+        outcomes: list[bool] = []
+        for action in itertools.islice(actions, AGENT_DRAWS):
+            if len(outcomes) == AGENT_ATTEMPTS:
+                break
+            if action is None or not self.valid(level, action):
+                continue
+            outcomes.append(self.play(level, action, recognise=False).solved)
+            if until_solved and outcomes[-1]:
+                break
+        return outcomes
+
     def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
         """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn
         from `rng`, each played; the fraction that solve the level, and the task's AUCCESS.
         Empty when the domain has no random agent."""
-        attempts, solved, first = 0, 0, None
-        for _ in range(AGENT_DRAWS):
-            if attempts == AGENT_ATTEMPTS:
-                break
-            action = self.random_action(rng)
-            if action is None:
-                return {}
-            if not self.valid(level, action):
-                continue
-            attempts += 1
-            if self.play(level, action, recognise=False).solved:
-                solved += 1
-                first = first or attempts
-        if not attempts:
+        if type(self).random_action is SimulatedDomain.random_action:  # the default: no random agent
+            return {}
+        outcomes = self.attempts(level, iter(lambda: self.random_action(rng), None))
+        if not outcomes:
             return {"accidental": None, "agent_plays": 0}
-        return {"accidental": round(solved / attempts, 5), "agent_plays": attempts, "auccess": round(auccess(first), 5)}
+        first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)
+        return {"accidental": round(sum(outcomes) / len(outcomes), 5), "agent_plays": len(outcomes), "auccess": round(auccess(first), 5)}

@@ -135,6 +135,12 @@ class Phyre(SimulatedDomain):
 
         return benchmark_files(tasks)
 
+    def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
+        """PHYRE's AUCCESS of `agent` on the folds of a generated benchmark (agents.py)."""
+        from physc_phyre.agents import score
+
+        return score(self, folder, agent, setup, folds, split)
+
     def picture(self, task, fmt: str = "png") -> bytes:
         """The scene in PHYRE's look with the red ball of the solution and the paths it makes;
         a placed layout as the level it becomes."""

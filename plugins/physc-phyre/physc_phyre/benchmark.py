@@ -5,7 +5,7 @@
 * `observations.npy`: each task's first observation, PHYRE's 256 × 256 picture of colour
   indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
 * `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
-  `scenario` and `seed` it came from, its `level` file, the intended `action` in PHYRE's
+  `scenario` and `seed` it came from, its `level` and `task` files, the intended `action` in PHYRE's
   [0, 1]³, the `description`, and `features` (PHYRE's 14 numbers per object);
 * `folds.json`: PHYRE's folds 0-9 of the cross- and within-template setups (folds.py).
 
@@ -66,6 +66,7 @@ def _parquet(entries) -> bytes:
         "scenario": pa.array([row["scenario"] for _, row, _ in entries], pa.string()),
         "seed": pa.array([row["seed"] for _, row, _ in entries], pa.int64()),
         "level": pa.array([row["level"] for _, row, _ in entries], pa.string()),
+        "task": pa.array([row["task"] for _, row, _ in entries], pa.string()),
         "action": pa.array([_action(task) for _, _, task in entries], pa.list_(pa.float64(), 3)),
         "description": pa.array([task.get("description") for _, _, task in entries], pa.string()),
         "features": pa.array([observation.features(task).tolist() for _, _, task in entries], pa.list_(feature)),

@@ -22,7 +22,7 @@ PHYRE_IDS = (Path(__file__).parent / "data" / "phyre_ball_task_ids.txt").read_te
 @pytest.fixture(scope="module")
 def dataset(tmp_path_factory):
     out = tmp_path_factory.mktemp("dataset")
-    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "2", "--no-acceptance", "--out", out, "-q")
+    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "3", "--no-acceptance", "--out", out, "-q")
     assert status == 0, err
     return out
 
@@ -109,20 +109,85 @@ def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     phyre = dataset / "phyre"
     tasks = phyre_format.read_collection((phyre / "tasks.bin.lzma").read_bytes())
     ids = [t["taskId"] for t in tasks]
-    assert ids == ["00000:000", "00000:001", "00001:000", "00001:001"]  # Ledge, then Jar; seeds in order
+    assert ids == ["00000:000", "00000:001", "00000:002", "00001:000", "00001:001", "00001:002"]  # Ledge, then Jar; seeds in order
     first = task_of(dataset)
     first.pop("physc")
     assert tasks[0] == {**first, "taskId": "00000:000"}
     observations = np.load(phyre / "observations.npy")
-    assert observations.shape == (4, 256, 256) and observations.dtype == np.uint8
+    assert observations.shape == (6, 256, 256) and observations.dtype == np.uint8
     assert np.array_equal(observations[0], observation.raster(first))
     table = pq.read_table(phyre / "tasks.parquet").to_pylist()
-    assert [r["task_id"] for r in table] == ids and [r["seed"] for r in table] == [0, 1, 0, 1]
+    assert [r["task_id"] for r in table] == ids and [r["seed"] for r in table] == [0, 1, 2, 0, 1, 2]
     assert table[0]["action"] == pytest.approx(task_of(dataset)["physc"]["actions"][0])
     assert len(table[0]["features"][0]) == 14
     fold_file = json.loads((phyre / "folds.json").read_text())
     assert set(fold_file) == {"cross_template", "within_template"} and set(fold_file["within_template"]) == {str(s) for s in range(10)}
     # the same command again, in another folder: the same bytes
-    assert physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "2", "--no-acceptance", "--out", tmp_path, "-q")[0] == 0
+    assert physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "3", "--no-acceptance", "--out", tmp_path, "-q")[0] == 0
     for path in phyre.iterdir():
         assert (tmp_path / "phyre" / path.name).read_bytes() == path.read_bytes(), path.name
+
+
+ANSWERS: dict[str, list[float]] = {}
+FITTED: list[list[str]] = []
+
+
+def oracle(seen):
+    """An agent that knows the intended actions (read by the test from tasks.parquet)."""
+    yield (2.0, 0.5, 0.5)  # invalid: not counted
+    yield ANSWERS[seen.task_id]
+
+
+class Learner:
+    def fit(self, observations):
+        FITTED.append(sorted(o.task_id for o in observations))
+
+    def __call__(self, seen):
+        assert "solutions" not in seen.task and seen.image.shape == (256, 256)
+        return iter([ANSWERS[seen.task_id]])
+
+
+def failing(seen):
+    raise ZeroDivisionError("no idea")
+
+
+def test_an_agent_is_scored_by_phyres_auccess_on_the_folds(dataset, tmp_path, monkeypatch):
+    """The intended action, given in PHYRE's [0, 1]³, solves every task at the first valid
+    attempt (AUCCESS 1); an agent with `fit` sees the fold's train and dev tasks first."""
+    monkeypatch.syspath_prepend(str(Path(__file__).parent))
+    ANSWERS.update({r["task_id"]: r["action"] for r in pq.read_table(dataset / "phyre" / "tasks.parquet").to_pylist()})
+    status, _, err = physc("eval", "--agent", "test_phyre_format:oracle", dataset, "--setup", "within_template", "--folds", "2", "--out", tmp_path / "o", "-q")
+    assert status == 0, err
+    scored = json.loads((tmp_path / "o" / "agent.json").read_text())
+    assert scored["auccess"] == 1.0 and scored["folds"]["0"]["tasks"] == 2 and set(scored["folds"]["1"]["templates"]) == {"00000", "00001"}
+    FITTED.clear()
+    assert physc("eval", "--agent", "test_phyre_format:Learner", dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path / "l", "-q")[0] == 1
+    # a class is not an agent until made: the class itself, called, returns an instance, not actions
+    learner = "test_phyre_format:LEARNER"
+    globals()["LEARNER"] = Learner()
+    status, _, err = physc("eval", "--agent", learner, dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path / "l", "-q")
+    assert status == 0, err
+    train, dev, test = folds.fold("within_template", [t for t in ANSWERS], 0)
+    assert FITTED[-1] == sorted(train + dev)
+
+
+def test_a_random_agent_scores_as_physcs_own_evaluation_counts(dataset, tmp_path):
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path, "-q")
+    assert status == 0, err
+    scored = json.loads((tmp_path / "agent.json").read_text())
+    assert 0.0 <= scored["auccess"] <= 1.0 and scored["split"] == "test"
+
+
+@pytest.mark.parametrize(
+    "agent, message",
+    [
+        ("no_such_module_here:agent", "cannot import the agent's module"),
+        ("test_phyre_format:missing", "has no 'missing'"),
+        ("test_phyre_format:failing", "the agent raised ZeroDivisionError on task"),
+        ("justaname", "MODULE:NAME"),
+    ],
+)
+def test_a_broken_agent_is_the_agents_error_not_physcs(dataset, tmp_path, monkeypatch, agent, message):
+    monkeypatch.syspath_prepend(str(Path(__file__).parent))
+    status, _, err = physc("eval", "--agent", agent, dataset, "--folds", "1", "--setup", "within_template", "--out", tmp_path, "-q")
+    assert status == 1 and message in err and "Traceback" not in err

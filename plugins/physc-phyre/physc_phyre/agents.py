@@ -1,0 +1,132 @@
+"""An agent scored on a generated PHYRE-like benchmark, as PHYRE scores its agents.
+
+An agent is any Python callable that takes an `Observation` of a task (its id, PHYRE's
+256 × 256 picture of colour indices, its 14-number feature vectors, the task itself in PHYRE's
+structure) and yields actions in [0, 1]³ (x, y, radius, as PHYRE's ball tier reads them), best
+first. An agent that learns has a `fit(observations)` method too: it is called first with the
+fold's training tasks (train and dev when the test split is scored, train alone for dev, as
+PHYRE's agents/train.py does). Each action is played until the task is solved or 100 valid
+attempts are spent; an invalid action (outside the scene, or occluding a body) is not counted,
+as in PHYRE's evaluator. The score is PHYRE's AUCCESS over the split's tasks, per fold and
+per template (docs/phyre-sources.md, section 4.8).
+
+`random_agent` is PHYRE's random agent: uniform actions, from a generator named after the task.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import statistics
+from collections.abc import Callable, Iterable
+from pathlib import Path
+
+import attrs
+import numpy as np
+from physc.domains.simulated import auccess
+from physc.evaluation.agent import calling
+
+from physc_phyre import observation, phyre_format
+from physc_phyre.level import BallAction
+
+SPLITS = ("dev", "test")
+STOP = object()  # the agent's actions have run out
+
+
+@attrs.frozen
+class Observation:
+    """What an agent is shown of a task."""
+
+    task_id: str
+    image: np.ndarray = attrs.field(eq=False, repr=False)  # PHYRE's colour indices, (256, 256) uint8, row 0 at the bottom
+    features: np.ndarray = attrs.field(eq=False, repr=False)  # (objects, 14) float32
+    task: dict = attrs.field(eq=False, repr=False)  # the task in PHYRE's structure (phyre_format.py), without its solutions
+
+
+def random_agent(seen: Observation) -> Iterable[tuple[float, float, float]]:
+    """PHYRE's random agent: uniform actions in [0, 1]³, drawn from a generator named after
+    the task."""
+    rng = random.Random(f"random-agent/{seen.task_id}")
+    while True:
+        yield (rng.random(), rng.random(), rng.random())
+
+
+def ball(action) -> BallAction | None:
+    """An action in [0, 1]³ as PHYRE's ball tier reads it (x = int(a·255), y likewise,
+    r = round(2 + a·30)); None when PHYRE calls it invalid before placing it (a value outside
+    [0, 1], or the ball not inside the scene, tested before quantising)."""
+    try:
+        a, b, c = (float(v) for v in action)
+    except (TypeError, ValueError):
+        return None
+    if not all(0.0 <= v <= 1.0 for v in (a, b, c)):
+        return None
+    x, y, r = a * 255, b * 255, 2 + c * 30
+    if not (r <= x <= 256 - r and r <= y <= 256 - r):
+        return None
+    return BallAction(int(x), int(y), round(r))
+
+
+def observations(folder: Path) -> dict[str, Observation]:
+    """Every task of a generated dataset's `phyre/` folder, by id."""
+    tasks = phyre_format.read_collection((folder / "phyre" / "tasks.bin.lzma").read_bytes())
+    shown = [{k: v for k, v in t.items() if k != "solutions"} for t in tasks]  # not the intended solution
+    return {t["taskId"]: Observation(t["taskId"], observation.raster(t), observation.features(t), t) for t in shown}
+
+
+def first_solved(domain, level, seen: Observation, agent: Callable) -> int | None:
+    """The valid attempt (1-based) at which `agent`'s actions first solve the task, if any
+    (SimulatedDomain.attempts, PHYRE's counting); the agent's own failures are its own."""
+
+    def actions():
+        with calling(f"on task {seen.task_id}"):
+            drawn = iter(agent(seen))
+        while True:
+            with calling(f"on task {seen.task_id}"):
+                action = next(drawn, STOP)
+            if action is STOP:
+                return
+            yield ball(action)
+
+    outcomes = domain.attempts(level, actions(), until_solved=True)
+    return len(outcomes) if outcomes and outcomes[-1] else None
+
+
+def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int], split: str) -> dict:
+    """`agent`'s AUCCESS on `split` of each fold of `setup` of the dataset in `folder`: per
+    fold, its mean and per template; and the mean over folds."""
+    from physc.serialize import from_data
+
+    if split not in SPLITS:
+        raise ValueError(f"no split '{split}' (PHYRE's: {', '.join(SPLITS)})")
+    seen = observations(folder)
+    files = {row["task_id"]: row["task"] for row in _rows(folder)}
+    classes = {c.__name__: c for c in domain.level_classes}
+    split_of = json.loads((folder / "phyre" / "folds.json").read_text())[setup]
+    results = {}
+    for fold in folds:
+        parts = split_of[str(fold)]
+        trained = parts["train"] + (parts["dev"] if split == "test" else [])
+        if hasattr(agent, "fit"):
+            with calling("in fit"):
+                agent.fit([seen[t] for t in trained])
+        scores = {}
+        for task_id in parts[split]:
+            level = from_data(json.loads((folder / files[task_id]).read_text())["level"], classes)
+            scores[task_id] = auccess(first_solved(domain, level, seen[task_id], agent))
+        per_template: dict[str, list[float]] = {}
+        for task_id, value in scores.items():
+            per_template.setdefault(task_id[:5], []).append(value)
+        results[str(fold)] = {
+            "tasks": len(scores),
+            "auccess": round(statistics.mean(scores.values()), 5) if scores else None,
+            "templates": {t: round(statistics.mean(v), 5) for t, v in sorted(per_template.items())},
+        }
+    means = [r["auccess"] for r in results.values() if r["auccess"] is not None]
+    return {"setup": setup, "split": split, "folds": results, "auccess": round(statistics.mean(means), 5) if means else None}
+
+
+def _rows(folder: Path) -> list[dict]:
+    import pyarrow.parquet as pq
+
+    return pq.read_table(folder / "phyre" / "tasks.parquet", columns=["task_id", "task"]).to_pylist()
