@@ -39,7 +39,10 @@ if TYPE_CHECKING:
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
-DEFAULTS = ("reach_targets", "reachable", "robustness_replays", "level_classes", "level_suffix", "solution_class", "accidental", "measures")  # working defaults
+DEFAULTS = (
+    "reach_targets", "reachable", "robustness_replays", "level_classes", "level_suffix", "solution_class", "accidental", "measures",
+    "benchmark_files", "score_agent",
+)  # working defaults (score_agent's: no agent is scored, MissingCapability)
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -236,7 +239,6 @@ class Domain(abc.ABC):
         row and level file (text), in the dataset's order. Default: none."""
         return {}
 
-    @_no_default
     def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
         """An agent (a Python callable) scored on a dataset of this domain made by `physc
         generate` (`physc eval --agent`; PHYRE: AUCCESS on its folds): a dict for the report,
