@@ -146,6 +146,8 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             b.edge(LIES_ON_PATH, target, actor, (), why)
             b.edge(IN_DIRECTION, target, actor, opposite(term.directions), why)
         elif term.name in ("roll", "slide"):
+            if rules.ground is not None and b.nodes[term.objects[1]].concrete == (rules.ground,):
+                continue  # the ground spans the scene: what moves along it starts anywhere on it
             motions.append(len(b.edges))
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
         elif term.name == "fall":
@@ -205,6 +207,10 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
                 where = ("centre",)
             b.edge(ON_LOCATION, target, rest, where, Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
             support[target] = rest
+        elif target in surfaces and rules.ground is not None and b.nodes[surfaces[target][0]].concrete == (rules.ground,):
+            ground = surfaces[target][0]  # it moves along the ground first: it rests on it, anywhere
+            b.edge(ON_LOCATION, target, ground, ("left", "centre", "right"), Provenance("support", f"{target} rests on the ground it moves along", term.span))
+            support[target] = ground
         elif target in surfaces:
             first = moved_on[target]
             own = b.support_node(target, (FLAT,))
@@ -255,6 +261,8 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
     for mover, why in continuous:
         path = path_of(mover)
         for first, second in zip(path, path[1:]):
+            if _falls_between(scenario.interactions, mover, first, second):
+                continue  # it comes down from one onto the other: they need not meet
             if heading.get(mover, "right") == "right":
                 b.edge(TOUCHING, first, second, ("upperLeft",), why)
             else:
@@ -265,6 +273,16 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
         nodes = tuple(n for n in nodes if n.name not in players)
         edges = tuple(e for e in edges if e.a not in players and e.b not in players)
     return LayoutGraph(scenario.name, scenario.domain, nodes, edges)
+
+
+def _falls_between(interactions, mover: str, first: str, second: str) -> bool:
+    """Whether `mover` falls after it last moves on `first` and before it first moves on `second`."""
+    on = [k for k, t in enumerate(interactions) if t.name in ("roll", "slide") and t.objects == (mover, first)]
+    onto = [k for k, t in enumerate(interactions) if t.name in ("roll", "slide") and t.objects == (mover, second)]
+    if not onto:
+        return False
+    start = on[-1] if on else -1
+    return any(t.name == "fall" and t.objects[0] == mover for t in interactions[start + 1 : onto[0]])
 
 
 def pushes(interactions, position: int, players: set[str], heading: str | None = "right") -> str | None:

@@ -88,7 +88,10 @@ class ToDimensionGraphs:
             if draw >= SHAPE_DRAWS and not found:
                 break
             bodies = self.domain.concretize(graph, scenario, rng)
-            systems, base = self.base(bodies)
+            try:
+                systems, base = self.base(bodies)
+            except Inconsistent:  # these shapes do not fit the placement area at all: draw others
+                continue
             nodes = 0
 
             # Depth-first, in the DNF's order.

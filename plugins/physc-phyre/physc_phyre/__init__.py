@@ -45,7 +45,7 @@ class Phyre(SimulatedDomain):
     name = "phyre"
     description = "PHYRE-like tasks: the agent places a red ball; the green object must touch the target for 3 s"
     vocabulary = VOCABULARY
-    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground=None, player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
+    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction)
     level_suffix = "json"  # task files in PHYRE's task structure

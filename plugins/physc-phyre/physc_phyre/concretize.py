@@ -5,11 +5,14 @@ px), bars 35–70 px, jars 40–60 px tall, standing sticks 45–70 px wide. A l
 carries an object is at least three of its widths long, so the object can rest in its
 left, middle or right third; a surface something rolls or slides on is long enough to
 gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a surface for a bounce
-tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom.
+tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
+wall stands the scene's height against the edge its toucher heads for; a green stick and a post
+stand upright.
 """
 
 from __future__ import annotations
 
+import math
 import random
 
 from physc.compiler.concrete_layout import Body
@@ -24,6 +27,24 @@ LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)
 TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
+# Bars standing upright: a green stick (PHYRE's templates 00003, 00009: 0.2-0.5 of the scene)
+# and a black post.
+UPRIGHT = {"greenStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
+
+
+def _across(geometry: Geometry) -> float:
+    """How wide a turned body stands (an upright stick: its thickness)."""
+    angle = math.radians(geometry.rotation)
+    return abs(geometry.width * math.cos(angle)) + abs(geometry.height * math.sin(angle))
+
+
+def _heading_to(scenario, name: str) -> str | None:
+    """The way (left or right) the object that touches `name` last rolls or slides before it."""
+    for k, term in enumerate(scenario.interactions):
+        if term.name == "touch" and term.objects[1] == name:
+            moves = [t for t in scenario.interactions[:k] if t.name in ("roll", "slide") and t.objects[0] == term.objects[0]]
+            return moves[-1].directions[0] if moves else None
+    return None
 
 
 def _size(shape: str, rng: random.Random) -> float:
@@ -51,6 +72,13 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
         name, concrete = node.name, chosen[node.name]
         if concrete == "floor":
             bodies[name] = Body(name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2))
+        elif concrete == "purpleWall":  # upright against the edge its toucher heads for
+            side = _heading_to(scenario, name) or rng.choice(("left", "right"))
+            x = BAR_HEIGHT / 2 if side == "left" else SCENE - BAR_HEIGHT / 2
+            bodies[name] = Body(name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT, 90.0), fixed=(x, SCENE / 2))
+        elif concrete in UPRIGHT:
+            length = round(rng.uniform(*UPRIGHT[concrete]), 1)
+            bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, 90.0))
         elif concrete == "purpleFloor":
             bodies[name] = Body(name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT), fixed=(SCENE / 2, BAR_HEIGHT / 2))
         elif concrete == "ramp":
@@ -61,7 +89,7 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
                 angle = rng.uniform(20, 40) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
         elif concrete in ("blackBar", "purpleBar") and node.static:
-            widest = max((bodies[o].geometry.width for o in carried.get(name, ()) if o in bodies), default=0.0)
+            widest = max((_across(bodies[o].geometry) for o in carried.get(name, ()) if o in bodies), default=0.0)
             low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else TARGET_LENGTH if concrete == "purpleBar" else BAR_LENGTH
             low = max(low, 3 * widest + 6.0)
             bodies[name] = Body(name, node.role, concrete, Geometry(round(rng.uniform(low, max(high, low + 30.0)), 1), BAR_HEIGHT))

@@ -19,6 +19,13 @@ from physc_phyre.world import SCENE, extent, size_of
 KINDS = {
     "greenBall": ("ball", "green", True),
     "greenBar": ("bar", "green", True),
+    "greenStick": ("bar", "green", True),  # standing upright
+    "blueBar": ("bar", "blue", True),
+    "purpleBall": ("ball", "purple", False),
+    "purpleJar": ("jar", "purple", False),
+    "purpleWall": ("bar", "purple", False),  # upright, the scene's height, against its left or right edge
+    "blackBall": ("ball", "black", False),
+    "verticalBar": ("bar", "black", False),  # upright
     "blueBall": ("ball", "blue", True),
     "blueJar": ("jar", "blue", True),
     "purpleBar": ("bar", "purple", False),
