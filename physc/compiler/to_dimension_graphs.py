@@ -80,7 +80,7 @@ class ToDimensionGraphs:
                 budget=Exhausted.SIZE,
             )
         parameters = self.domain.layout_parameters
-        tried = rejected = found = 0
+        tried = rejected = found = misfits = 0
         for draw in range(MAX_SHAPE_DRAWS):
             # Each draw yields the consistent conjunctions for its shapes; once some were
             # found, the caller decides how many it wants (its budget of layouts) and shapes
@@ -91,6 +91,7 @@ class ToDimensionGraphs:
             try:
                 systems, base = self.base(bodies)
             except Inconsistent:  # these shapes do not fit the placement area at all: draw others
+                misfits += 1
                 continue
             nodes = 0
 
@@ -145,6 +146,8 @@ class ToDimensionGraphs:
                 f"the {found} consistent conjunctions of {MAX_SHAPE_DRAWS} shape draws were all used",
                 tried=tried,
             )
+        if misfits == SHAPE_DRAWS:
+            raise Infeasible(self.name, f"the objects' shapes, drawn {SHAPE_DRAWS} times, never fit the placement area", tried=tried)
         conflicts = self.explain(dnf, bodies)
         raise Infeasible(
             self.name,
@@ -156,7 +159,10 @@ class ToDimensionGraphs:
     def explain(self, dnf: QsrDnf, bodies: dict[str, Body]):
         """A minimal set of layout edges whose QSRs cannot all hold (deletion-based)."""
         parameters = self.domain.layout_parameters
-        systems, _ = self.base(bodies)
+        try:
+            systems, _ = self.base(bodies)
+        except Inconsistent:  # the last shapes drawn did not fit: nothing to explain by the clauses
+            return ()
         left = [self.node_budget]
 
         def feasible(clauses: list[QsrClause]) -> bool:

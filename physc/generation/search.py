@@ -178,9 +178,7 @@ class Search(Robustness, Guards, Snapshots):
             distractors=tuple(distractors),
             acceptance=None if verdict is None else verdict.record(),
         )
-        seconds = {"distract": validating - distracting, "validate": accepting - validating}
-        if verdict is not None:
-            seconds["accept"] = time.perf_counter() - accepting
+        seconds = {"distract": validating - distracting, "validate": accepting - validating} | ({} if verdict is None else {"accept": time.perf_counter() - accepting})
         return Outcome(True, self.evaluator.simulations, parts, seconds=seconds, best=self.best, stopped=self.stopped)
 
     @property

@@ -165,3 +165,53 @@ def test_every_pixel_and_radius_survives_phyres_scaling():
             x, y, radius = a[0] * 255, a[1] * 255, 2 + a[2] * 30
             assert (int(x), int(y), round(radius)) == (p, 255 - p, r)
             assert (x, y) == (p, 255 - p)  # PHYRE's bounds test sees the pixel itself
+
+
+def _pipeline(name):
+    from physc.compiler.pipeline import Pipeline
+    from physc.domains import load_domain
+    from physc.dsl.frontend import analyze
+
+    (scenario,) = analyze(str(EXAMPLES / "phyre" / name)).scenarios
+    return Pipeline(load_domain("phyre"), scenario, 0)
+
+
+def test_a_ball_rolled_along_the_floor_rests_on_it():
+    """PHYRE's template 00000: the floor spans the scene, so a ball that rolls along it rests
+    on it anywhere; nothing places it beside the floor (was E0801)."""
+    run = _pipeline("task00000.phys")
+    texts = {e.text() for e in run.layout_graph.edges}
+    assert "onLocation(green, floor, centre ∨ left ∨ right)" in texts or any(t.startswith("onLocation(green, floor,") for t in texts)
+    assert not any(t.startswith("inDirection(green, floor") for t in texts)
+    objects = {o.name: o for o in run.placed.layout.objects}
+    assert objects["green"].y - objects["green"].height / 2 == pytest.approx(0.0, abs=0.5)  # on the floor's top
+
+
+def test_a_path_broken_by_a_fall_need_not_be_continuous_and_a_wall_stands_where_the_ball_heads():
+    """PHYRE's template 00001: the ball rolls off its shelf, falls, and rolls on along the floor
+    to the purple wall: the shelf need not touch the floor (was E0801), and the wall stands at
+    the right edge, where the ball heads."""
+    run = _pipeline("task00001.phys")
+    assert not any(e.term == "touching" and "floor" in (e.a, e.b) for e in run.layout_graph.edges)
+    wall = next(o for o in run.placed.layout.objects if o.name == "wall")
+    assert (wall.rotation, wall.x) == (90.0, pytest.approx(256 - 5.12 / 2))
+
+
+def test_an_upright_stick_gets_a_ledge_a_few_of_its_thicknesses_long():
+    run = _pipeline("task00009.phys")
+    objects = {o.name: o for o in run.placed.layout.objects}
+    assert objects["green"].rotation == 90.0 and objects["support_green"].width < 100
+
+
+def test_shapes_that_cannot_fit_the_scene_are_drawn_again_not_an_internal_error(monkeypatch):
+    import physc_phyre
+    from physc.compiler.concrete_layout import Body
+    from physc.compiler.geometry import Geometry
+    from physc.compiler.infeasible import Infeasible
+
+    def too_big(graph, scenario, rng):
+        return {n.name: Body(n.name, n.role, "blackBar", Geometry(1000.0, 5.12)) for n in graph.nodes}
+
+    monkeypatch.setattr(physc_phyre.Phyre, "concretize", staticmethod(too_big))
+    with pytest.raises(Infeasible):
+        _pipeline("task00000.phys").placed
