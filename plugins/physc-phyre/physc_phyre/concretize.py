@@ -27,9 +27,9 @@ LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)
 TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
-# Bars standing upright: a green stick (PHYRE's templates 00003, 00009: 0.2-0.5 of the scene)
-# and a black post.
-UPRIGHT = {"greenStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
+# Bars standing upright: a green or gray stick (PHYRE's templates 00003, 00009, 00017: 0.2-0.5
+# of the scene) and a black post.
+UPRIGHT = {"greenStick": (51.0, 128.0), "grayStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
 
 
 def _across(geometry: Geometry) -> float:

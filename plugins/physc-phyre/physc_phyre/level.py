@@ -26,6 +26,7 @@ KINDS = {
     "purpleWall": ("bar", "purple", False),  # upright, the scene's height, against its left or right edge
     "blackBall": ("ball", "black", False),
     "verticalBar": ("bar", "black", False),  # upright
+    "grayStick": ("bar", "gray", True),  # standing upright
     "blueBall": ("ball", "blue", True),
     "blueJar": ("jar", "blue", True),
     "purpleBar": ("bar", "purple", False),

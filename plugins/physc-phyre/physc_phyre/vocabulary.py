@@ -31,6 +31,7 @@ CONCRETE_OBJECTS = (
     ConcreteObject("purpleWall", static=True, description="a purple upright bar the scene's height against its left or right edge, the static object the green one must touch"),
     ConcreteObject("blackBall", static=True, description="a black static ball (a peg, a fulcrum)"),
     ConcreteObject("verticalBar", static=True, description="a black static bar, upright (a post)"),
+    ConcreteObject("grayStick", description="a gray bar, standing upright"),
     ConcreteObject("blueJar", description="a blue jar, the dynamic object the green one must touch"),
     ConcreteObject("purpleBar", static=True, description="a purple static bar, the static object the green one must touch"),
     ConcreteObject("purpleFloor", static=True, description="a purple bar over the whole floor, the static object the green one must touch"),
@@ -52,7 +53,7 @@ OBJECT_TERMS = (
     ),
     ObjectTerm("rollableObject", ("ball", "greenBall", "blueBall", "redBall"), "rObj", noun="a rollable object"),
     ObjectTerm(
-        "fallableObject", ("ball", "bar", "jar", "sticks", "greenBall", "greenBar", "greenStick", "blueBall", "blueBar", "blueJar", "redBall"), "fObj",
+        "fallableObject", ("ball", "bar", "grayStick", "jar", "sticks", "greenBall", "greenBar", "greenStick", "blueBall", "blueBar", "blueJar", "redBall"), "fObj",
         noun="a fallable object",
     ),
     ObjectTerm("slidableObject", ("bar", "greenBar", "blueBar"), "sObj", noun="a slidable object"),
