@@ -128,9 +128,10 @@ def _layout_classes():
 
 
 def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path):
-    """A task kept by PHYRE's acceptance rule (GOOD_STABLE, not TRIVIAL, its solution stable
-    under half-pixel moves), with the figures in the record and the report."""
-    status, _, err = physc("eval", LEDGE, "--seed", "1", "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
+    """A task of PHYRE's template 00009 kept by PHYRE's acceptance rule (GOOD_STABLE, not
+    TRIVIAL, its solution stable under half-pixel moves), with the figures in the record and
+    the report."""
+    status, _, err = physc("eval", EXAMPLES / "phyre" / "task00009.phys", "--seed", "1", "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
     assert status == 0, err
     (record,) = [json.loads(line) for line in (tmp_path / "eval" / "records.jsonl").read_text().splitlines()]
     assert record["generated"] and record["stable"] and record["intended_exact"]
