@@ -116,6 +116,17 @@ class Phyre(SimulatedDomain):
         return actions.neighbours(action)
 
     @staticmethod
+    def distractor_count(rng: random.Random, most: int) -> int:
+        return rng.randint(0, most)
+
+    @staticmethod
+    def distractors(layout, index: int, rng: random.Random):
+        """Static bars and balls, and gray balls on the floor, that play no part (distract.py)."""
+        from physc_phyre.distract import distractors
+
+        return distractors(layout, index, rng)
+
+    @staticmethod
     def valid(level: PhyreLevel, action: BallAction) -> bool:
         return actions.valid(level, action)
 
