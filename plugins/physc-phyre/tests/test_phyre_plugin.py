@@ -216,3 +216,24 @@ def test_shapes_that_cannot_fit_the_scene_are_drawn_again_not_an_internal_error(
     monkeypatch.setattr(physc_phyre.Phyre, "concretize", staticmethod(too_big))
     with pytest.raises(Infeasible):
         _pipeline("task00000.phys").placed
+
+
+def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_path):
+    import random
+
+    from physc_phyre.distract import distractors
+
+    seen = [obj for index in range(1, 30) for obj in distractors(None, index, random.Random(index))]
+    assert {o.concrete for o in seen} == {"blackBar", "blackBall", "ball"}
+    assert all(0 < o.x < 256 and 0 < o.y < 256 for o in seen)
+    assert all(o.y == o.height / 2 for o in seen if o.concrete == "ball")  # on the floor
+    # Template 00009, seed 2: two kept; in the task file, a black (static) or gray body each.
+    status, _, err = physc("compile", EXAMPLES / "phyre" / "task00009.phys", "--seed", "2", "-q", "-o", tmp_path / "t.json", "--task", tmp_path / "task.json")
+    assert status == 0, err
+    task = json.loads((tmp_path / "task.json").read_text())
+    assert task["distractors"] and task["acceptance"]["accepted"]
+    level = json.loads((tmp_path / "t.json").read_text())
+    names = level["physc"]["names"]
+    for name in task["distractors"]:
+        body = level["scene"]["bodies"][names.index(name)]
+        assert (body["color"], body["bodyType"]) in ((6, 1), (5, 2))
