@@ -40,6 +40,8 @@ def cmd_agent(args) -> int:
     except AgentError as error:
         print(f"physc eval: error: {error}", file=sys.stderr)
         return EXIT_INPUT
+    except OSError as error:  # a dataset whose benchmark files are missing or unreadable
+        raise UsageError(f"cannot read the dataset {folder} (generated to its end by physc generate?): {error}") from None
     out = Path(args.out)
     ensure_folder(out)
     write_atomic(out / "agent.json", json.dumps({"agent": args.agent, "dataset": str(folder), **scored}, indent=2) + "\n")

@@ -191,3 +191,13 @@ def test_a_broken_agent_is_the_agents_error_not_physcs(dataset, tmp_path, monkey
     monkeypatch.syspath_prepend(str(Path(__file__).parent))
     status, _, err = physc("eval", "--agent", agent, dataset, "--folds", "1", "--setup", "within_template", "--out", tmp_path, "-q")
     assert status == 1 and message in err and "Traceback" not in err
+
+
+def test_a_dataset_without_its_benchmark_files_is_a_clear_error(dataset, tmp_path):
+    broken = tmp_path / "broken"
+    broken.mkdir()
+    (broken / "manifest.jsonl").write_text((dataset / "manifest.jsonl").read_text())
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", broken, "--out", tmp_path / "out")
+    assert status == 2 and "cannot read the dataset" in err and "Traceback" not in err
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", tmp_path / "nowhere", "--out", tmp_path / "out")
+    assert status == 2 and "one dataset folder" in err
