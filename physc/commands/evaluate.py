@@ -22,6 +22,7 @@ def cmd_agent(args) -> int:
     import json
 
     from physc.domains import load_domain
+    from physc.domains.base import Domain, DomainError
     from physc.evaluation.agent import AgentError, load
     from physc.files import read_json_lines, write_atomic
 
@@ -33,7 +34,12 @@ def cmd_agent(args) -> int:
     if len(domains) != 1:
         raise UsageError(f"{folder} holds no generated tasks of one domain (manifest.jsonl: {', '.join(domains) or 'none'})")
     check_output(args.out, folder=True)
-    domain = load_domain(domains[0])
+    try:
+        domain = load_domain(domains[0])
+        if type(domain).score_agent is Domain.score_agent:
+            raise UsageError(f"the domain '{domain.name}' scores no agent (it has no score_agent); the PHYRE-like plugin's datasets can be scored")
+    except DomainError as error:
+        raise UsageError(f"{folder}: {error.message}") from None
     try:
         agent = load(args.agent)
         scored = domain.score_agent(folder, agent, args.setup, range(args.folds), args.split)

@@ -201,3 +201,8 @@ def test_a_dataset_without_its_benchmark_files_is_a_clear_error(dataset, tmp_pat
     assert status == 2 and "cannot read the dataset" in err and "Traceback" not in err
     status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", tmp_path / "nowhere", "--out", tmp_path / "out")
     assert status == 2 and "one dataset folder" in err
+    other = tmp_path / "angrybirds"
+    other.mkdir()
+    (other / "manifest.jsonl").write_text(json.dumps({"file": "f", "scenario": "S", "seed": 0, "domain": "angrybirds", "level": "S/0.xml"}) + "\n")
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", other, "--out", tmp_path / "out")
+    assert status == 2 and "scores no agent" in err
