@@ -11,6 +11,7 @@ import pytest
 from physc.generation.acceptance import Acceptance, good, judge, trivial_known
 
 PHYRE = Acceptance(threshold=1e-5, attempts=1000)
+INTENDED = -1.0  # the task's intended solution: it solves, and so do its neighbours
 
 
 class World:
@@ -27,16 +28,19 @@ class World:
         return self.rng.random()
 
     def valid(self, a: float) -> bool:
-        return a < self.valid_below or a >= 2  # neighbours are valid
+        return a < self.valid_below or a >= 2 or a == INTENDED  # neighbours are valid
 
     def solves(self, a: float) -> bool:
         self.plays += 1
-        return a < self.solved or (a >= 2 and a - 2 < self.stable)  # a neighbour of a stable solution is a + 2
+        return a == INTENDED or 0 <= a < self.solved or (a >= 2 and a - 2 < self.stable)  # a neighbour of a stable solution is a + 2
 
     def neighbours(self, a: float) -> list[float]:
+        if a == INTENDED:
+            return [INTENDED] * 8
         return [a + 2] * 8 if a < self.stable else [a + 2, 5.0]
 
-    def judge(self, rule=PHYRE, solution=0.0):
+    def judge(self, rule=PHYRE, solution=None):
+        solution = INTENDED if solution is None else solution
         return judge(rule, solution, self.draw, self.valid, self.solves, self.neighbours)
 
 
@@ -55,7 +59,7 @@ def test_the_trivial_share_is_known_once_its_interval_lies_on_one_side():
 
 def test_a_task_random_actions_never_solve_is_not_good_after_every_draw():
     world = World(solved=0.0)
-    verdict = world.judge(solution=5.0)
+    verdict = world.judge()
     assert (verdict.valid, verdict.solved, verdict.good_stable, verdict.trivial) == (1000, 0, False, False)
     assert not verdict.accepted and verdict.flags == []
 
@@ -88,8 +92,15 @@ def test_invalid_actions_count_as_attempts_for_trivial_but_not_for_good():
 def test_unstable_solutions_are_neither_good_nor_trivial():
     """Every random solution has a neighbour that fails: none is stable, so the task is not
     GOOD_STABLE, however often it is solved."""
-    verdict = World(solved=0.3, stable=0.0).judge(solution=0.1)
-    assert verdict.solved > 0 and verdict.stable == 0 and not verdict.good_stable and not verdict.solution_stable
+    verdict = World(solved=0.3, stable=0.0).judge()
+    assert verdict.solved > 0 and verdict.stable == 0 and not verdict.good_stable and verdict.solution_stable
+
+
+def test_an_intended_solution_that_is_not_stable_or_not_valid_ends_the_judging_at_once():
+    world = World(solved=0.3, stable=0.0)
+    verdict = world.judge(solution=0.1)
+    assert not verdict.solution_stable and verdict.attempts == 0 and not verdict.accepted
+    assert not World(solved=0.3, valid=0.5).judge(solution=0.7).solution_stable  # an invalid action
 
 
 def test_a_solution_with_a_failing_neighbour_is_not_accepted():

@@ -151,6 +151,13 @@ class ContactLog:
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
 
+    def assume_touching(self, pairs) -> None:
+        """Count `pairs` as touching now (a run continued from a snapshot, whose engine reports
+        their contact only once it steps them, and a sleeping body not until it wakes)."""
+        for a, b in pairs:
+            self._touching.setdefault(a, set()).add(b)
+            self._touching.setdefault(b, set()).add(a)
+
     def begun(self) -> list[ContactEvent]:
         events, self._begun = self._begun, []
         return events

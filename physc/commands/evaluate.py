@@ -46,7 +46,7 @@ def cmd_agent(args) -> int:
     except AgentError as error:
         print(f"physc eval: error: {error}", file=sys.stderr)
         return EXIT_INPUT
-    except OSError as error:  # a dataset whose benchmark files are missing or unreadable
+    except (OSError, ValueError, KeyError) as error:  # a dataset whose benchmark files are missing, unreadable or damaged
         raise UsageError(f"cannot read the dataset {folder} (generated to its end by physc generate?): {error}") from None
     out = Path(args.out)
     ensure_folder(out)
@@ -104,6 +104,6 @@ def add_command(commands, common) -> None:
     agent = parser.add_argument_group("scoring an agent on a generated dataset (a PHYRE-like benchmark)")
     agent.add_argument("--agent", metavar="MODULE:NAME", help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first (physc_phyre.agents:random_agent)")
     agent.add_argument("--setup", choices=("cross_template", "within_template"), default="cross_template", help="PHYRE's evaluation setup (default cross_template)")
-    agent.add_argument("--folds", type=arguments.tasks, default=10, metavar="N", help="folds 0 .. N-1 (default 10, as PHYRE reports)")
+    agent.add_argument("--folds", type=int, choices=range(1, 11), default=10, metavar="N", help="folds 0 .. N-1, N from 1 to 10 (default 10, as PHYRE reports)")
     agent.add_argument("--split", choices=("test", "dev"), default="test", help="the split scored (default test; the agent's fit sees train and dev)")
     parser.set_defaults(run=cmd_eval)

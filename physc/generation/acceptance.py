@@ -25,6 +25,9 @@ from collections.abc import Callable
 import attrs
 
 
+DRAWS_PER_ATTEMPT = 100  # draws per valid action at most (a scene random actions can hardly be placed in ends the draws)
+
+
 @attrs.frozen
 class Acceptance:
     """A benchmark's rule for keeping a task (module docstring)."""
@@ -49,7 +52,7 @@ class Verdict:
     attempts: int  # random actions drawn (invalid ones included, as PHYRE counts them)
     valid: int
     solved: int
-    stable: int  # of the solved and judged, those whose every neighbour solves too (or is invalid)
+    stable: int  # of the solved, those judged stable (every neighbour solves too, or is invalid): a lower bound once the task is known not TRIVIAL
     good_stable: bool
     trivial: bool
     solution_stable: bool
@@ -105,7 +108,9 @@ def judge(rule: Acceptance, solution, draw: Callable, valid: Callable, solves: C
     change an answer: until the first stable one makes the task GOOD_STABLE, and while the
     share of *solutions* (an upper bound of the stable share) does not already show that the
     task is not TRIVIAL. A solution left unjudged is judged if that changes."""
-    solution_stable = stable_solution(solution, neighbours, valid, solves)
+    solution_stable = valid(solution) and stable_solution(solution, neighbours, valid, solves)
+    if not solution_stable:  # rejected whatever random actions show
+        return Verdict(0, 0, 0, 0, False, False, False)
     attempts = valid_count = solved = stable = 0
     unjudged: list = []  # random solutions whose stability was not needed yet
     is_good, is_trivial = False, None
@@ -117,7 +122,7 @@ def judge(rule: Acceptance, solution, draw: Callable, valid: Callable, solves: C
             stable += 1
             is_good = is_good or good(stable, valid_count, rule)
 
-    while valid_count < rule.attempts:
+    while valid_count < rule.attempts and attempts < rule.attempts * DRAWS_PER_ATTEMPT:
         action = draw()
         attempts += 1
         if not valid(action):

@@ -136,6 +136,8 @@ class Guards:
                 candidate = attrs.evolve(layout, objects=layout.objects + (obj,))
                 if not placing.consistent(candidate, self.parameters, {obj.name}):
                     continue
+                if not self.domain.valid(self.level_of(candidate), solution.action):  # it covers the player's action
+                    continue
                 if not self.simulate(candidate, solution.action).fidelity.valid:
                     continue
                 if not self.evaluator.run(lambda: self.domain.stability(self.level_of(candidate)))[0]:

@@ -92,9 +92,9 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
     rules.on_start(world)
-    first, already = 0, frozenset()
+    first, already = 0, set()
     if resume is not None:
-        first, already = _continued(world, dynamic, rules, resume, states, alive), resume.touching
+        first, already = _continued(world, dynamic, rules, resume, states, alive), set(resume.touching)
         contacts, separations = list(resume.contacts), list(resume.separations)
         damage, destructions = list(resume.damage), list(resume.destructions)
     for step in range(first, steps):
@@ -102,8 +102,9 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
         world.step(dt)
         time = (step + 1) * dt
         for event in world.begun():
-            if already and step == first and frozenset((event.a, event.b)) in already:
-                continue  # touching at the snapshot already: no new contact
+            if already and frozenset((event.a, event.b)) in already:
+                already.discard(frozenset((event.a, event.b)))
+                continue  # touching at the snapshot already (reported when stepped, or woken): no new contact
             record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
             contacts.append(record)
             rules.on_contact(world, record, damage, time)
@@ -138,6 +139,8 @@ def _continued(world, dynamic: Sequence[str], rules: RunRules, snapshot: Snapsho
     its pose at the start, at rest), the rules resumed. The step to go on from."""
     first = min(snapshot.step, len(states))
     gone = snapshot.gone
+    present = set(world.names)
+    world.assume_touching(tuple(p) for p in snapshot.touching if len(p) == 2 and p <= present and not p & gone)
     for i, name in enumerate(dynamic):
         if name in snapshot.names:
             states[:first, i] = snapshot.states[:first, snapshot.names.index(name)]

@@ -69,7 +69,10 @@ def ball(action) -> BallAction | None:
 
 def observations(folder: Path) -> dict[str, Observation]:
     """Every task of a generated dataset's `phyre/` folder, by id."""
-    tasks = phyre_format.read_collection((folder / "phyre" / "tasks.bin.lzma").read_bytes())
+    files = sorted((folder / "phyre").glob("tasks*.bin.lzma"))
+    if not files:
+        raise FileNotFoundError(f"no task collection (tasks*.bin.lzma) in {folder / 'phyre'}")
+    tasks = [task for path in files for task in phyre_format.read_collection(path.read_bytes())]
     shown = [{k: v for k, v in t.items() if k != "solutions"} for t in tasks]  # not the intended solution
     return {t["taskId"]: Observation(t["taskId"], observation.raster(t), observation.features(t), t) for t in shown}
 

@@ -39,12 +39,11 @@ def rectangle(cx: float, cy: float, width: float, height: float, angle: float = 
     return Polygon(tuple((cx + x * c - y * s, cy + x * s + y * c) for x, y in corners))
 
 
-def jar_parts(height: float) -> tuple[Polygon, ...]:
-    """A jar `height` tall: its base plate (origin at its middle) and two walls slanting
-    out to an opening `height / 1.2` wide."""
+def jar_parts(height: float, t: float = BAR_HEIGHT) -> tuple[Polygon, ...]:
+    """A jar `height` tall with plates `t` thick: its base plate (origin at its middle) and
+    two walls slanting out to an opening `height / 1.2` wide."""
     width = height * JAR_WIDTH_RATIO
     base = width * JAR_BASE_RATIO
-    t = BAR_HEIGHT
     top = height - t
     parts = [rectangle(0.0, 0.0, base, t)]
     for side in (-1, 1):
