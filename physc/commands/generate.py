@@ -50,8 +50,13 @@ def cmd_generate(args) -> int:
         return status
     argv = sys.argv[2:] if sys.argv[1:2] == ["generate"] else [*args.files, "--tasks", str(args.tasks), "--out", args.out]
     command = reproducing_command("generate", argv)
+    from physc.domains.base import DomainError
+
     with executor_from(args) as executor:
-        rows = build(jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command)
+        try:
+            rows = build(jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command)
+        except DomainError as error:  # the domain's own benchmark files refused (the tasks are kept)
+            raise UsageError(f"the tasks are in {args.out}, but not the domain's own benchmark files: {error.message}") from None
     made = sum(row["outcome"] != NO_TASK for row in rows)
     if not args.quiet:
         print(f"{made} of {len(rows)} tasks generated; dataset in {args.out} (README.md, manifest.parquet)", file=sys.stderr)

@@ -95,8 +95,8 @@ def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, 
     final = [rows[job.key] for job in jobs]
     manifest.write_jsonl(folder, final)
     manifest.write_parquet(folder, final)
-    for name, content in benchmark_files(folder, final).items():
+    write_atomic(folder / README, readme.render(folder, jobs, final, sources(jobs), command))
+    for name, content in benchmark_files(folder, final).items():  # last: a domain may refuse (DomainError)
         ensure_folder((folder / name).parent)
         write_atomic(folder / name, content)
-    write_atomic(folder / README, readme.render(folder, jobs, final, sources(jobs), command))
     return final

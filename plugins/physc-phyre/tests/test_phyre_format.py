@@ -206,3 +206,10 @@ def test_a_dataset_without_its_benchmark_files_is_a_clear_error(dataset, tmp_pat
     (other / "manifest.jsonl").write_text(json.dumps({"file": "f", "scenario": "S", "seed": 0, "domain": "angrybirds", "level": "S/0.xml"}) + "\n")
     status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", other, "--out", tmp_path / "out")
     assert status == 2 and "scores no agent" in err
+
+
+def test_a_template_with_more_tasks_than_phyres_ids_allow_keeps_its_tasks_and_says_why(tmp_path, monkeypatch):
+    monkeypatch.setattr(phyre_format, "INSTANCES", 1)  # PHYRE's ids allow 1,000 instances a template
+    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", "--tasks", "2", "--no-acceptance", "--out", tmp_path, "-q")
+    assert status == 2 and "not the domain's own benchmark files" in err and "instance ids have three digits" in err
+    assert (tmp_path / "README.md").is_file() and (tmp_path / "manifest.parquet").is_file()
