@@ -101,6 +101,7 @@ class _Builder:
     def __init__(self, scenario: ScenarioIR, rules: LayoutRules):
         self.scenario = scenario
         self.flat = rules.flat
+        self.ground = rules.ground
         self.nodes: dict[str, LayoutNode] = {}
         self.edges: list[LayoutEdge] = []
         for obj in scenario.objects:
@@ -116,6 +117,10 @@ class _Builder:
             name += "_"
         self.nodes[name] = LayoutNode(name, "support", concrete, True, SUPPORT)
         return name
+
+    def is_ground(self, name: str) -> bool:
+        """Whether `name` can only be the ground (which spans the scene)."""
+        return self.ground is not None and self.nodes[name].concrete == (self.ground,)
 
     def narrow_to_flat(self, name: str) -> None:
         """A scenario surface that something rests on must be horizontal."""
@@ -146,7 +151,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             b.edge(LIES_ON_PATH, target, actor, (), why)
             b.edge(IN_DIRECTION, target, actor, opposite(term.directions), why)
         elif term.name in ("roll", "slide"):
-            if rules.ground is not None and b.nodes[term.objects[1]].concrete == (rules.ground,):
+            if b.is_ground(term.objects[1]):
                 continue  # the ground spans the scene: what moves along it starts anywhere on it
             motions.append(len(b.edges))
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], opposite(term.directions), why)
@@ -207,7 +212,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
                 where = ("centre",)
             b.edge(ON_LOCATION, target, rest, where, Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
             support[target] = rest
-        elif target in surfaces and rules.ground is not None and b.nodes[surfaces[target][0]].concrete == (rules.ground,):
+        elif target in surfaces and b.is_ground(surfaces[target][0]):
             ground = surfaces[target][0]  # it moves along the ground first: it rests on it, anywhere
             b.edge(ON_LOCATION, target, ground, ("left", "centre", "right"), Provenance("support", f"{target} rests on the ground it moves along", term.span))
             support[target] = ground

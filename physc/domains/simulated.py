@@ -178,8 +178,9 @@ class SimulatedDomain(Domain):
     blocker_thickness: float = 0.1
 
     def distractor_count(self, rng: random.Random, most: int) -> int:
-        """How many distractors to try to add (the default: none)."""
-        return 0
+        """How many distractors to try to add: for a domain that writes `distractors`, 0 to
+        `most` at random (the paper's), else none."""
+        return rng.randint(0, most) if type(self).distractors is not SimulatedDomain.distractors else 0
 
     def distractors(self, layout, index: int, rng: random.Random):
         """Candidate distractors (PlacedObjects named for `index`), tried in turn until one is

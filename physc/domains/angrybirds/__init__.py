@@ -139,10 +139,6 @@ class AngryBirds(SimulatedDomain):
         return friction(placed)
 
     @staticmethod
-    def distractor_count(rng: random.Random, most: int) -> int:
-        return rng.randint(0, most)
-
-    @staticmethod
     def distractors(layout, index: int, rng: random.Random):
         from physc.domains.angrybirds.distract import distractors
 

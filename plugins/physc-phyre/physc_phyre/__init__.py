@@ -116,10 +116,6 @@ class Phyre(SimulatedDomain):
         return actions.neighbours(action)
 
     @staticmethod
-    def distractor_count(rng: random.Random, most: int) -> int:
-        return rng.randint(0, most)
-
-    @staticmethod
     def distractors(layout, index: int, rng: random.Random):
         """Static bars and balls, and gray balls on the floor, that play no part (distract.py)."""
         from physc_phyre.distract import distractors

@@ -68,17 +68,32 @@ def valid(level: PhyreLevel, action: BallAction) -> bool:
     return not any(_overlaps(body, action.x, action.y, r) for body in level.bodies)
 
 
+def from_unit(action) -> BallAction | None:
+    """An action in [0, 1]³ as PHYRE's ball tier reads it (action_mappers.py: x = int(a·255),
+    y likewise, r = round(2 + a·30); the inverse of BallAction.unit); None when PHYRE calls it
+    invalid before placing it (a value outside [0, 1], or the ball not inside the scene,
+    tested before quantising)."""
+    try:
+        a, b, c = (float(v) for v in action)
+    except (TypeError, ValueError):
+        return None
+    if not all(0.0 <= v <= 1.0 for v in (a, b, c)):
+        return None
+    x, y, r = a * (SCENE - 1), b * (SCENE - 1), MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)
+    if not (r <= x <= SCENE - r and r <= y <= SCENE - r):
+        return None
+    return BallAction(int(x), int(y), round(r))
+
+
 def random_action(rng: random.Random) -> BallAction:
     """A draw of PHYRE's random agent: uniform in [0, 1]³ until the ball lies inside the
-    scene (PHYRE's `sample(valid_only=True)`, tested before quantising), then scaled and
-    quantised as PHYRE's ball tier does (x = a·255, y = a·255 truncated, r = 2 + a·30
-    rounded). Whether it occludes a body is `valid`'s to say, as PHYRE counts such an
+    scene (PHYRE's `sample(valid_only=True)`), read as PHYRE's ball tier reads it
+    (`from_unit`). Whether it occludes a body is `valid`'s to say, as PHYRE counts such an
     action as an invalid attempt."""
     while True:
-        x, y = rng.random() * (SCENE - 1), rng.random() * (SCENE - 1)
-        r = MIN_RADIUS + rng.random() * (MAX_RADIUS - MIN_RADIUS)
-        if r <= x <= SCENE - r and r <= y <= SCENE - r:
-            return BallAction(int(x), int(y), round(r))
+        placed = from_unit((rng.random(), rng.random(), rng.random()))
+        if placed is not None:
+            return placed
 
 
 NEIGHBOUR_SHIFT = 0.5  # pixels: PHYRE's test of a stable solution moves the ball this far each way

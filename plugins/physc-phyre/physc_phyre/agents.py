@@ -27,7 +27,7 @@ from physc.domains.simulated import auccess
 from physc.evaluation.agent import calling
 
 from physc_phyre import observation, phyre_format
-from physc_phyre.level import BallAction
+from physc_phyre.actions import from_unit
 
 SPLITS = ("dev", "test")
 STOP = object()  # the agent's actions have run out
@@ -49,22 +49,6 @@ def random_agent(seen: Observation) -> Iterable[tuple[float, float, float]]:
     rng = random.Random(f"random-agent/{seen.task_id}")
     while True:
         yield (rng.random(), rng.random(), rng.random())
-
-
-def ball(action) -> BallAction | None:
-    """An action in [0, 1]³ as PHYRE's ball tier reads it (x = int(a·255), y likewise,
-    r = round(2 + a·30)); None when PHYRE calls it invalid before placing it (a value outside
-    [0, 1], or the ball not inside the scene, tested before quantising)."""
-    try:
-        a, b, c = (float(v) for v in action)
-    except (TypeError, ValueError):
-        return None
-    if not all(0.0 <= v <= 1.0 for v in (a, b, c)):
-        return None
-    x, y, r = a * 255, b * 255, 2 + c * 30
-    if not (r <= x <= 256 - r and r <= y <= 256 - r):
-        return None
-    return BallAction(int(x), int(y), round(r))
 
 
 def observations(folder: Path) -> dict[str, Observation]:
@@ -89,7 +73,7 @@ def first_solved(domain, level, seen: Observation, agent: Callable) -> int | Non
                 action = next(drawn, STOP)
             if action is STOP:
                 return
-            yield ball(action)
+            yield from_unit(action)
 
     outcomes = domain.attempts(level, actions(), until_solved=True)
     return len(outcomes) if outcomes and outcomes[-1] else None
@@ -106,6 +90,13 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
     files = {row["task_id"]: row["task"] for row in _rows(folder)}
     classes = {c.__name__: c for c in domain.level_classes}
     split_of = json.loads((folder / "phyre" / "folds.json").read_text())[setup]
+    levels: dict = {}  # a task's level, read once though the folds share tasks
+
+    def level_of(task_id: str):
+        if task_id not in levels:
+            levels[task_id] = from_data(json.loads((folder / files[task_id]).read_text())["level"], classes)
+        return levels[task_id]
+
     results = {}
     for fold in folds:
         parts = split_of[str(fold)]
@@ -115,8 +106,7 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
                 agent.fit([seen[t] for t in trained])
         scores = {}
         for task_id in parts[split]:
-            level = from_data(json.loads((folder / files[task_id]).read_text())["level"], classes)
-            scores[task_id] = auccess(first_solved(domain, level, seen[task_id], agent))
+            scores[task_id] = auccess(first_solved(domain, level_of(task_id), seen[task_id], agent))
         per_template: dict[str, list[float]] = {}
         for task_id, value in scores.items():
             per_template.setdefault(task_id[:5], []).append(value)
