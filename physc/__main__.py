@@ -1,3 +1,3 @@
-from physc.cli import main
+from physc.console import main
 
 raise SystemExit(main())

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import traceback
 from typing import Sequence
 
 from physc import __version__, budget
@@ -18,15 +19,18 @@ from physc.commands import arguments
 from physc.commands.check import cmd_check
 from physc.commands.common import (
     EXIT_INTERNAL,
+    EXIT_STATUSES,
     EXIT_INTERRUPTED,
     EXIT_OK,
     EXIT_USAGE,
     Parser,
     UsageError,
     add_backend,
+    add_format,
     add_min_robustness,
 )
 from physc.commands.compile import cmd_compile
+from physc.commands.completion import add_command as add_completion_command
 from physc.commands.backends import cmd_backends
 from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
@@ -44,22 +48,22 @@ from physc.files import OutputError
 
 # ---- the parser -----------------------------------------------------------------------
 def build_parser() -> argparse.ArgumentParser:
+    # --color and --traceback go before or after the command: a subcommand sets them only
+    # when given there (SUPPRESS), so its defaults never undo the top level's.
+    top = argparse.ArgumentParser(add_help=False)
+    top.add_argument("--color", choices=("auto", "always", "never"), default="auto", help="colour diagnostics")
+    top.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
     common = argparse.ArgumentParser(add_help=False)
-    common.add_argument("--color", choices=("auto", "always", "never"), default="auto", help="colour diagnostics")
-    common.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
+    common.add_argument("--color", choices=("auto", "always", "never"), default=argparse.SUPPRESS, help="colour diagnostics")
+    common.add_argument("--traceback", action="store_true", default=argparse.SUPPRESS, help="show Python tracebacks of internal errors")
 
-    parser = Parser(
-        prog="physc",
-        description="Compile physical scenarios (.phys) into physics tasks.",
-        epilog="exit status: 0 ok, 1 input errors, 2 usage or unreadable file, 3 no task could be generated",
-        parents=[common],
-    )
+    parser = Parser(prog="physc", description="Compile physical scenarios (.phys) into physics tasks.", epilog=EXIT_STATUSES, parents=[top])
     parser.add_argument("--version", action="version", version=f"physc {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
 
     check = commands.add_parser("check", parents=[common], help="check .phys files and report every problem")
     check.add_argument("files", nargs="+", metavar="FILE", help="files to check ('-' reads standard input)")
-    check.add_argument("--format", choices=("text", "json"), default="text", help="diagnostic format")
+    add_format(check, "the diagnostics")
     check.add_argument("-q", "--quiet", action="store_true", help="no summary line")
     check.set_defaults(run=cmd_check)
 
@@ -68,6 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
     mode = fmt.add_mutually_exclusive_group()
     mode.add_argument("--check", action="store_true", help="exit 1 if a file is not canonical; change nothing")
     mode.add_argument("--write", action="store_true", help="rewrite the files in place")
+    add_format(fmt, "each file's canonical form")
     fmt.set_defaults(run=cmd_fmt)
 
     stage_names = ", ".join(s.name for s in STAGES)
@@ -106,16 +111,17 @@ def build_parser() -> argparse.ArgumentParser:
     add_verify_command(commands, common)
 
     add_lsp_command(commands, common)
+    add_completion_command(commands, common)
 
     backends = commands.add_parser("backends", parents=[common], help="list installed physics engines, their versions and what each honours")
     backends.add_argument("name", nargs="*", help="only these backends")
     backends.add_argument("-v", "--verbose", action="store_true", help="say, setting by setting, what each engine does with a world's engine settings")
-    backends.add_argument("--json", action="store_true", help="machine-readable output")
+    add_format(backends, "the engines")
     backends.set_defaults(run=cmd_backends)
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")
-    domains.add_argument("--json", action="store_true", help="machine-readable output")
+    add_format(domains, "the domains")
     domains.set_defaults(run=cmd_domains)
     return parser
 
@@ -142,7 +148,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_OK
     except Exception as error:  # a bug in physc: never a bare traceback for users
         if args.traceback:
-            raise
+            traceback.print_exc()
+            return EXIT_INTERNAL
         print(
             f"physc: internal error: {type(error).__name__}: {safe(str(error))}\n"
             "This is a bug in physc. Please report it with the input that caused it; "

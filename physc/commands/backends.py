@@ -3,10 +3,9 @@ a target world's engine settings."""
 
 from __future__ import annotations
 
-import json
 from importlib.metadata import PackageNotFoundError, version
 
-from physc.commands.common import EXIT_OK, chosen
+from physc.commands.common import EXIT_OK, chosen, print_json
 
 
 def _version(package: str) -> str | None:
@@ -37,8 +36,8 @@ def cmd_backends(args) -> int:
 
     names = chosen(args.name, list(installed_backends()), "backend")
     entries = [describe(name) for name in names]
-    if args.json:
-        print(json.dumps(entries, indent=2, ensure_ascii=False))
+    if args.format == "json":
+        print_json(entries)
         return EXIT_OK
     if not entries:
         print("no physics backends installed (physc.backends entry points)")

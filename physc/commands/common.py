@@ -9,10 +9,14 @@ from typing import Sequence
 
 from physc import diagnostics
 from physc.compiler.task import MIN_ROBUSTNESS
+from physc.console import EXIT_INTERRUPTED  # Ctrl-C: 128 + SIGINT, as shells report it
 from physc.diagnostics import Diagnostic
 
 EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
-EXIT_INTERRUPTED = 130  # Ctrl-C: 128 + SIGINT, as shells report it
+EXIT_STATUSES = (
+    "exit status: 0 ok, 1 input errors, 2 usage or unreadable file, 3 no task could be generated, "
+    "70 internal error (a bug in physc), 130 interrupted (Ctrl-C)"
+)
 
 
 class UsageError(Exception):
@@ -20,6 +24,12 @@ class UsageError(Exception):
 
 
 class Parser(argparse.ArgumentParser):
+    """physc's argument parser: every command's help ends with the exit statuses."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("epilog", EXIT_STATUSES)
+        super().__init__(*args, **kwargs)
+
     def error(self, message):  # argparse's own errors: usage, exit 2
         self.print_usage(sys.stderr)
         print(f"{self.prog}: error: {diagnostics.safe(message)}", file=sys.stderr)  # the value as typed: escaped
@@ -48,6 +58,21 @@ def summary(errors: int, warnings: int, files: int) -> str:
         return f"{n} {word}{'' if n == 1 else 's'}"
 
     return f"{plural(errors, 'error')}, {plural(warnings, 'warning')} in {plural(files, 'file')}"
+
+
+def add_format(parser, what: str = "the result") -> None:
+    """--format text|json, the one spelling of machine-readable output in every command: text
+    for people (the default), json on stdout for programs. `--json` is kept, hidden, for
+    scripts written before the spelling was one."""
+    parser.add_argument("--format", choices=("text", "json"), default="text", help=f"{what} as text (default) or as JSON on stdout")
+    parser.add_argument("--json", dest="format", action="store_const", const="json", help=argparse.SUPPRESS)
+
+
+def print_json(data) -> None:
+    """Machine-readable output (--format json): indented JSON on stdout, non-ASCII kept."""
+    import json
+
+    print(json.dumps(data, indent=2, ensure_ascii=False))
 
 
 def add_min_robustness(parser) -> None:

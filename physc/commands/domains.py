@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import json
 import sys
 
-from physc.commands.common import EXIT_OK, EXIT_USAGE, chosen
+from physc.commands.common import EXIT_OK, EXIT_USAGE, chosen, print_json
 
 
 def cmd_domains(args) -> int:
@@ -19,11 +18,10 @@ def cmd_domains(args) -> int:
         except DomainError as error:
             print(f"physc: error[{error.code}]: {error.message}", file=sys.stderr)
             return EXIT_USAGE
-    if args.json:
+    if args.format == "json":
         from physc.serialize import to_data
 
-        data = [{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded]
-        print(json.dumps(data, indent=2, ensure_ascii=False))
+        print_json([{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded])
         return EXIT_OK
     if not loaded:
         print("no domains installed (physc.domains entry points)")

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 
 from physc.commands import arguments
-from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_min_robustness
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
 from physc.commands.running import Progress, add_executor, check_batch, executor_from, refused_domains, selected_jobs
 from physc.files import check_output, ensure_folder
 
@@ -50,8 +50,11 @@ def cmd_agent(args) -> int:
         raise UsageError(f"cannot read the dataset {folder} (generated to its end by physc generate?): {error}") from None
     out = Path(args.out)
     ensure_folder(out)
-    write_atomic(out / "agent.json", json.dumps({"agent": args.agent, "dataset": str(folder), **scored}, indent=2) + "\n")
-    if not args.quiet:
+    record = {"agent": args.agent, "dataset": str(folder), **scored}
+    write_atomic(out / "agent.json", json.dumps(record, indent=2) + "\n")
+    if args.format == "json":
+        print_json(record)
+    elif not args.quiet:
         print(f"{args.agent}: AUCCESS {scored['auccess']} on the {args.split} split of {args.setup}, folds 0-{args.folds - 1}; {out / 'agent.json'}", file=sys.stderr)
     return EXIT_OK
 
@@ -79,7 +82,11 @@ def cmd_eval(args) -> int:
         records = run(jobs, folder, executor, Progress("eval", args.quiet, _described))
     command = "physc eval " + " ".join(shlex.quote(a) for a in sys.argv[2:]) if sys.argv[1:2] == ["eval"] else "physc eval …"
     summary = write(records, folder, command, time.perf_counter() - started)
-    if not args.quiet:
+    if args.format == "json":
+        import json
+
+        print_json({"report": str(folder / "results.md"), **json.loads((folder / "results.json").read_text())})
+    elif not args.quiet:
         counts = summary["interactions"]
         made = sum(c["generated"] for c in counts.values())
         print(f"{made} of {len(records)} tasks generated; report in {folder / 'results.md'}", file=sys.stderr)
@@ -101,6 +108,7 @@ def add_command(commands, common) -> None:
     )
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    add_format(parser, "the summary (or an agent's scores)")
     agent = parser.add_argument_group("scoring an agent on a generated dataset (a PHYRE-like benchmark)")
     agent.add_argument("--agent", metavar="MODULE:NAME", help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first (physc_phyre.agents:random_agent)")
     agent.add_argument("--setup", choices=("cross_template", "within_template"), default="cross_template", help="PHYRE's evaluation setup (default cross_template)")

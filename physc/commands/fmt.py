@@ -9,6 +9,7 @@ from physc.commands.common import (
     EXIT_INPUT,
     EXIT_OK,
     UsageError,
+    print_json,
     reporter,
 )
 from physc.files import write_atomic
@@ -22,7 +23,7 @@ def cmd_fmt(args) -> int:
         raise UsageError("--write cannot rewrite standard input")
     status = EXIT_OK
     report = reporter(args)
-    changed = []
+    changed, listed = [], []
     for path in args.files:
         analysis = analyze(path, check=False)
         if analysis.file is None or any(d.is_error for d in analysis.syntax):
@@ -30,7 +31,17 @@ def cmd_fmt(args) -> int:
             status = max(status, diagnostics.exit_status(analysis.diagnostics))
             continue
         formatted = format_file(analysis.file, analysis.source)
-        if args.check:
+        canonical = formatted == analysis.source.text
+        if args.format == "json":
+            entry = {"file": str(path), "canonical": canonical}
+            if args.write and not canonical:
+                write_atomic(path, formatted)
+                entry["rewritten"] = True
+            elif not (args.check or args.write):
+                entry["formatted"] = formatted
+            listed.append(entry)
+            changed += [] if canonical else [path]
+        elif args.check:
             if formatted != analysis.source.text:
                 changed.append(path)
                 print(f"would reformat {diagnostics.safe(str(path))}", file=sys.stderr)
@@ -41,6 +52,8 @@ def cmd_fmt(args) -> int:
                 print(f"reformatted {diagnostics.safe(str(path))}", file=sys.stderr)
         else:
             sys.stdout.write(formatted)
+    if args.format == "json":
+        print_json(listed)
     if args.check and changed:
         status = max(status, EXIT_INPUT)
     return status

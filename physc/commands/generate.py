@@ -6,7 +6,7 @@ import sys
 from pathlib import Path
 
 from physc.commands import arguments
-from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_backend, add_min_robustness
+from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
 from physc.commands.running import (
     Progress,
     add_executor,
@@ -58,7 +58,14 @@ def cmd_generate(args) -> int:
         except DomainError as error:  # the domain's own benchmark files refused (the tasks are kept)
             raise UsageError(f"the tasks are in {args.out}, but not the domain's own benchmark files: {error.message}") from None
     made = sum(row["outcome"] != NO_TASK for row in rows)
-    if not args.quiet:
+    if args.format == "json":
+        print_json(
+            {
+                "dataset": args.out, "generated": made, "tasks": len(rows),
+                "rows": [{"scenario": row["scenario"], "seed": row["seed"], "outcome": row["outcome"]} for row in rows],
+            }
+        )
+    elif not args.quiet:
         print(f"{made} of {len(rows)} tasks generated; dataset in {args.out} (README.md, manifest.parquet)", file=sys.stderr)
     return EXIT_OK if made else EXIT_INFEASIBLE
 
@@ -83,4 +90,5 @@ def add_command(commands, common) -> None:
     add_backend(parser)
     add_executor(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    add_format(parser, "the summary (each task's outcome)")
     parser.set_defaults(run=cmd_generate)

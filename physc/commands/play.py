@@ -8,11 +8,10 @@ paths of the objects that moved.
 
 from __future__ import annotations
 
-import json
 
 from physc import budget
 from physc.commands import arguments
-from physc.commands.common import EXIT_OK, UsageError, add_backend, reporter
+from physc.commands.common import EXIT_OK, UsageError, add_backend, add_format, print_json, reporter
 from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
@@ -94,22 +93,17 @@ def cmd_simulate(args) -> int:
         return trace
     pigs = list(trace.goal)
     destroyed = [d for d in trace.destructions if d.name in pigs]
-    if args.json:
-        print(
-            json.dumps(
-                {
-                    "level": args.level,
-                    "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(), 4)},
-                    "seconds": round(trace.duration, 4),
-                    "pigs": pigs,
-                    "pigs_destroyed": [d.name for d in destroyed],
-                    "solved": trace.solved,
-                    "destroyed": [
-                        {"name": d.name, "cause": d.cause, "by": d.by, "time": round(d.time, 4)} for d in trace.destructions
-                    ],
-                },
-                indent=2,
-            )
+    if args.format == "json":
+        print_json(
+            {
+                "level": args.level,
+                "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(), 4)},
+                "seconds": round(trace.duration, 4),
+                "pigs": pigs,
+                "pigs_destroyed": [d.name for d in destroyed],
+                "solved": trace.solved,
+                "destroyed": [{"name": d.name, "cause": d.cause, "by": d.by, "time": round(d.time, 4)} for d in trace.destructions],
+            }
         )
         return EXIT_OK
     what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
@@ -126,8 +120,8 @@ def cmd_trace(args) -> int:
     level, shot, trace = _play(args)
     if level is None:
         return trace
-    if args.json:
-        print(json.dumps([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions], indent=2))
+    if args.format == "json":
+        print_json([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions])
         return EXIT_OK
     print(f"# {safe(args.level)}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
     for index, interaction in enumerate(trace.interactions):
@@ -153,7 +147,10 @@ def cmd_render(args) -> int:
             return trace
         paths = trace.paths()
     figure = draw_level(level, args.title or args.level, paths)
-    write_atomic(args.output, save(figure, "svg" if args.output.lower().endswith(".svg") else "png"))
+    kind = "svg" if args.output.lower().endswith(".svg") else "png"
+    write_atomic(args.output, save(figure, kind))
+    if args.format == "json":
+        print_json({"level": args.level, "picture": args.output, "format": kind, "paths": sorted(paths)})
     return EXIT_OK
 
 
@@ -172,16 +169,17 @@ def add_commands(commands, common) -> None:
 
     simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
     level_arguments(simulate)
-    simulate.add_argument("--json", action="store_true", help="machine-readable output")
+    add_format(simulate, "what happened")
     simulate.set_defaults(run=cmd_simulate)
 
     trace = commands.add_parser("trace", parents=[common], help="the interactions a shot causes, in .phys syntax")
     level_arguments(trace)
-    trace.add_argument("--json", action="store_true", help="machine-readable output")
+    add_format(trace, "the interactions")
     trace.set_defaults(run=cmd_trace)
 
     render = commands.add_parser("render", parents=[common], help="draw a level, with the paths a shot causes")
     level_arguments(render)
     render.add_argument("-o", "--output", required=True, metavar="PATH", help="the picture (.png or .svg)")
     render.add_argument("--title", help="the picture's title (default: the file name)")
+    add_format(render, "what was drawn")
     render.set_defaults(run=cmd_render)

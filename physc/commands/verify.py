@@ -14,7 +14,7 @@ import json
 import math
 
 from physc import budget
-from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, print_json
 from physc.diagnostics import safe
 from physc.files import read_input
 
@@ -113,24 +113,21 @@ def cmd_verify(args) -> int:
             result = verify(domain, scenario, level, solution, args.backend, noisy=replays)
     except ValueError as error:  # the file's solution cannot be played (angrybirds: a target out of reach)
         raise UsageError(f"{args.task}: its solution cannot be played: {error}") from None
-    if args.json:
-        print(
-            json.dumps(
-                {
-                    "level": args.level,
-                    "task": args.task,
-                    "scenario": scenario.name,
-                    "backend": result.backend,
-                    "solved": result.solved,
-                    "realised": result.realised,
-                    "noisy_passed": result.noisy_passed,
-                    "noisy_run": result.noisy_run,
-                    "passes": result.passes(replays),
-                    "trace": result.trace,
-                    "why": result.why,
-                },
-                indent=2,
-            )
+    if args.format == "json":
+        print_json(
+            {
+                "level": args.level,
+                "task": args.task,
+                "scenario": scenario.name,
+                "backend": result.backend,
+                "solved": result.solved,
+                "realised": result.realised,
+                "noisy_passed": result.noisy_passed,
+                "noisy_run": result.noisy_run,
+                "passes": result.passes(replays),
+                "trace": result.trace,
+                "why": result.why,
+            }
         )
     else:
         verdict = "passes" if result.passes(replays) else "fails"
@@ -155,5 +152,5 @@ def add_command(commands, common) -> None:
         "--replays", type=arguments.replays, metavar="N",
         help="noisy replays that must realise the sequence too (default: the domain's, 6 in angrybirds; 0: none)",
     )
-    parser.add_argument("--json", action="store_true", help="machine-readable output")
+    add_format(parser, "the verdict")
     parser.set_defaults(run=cmd_verify)
