@@ -252,3 +252,59 @@ def test_workers_with_other_physc_code_are_refused(cluster, tmp_path, monkeypatc
     monkeypatch.setattr(fingerprint, "code_fingerprint", lambda domain, backends=(): "other code")  # here, not in the workers
     run = run_physc("generate", SF, "--tasks", "1", "--out", tmp_path, "--scheduler", cluster.scheduler_address)
     assert run.status == 2 and "run other physc code than this machine" in run.stderr
+
+
+@pytest.fixture
+def separate_cluster(tmp_path):
+    """A scheduler and a worker started by hand, as on a cluster: `dask scheduler` and `dask
+    worker` processes, the worker in a folder of its own. Yields (address, start_worker)."""
+    import json as json_
+    import shutil
+    import subprocess
+    import time
+
+    dask = shutil.which("dask")
+    if dask is None:
+        pytest.skip("the dask command is not installed")
+    info = tmp_path / "scheduler.json"
+    started = [subprocess.Popen([dask, "scheduler", "--scheduler-file", str(info), "--port", "0", "--dashboard-address", ":0"], stderr=subprocess.DEVNULL)]
+    for _ in range(300):
+        if info.exists() and info.read_text().strip():
+            break
+        time.sleep(0.1)
+    address = json_.loads(info.read_text())["address"]
+
+    def start_worker(folder: Path) -> None:
+        folder.mkdir(parents=True, exist_ok=True)
+        started.append(subprocess.Popen([dask, "worker", address, "--nthreads", "1", "--no-dashboard"], cwd=folder, stderr=subprocess.DEVNULL))
+
+    yield address, start_worker
+    for process in reversed(started):
+        process.terminate()
+        process.wait(timeout=30)
+
+
+def test_a_worker_in_another_folder_makes_the_scenario_it_was_sent(reference, separate_cluster, tmp_path, monkeypatch):
+    """Jobs carry the scenario's text: a worker started elsewhere, where the relative path is
+    missing or names another file, makes the client's scenario."""
+    address, start_worker = separate_cluster
+    elsewhere = tmp_path / "worker"
+    (elsewhere / "paper").mkdir(parents=True)
+    (elsewhere / "paper" / "01_SF.phys").write_text((EXAMPLES / "paper" / "02_SFTB.phys").read_text().replace("SFTB", "SF"))
+    start_worker(elsewhere)
+    monkeypatch.chdir(EXAMPLES)
+    run = run_physc("generate", "paper/01_SF.phys", "--tasks", "2", "--out", tmp_path / "dataset", "--scheduler", address, "-q")
+    assert run.status == 0, run.stderr
+    _, rows = dataset(tmp_path / "dataset")
+    made = [{k: v for k, v in row.items() if k != "file"} for row in rows]
+    assert made == [{k: v for k, v in row.items() if k != "file"} for row in dataset(reference)[1][:2]]
+
+
+def test_a_scheduler_without_workers_is_said_and_given_up(separate_cluster, tmp_path, monkeypatch):
+    from physc.execution import dask as dask_executor
+
+    address, _ = separate_cluster
+    monkeypatch.setattr(dask_executor, "WORKER_WAIT", 2.0)
+    run = run_physc("generate", SF, "--tasks", "1", "--out", tmp_path / "d", "--scheduler", address)
+    assert "has no workers; waiting up to 2 s" in run.stderr
+    assert run.status == 2 and "none joined in 2 s" in run.stderr and "dask worker" in run.stderr

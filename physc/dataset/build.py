@@ -14,9 +14,6 @@ from physc import budget
 from physc.dataset import manifest, readme
 from physc.dataset.job import TaskJob, make
 from physc.domains import load_domain
-from physc.dsl import ast
-from physc.dsl.fmt import format_file
-from physc.dsl.frontend import analyze
 from physc.execution import Executor
 from physc.files import OutputError, ensure_folder, write_atomic
 
@@ -43,12 +40,7 @@ def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
 
 def sources(jobs: list[TaskJob]) -> dict[str, str]:
     """Each scenario of the jobs as written, in block form, by name."""
-    found = {}
-    for path in dict.fromkeys(job.path for job in jobs):
-        analysis = analyze(path)
-        for scenario in analysis.file.scenarios:
-            found.setdefault(scenario.name.text, format_file(ast.File((scenario,))))
-    return found
+    return {job.scenario: job.source for job in jobs}
 
 
 def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:

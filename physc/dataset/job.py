@@ -19,9 +19,7 @@ from physc.compiler.infeasible import Infeasible
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import load_domain
-from physc.dsl import ast
-from physc.dsl.fmt import format_file
-from physc.dsl.frontend import analyze, analyze_files
+from physc.dsl.frontend import analyze_files, scenario_in
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
 from physc.serialize import to_data
 
@@ -44,6 +42,7 @@ class TaskJob:
     domain: str = ""
     fingerprint: str = ""  # of the scenario as written
     code: str = ""  # of the code that makes the task
+    source: str = ""  # the scenario's text in block form: a worker reads this, never the file (it may run elsewhere)
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -66,8 +65,10 @@ def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[
     jobs = []
     scenarios, problems = analyze_files(files)
     engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), settings.get("verify_backend")) if n)
-    for path, scenario in scenarios:
-        common = dict(settings, domain=scenario.domain, fingerprint=scenario_fingerprint(scenario), code=code_fingerprint(scenario.domain, engines))
+    for path, scenario, source in scenarios:
+        common = dict(
+            settings, domain=scenario.domain, fingerprint=scenario_fingerprint(scenario), code=code_fingerprint(scenario.domain, engines), source=source,
+        )
         jobs += [TaskJob(path, scenario.name, seed + index, **common) for index in range(tasks)]
     return jobs, problems
 
@@ -85,9 +86,7 @@ def make(job: TaskJob) -> dict:
 
 
 def _make(job: TaskJob) -> dict:
-    analysis = analyze(job.path)
-    scenario = next(s for s in analysis.scenarios if s.name == job.scenario)
-    written = next(s for s in analysis.file.scenarios if s.name.text == job.scenario)
+    scenario = scenario_in(job.path, job.source, job.scenario)
     domain = load_domain(scenario.domain)
     row = {
         "file": job.path, "scenario": job.scenario, "seed": job.seed, "domain": scenario.domain, "title": scenario.title,
@@ -99,7 +98,7 @@ def _make(job: TaskJob) -> dict:
         with budget.deadline(job.time_budget):
             task = Pipeline(
                 domain, scenario, job.seed, validate=job.validate, acceptance=job.acceptance, time_budget=job.time_budget,
-                source=format_file(ast.File((written,))), min_robustness=job.min_robustness, verify_backend=job.verify_backend,
+                source=job.source, min_robustness=job.min_robustness, verify_backend=job.verify_backend,
             ).task
             picture = domain.picture(task, "png") if job.picture else None
     except Infeasible as error:

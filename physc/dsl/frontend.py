@@ -39,6 +39,13 @@ def analyze_text(name: str, text: str) -> Analysis:
     return _analyzed(name, SourceText(name, text), True)
 
 
+def scenario_in(name: str, text: str, scenario: str) -> ScenarioIR:
+    """The checked scenario `scenario` of `text` (a batch job's own text, named `name` as its
+    file is): a worker reads the scenario it was sent, never a file, which on another machine
+    or in another folder is missing or another."""
+    return next(s for s in analyze_text(name, text).scenarios if s.name == scenario)
+
+
 def _analyzed(path: str, source: SourceText, check: bool) -> Analysis:
     parsed = parse_source(source)
     if not check:
@@ -47,10 +54,14 @@ def _analyzed(path: str, source: SourceText, check: bool) -> Analysis:
     return Analysis(path, parsed.source, parsed.file, checked.scenarios, parsed.diagnostics, checked.diagnostics)
 
 
-def analyze_files(paths) -> tuple[list[tuple[str, ScenarioIR]], list[tuple[str, Analysis, list[Diagnostic]]]]:
-    """The checked scenarios of several files, each with its file's path, in order; and, for each
-    file with errors, (path, its analysis, its errors): a batch command (eval, generate) reports
-    those and runs nothing."""
+def analyze_files(paths) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
+    """The checked scenarios of several files, each with its file's path and its own text in
+    block form (what a worker on another machine is sent), in order; and, for each file with
+    errors, (path, its analysis, its errors): a batch command (eval, generate) reports those and
+    runs nothing."""
+    from physc.dsl import ast
+    from physc.dsl.fmt import format_file
+
     scenarios, problems = [], []
     for path in paths:
         analysis = analyze(path)
@@ -58,5 +69,6 @@ def analyze_files(paths) -> tuple[list[tuple[str, ScenarioIR]], list[tuple[str, 
         if errors:
             problems.append((path, analysis, errors))
             continue
-        scenarios += [(path, scenario) for scenario in analysis.scenarios]
+        written = {s.name.text: format_file(ast.File((s,))) for s in analysis.file.scenarios}
+        scenarios += [(path, scenario, written[scenario.name]) for scenario in analysis.scenarios]
     return scenarios, problems

@@ -26,7 +26,7 @@ from physc.compiler.pipeline import Pipeline
 from physc.backends import DEFAULT_BACKEND, selected
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import load_domain
-from physc.dsl.frontend import analyze, analyze_files
+from physc.dsl.frontend import analyze_files, scenario_in
 from physc.evaluation import measure
 from physc.execution import Executor
 from physc.files import ensure_folder, read_json_lines, write_atomic
@@ -50,6 +50,7 @@ class Job:
     backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
     verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
     acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
+    source: str = ""  # the scenario's text in block form: a worker reads this, never the file (it may run elsewhere)
 
     @property
     def key(self) -> tuple[str, str, int]:
@@ -84,8 +85,7 @@ def evaluate(job: Job) -> dict:
 
 
 def _evaluate(job: Job) -> dict:
-    analysis = analyze(job.path)
-    scenario = next(s for s in analysis.scenarios if s.name == job.scenario)
+    scenario = scenario_in(job.path, job.source, job.scenario)
     domain = load_domain(scenario.domain)
     record = {
         "file": job.path,
@@ -152,11 +152,11 @@ def jobs_for(
     """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
     jobs = []
     scenarios, problems = analyze_files(files)
-    for path, scenario in scenarios:
+    for path, scenario, source in scenarios:
         engines = tuple(name for name in (backend, verify_backend) if name)
         fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
         jobs += [
-            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend, acceptance)
+            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend, acceptance, source)
             for index in range(tasks)
         ]
     return jobs, problems

@@ -16,6 +16,7 @@ from physc import budget
 from physc.execution import Executor, ExecutorError
 
 CONNECT_SECONDS = 5  # how long to try to reach a scheduler before giving up
+WORKER_WAIT = 60.0  # seconds to wait for the first worker of a scheduler that has none
 # Settings of a cluster started here: physc's jobs are seconds of pure Python each, so the workers'
 # sampling profiler and their frequent event-loop ticks and system checks only take time from them.
 LOCAL_SETTINGS = {
@@ -24,6 +25,16 @@ LOCAL_SETTINGS = {
     "distributed.admin.system-monitor.interval": "5s",
 }
 _one_at_a_time = threading.Lock()
+
+
+def _dashboard() -> str | None:
+    """Where a cluster started here serves its dashboard: a free port when bokeh (the `dask`
+    extra) is installed, else none (Dask would serve a placeholder page)."""
+    try:
+        import bokeh  # noqa: F401
+    except ImportError:
+        return None
+    return "127.0.0.1:0"
 
 
 def physc_code() -> str:
@@ -60,16 +71,28 @@ class DaskCluster(Executor):
                 self.client = Client(scheduler, timeout=CONNECT_SECONDS)
             except (OSError, TimeoutError, ValueError) as error:
                 raise ExecutorError(f"cannot reach the Dask scheduler at {scheduler}: {error}") from error
-            self.workers = len(self.client.scheduler_info().get("workers", {}))
+            self.workers = len(self.client.scheduler_info().get("workers", {})) or self._first_worker(scheduler)
             self._same_code(scheduler)
         else:
             self.workers = max(1, workers or 1)
             with dask.config.set(LOCAL_SETTINGS):  # the workers are handed the settings when they start
                 self.cluster = LocalCluster(
-                    n_workers=self.workers, threads_per_worker=1, processes=True, dashboard_address=None,
+                    n_workers=self.workers, threads_per_worker=1, processes=True, dashboard_address=_dashboard(),
                     silence_logs=logging.ERROR,
                 )
             self.client = Client(self.cluster)
+
+    def _first_worker(self, scheduler: str) -> int:
+        """A scheduler with no workers: say so, wait WORKER_WAIT s for one, else stop."""
+        import sys
+
+        print(f"physc: the Dask scheduler at {scheduler} has no workers; waiting up to {WORKER_WAIT:g} s for one (dask worker {scheduler})", file=sys.stderr)
+        try:
+            self.client.wait_for_workers(1, timeout=WORKER_WAIT)
+        except TimeoutError:
+            self.client.close()
+            raise ExecutorError(f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s): start some with `dask worker {scheduler}`") from None
+        return len(self.client.scheduler_info().get("workers", {}))
 
     def _same_code(self, scheduler: str) -> None:
         """Refuse workers that run other physc code than this process: their tasks would differ
@@ -90,7 +113,8 @@ class DaskCluster(Executor):
 
     def describe(self) -> str:
         where = f"the Dask cluster at {self.address}" if self.address else "a local Dask cluster"
-        return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''})"
+        link = self.client.dashboard_link if self.cluster is not None and self.cluster.dashboard_link else None
+        return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''}" + (f"; dashboard {link})" if link else ")")
 
     def map(self, function, jobs, keep) -> None:
         from distributed import KilledWorker, wait
