@@ -47,16 +47,45 @@ def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction
     width = right - left
     points = {"upper left": left, "left of top": left + width / 4, "top": left + width / 2, "right of top": right - width / 4, "upper right": right}
     gaps = FALL_GAPS if first.name == "fall" else GAPS
+    sides = _sides(first)
     out, seen = [], set()
     for point, x in points.items():
         for radius in RADII:
-            for gap in gaps:
-                # As high as asked, or as high as the scene allows (a target near the top).
-                y = min(int(top + radius + gap), SCENE - radius)
-                action = BallAction(int(x), y, radius, f"{target.name} {point}, r {radius}, {y - top - radius:.0f} px above")
-                if (action.x, action.y, radius) not in seen and valid(level, action):
-                    seen.add((action.x, action.y, radius))
-                    out.append((action.aimed_at, action))
+            shoulders = _shoulders(point, x, radius, sides)
+            for gap in gaps + ((SCENE,) if shoulders else ()):  # a sideways push: also from the top, the fastest fall
+                for at, x_ in shoulders or ((point, x),):
+                    # As high as asked, or as high as the scene allows (a target near the top).
+                    y = min(int(top + radius + gap), SCENE - radius)
+                    action = BallAction(int(x_), y, radius, f"{target.name} {at}, r {radius}, {y - top - radius:.0f} px above")
+                    if (action.x, action.y, radius) not in seen and valid(level, action):
+                        seen.add((action.x, action.y, radius))
+                        out.append((action.aimed_at, action))
+    return out
+
+
+def _sides(first) -> list[str]:
+    """The target's sides a first hit may strike from a drop: those it names, or both for a
+    hit from above (a ball dropped on the target's shoulder hits it from above, pushing it
+    across)."""
+    if first.name != "hit":
+        return []
+    named = [d for d in first.directions if d in ("left", "right")]
+    return named or (["left", "right"] if "above" in first.directions else [])
+
+
+SHOULDER = (0.0, 0.5)  # of the ball's radius, outwards from the target's upper corner
+
+
+def _shoulders(point: str, x: float, radius: int, sides: list[str]) -> list[tuple[str, float]]:
+    """For a hit on the target's left or right side: drops at that upper corner and up to half
+    the ball's radius beyond it, so the ball strikes the target's shoulder and pushes it across
+    (the other way) rather than landing on its top."""
+    corner = {"left": "upper left", "right": "upper right"}
+    out = []
+    for side in sides:
+        if point == corner[side]:
+            outward = -1 if side == "left" else 1
+            out += [(point if f == 0 else f"{point}, {f:g} r out", x + outward * f * radius) for f in SHOULDER]
     return out
 
 
