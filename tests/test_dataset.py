@@ -78,12 +78,36 @@ def test_a_dataset_is_complete_and_loads_in_pandas(reference):
     tasks = pd.read_parquet(reference / "manifest.parquet")
     assert list(tasks["seed"]) == [0, 1, 2, 3] * 2 and set(tasks["outcome"]) == {"ok"}
     assert tasks["robustness_passed"].min() >= 4 and tasks["generation_seconds"].gt(0).all()
-    assert json.loads(tasks["solution"][0])["node"] == "Solution"
+    assert tasks["solution"][0]["node"] == "Solution" and tasks["settings"][0]["backend"] == "box2d"  # structs, as in JSON Lines
+    assert list(tasks["sequence_terms"][0]) == ["hit(bird, pig, any)", "destroy(bird, pig)"] and list(tasks["trace_terms"][0]) == rows[0]["trace"].split(" > ")
+    assert tasks["file"][0] == "SF/scenario.phys" and (reference / "SF" / "scenario.phys").read_text().startswith("scenario SF")
     task = json.loads((reference / "F" / "2.json").read_text())
     assert task["seed"] == 2 and task["trace"] == rows[6]["trace"] and "seconds" not in task
     readme = (reference / "README.md").read_text()
     assert "8 tasks of 2 scenarios: 8 generated" in readme and "| F (Falling) | angrybirds | 4 | 4 | 4 | 0 | 0 |" in readme
-    assert "physc generate" in readme and "pd.read_parquet" in readme
+    assert "physc generate" in readme and "pd.read_parquet" in readme and "@inproceedings" in readme
+
+
+def test_a_dataset_loads_in_hugging_face_datasets_as_it_is(reference, monkeypatch):
+    """The README is a dataset card: its YAML names the manifest, so the folder loads as it is."""
+    datasets = pytest.importorskip("datasets")
+    monkeypatch.setenv("HF_HUB_OFFLINE", "1")
+    monkeypatch.setenv("HF_DATASETS_OFFLINE", "1")
+    monkeypatch.setenv("HF_DATASETS_CACHE", str(reference.parent / "hf-cache"))
+    tasks = datasets.load_dataset(str(reference), split="test")
+    assert tasks.num_rows == 8 and tasks[0]["scenario"] == "SF" and tasks[0]["solution"]["node"] == "Solution"
+    assert tasks[4]["sequence_terms"][0].startswith("hit(bird")
+    card = (reference / "README.md").read_text().split("---\n")[1]
+    assert "license: mit" in card and "path: manifest.parquet" in card
+
+
+def test_the_readme_shows_no_absolute_path(tmp_path, monkeypatch):
+    from physc.commands.running import command_arguments, reproducing_command
+
+    monkeypatch.setattr(sys, "argv", ["physc", "--color", "never", "generate", "/home/me/x.phys", "--out", "/home/me/data/set", "--jobs", "2"])
+    assert reproducing_command("generate", command_arguments("generate", [])) == "physc generate x.phys --out set"
+    monkeypatch.setattr(sys, "argv", ["physc", "generate", "a.phys", "--out=/srv/d/", "--format", "json"])
+    assert reproducing_command("generate", command_arguments("generate", [])) == "physc generate a.phys --out=d"
 
 
 def test_local_processes_and_a_dask_cluster_make_the_same_dataset(reference, tmp_path):

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from physc.commands import arguments
 from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
-from physc.commands.running import Progress, add_executor, check_batch, executor_from, refused_domains, selected_jobs
+from physc.commands.running import Progress, add_executor, check_batch, command_arguments, executor_from, refused_domains, selected_jobs
 from physc.files import check_output, ensure_folder
 
 
@@ -80,7 +80,8 @@ def cmd_eval(args) -> int:
     started = time.perf_counter()
     with executor_from(args) as executor:
         records = run(jobs, folder, executor, Progress("eval", args.quiet, _described))
-    command = "physc eval " + " ".join(shlex.quote(a) for a in sys.argv[2:]) if sys.argv[1:2] == ["eval"] else "physc eval …"
+    argv = command_arguments("eval", [])
+    command = "physc eval " + " ".join(shlex.quote(a) for a in argv) if argv else "physc eval …"
     summary = write(records, folder, command, time.perf_counter() - started)
     if args.format == "json":
         import json

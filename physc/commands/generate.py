@@ -13,6 +13,7 @@ from physc.commands.running import (
     check_batch,
     executor_from,
     refused_domains,
+    command_arguments,
     reproducing_command,
     selected_jobs,
 )
@@ -48,8 +49,7 @@ def cmd_generate(args) -> int:
     status = refused_domains(args, jobs, needs, "physc generate")
     if status is not None:
         return status
-    argv = sys.argv[2:] if sys.argv[1:2] == ["generate"] else [*args.files, "--tasks", str(args.tasks), "--out", args.out]
-    command = reproducing_command("generate", argv)
+    command = reproducing_command("generate", command_arguments("generate", [*args.files, "--tasks", str(args.tasks), "--out", args.out]))
     from physc.domains.base import DomainError
 
     with executor_from(args) as executor:

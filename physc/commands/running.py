@@ -72,7 +72,30 @@ def executor_from(args) -> Executor:
 
 # Options that change where and how visibly a run goes, not what it makes: left out of the command
 # a dataset's README records, so that the README is the same on any executor.
-_WHERE = {"--jobs": 1, "--scheduler": 1, "--dask-workers": 1, "--color": 1, "-q": 0, "--quiet": 0, "--traceback": 0}
+_WHERE = {
+    "--jobs": 1, "--scheduler": 1, "--dask-workers": 1, "--color": 1, "-q": 0, "--quiet": 0, "--traceback": 0, "--format": 1, "--json": 0,
+}
+
+
+def command_arguments(command: str, fallback: list[str]) -> list[str]:
+    """The arguments after `command` on this process's command line (top-level options such as
+    --color may come before it); `fallback` when physc was not run from a command line."""
+    import sys
+
+    if command not in sys.argv[1:]:
+        return fallback
+    return sys.argv[sys.argv.index(command, 1) + 1 :]
+
+
+def _portable(argument: str) -> str:
+    """An argument as a README may show it: an absolute path (this machine's folders) by its
+    name alone, as in `--out /home/me/data/set` → `--out set`."""
+    import os
+
+    option, equals, value = argument.partition("=") if argument.startswith("-") else ("", "", argument)
+    if os.path.isabs(value):
+        value = os.path.basename(value.rstrip("/")) or value
+    return f"{option}{equals}{value}" if option else value
 
 
 def reproducing_command(command: str, argv: list[str]) -> str:
@@ -87,7 +110,7 @@ def reproducing_command(command: str, argv: list[str]) -> str:
         if name in _WHERE:
             skip = _WHERE[name] if "=" not in argument else 0
             continue
-        kept.append(argument)
+        kept.append(_portable(argument))
     return " ".join(["physc", command] + [shlex.quote(a) for a in kept])
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from physc import budget
 from physc.dataset import manifest, readme
-from physc.dataset.job import TaskJob, make
+from physc.dataset.job import TaskJob, make, scenario_file
 from physc.domains import load_domain
 from physc.execution import Executor
 from physc.files import OutputError, ensure_folder, write_atomic
@@ -50,8 +50,10 @@ def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, 
     todo = [job for job in jobs if not _finished(folder, job, rows.get(job.key))]
     if rows:  # written whole first, so that a torn last line of a killed run cannot stay in the middle
         manifest.write_jsonl(folder, [rows[k] for k in sorted(rows)])
-    for scenario in dict.fromkeys(job.scenario for job in todo):
+    for scenario, source in sources(jobs).items():  # each scenario as written, beside its tasks
         ensure_folder(folder / scenario)
+        if not (folder / scenario_file(scenario)).is_file() or (folder / scenario_file(scenario)).read_text(encoding="utf-8") != source:
+            write_atomic(folder / scenario_file(scenario), source)
     if progress:
         progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
     kept = 0

@@ -20,6 +20,7 @@ from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze_files, scenario_in
+from physc.dataset.manifest import terms
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
 from physc.serialize import to_data
 
@@ -45,8 +46,8 @@ class TaskJob:
     source: str = ""  # the scenario's text in block form: a worker reads this, never the file (it may run elsewhere)
 
     @property
-    def key(self) -> tuple[str, str, int]:
-        return (self.path, self.scenario, self.seed)
+    def key(self) -> tuple[str, int]:
+        return (self.scenario, self.seed)
 
     @property
     def settings(self) -> dict:
@@ -73,6 +74,12 @@ def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[
     return jobs, problems
 
 
+def scenario_file(scenario: str) -> str:
+    """Where a dataset keeps a scenario as written, relative to the dataset: rows name this, not
+    the path it was read from, so the dataset stands alone."""
+    return f"{scenario}/scenario.phys"
+
+
 def file_names(job: TaskJob, level_suffix: str) -> dict[str, str]:
     """The task's files, relative to the dataset folder: level, task and picture."""
     level = f"{job.seed}.level.json" if level_suffix == "json" else f"{job.seed}.{level_suffix}"
@@ -89,9 +96,9 @@ def _make(job: TaskJob) -> dict:
     scenario = scenario_in(job.path, job.source, job.scenario)
     domain = load_domain(scenario.domain)
     row = {
-        "file": job.path, "scenario": job.scenario, "seed": job.seed, "domain": scenario.domain, "title": scenario.title,
+        "file": scenario_file(job.scenario), "scenario": job.scenario, "seed": job.seed, "domain": scenario.domain, "title": scenario.title,
         "interactions": len(scenario.interactions), "sequence": " > ".join(t.text for t in scenario.interactions),
-        "settings": job.settings,
+        "sequence_terms": [t.text for t in scenario.interactions], "settings": job.settings,
     }
     started = time.perf_counter()
     try:
@@ -118,7 +125,7 @@ def _make(job: TaskJob) -> dict:
     row.update(
         outcome=OK if passed >= run else FALLBACK, reason=None,
         level=names["level"], task=names["task"], picture=names["picture"] if picture is not None else None,
-        solution=to_data(task.solution), trace=task.trace, robustness_passed=passed, robustness_run=run,
+        solution=to_data(task.solution), trace=task.trace, trace_terms=terms(task.trace), robustness_passed=passed, robustness_run=run,
         validated=task.validated, layouts_tried=task.layouts_tried, simulations=task.simulations,
     )
     if job.accidental:

@@ -4,8 +4,9 @@ in task order, and as Parquet.
 `manifest.jsonl` is appended a row as each task finishes (flushed), after the task's files were
 written whole, so a killed run loses no finished task and a torn last line stands for a task to
 make again. At the end both files are written whole in the order of the jobs, so they do not
-depend on the order in which tasks finished. In Parquet the fields that are objects (the solution,
-the times of each stage, the settings) are JSON text; every other field is a typed column.
+depend on the order in which tasks finished. In Parquet every field is a typed column: the
+objects (the solution, the times of each stage, the settings) are structs and the interactions
+lists, as in JSON Lines, so `datasets`, DuckDB and polars read the same fields either way.
 """
 
 from __future__ import annotations
@@ -18,19 +19,21 @@ from physc.files import read_json_lines, write_atomic
 JSONL = "manifest.jsonl"
 PARQUET = "manifest.parquet"
 
-# The columns, in order, with their Arrow types ("json": an object written as JSON text).
+# The columns, in order, with their Arrow types ("struct": an object, its fields' types read from
+# the rows; "terms": a list of interactions in .phys syntax).
 COLUMNS = [
     ("file", "string"), ("scenario", "string"), ("seed", "int64"), ("domain", "string"), ("title", "string"),
-    ("interactions", "int32"), ("sequence", "string"), ("outcome", "string"), ("reason", "string"),
-    ("level", "string"), ("task", "string"), ("picture", "string"), ("solution", "json"), ("trace", "string"),
-    ("robustness_passed", "int32"), ("robustness_run", "int32"), ("validated", "bool_"), ("layouts_tried", "int32"),
-    ("simulations", "int64"), ("accidental", "float64"), ("agent_plays", "int32"), ("auccess", "float64"),
-    ("generation_seconds", "float64"), ("seconds", "json"), ("settings", "json"),
+    ("interactions", "int32"), ("sequence", "string"), ("sequence_terms", "terms"), ("outcome", "string"), ("reason", "string"),
+    ("level", "string"), ("task", "string"), ("picture", "string"), ("solution", "struct"), ("trace", "string"),
+    ("trace_terms", "terms"), ("robustness_passed", "int32"), ("robustness_run", "int32"), ("validated", "bool_"),
+    ("layouts_tried", "int32"), ("simulations", "int64"), ("accidental", "float64"), ("agent_plays", "int32"),
+    ("auccess", "float64"), ("generation_seconds", "float64"), ("seconds", "struct"), ("settings", "struct"),
 ]
 
 
-def key(row: dict) -> tuple[str, str, int]:
-    return (row["file"], row["scenario"], row["seed"])
+def key(row: dict) -> tuple[str, int]:
+    """A task's key in its dataset: scenario names are unique there (physc generate sees to it)."""
+    return (row["scenario"], row["seed"])
 
 
 def read(folder: Path) -> dict:
@@ -42,6 +45,20 @@ def read(folder: Path) -> dict:
         except (KeyError, TypeError):  # not a row of ours
             continue
     return rows
+
+
+def _sorted(value):
+    """A JSON value with every object's keys in sorted order."""
+    if isinstance(value, dict):
+        return {k: _sorted(value[k]) for k in sorted(value)}
+    if isinstance(value, list):
+        return [_sorted(v) for v in value]
+    return value
+
+
+def terms(text: str | None) -> list[str] | None:
+    """The interactions of a sequence written `a > b > c` (no term contains '>')."""
+    return None if text is None else [term.strip() for term in text.split(">") if term.strip()]
 
 
 def line(row: dict) -> str:
@@ -59,15 +76,14 @@ def write_parquet(folder: Path, rows: list[dict]) -> None:
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    arrays, fields = [], []
+    arrays = []
     for name, kind in COLUMNS:
         values = [row.get(name) for row in rows]
-        if kind == "json":
-            values = [None if v is None else json.dumps(v, sort_keys=True, ensure_ascii=False) for v in values]
-            kind = "string"
-        fields.append(pa.field(name, getattr(pa, kind)()))
-        arrays.append(pa.array(values, type=fields[-1].type))
-    table = pa.Table.from_arrays(arrays, schema=pa.schema(fields))
+        if kind == "struct":  # the fields' order sorted, so the type depends on the rows alone
+            arrays.append(pa.array([_sorted(v) for v in values]))
+        else:
+            arrays.append(pa.array(values, type=pa.list_(pa.string()) if kind == "terms" else getattr(pa, kind)()))
+    table = pa.Table.from_arrays(arrays, names=[name for name, _ in COLUMNS])
     buffer = io.BytesIO()
     pq.write_table(table, buffer)
     write_atomic(folder / PARQUET, buffer.getvalue())

@@ -12,7 +12,12 @@ from physc import __version__
 from physc.dataset.job import FALLBACK, NO_TASK
 from physc.domains import load_domain
 
-_LEVEL_FORMATS = {"xml": "a Science Birds level file (XML)", "json": "the domain's level file (JSON)"}
+_SIZES = ((1_000, "n<1K"), (10_000, "1K<n<10K"), (100_000, "10K<n<100K"), (1_000_000, "100K<n<1M"))
+
+
+def _size_category(tasks: int) -> str:
+    """Hugging Face's size category of a dataset of `tasks` rows."""
+    return next((name for most, name in _SIZES if tasks < most), "1M<n<10M")
 
 
 def render(folder: Path, jobs: list, rows: list[dict], sources: dict[str, str], command: str) -> str:
@@ -41,7 +46,9 @@ def render(folder: Path, jobs: list, rows: list[dict], sources: dict[str, str], 
         accidental=all(j.accidental for j in jobs),
         pictures=any(r.get("picture") for r in rows),
         level_suffix="level.json" if suffix == "json" else suffix,
-        level_format=_LEVEL_FORMATS.get(suffix, "in the domain's format"),
+        domains=domains,
+        level_formats=[{"domain": d, "format": load_domain(d).level_format} for d in domains],
+        size_category=_size_category(len(made)),
         command=command,
         version=__version__,
         code=", ".join(sorted({j.code for j in jobs})),

@@ -40,7 +40,7 @@ if TYPE_CHECKING:
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
 DEFAULTS = (
-    "reach_targets", "reachable", "robustness_replays", "level_classes", "level_suffix", "solution_class", "accidental", "measures",
+    "reach_targets", "reachable", "robustness_replays", "level_classes", "level_format", "level_suffix", "solution_class", "accidental", "measures",
     "benchmark_files", "score_agent",
 )  # working defaults (score_agent's: no agent is scored, MissingCapability)
 
@@ -200,6 +200,9 @@ class Domain(abc.ABC):
         stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
         raise MissingCapability(self.name, ("stability",), "measuring stability")
 
+    level_format: str = "the domain's level file"
+    """What a level file is, in words a dataset's README gives its users: the format, and whose
+    reader and version of it the files are written for."""
     level_suffix: str = "level"
     """The file suffix of the domain's level files, without the dot (angrybirds: "xml"): what
     `physc generate` names a task's level `<seed>.<suffix>` with ("json": `<seed>.level.json`,

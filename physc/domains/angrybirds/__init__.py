@@ -35,6 +35,10 @@ class AngryBirds(SimulatedDomain):
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
     level_suffix = "xml"  # Science Birds level files
+    level_format = (
+        "a Science Birds level: XML in UTF-16, as the Science Birds of the Phy-Q testbed (phy-q/benchmark, "
+        "LevelLoader.cs) loads it (physc's docs/angrybirds.md)"
+    )
     seconds = PLAY_SECONDS
     layout_parameters = LayoutParameters(
         clearance=0.1,

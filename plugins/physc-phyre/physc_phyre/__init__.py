@@ -49,6 +49,10 @@ class Phyre(SimulatedDomain):
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction)
     level_suffix = "json"  # task files in PHYRE's task structure
+    level_format = (
+        "PHYRE's Task (src/if/task.thrift of facebookresearch/phyre) as JSON with thrift's field names; the benchmark "
+        "in PHYRE's own binary TaskCollection is phyre/tasks.bin.lzma"
+    )
     solution_class = BallAction
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
