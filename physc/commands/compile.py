@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import sys
 
 from physc import budget, diagnostics
+from physc.commands.progress import Heartbeat
 from physc.commands.common import (
     EXIT_INFEASIBLE,
     EXIT_OK,
@@ -58,7 +60,6 @@ BUDGET_HELP = {
     Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
     Exhausted.SIZE: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
 }
-PROGRESS_EVERY = 5.0  # seconds between progress lines
 FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}
 
 
@@ -109,24 +110,6 @@ def _picture_format(path: str) -> str:
 def _picture(value, domain, path: str) -> bytes:
     """The picture of a layout or a task, as --png asks: the domain's own drawing."""
     return domain.picture(value, _picture_format(path))
-
-
-def _progress(prefix: str):
-    """A progress line on stderr every PROGRESS_EVERY seconds of a long generation: layouts
-    tried, simulations, and how far the best simulation got."""
-    shown = [0.0]
-
-    def show(progress) -> None:
-        if progress.seconds - shown[0] >= PROGRESS_EVERY:
-            shown[0] = progress.seconds
-            print(
-                f"{prefix}: {progress.layouts} layouts tried, {progress.simulations} simulations, {progress.seconds:.0f} s; "
-                f"best so far: {progress.best} of {progress.interactions} interactions in order",
-                file=sys.stderr,
-                flush=True,
-            )
-
-    return show
 
 
 def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnostic]:
@@ -211,6 +194,7 @@ def cmd_compile(args) -> int:
     for index, scenario in enumerate(selected, 1):
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
+        heartbeat = Heartbeat(f"[{index}/{len(selected)}] {ir.name}") if generating and not args.quiet else None
         pipeline = Pipeline(
             domain,
             ir,
@@ -222,7 +206,7 @@ def cmd_compile(args) -> int:
             time_budget=args.time_budget,
             source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
-            progress=None if args.quiet else _progress(f"[{index}/{len(selected)}] {ir.name}"),
+            progress=None if heartbeat is None else heartbeat.update,
             verify_backend=args.verify_backend,
         )
         if generating and not args.quiet:
@@ -230,7 +214,7 @@ def cmd_compile(args) -> int:
         try:
             # The picture (a simulation of the solution's paths) is part of the work: within
             # the time budget, and where Ctrl-C stops it safely.
-            with budget.interruptible(), budget.deadline(args.time_budget), backend_selected(args.backend):
+            with budget.interruptible(), budget.deadline(args.time_budget), backend_selected(args.backend), heartbeat or contextlib.nullcontext():
                 value = chosen.run(Unit(scenario, ir), pipeline)
                 picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:

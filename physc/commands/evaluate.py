@@ -9,7 +9,8 @@ from pathlib import Path
 
 from physc.commands import arguments
 from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
-from physc.commands.running import Progress, add_executor, check_batch, command_arguments, executor_from, refused_domains, selected_jobs
+from physc.commands.progress import Progress
+from physc.commands.running import add_executor, check_batch, command_arguments, executor_from, refused_domains, selected_jobs
 from physc.files import check_output, ensure_folder
 
 

@@ -7,8 +7,8 @@ from pathlib import Path
 
 from physc.commands import arguments
 from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
+from physc.commands.progress import Progress
 from physc.commands.running import (
-    Progress,
     add_executor,
     check_batch,
     executor_from,
