@@ -121,6 +121,8 @@ def _check_output(path, folder: bool) -> None:
     if not target.parent.is_dir():
         raise FileNotFoundError(errno.ENOENT, f"no folder {target.parent}")
     _check_folder(target.parent)
+    if target.is_file():  # replaced at the end: tried now (root's permissions say nothing of an immutable file)
+        os.close(os.open(target, os.O_WRONLY))
 
 
 def _check_folder(folder: Path) -> None:

@@ -104,3 +104,20 @@ def test_random_token_soup_never_raises(pieces):
     checked = check_file(result.file)
     for diagnostic in result.diagnostics + checked.diagnostics:
         assert diagnostic.span is not None and diagnostic.code
+
+
+def test_a_restriction_repeated_thousands_of_times_is_said_once(tmp_path, physc):
+    """Repeats are harmless, and cost nothing: the checked scenario holds each restriction once,
+    so a task is as quick to make as without them."""
+    from physc.dsl.frontend import analyze
+
+    repeated = "\n".join(["        cannotHit(bird, pig, above)"] * 5000)
+    path = tmp_path / "repeats.phys"
+    path.write_text(
+        'scenario SF "Single Force" {\n    interactions {\n        hit(bird, pig, any)\n        > destroy(bird, pig)\n    }\n'
+        f"    restrictions {{\n{repeated}\n    }}\n}}\n"
+    )
+    (scenario,) = analyze(str(path)).scenarios
+    assert [r.text for r in scenario.restrictions] == ["cannotHit(bird, pig, above)"]
+    run = physc("compile", path, "--time-budget", "60", "-o", tmp_path / "sf.xml", "-q")
+    assert run.status == 0, run.stderr

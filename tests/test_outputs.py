@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import os
 import stat
+import subprocess
 import threading
 
 import pytest
@@ -79,3 +80,18 @@ def test_svg_pictures_are_byte_reproducible(tmp_path):
         run = run_physc("compile", R, "--emit", "layout", "-o", tmp_path / "layout.json", "--png", tmp_path / name)
         assert run.status == 0, run.stderr
     assert (tmp_path / "one.svg").read_bytes() == (tmp_path / "two.svg").read_bytes()
+
+
+def test_an_immutable_file_is_refused_before_the_work(tmp_path):
+    """Root may write anything its permissions say, but not an immutable file (chattr +i):
+    tried before the work, not found after it."""
+    target = tmp_path / "out.xml"
+    target.write_text("old")
+    if subprocess.run(["chattr", "+i", str(target)], capture_output=True).returncode != 0:
+        pytest.skip("chattr +i is not allowed here")
+    try:
+        run = run_physc("compile", R, "-o", target)
+        assert run.status == 2 and f"cannot write {target}" in run.stderr and "generating" not in run.stderr
+    finally:
+        subprocess.run(["chattr", "-i", str(target)], check=True)
+    assert target.read_text() == "old"

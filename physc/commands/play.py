@@ -107,13 +107,17 @@ def cmd_simulate(args) -> int:
         )
         return EXIT_OK
     what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
-    print(f"{safe(args.level)}: {len(level.objects)} objects, {len(pigs)} pigs; {what}")
+    print(f"{safe(args.level)}: {_count(len(level.objects), 'object')}, {_count(len(pigs), 'pig')}; {what}")
     verdict = "solved" if trace.solved else "not solved"
-    print(f"after {trace.duration:.2f} s: {len(destroyed)} of {len(pigs)} pigs destroyed: {verdict}")
+    print(f"after {trace.duration:.2f} s: {len(destroyed)} of {_count(len(pigs), 'pig')} destroyed: {verdict}")
     for d in trace.destructions:
         by = f", by {d.by}" if d.by else ""
         print(f"  destroyed {d.name} ({d.cause}{by}) at t = {d.time:.2f} s")
     return EXIT_OK
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
 def cmd_trace(args) -> int:
@@ -124,9 +128,10 @@ def cmd_trace(args) -> int:
         print_json([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions])
         return EXIT_OK
     print(f"# {safe(args.level)}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
-    for index, interaction in enumerate(trace.interactions):
-        prefix = "> " if index else ""
-        print(f"{prefix}{interaction.text():<40} # t = {interaction.time:.2f} s")
+    lines = [("> " if index else "") + interaction.text() for index, interaction in enumerate(trace.interactions)]
+    width = max((len(line) for line in lines), default=0)
+    for line, interaction in zip(lines, trace.interactions):  # the times in one column, whatever the terms' lengths
+        print(f"{line:<{width}}  # t = {interaction.time:.2f} s")
     return EXIT_OK
 
 

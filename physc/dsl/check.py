@@ -283,7 +283,9 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             interactions=tuple(
                 self._term_ir(r, narrowed[i]) for i, r in enumerate(interactions)
             ),
-            restrictions=tuple(self._term_ir(r, r.directions) for r in restrictions),
+            # A restriction says what may not happen: said twice, it says it once (and a
+            # thousand copies must not cost the simulation a thousand tests).
+            restrictions=tuple(dict.fromkeys(self._term_ir(r, r.directions) for r in restrictions)),
             path=self.path,
         )
 
