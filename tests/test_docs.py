@@ -54,3 +54,13 @@ def test_broken_plugin_is_e0702(tmp_path, monkeypatch):
         f"{path}:2:12: error[E0702]: the plugin of domain 'marbles' (marbles_physc_missing:DOMAIN) fails to load: "
         "No module named 'marbles_physc_missing'"
     ) in run.stderr
+
+
+def test_the_readme_picture_is_what_its_caption_makes():
+    """The picture is a build artefact of the command its caption names (tools/readme_picture.py
+    makes it again); the task also does what the caption says."""
+    import subprocess
+    import sys
+
+    run = subprocess.run([sys.executable, str(ROOT / "tools" / "readme_picture.py"), "--check"], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
