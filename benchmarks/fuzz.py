@@ -1,4 +1,4 @@
-"""Fuzzing at scale: the properties of tests/test_fuzz.py over a hundred thousand inputs or more.
+"""Fuzzing at scale: the properties of tests/dsl/test_fuzz.py over a hundred thousand inputs or more.
 
     python benchmarks/fuzz.py [--inputs 100000] [--seed 0] [--out fuzz-failures] [--cli 0.01]
 
@@ -36,10 +36,10 @@ from collections import Counter
 from pathlib import Path
 
 TESTS = Path(__file__).resolve().parents[1] / "tests"
-sys.path.insert(0, str(TESTS))
+sys.path[:0] = [str(TESTS), str(TESTS / "dsl")]
 
 import strategies  # noqa: E402  (tests/strategies.py: the mutations)
-import test_fuzz  # noqa: E402  (tests/test_fuzz.py: the properties and corpora)
+import test_fuzz  # noqa: E402  (tests/dsl/test_fuzz.py: the properties and corpora)
 
 SHARES = [("phys-mutant", 0.45), ("phys-random", 0.10), ("level-mutant", 0.27), ("argv", 0.17)]
 PER_INPUT_SECONDS = 60.0

@@ -5,7 +5,7 @@
 Every `*.xml` under each FOLDER (recursively) is read with physc's importer, played
 `--seconds` with no shot, and traced (the interactions recognised in that run). A level
 *stands* when no object moves more than `--limit` units from where it is after the first
-step and nothing is destroyed, as tests/test_real_levels.py measures. Prints one line
+step and nothing is destroyed, as tests/domains/test_real_levels.py measures. Prints one line
 per folder (loaded / stood / traced), then each level that failed a stage and why: the
 diagnostic of a level that does not load, the object that moved most in one that does
 not stand, the exception of one whose trace failed.

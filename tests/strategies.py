@@ -1,5 +1,5 @@
 """Hypothesis strategies: random `.phys` syntax trees and random ways to write them; mutations of
-real inputs for fuzzing (tests/test_fuzz.py, benchmarks/fuzz.py)."""
+real inputs for fuzzing (tests/dsl/test_fuzz.py, benchmarks/fuzz.py)."""
 
 from __future__ import annotations
 
@@ -114,7 +114,7 @@ def written(draw, file: ast.File) -> str:
 
 # ---- fuzzing: mutations of real inputs -----------------------------------------------------------
 # Plain functions of a `random.Random`, so that hypothesis drives them through `st.randoms()` (and
-# shrinks what they draw) in tests/test_fuzz.py, and benchmarks/fuzz.py runs them directly, fast.
+# shrinks what they draw) in tests/dsl/test_fuzz.py, and benchmarks/fuzz.py runs them directly, fast.
 
 # Pieces that `.phys` mutations insert: the language's tokens and words, and what a careless or
 # hostile file may hold (terminal escapes, bidi controls, odd spaces and line breaks, long words).

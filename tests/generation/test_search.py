@@ -20,7 +20,7 @@ from physc.generation.search import Node, Search
 from physc.generation.settings import SearchSettings
 from physc.generation.stages import Stage, prefix, stages
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 PAPER = ROOT / "examples" / "paper"
 
 

@@ -47,8 +47,8 @@ def test_infeasible_example(path, physc):
 def test_every_file_level_code_has_a_broken_example():
     covered = {p.name.split("_")[0] for p in BROKEN + INFEASIBLE}
     # E0001 (unreadable file), E0702 (broken plugin) and E0703 (a domain without a capability:
-    # tests/test_plugins.py) cannot be shown by a file's content, nor E0802 (the search budget
+    # tests/domains/test_plugins.py) cannot be shown by a file's content, nor E0802 (the search budget
     # is a command-line setting: docs/errors.md shows it); E09xx are about level files, not
-    # .phys files (tests/test_level_xml.py).
+    # .phys files (tests/domains/test_level_xml.py).
     level_codes = {c for c in error_codes.CODES if c.startswith("E09")}
     assert covered == set(error_codes.CODES) - {"E0001", "E0702", "E0703", "E0802"} - level_codes

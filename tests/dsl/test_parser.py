@@ -49,7 +49,7 @@ def test_interaction_counts_match_the_paper_grouping():
 def _paper_table_rows() -> list[tuple[str, str]]:
     """The scenario definitions exactly as the paper's LaTeX table prints them."""
     # The table as the paper's LaTeX source has it (tests/data/paper: copied, with a header).
-    tex = (Path(__file__).parent / "data" / "paper" / "scenario_table.tex").read_text(encoding="utf-8")
+    tex = (Path(__file__).parents[1] / "data" / "paper" / "scenario_table.tex").read_text(encoding="utf-8")
     table = tex[tex.index("Name & Scenario Definition") :]
     rows = []
     for chunk in table.split(r"\midrule")[1:]:
