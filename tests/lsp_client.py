@@ -16,7 +16,8 @@ SERVER = [sys.executable, "-m", "physc", "lsp", "--stdio"]  # as VS Code starts 
 @pytest_lsp.fixture(config=ClientServerConfig(server_command=SERVER))
 async def client(lsp_client: LanguageClient):
     record_publications(lsp_client)
-    await lsp_client.initialize_session(types.InitializeParams(capabilities=client_capabilities("visual-studio-code")))
+    initialized = await lsp_client.initialize_session(types.InitializeParams(capabilities=client_capabilities("visual-studio-code")))
+    lsp_client.capabilities = initialized.capabilities  # what the server said it does
     yield
     await lsp_client.shutdown_session()
 

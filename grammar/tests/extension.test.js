@@ -32,7 +32,9 @@ require.cache.vscode = { id: "vscode", filename: "vscode", loaded: true, exports
 const languageclient = require("vscode-languageclient/node");
 
 // The server command: the setting, then `lsp` (the client adds --stdio, which `physc lsp` accepts).
-const extension = require(path.join(__dirname, "..", "extension.js"));
+// The sources by default; `node tests/extension.test.js dist/extension.js` tests the bundle.
+const tested = process.argv[2] || "extension.js";
+const extension = require(path.join(__dirname, "..", tested));
 const options = extension.serverOptions(fakeVscode.workspace.getConfiguration("physc"));
 assert.deepStrictEqual(options.run, { command: "/opt/venv/bin/physc", args: ["lsp"], transport: languageclient.TransportKind.stdio });
 settings.path = "";
@@ -42,5 +44,5 @@ assert.strictEqual(extension.serverOptions(fakeVscode.workspace.getConfiguration
 const manifest = require(path.join(__dirname, "..", "package.json"));
 assert.ok(manifest.activationEvents.includes("onLanguage:phys"));
 assert.strictEqual(manifest.contributes.configuration.properties["physc.path"].default, "physc");
-assert.strictEqual(path.resolve(__dirname, "..", manifest.main), path.join(__dirname, "..", "extension.js"));
-console.log("extension: ok");
+assert.strictEqual(manifest.main, "./dist/extension.js");  // the bundle of extension.js (npm run bundle)
+console.log(`extension (${tested}): ok`);

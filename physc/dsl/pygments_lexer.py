@@ -1,11 +1,13 @@
 """A Pygments lexer for `.phys` files (`pygmentize -l phys FILE`).
 
-Registered under the `pygments.lexers` entry point. Term, object and direction
-words come from the built-in angrybirds domain's vocabulary, so highlighting
-follows the domain.
+Registered under the `pygments.lexers` entry point. Term, object and direction words come
+from the vocabularies of every installed domain (the built-in angrybirds and plugins such as
+the PHYRE-like one), so highlighting follows the domains a user has.
 """
 
 from __future__ import annotations
+
+import re
 
 from pygments.lexer import RegexLexer, bygroups, words
 from pygments.token import (
@@ -19,13 +21,31 @@ from pygments.token import (
     Whitespace,
 )
 
-from physc.domains.angrybirds.vocabulary import VOCABULARY
 
-_INTERACTIONS = tuple(t.name for t in VOCABULARY.terms if t.kind == "interaction")
-_RESTRICTIONS = tuple(t.name for t in VOCABULARY.terms if t.kind == "restriction")
-_OBJECT_TERMS = "|".join(s for t in VOCABULARY.object_terms for s in t.spellings)
-_CONCRETE = tuple(c.name for c in VOCABULARY.concrete_objects)
-_DIRECTIONS = VOCABULARY.directions
+def _vocabularies() -> list:
+    """The vocabulary of each installed domain that loads (a broken plugin is skipped: the
+    lexer must still highlight)."""
+    from physc.domains import installed_domains, load_domain
+
+    found = []
+    for name in sorted(installed_domains()):
+        try:
+            found.append(load_domain(name).vocabulary)
+        except Exception:
+            continue
+    return found
+
+
+_VOCABULARIES = _vocabularies()
+_INTERACTIONS = tuple(sorted({t.name for v in _VOCABULARIES for t in v.terms if t.kind == "interaction"}))
+_RESTRICTIONS = tuple(sorted({t.name for v in _VOCABULARIES for t in v.terms if t.kind == "restriction"}))
+_OBJECT_TERMS = "|".join(sorted({re.escape(s) for v in _VOCABULARIES for t in v.object_terms for s in t.spellings}, key=lambda s: (-len(s), s)))
+_CONCRETE = tuple(sorted({c.name for v in _VOCABULARIES for c in v.concrete_objects}))
+_DIRECTIONS = tuple(sorted({d for v in _VOCABULARIES for d in v.directions}))
+# What a .phys file has and other languages rarely do: a scenario block, or the paper's
+# `hit(…) > destroy(…)` sequence form.
+_SCENARIO = re.compile(r"^\s*scenario\s+[A-Za-z_]\w*\s*(\"[^\"\n]*\"\s*)?\{", re.MULTILINE)
+_SEQUENCE = re.compile(r"\b[a-z][A-Za-z]*\([A-Za-z_]\w*(\s*,\s*[A-Za-z_|\s]+)*\)\s*>\s*[a-z][A-Za-z]*\(")
 
 
 class PhysLexer(RegexLexer):
@@ -34,6 +54,14 @@ class PhysLexer(RegexLexer):
     filenames = ["*.phys"]
     mimetypes = ["text/x-phys"]
     url = "https://pypi.org/project/physc/"
+
+    def analyse_text(text):
+        """How sure it is that `text` is a .phys file (Pygments' guess_lexer asks every lexer)."""
+        if _SCENARIO.search(text):
+            return 0.9 if ("interactions" in text or "restrictions" in text) else 0.6
+        if _SEQUENCE.search(text):
+            return 0.5
+        return 0.0
 
     tokens = {
         "root": [

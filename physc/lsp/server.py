@@ -20,7 +20,7 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 
 from physc import __version__
-from physc.lsp import completion, context, edits, hover, navigation
+from physc.lsp import completion, context, edits, hover, navigation, semantic
 from physc.lsp.documents import Documents, Snapshot
 
 log = logging.getLogger("physc.lsp")
@@ -205,6 +205,14 @@ def build() -> PhyscServer:
         start, end = (snapshot.positions.offset(p) for p in (params.range.start, params.range.end))
         found = [(d, snapshot.lsp_diagnostic(d)) for d in snapshot.diagnostics_at(start, end) if d.fixes]
         return edits.quick_fixes(params.text_document.uri, found, snapshot.range)
+
+    @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, semantic.LEGEND)
+    @guarded
+    async def semantic_tokens(ls: PhyscServer, params: types.SemanticTokensParams):
+        snapshot = await ls.parsed(params.text_document.uri)
+        if snapshot is None or snapshot.analysis.file is None:
+            return None
+        return semantic.tokens(snapshot.analysis.file, snapshot.positions)
 
     return server
 

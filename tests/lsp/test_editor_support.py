@@ -79,3 +79,22 @@ def test_pygmentize_command():
         text=True,
     )
     assert run.returncode == 0 and 'class="nf">roll<' in run.stdout
+
+
+def test_pygments_knows_every_installed_domains_words():
+    text = (ROOT / "plugins" / "physc-phyre" / "examples" / "phyre" / "task00000.phys").read_text()
+    tokens = dict((value, kind) for kind, value in get_lexer_by_name("phys").get_tokens(text))
+    assert tokens["touch"] is Name.Function and tokens["greenObject"] is Name.Builtin and tokens["blueBall"] is Name.Builtin.Pseudo
+
+
+def test_pygments_guesses_phys_from_the_text():
+    from pygments.lexers import guess_lexer
+
+    for path in (EXAMPLES / "paper" / "05_F.phys", ROOT / "plugins" / "physc-phyre" / "examples" / "phyre" / "task00002.phys"):
+        assert type(guess_lexer(path.read_text())).__name__ == "PhysLexer", path
+    assert type(guess_lexer("hit(bird, pig, any) > destroy(bird, pig)\n")).__name__ == "PhysLexer"
+    assert type(guess_lexer("def f(x):\n    return x > 1\n")).__name__ != "PhysLexer"
+
+
+def test_the_extension_carries_physcs_license():
+    assert (ROOT / "grammar" / "LICENSE").read_text() == (ROOT / "LICENSE").read_text()

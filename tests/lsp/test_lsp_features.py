@@ -192,3 +192,30 @@ async def test_quick_fix_applies_the_suggestion(client):
     fixed = applied(BROKEN, actions[0].edit.changes[URI])
     edit(client, URI, 2, (0, 0), (99, 0), fixed)
     assert list(await diagnostics(client, URI, 2)) == []
+
+
+def _decoded(data: list[int], text: str, legend) -> list[tuple[str, str]]:
+    """(word, token type) of LSP's relative encoding."""
+    lines, out, line, column = text.splitlines(), [], 0, 0
+    for k in range(0, len(data), 5):
+        d_line, d_start, length, kind, _ = data[k : k + 5]
+        line += d_line
+        column = column + d_start if d_line == 0 else d_start
+        out.append((lines[line][column : column + length], legend.token_types[kind]))
+    return out
+
+
+async def test_semantic_tokens_colour_every_installed_domains_words(client):
+    """Words of a plugin's vocabulary (PHYRE's touch, greenObject, blueBall) are coloured too."""
+    legend = client.capabilities.semantic_tokens_provider.legend
+    phyre = (Path(__file__).resolve().parents[2] / "plugins" / "physc-phyre" / "examples" / "phyre" / "task00000.phys").read_text()
+    open_document(client, URI, phyre)
+    found = await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(text_document=document(URI)))
+    words = _decoded(found.data, phyre, legend)
+    assert ("phyre", "namespace") in words and ("greenObject", "type") in words and ("blueBall", "class") in words
+    assert ("touch", "function") in words and ("roll", "function") in words and ("above", "enumMember") in words
+    assert ("green", "variable") in words
+    open_document(client, "file:///work/objects.phys", DECLARED)
+    found = await client.text_document_semantic_tokens_full_async(types.SemanticTokensParams(text_document=document("file:///work/objects.phys")))
+    words = _decoded(found.data, DECLARED, legend)
+    assert ("rollableBlock", "type") in words and ("hit", "function") in words and ("cannotHit", "function") in words
