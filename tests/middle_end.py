@@ -32,3 +32,20 @@ def scenario_from_text(text: str):
         analysis = analyze(str(path))
     assert not [d for d in analysis.diagnostics if d.is_error], analysis.diagnostics
     return analysis.scenarios[0]
+
+
+def search(name: str, seed: int = 0, **settings):
+    """The one search (physc.generation.search) on the first placed layout of a paper scenario,
+    with `settings` changed from the defaults."""
+    import random
+
+    import attrs
+
+    from physc.generation.search import Search
+
+    scenario = next(s for s in analyze(str(EXAMPLES / "paper" / "all.paper.phys")).scenarios if s.name == name)
+    layout = Pipeline(DOMAIN, scenario, seed).placed.layout
+    found = Search(DOMAIN, scenario, layout, random.Random(seed), DOMAIN.robustness_replays)
+    if settings:
+        found.settings = attrs.evolve(found.settings, **settings)
+    return found

@@ -281,3 +281,30 @@ def random_argv(rng, scenario: str, level: str, folder: str) -> list[str]:
             value = f"{value},{random_number(rng)}" + rng.choice(("", "", ",low", ",high", ",x"))
         argv += [f"{option}={value}"] if rng.random() < 0.5 or value.startswith("-") else [option, value]
     return argv
+
+
+def _texts(paths) -> list[str]:
+    return [p.read_bytes().decode("utf-8", "replace") for p in paths]
+
+
+def _examples():
+    from conftest import EXAMPLES
+
+    return EXAMPLES
+
+
+PHYS_CORPUS = _texts(sorted(_examples().rglob("*.phys")))  # every example .phys file, as text
+randoms = st.randoms(use_true_random=False)
+
+
+def fuzz(examples: int):
+    """Settings of a short, deterministic fuzz: `examples` inputs, derandomized, no database."""
+    from hypothesis import HealthCheck, settings
+
+    return settings(
+        max_examples=examples,
+        derandomize=True,
+        database=None,
+        deadline=None,
+        suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much],
+    )

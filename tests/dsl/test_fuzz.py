@@ -23,7 +23,7 @@ import tempfile
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from conftest import EXAMPLES, GOLDEN, ROOT, run_physc
@@ -33,7 +33,7 @@ from physc.domains.angrybirds.level_xml import LevelError, read_level
 from physc.dsl.check import check_file
 from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
-from strategies import NUMBERS, PHYS_PIECES, mutate_level, mutate_text, random_phys
+from strategies import NUMBERS, PHYS_CORPUS, PHYS_PIECES, _texts, fuzz, mutate_level, mutate_text, random_phys, randoms
 
 # What a terminal would act on (diagnostics.py escapes these): C0 controls but tab and newline,
 # DEL, C1 controls, bidirectional controls, line and paragraph separators.
@@ -41,11 +41,6 @@ TERMINAL_CONTROLS = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u
 EXIT_STATUSES = (0, 1, 2, 3)
 
 
-def _texts(paths) -> list[str]:
-    return [p.read_bytes().decode("utf-8", "replace") for p in paths]
-
-
-PHYS_CORPUS = _texts(sorted(EXAMPLES.rglob("*.phys")))
 # Real levels (tests/data/sciencebirds) when the checkout has them, and physc's own.
 LEVEL_FILES = sorted((ROOT / "tests" / "data" / "sciencebirds").rglob("*.xml")) + sorted((GOLDEN / "level").glob("*.xml"))
 
@@ -148,18 +143,8 @@ def check_parse(argv, safe_output: bool = False):
 
 
 # ---- the short version run by the test suite ----------------------------------------------------
-def fuzz(examples: int) -> settings:
-    """Settings of a short, deterministic fuzz: `examples` inputs, derandomized, no database."""
-    return settings(
-        max_examples=examples,
-        derandomize=True,
-        database=None,
-        deadline=None,
-        suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much],
-    )
 
 
-randoms = st.randoms(use_true_random=False)
 FOLDER = Path(tempfile.mkdtemp(prefix="physc-fuzz-"))  # the inputs written for the command line
 atexit.register(shutil.rmtree, FOLDER, ignore_errors=True)
 

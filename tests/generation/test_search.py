@@ -20,6 +20,8 @@ from physc.generation.search import Node, Search
 from physc.generation.settings import SearchSettings
 from physc.generation.stages import Stage, prefix, stages
 
+from middle_end import search
+
 ROOT = Path(__file__).resolve().parents[2]
 PAPER = ROOT / "examples" / "paper"
 
@@ -40,16 +42,6 @@ def test_objects_no_interaction_names_enter_in_a_last_stage():
     terms = [Term("hit", ("bird", "a")), Term("destroy", ("bird", "a"))]
     plan = stages(terms, {"a": 0, "extra": 2})
     assert plan == [Stage(0, 0, 2, ("a",)), Stage(1, 2, 2, ("extra",))]
-
-
-def search(name: str, seed: int = 0, **settings) -> Search:
-    scenario = next(s for s in analyze(str(PAPER / "all.paper.phys")).scenarios if s.name == name)
-    domain = load_domain("angrybirds")
-    layout = Pipeline(domain, scenario, seed).placed.layout
-    found = Search(domain, scenario, layout, random.Random(seed), domain.robustness_replays)
-    if settings:
-        found.settings = attrs.evolve(found.settings, **settings)
-    return found
 
 
 def test_a_shelf_enters_with_the_first_ball_on_it():

@@ -18,7 +18,7 @@ from physc.lsp.completion import complete
 from physc.lsp.hover import hover_text
 from physc.lsp.positions import Positions
 from strategies import PHYS_PIECES, mutate_text
-from test_fuzz import PHYS_CORPUS, fuzz, randoms
+from strategies import PHYS_CORPUS, fuzz, randoms
 
 OBJECTS = (EXAMPLES / "objects.phys").read_text()
 

@@ -100,7 +100,7 @@ def test_the_games_rules_go_on_from_the_lives_and_the_birds_checks():
 def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
     """Later stages go on from snapshots of the parent's plays, but every attempt that
     realises a stage, which the next stage builds on, is a play from the start."""
-    from test_search import search
+    from middle_end import search
 
     from physc.generation.search import Search
 
@@ -125,7 +125,7 @@ def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
 
 
 def test_with_snapshots_off_every_play_runs_from_the_start(monkeypatch):
-    from test_search import search
+    from middle_end import search
 
     from physc.generation.search import Search
 
