@@ -76,6 +76,12 @@ class SimulatedDomain(Domain):
     """How far (in the domain's units) a body may move, left alone for `seconds`, in a level
     that stands."""
 
+    still_start: bool = True
+    """Whether a scene must stand still before the action (the paper's physical stability). A
+    world whose scenes may already move (PHYRE: a ball falling onto a shelf, a stick toppling)
+    sets False: its scene is acceptable when, left alone, it does not solve itself (PHYRE's rule:
+    no action at all must not solve a task)."""
+
     robustness_replays = 6  # noisy replays a generated solution must pass
 
     trace_scale: float = 1.0
@@ -222,8 +228,13 @@ class SimulatedDomain(Domain):
     def stability(self, level) -> tuple[bool, float]:
         """(stable, the largest shift) of `level` left alone for all of `seconds`: under plain
         rules, which never end a run early (a domain's rules may stop once all is still, and
-        something that starts to tip slowly must not pass for standing)."""
-        return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
+        something that starts to tip slowly must not pass for standing). With `still_start`
+        False, "stable" is PHYRE's acceptance of a scene: left alone, it does not solve itself
+        (the shift is still reported)."""
+        if self.still_start:
+            return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
+        alone = self.play(level, None, recognise=False)
+        return not alone.solved, stable(alone, self.stable_limit)[1]
 
     searched = True
     """Physc's one generation search (physc.generation.search) makes this domain's tasks from

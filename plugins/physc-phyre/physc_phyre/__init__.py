@@ -57,7 +57,8 @@ class Phyre(SimulatedDomain):
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
     measures = (
-        "stability = no body moves more than half a pixel when the scene is left alone for 1,000 steps (16.7 s); intended "
+        "stability = PHYRE's acceptance of a scene: left alone for 1,000 steps (16.7 s), it does not solve itself (its "
+        "objects may move at the start, as in PHYRE's templates); intended "
         "solvability = the recorded action solves the task (exactly; and the share of 10 replays with the ball moved "
         "σ 0.5 px, PHYRE's half-pixel test of a stable solution); sequence fidelity = the replay realises the declared "
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
@@ -69,6 +70,7 @@ class Phyre(SimulatedDomain):
     and not TRIVIAL; its intended solution stable under half-pixel moves."""
     trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
+    still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
 
     @staticmethod
     def concretize(graph, scenario, rng):

@@ -237,3 +237,18 @@ def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_pa
     for name in task["distractors"]:
         body = level["scene"]["bodies"][names.index(name)]
         assert (body["color"], body["bodyType"]) in ((6, 1), (5, 2))
+
+
+def test_a_scene_may_move_at_the_start_but_not_solve_itself():
+    """PHYRE's rule, not the paper's stillness: a green ball falling onto a bar is an acceptable
+    scene; one falling onto its purple target is not (the empty action solves it)."""
+    from physc_phyre import DOMAIN, PhyreLevel, SceneBody
+
+    bar = SceneBody("bar", "bar", 128.0, 60.0, 0.0, 120.0, "black", False)
+    target = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
+    falling = SceneBody("green", "ball", 128.0, 200.0, 0.0, 12.5, "green", True)
+    onto_the_bar = PhyreLevel((bar, target, falling), ("green", "target"))
+    assert DOMAIN.stability(onto_the_bar)[0] is True
+    assert DOMAIN.stability(onto_the_bar)[1] > 10  # it did move: the ball fell 120 px
+    past_the_bar = PhyreLevel((target, falling), ("green", "target"))
+    assert DOMAIN.stability(past_the_bar)[0] is False
