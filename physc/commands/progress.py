@@ -37,7 +37,9 @@ class Progress:
         self.total, self.done, self.started = total, done, time.monotonic()
         if not console.is_terminal:  # a log: a line per result, written as it comes
             self.plain = True
-            self._line(f"{total} tasks" + (f" on {where}" if where else "") + (f"; resuming: {done} already done" if done else ""))
+            self._line(f"{total} tasks" + (f" on {where}" if where else ""))
+            if done:
+                self._line(f"resuming: {done} of {total} tasks already done")
             return
         from rich.progress import BarColumn, MofNCompleteColumn, Progress as Bar, TextColumn, TimeElapsedColumn, TimeRemainingColumn
 

@@ -40,8 +40,8 @@ def test_progress_in_a_log_is_a_line_per_result(capsys):
     progress.advance("b")
     progress.stop()
     lines = capsys.readouterr().err.splitlines()
-    assert lines[0] == "generate: 3 tasks on 2 local processes; resuming: 1 already done"
-    assert lines[1].startswith("generate: 2/3, ") and lines[1].endswith(": a done") and lines[2].startswith("generate: 3/3, ")
+    assert lines[:2] == ["generate: 3 tasks on 2 local processes", "generate: resuming: 1 of 3 tasks already done"]
+    assert lines[2].startswith("generate: 2/3, ") and lines[2].endswith(": a done") and lines[3].startswith("generate: 3/3, ")
 
 
 def test_generate_writes_its_lines_as_tasks_finish(tmp_path):
