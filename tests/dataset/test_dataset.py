@@ -332,3 +332,12 @@ def test_a_scheduler_without_workers_is_said_and_given_up(separate_cluster, tmp_
     run = run_physc("generate", SF, "--tasks", "1", "--out", tmp_path / "d", "--scheduler", address)
     assert "has no workers; waiting up to 2 s" in run.stderr
     assert run.status == 2 and "none joined in 2 s" in run.stderr and "dask worker" in run.stderr
+
+
+def test_a_cluster_started_here_serves_its_dashboard():
+    """physc[dask] brings bokeh, so --dask-workers' cluster has a real dashboard, named in the first progress line."""
+    pytest.importorskip("bokeh")
+    from physc.execution.dask import DaskCluster
+
+    with DaskCluster(workers=1) as cluster:
+        assert "dashboard http://127.0.0.1:" in cluster.describe()
