@@ -133,3 +133,16 @@ def test_with_snapshots_off_every_play_runs_from_the_start(monkeypatch):
     monkeypatch.setattr(Search, "simulate", lambda self, *a, **k: cuts.append(a[3] if len(a) > 3 else k.get("resume")) or simulate(self, *a, **k))
     assert search("F", seed=2, snapshots=False).run().satisfied
     assert cuts and not any(cuts)
+
+
+def test_a_run_cut_while_all_rests_ends_when_the_full_run_does():
+    """The game stops 0.3 s after everything came to rest: a run continued from a cut inside
+    that wait counts the rest before the cut, as the full run did."""
+    full = Game(LEVEL).simulate(SHOT, 10.0)
+    speeds = np.nan_to_num(np.abs(full.states[:, :, 3:6]).sum(axis=2)).max(axis=1)
+    bird = full.names.index("bird")
+    resting = [k for k in range(full.steps - 1) if np.isnan(full.states[k, bird, 0]) and speeds[k] < 0.02]
+    assert resting, "the run comes to rest before it ends"
+    cut = resting[-1]  # inside the last 0.3 s of rest
+    continued = Game(LEVEL).simulate(SHOT, 10.0, resume=Snapshot.of(full, cut))
+    assert continued.steps == full.steps

@@ -194,6 +194,8 @@ class Game(RunRules):
         gone = {d.name: d.time for d in snapshot.destructions}
         if self._pigs and set(self._pigs) <= set(gone):
             self._solved_at = max(gone[p] for p in self._pigs)
+        if self._stop_at_rest:
+            self._resting_since = _resting_since(snapshot)
 
     def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":
@@ -342,3 +344,20 @@ class Game(RunRules):
                 amount = rules.tnt_damage * share
                 self._wound(other, amount)
                 damage.append(DamageRecord(time, other, amount, self.life[other], name))
+
+
+def _resting_since(snapshot) -> float | None:
+    """When everything came to rest before `snapshot`'s cut, and stayed so (the bird gone):
+    what `Game.finished` would hold at the cut; None when something still moves there."""
+    import numpy as np
+
+    rows = snapshot.states  # (steps, bodies, 6): x, y, angle, vx, vy, w; NaN once a body is gone
+    speeds = np.nan_to_num(np.abs(rows[:, :, 3:6]).sum(axis=2), nan=0.0)
+    moving = (speeds > STILL_SPEED).any(axis=1)
+    if BIRD in snapshot.names:
+        moving |= ~np.isnan(rows[:, snapshot.names.index(BIRD), 0])
+    if moving[-1]:
+        return None
+    last = np.flatnonzero(moving)
+    first_still = int(last[-1]) + 1 if len(last) else 0
+    return (first_still + 1) * snapshot.dt  # the time `finished` saw at that step
