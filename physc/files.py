@@ -121,8 +121,13 @@ def _check_output(path, folder: bool) -> None:
     if not target.parent.is_dir():
         raise FileNotFoundError(errno.ENOENT, f"no folder {target.parent}")
     _check_folder(target.parent)
-    if target.is_file():  # replaced at the end: tried now (root's permissions say nothing of an immutable file)
-        os.close(os.open(target, os.O_WRONLY))
+    if target.is_file():  # replaced at the end: an immutable file (chattr +i) refuses even root, so try it now
+        try:
+            os.close(os.open(target, os.O_WRONLY))
+        except PermissionError as error:
+            if error.errno != errno.EPERM:  # EACCES: a read-only file in a folder we may write is replaced all the same
+                return
+            raise
 
 
 def _check_folder(folder: Path) -> None:

@@ -69,10 +69,11 @@ def add_format(parser, what: str = "the result") -> None:
 
 
 def print_json(data) -> None:
-    """Machine-readable output (--format json): indented JSON on stdout, non-ASCII kept."""
+    """Machine-readable output (--format json): indented JSON on stdout, in ASCII (\\u escapes),
+    so a file name that is not valid UTF-8 prints too."""
     import json
 
-    print(json.dumps(data, indent=2, ensure_ascii=False))
+    print(json.dumps(data, indent=2))
 
 
 def add_min_robustness(parser) -> None:

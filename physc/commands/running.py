@@ -82,9 +82,15 @@ def command_arguments(command: str, fallback: list[str]) -> list[str]:
     --color may come before it); `fallback` when physc was not run from a command line."""
     import sys
 
-    if command not in sys.argv[1:]:
-        return fallback
-    return sys.argv[sys.argv.index(command, 1) + 1 :]
+    words = sys.argv[1:]
+    while words and words[0] != command:  # only physc's top-level options may come before it
+        if words[0] == "--color" and len(words) > 1:
+            words = words[2:]
+        elif words[0] == "--traceback" or words[0].startswith("--color="):
+            words = words[1:]
+        else:
+            return fallback
+    return words[1:] if words else fallback
 
 
 def _portable(argument: str) -> str:

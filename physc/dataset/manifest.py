@@ -6,7 +6,8 @@ written whole, so a killed run loses no finished task and a torn last line stand
 make again. At the end both files are written whole in the order of the jobs, so they do not
 depend on the order in which tasks finished. In Parquet every field is a typed column: the
 objects (the solution, the times of each stage, the settings) are structs and the interactions
-lists, as in JSON Lines, so `datasets`, DuckDB and polars read the same fields either way.
+lists, as in JSON Lines, so `datasets`, DuckDB and polars read the same fields either way (an
+object whose fields change type from row to row, which a plugin's solution might, is JSON text).
 """
 
 from __future__ import annotations
@@ -80,7 +81,10 @@ def write_parquet(folder: Path, rows: list[dict]) -> None:
     for name, kind in COLUMNS:
         values = [row.get(name) for row in rows]
         if kind == "struct":  # the fields' order sorted, so the type depends on the rows alone
-            arrays.append(pa.array([_sorted(v) for v in values]))
+            try:
+                arrays.append(pa.array([_sorted(v) for v in values]))
+            except (pa.ArrowInvalid, pa.ArrowTypeError):  # a field whose type differs between rows (a plugin's): JSON text
+                arrays.append(pa.array([None if v is None else json.dumps(v, sort_keys=True, ensure_ascii=False) for v in values], pa.string()))
         else:
             arrays.append(pa.array(values, type=pa.list_(pa.string()) if kind == "terms" else getattr(pa, kind)()))
     table = pa.Table.from_arrays(arrays, names=[name for name, _ in COLUMNS])

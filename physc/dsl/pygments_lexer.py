@@ -44,8 +44,10 @@ _CONCRETE = tuple(sorted({c.name for v in _VOCABULARIES for c in v.concrete_obje
 _DIRECTIONS = tuple(sorted({d for v in _VOCABULARIES for d in v.directions}))
 # What a .phys file has and other languages rarely do: a scenario block, or the paper's
 # `hit(…) > destroy(…)` sequence form.
-_SCENARIO = re.compile(r"^\s*scenario\s+[A-Za-z_]\w*\s*(\"[^\"\n]*\"\s*)?\{", re.MULTILINE)
-_SEQUENCE = re.compile(r"\b[a-z][A-Za-z]*\([A-Za-z_]\w*(\s*,\s*[A-Za-z_|\s]+)*\)\s*>\s*[a-z][A-Za-z]*\(")
+# Unambiguous patterns (each space belongs to one part), so a failing search is linear: every
+# Pygments user's guess_lexer runs them on any text.
+_SCENARIO = re.compile(r"^[ \t]*scenario[ \t]+[A-Za-z_]\w*[ \t]*(\"[^\"\n]*\"[ \t]*)?\{", re.MULTILINE)
+_SEQUENCE = re.compile(r"\b[a-z]\w*\(\s*\w+(?:\s*[,|]\s*\w+)*\s*\)\s*>\s*[a-z]\w*\(")
 
 
 class PhysLexer(RegexLexer):

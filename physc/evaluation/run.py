@@ -188,8 +188,10 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
             if progress:
                 progress.advance(record)
 
-        with budget.interruptible():  # Ctrl-C stops the work at its next stopping point
-            executor.map(evaluate, todo, keep)
-    if progress:
-        progress.stop()
+        try:
+            with budget.interruptible():  # Ctrl-C stops the work at its next stopping point
+                executor.map(evaluate, todo, keep)
+        finally:  # the bar's display ends whatever stopped the work
+            if progress:
+                progress.stop()
     return [records[job.key] for job in jobs if job.key in records]

@@ -92,6 +92,9 @@ class DaskCluster(Executor):
         except TimeoutError:
             self.client.close()
             raise ExecutorError(f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s): start some with `dask worker {scheduler}`") from None
+        except BaseException:  # Ctrl-C while waiting, a lost connection: the client goes too
+            self.client.close()
+            raise
         return len(self.client.scheduler_info().get("workers", {}))
 
     def _same_code(self, scheduler: str) -> None:

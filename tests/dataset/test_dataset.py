@@ -341,3 +341,23 @@ def test_a_cluster_started_here_serves_its_dashboard():
 
     with DaskCluster(workers=1) as cluster:
         assert "dashboard http://127.0.0.1:" in cluster.describe()
+
+
+def test_the_readme_command_is_physcs_own_command_line(monkeypatch):
+    from physc.commands.running import command_arguments
+
+    monkeypatch.setattr(sys, "argv", ["pytest", "-q", "tests/x.py", "-k", "generate"])  # physc run in another program
+    assert command_arguments("generate", ["a.phys"]) == ["a.phys"]
+    monkeypatch.setattr(sys, "argv", ["physc", "--traceback", "--color=never", "generate", "b.phys"])
+    assert command_arguments("generate", []) == ["b.phys"]
+
+
+def test_an_object_whose_fields_change_type_is_json_text_in_parquet(tmp_path):
+    """A plugin's solution may hold a field that is a number in one task and a word in
+    another: the Parquet manifest still writes (that column as JSON text)."""
+    from physc.dataset import manifest
+
+    rows = [{"scenario": "S", "seed": 0, "solution": {"at": 1.5}}, {"scenario": "S", "seed": 1, "solution": {"at": "top"}}]
+    manifest.write_parquet(tmp_path, rows)
+    table = pd.read_parquet(tmp_path / "manifest.parquet")
+    assert [json.loads(v) for v in table["solution"]] == [{"at": 1.5}, {"at": "top"}]
