@@ -53,10 +53,12 @@ def reporter(args):
     return report
 
 
-def summary(errors: int, warnings: int, files: int) -> str:
-    def plural(n, word):
-        return f"{n} {word}{'' if n == 1 else 's'}"
+def plural(n: int, word: str) -> str:
+    """`n` and the word, in the plural unless n is 1 ("1 pig", "2 pigs")."""
+    return f"{n} {word}{'' if n == 1 else 's'}"
 
+
+def summary(errors: int, warnings: int, files: int) -> str:
     return f"{plural(errors, 'error')}, {plural(warnings, 'warning')} in {plural(files, 'file')}"
 
 

@@ -32,26 +32,22 @@ def cmd_fmt(args) -> int:
             continue
         formatted = format_file(analysis.file, analysis.source)
         canonical = formatted == analysis.source.text
+        printing = not (args.check or args.write)
+        if not canonical:
+            changed.append(path)
+            if args.write:
+                write_atomic(path, formatted)
         if args.format == "json":
             entry = {"file": str(path), "canonical": canonical}
             if args.write and not canonical:
-                write_atomic(path, formatted)
                 entry["rewritten"] = True
-            elif not (args.check or args.write):
+            elif printing:
                 entry["formatted"] = formatted
             listed.append(entry)
-            changed += [] if canonical else [path]
-        elif args.check:
-            if formatted != analysis.source.text:
-                changed.append(path)
-                print(f"would reformat {diagnostics.safe(str(path))}", file=sys.stderr)
-        elif args.write:
-            if formatted != analysis.source.text:
-                write_atomic(path, formatted)
-                changed.append(path)
-                print(f"reformatted {diagnostics.safe(str(path))}", file=sys.stderr)
-        else:
+        elif printing:
             sys.stdout.write(formatted)
+        elif not canonical:
+            print(f"{'reformatted' if args.write else 'would reformat'} {diagnostics.safe(str(path))}", file=sys.stderr)
     if args.format == "json":
         print_json(listed)
     if args.check and changed:

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from physc import budget
 from physc.commands import arguments
-from physc.commands.common import EXIT_OK, UsageError, add_backend, add_format, print_json, reporter
+from physc.commands.common import EXIT_OK, UsageError, add_backend, add_format, plural, print_json, reporter
 from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
@@ -107,17 +107,13 @@ def cmd_simulate(args) -> int:
         )
         return EXIT_OK
     what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
-    print(f"{safe(args.level)}: {_count(len(level.objects), 'object')}, {_count(len(pigs), 'pig')}; {what}")
+    print(f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}")
     verdict = "solved" if trace.solved else "not solved"
-    print(f"after {trace.duration:.2f} s: {len(destroyed)} of {_count(len(pigs), 'pig')} destroyed: {verdict}")
+    print(f"after {trace.duration:.2f} s: {len(destroyed)} of {plural(len(pigs), 'pig')} destroyed: {verdict}")
     for d in trace.destructions:
         by = f", by {d.by}" if d.by else ""
         print(f"  destroyed {d.name} ({d.cause}{by}) at t = {d.time:.2f} s")
     return EXIT_OK
-
-
-def _count(n: int, noun: str) -> str:
-    return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
 def cmd_trace(args) -> int:

@@ -38,11 +38,6 @@ def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
     return files
 
 
-def sources(jobs: list[TaskJob]) -> dict[str, str]:
-    """Each scenario of the jobs as written, in block form, by name."""
-    return {job.scenario: job.source for job in jobs}
-
-
 def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:
     """Make the dataset of `jobs` in `folder`; every job's row, in the order of `jobs`."""
     folder = ensure_folder(folder)
@@ -50,10 +45,11 @@ def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, 
     todo = [job for job in jobs if not _finished(folder, job, rows.get(job.key))]
     if rows:  # written whole first, so that a torn last line of a killed run cannot stay in the middle
         manifest.write_jsonl(folder, [rows[k] for k in sorted(rows)])
-    for scenario, source in sources(jobs).items():  # each scenario as written, beside its tasks
+    for scenario, source in {job.scenario: job.source for job in jobs}.items():  # each scenario as written, beside its tasks
         ensure_folder(folder / scenario)
-        if not (folder / scenario_file(scenario)).is_file() or (folder / scenario_file(scenario)).read_text(encoding="utf-8") != source:
-            write_atomic(folder / scenario_file(scenario), source)
+        copy = folder / scenario_file(scenario)
+        if not copy.is_file() or copy.read_text(encoding="utf-8") != source:
+            write_atomic(copy, source)
     if progress:
         progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
     kept = 0
@@ -89,7 +85,7 @@ def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, 
     final = [rows[job.key] for job in jobs]
     manifest.write_jsonl(folder, final)
     manifest.write_parquet(folder, final)
-    write_atomic(folder / README, readme.render(folder, jobs, final, sources(jobs), command))
+    write_atomic(folder / README, readme.render(folder, jobs, final, command))
     for name, content in benchmark_files(folder, final).items():  # last: a domain may refuse (DomainError)
         ensure_folder((folder / name).parent)
         write_atomic(folder / name, content)

@@ -20,13 +20,13 @@ def _size_category(tasks: int) -> str:
     return next((name for most, name in _SIZES if tasks < most), "1M<n<10M")
 
 
-def render(folder: Path, jobs: list, rows: list[dict], sources: dict[str, str], command: str) -> str:
-    """The README for the dataset in `folder`: `jobs` and their `rows` in order; `sources`: each
-    scenario as written (block form), by name."""
+def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
+    """The README for the dataset in `folder`: `jobs` (each carrying its scenario as written) and
+    their `rows`, in order."""
     by_scenario: dict[str, list] = collections.defaultdict(list)
     for job, row in zip(jobs, rows):
         by_scenario[job.scenario].append((job, row))
-    scenarios = [_scenario(name, pairs, sources[name]) for name, pairs in by_scenario.items()]
+    scenarios = [_scenario(name, pairs) for name, pairs in by_scenario.items()]
     made = [r for r in rows if r["outcome"] != NO_TASK]
     domains = sorted({job.domain for job in jobs})
     suffixes = {load_domain(d).level_suffix for d in domains}
@@ -55,7 +55,7 @@ def render(folder: Path, jobs: list, rows: list[dict], sources: dict[str, str], 
     )
 
 
-def _scenario(name: str, pairs: list, source: str) -> dict:
+def _scenario(name: str, pairs: list) -> dict:
     job, _ = pairs[0]
     rows = [row for _, row in pairs]
     made = [r for r in rows if r["outcome"] != NO_TASK]
@@ -72,7 +72,7 @@ def _scenario(name: str, pairs: list, source: str) -> dict:
         "fallbacks": sum(r["outcome"] == FALLBACK for r in rows),
         "missing": len(rows) - len(made),
         "accidental": f"{sum(plays) / len(plays):.3f} (mean of {len(plays)})" if plays else "none measured",
-        "source": source,
+        "source": job.source,  # as written, in block form
         "first_seed": min(j.seed for j, _ in pairs),
         "last_seed": max(j.seed for j, _ in pairs),
         "robustness": ", ".join(f"{k} × {v}" for k, v in sorted(robustness.items(), key=lambda kv: (-kv[1], kv[0]))) or "none generated",
