@@ -62,23 +62,23 @@ def _parts(task: dict, path: str):
         level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
         if not isinstance(level, domain.level_classes[0]):
             raise ValueError(f"the level is not a {domain.level_classes[0].__name__}")
-        kind = domain.solution_class or Solution
-        solution = _solution(from_data(task["solution"], {kind.__name__: kind}), kind)
+        kinds = domain.solution_classes
+        solution = _solution(from_data(task["solution"], kinds), tuple(kinds.values()))
         level_text = domain.emit_level(level)  # also checks that the level is one the domain can write
     except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:
         raise UsageError(f"{path}: its level or solution cannot be read: {error or type(error).__name__}") from None
     return domain, scenario, level, level_text, solution
 
 
-def _solution(solution, kind: type):
-    """The task file's solution, if it is a `kind` and, for angrybirds' Solution, its fields
+def _solution(solution, kind: tuple[type, ...]):
+    """The task file's solution, if it is one of the classes `kind` and, for angrybirds' Solution, its fields
     are what a shot holds (ValueError if not; another domain's class checks its own fields
     when it is made)."""
     from physc.compiler.task import Solution
 
     if not isinstance(solution, kind):
-        raise ValueError(f"the solution is not a {kind.__name__}")
-    if kind is not Solution:
+        raise ValueError(f"the solution is not a {' or a '.join(k.__name__ for k in kind)}")
+    if not isinstance(solution, Solution):
         return solution
     target = solution.target
     numbers = (*target, solution.release_angle) if isinstance(target, tuple) and len(target) == 2 else None

@@ -221,9 +221,18 @@ class Domain(abc.ABC):
     at most this many. None (the default): the domain makes no noisy replays, so
     --min-robustness has nothing to count and is not checked."""
 
-    solution_class: type | None = None
-    """The attrs class of a task's solution, for reading it back from a task file (`physc
+    solution_class: type | tuple[type, ...] | None = None
+    """The attrs class of a task's solution, or a tuple of them when a domain has several
+    kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
+
+    @property
+    def solution_classes(self) -> dict[str, type]:
+        """The classes a task file's solution may be, by name (`solution_class`)."""
+        from physc.compiler.task import Solution
+
+        kinds = self.solution_class or Solution
+        return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
 
     measures: str = ""
     """What the domain's evaluation measures mean (stability's limit, the noise, the agent),

@@ -13,7 +13,7 @@ does:
 * `rules(level)`: the run's rules (physc.simulation.run.RunRules: when the goal is met,
   when the run is over), and `recogniser`, `seconds`, `stable_limit`;
 * for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
-  `nudged(action, step)` (centring a fragile action), `random_action(rng)` and
+  `nudged(action, step)` (centring a fragile action), `random_action(level, rng)` and
   `valid(level, action)`;
 * `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
   and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
@@ -120,9 +120,9 @@ class SimulatedDomain(Domain):
         (the default)."""
         return None
 
-    def random_action(self, rng: random.Random):
-        """An action drawn as the evaluation's random agent draws one (None: the domain has
-        no random agent, and no accidental solvability is measured)."""
+    def random_action(self, level, rng: random.Random):
+        """An action for `level` drawn as the evaluation's random agent draws one (None: the
+        domain has no random agent, and no accidental solvability is measured)."""
         return None
 
     def valid(self, level, action) -> bool:
@@ -146,6 +146,11 @@ class SimulatedDomain(Domain):
     """The benchmark's rule for keeping a task by how random actions fare in it, a
     physc.generation.acceptance.Acceptance (PHYRE: GOOD_STABLE and not TRIVIAL); None:
     every task the search finds is kept."""
+
+    def acceptance_of(self, level):
+        """The acceptance rule for `level` (the default: `acceptance` for every level; PHYRE's
+        threshold depends on the level's action tier)."""
+        return self.acceptance
 
     def neighbours(self, action) -> list:
         """The actions a solution's stability is judged by (PHYRE: the ball moved half a pixel
@@ -268,7 +273,7 @@ class SimulatedDomain(Domain):
         Empty when the domain has no random agent."""
         if type(self).random_action is SimulatedDomain.random_action:  # the default: no random agent
             return {}
-        outcomes = self.attempts(level, iter(lambda: self.random_action(rng), None))
+        outcomes = self.attempts(level, iter(lambda: self.random_action(level, rng), None))
         if not outcomes:
             return {"accidental": None, "agent_plays": 0}
         first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)

@@ -283,9 +283,8 @@ def _pictures(records: list[dict], folder: Path) -> None:
         domain = load_domain(record.get("domain", "angrybirds"))
         if not domain.level_classes or not provides(domain, "picture"):
             continue
-        kind = domain.solution_class or Solution
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
-        solution = from_data(record["solution"], {kind.__name__: kind})
+        solution = from_data(record["solution"], domain.solution_classes)
         task = Task(
             record["scenario"], domain.name, record["seed"], "", level, solution, record["trace"], None, tuple(record["robustness"]),
             (), (), (), record.get("layouts_tried", 0), 0, record.get("simulations", 0), {}, {},

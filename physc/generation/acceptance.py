@@ -14,7 +14,8 @@ lies on one side of `trivial`. What cannot be settled within `attempts` valid dr
 decided as PHYRE would on those draws. A task is accepted when it is GOOD_STABLE, not
 TRIVIAL, and its intended solution is stable.
 
-A domain states its rule as `acceptance` (an `Acceptance`; None: every task is kept) and its
+A domain states its rule as `acceptance` (an `Acceptance`; None: every task is kept; or per
+level, `acceptance_of`) and its
 neighbourhood of an action as `neighbours` (physc.domains.simulated.SimulatedDomain).
 """
 
@@ -159,7 +160,7 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
     by the search's `evaluator`."""
     import random
 
-    rule = getattr(domain, "acceptance", None)
+    rule = domain.acceptance_of(level) if hasattr(domain, "acceptance_of") else None
     if rule is None:
         return None
     rng = random.Random(f"acceptance/{label}")
@@ -167,4 +168,4 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
     def solves(candidate) -> bool:
         return evaluator.run(lambda: domain.play(level, candidate, recognise=False)).solved
 
-    return judge(rule, action, lambda: domain.random_action(rng), lambda a: domain.valid(level, a), solves, domain.neighbours)
+    return judge(rule, action, lambda: domain.random_action(level, rng), lambda a: domain.valid(level, a), solves, domain.neighbours)

@@ -24,12 +24,13 @@ from physc.simulation.scene import Scene
 
 from physc_phyre import actions, world
 from physc_phyre.concretize import concretize
-from physc_phyre.level import BallAction, PhyreLevel, SceneBody, level_from_layout
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.rules import RECOGNISER, GoalRules
 from physc_phyre.task_file import task_json
 from physc_phyre.vocabulary import VOCABULARY
 
-BALL_THRESHOLD = 1e-5  # PHYRE's SOLVABILITY_THRESHOLD_PROBS["ball"] (docs/phyre-sources.md, section 5)
+# PHYRE's SOLVABILITY_THRESHOLD_PROBS (docs/phyre-sources.md, section 5), by the level's tier.
+THRESHOLDS = {"BALL": 1e-5, "TWO_BALLS": 1e-6}
 # Valid random actions the acceptance draws at most. PHYRE draws 10,000 and needs 2 stable
 # solutions among them (its binomial test: P[X ≥ 2] = 0.005, P[X ≥ 1] = 0.095); among 1,000, one
 # passes (P[X ≥ 1] = 0.01). A task solved stably by 1 random action in 1,000 or more is
@@ -38,22 +39,22 @@ BALL_THRESHOLD = 1e-5  # PHYRE's SOLVABILITY_THRESHOLD_PROBS["ball"] (docs/phyre
 # at a tenth of PHYRE's simulations.
 ACCEPTANCE_DRAWS = 1_000
 
-__all__ = ["DOMAIN", "Phyre", "BallAction", "PhyreLevel", "SceneBody"]
+__all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
 
 
 class Phyre(SimulatedDomain):
     name = "phyre"
-    description = "PHYRE-like tasks: the agent places a red ball; the green object must touch the target for 3 s"
+    description = "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
     vocabulary = VOCABULARY
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
-    level_classes = (PhyreLevel, SceneBody, BallAction)
+    level_classes = (PhyreLevel, SceneBody, BallAction, TwoBallAction)
     level_suffix = "json"  # task files in PHYRE's task structure
     level_format = (
         "PHYRE's Task (src/if/task.thrift of facebookresearch/phyre) as JSON with thrift's field names; the benchmark "
         "in PHYRE's own binary TaskCollection is phyre/tasks.bin.lzma"
     )
-    solution_class = BallAction
+    solution_class = (BallAction, TwoBallAction)
     recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
     measures = (
@@ -64,10 +65,14 @@ class Phyre(SimulatedDomain):
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
         "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
     )
-    acceptance = Acceptance(threshold=BALL_THRESHOLD, attempts=ACCEPTANCE_DRAWS)
+    acceptance = Acceptance(threshold=THRESHOLDS["BALL"], attempts=ACCEPTANCE_DRAWS)
     """PHYRE's acceptance of a ball-tier task: GOOD_STABLE (random actions solve it stably at a
     rate shown above 1e-5, SOLVABILITY_THRESHOLD_PROBS["ball"] of eval_task_complexity.py)
     and not TRIVIAL; its intended solution stable under half-pixel moves."""
+
+    def acceptance_of(self, level: PhyreLevel) -> Acceptance:
+        """The rule with the threshold of the level's tier (two balls: 1e-6)."""
+        return attrs.evolve(self.acceptance, threshold=THRESHOLDS[level.tier])
     trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
@@ -81,7 +86,7 @@ class Phyre(SimulatedDomain):
         return level_from_layout(layout, scenario)
 
     @staticmethod
-    def scene(level: PhyreLevel, action: BallAction | None) -> Scene:
+    def scene(level: PhyreLevel, action: BallAction | TwoBallAction | None) -> Scene:
         specs = world.walls(level.floor)
         kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
         radii = {}
@@ -90,10 +95,10 @@ class Phyre(SimulatedDomain):
             kinds[body.name] = "object" if body.dynamic else "surface"
             if body.shape == "ball":
                 radii[body.name] = body.size / world.PIXELS_PER_METRE
-        if action is not None:
-            specs.append(world.body_spec(level.player, world.outline("ball", action.radius), action.x, action.y, 0.0, True))
-            kinds[level.player] = "agent"
-            radii[level.player] = action.radius / world.PIXELS_PER_METRE
+        for name, ball in zip(level.players, action.balls if action is not None else ()):
+            specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))
+            kinds[name] = "agent"
+            radii[name] = ball.radius / world.PIXELS_PER_METRE
         return Scene(tuple(specs), kinds, world.GRAVITY, world.ENGINE, radii, goal=level.goal)
 
     @staticmethod
@@ -105,20 +110,20 @@ class Phyre(SimulatedDomain):
         return actions.candidate_actions(level, scenario)
 
     @staticmethod
-    def noisy(level: PhyreLevel, action: BallAction, rng: random.Random):
+    def noisy(level: PhyreLevel, action, rng: random.Random):
         return level, actions.noisy(action, rng)
 
     @staticmethod
-    def nudged(action: BallAction, step: int) -> BallAction:
-        """The ball `step` whole pixels sideways."""
-        return attrs.evolve(action, x=action.x + step)
+    def nudged(action, step: int):
+        """The balls `step` whole pixels sideways."""
+        return actions.moved(action, lambda ball: (step, 0))
 
     @staticmethod
-    def random_action(rng: random.Random) -> BallAction:
-        return actions.random_action(rng)
+    def random_action(level: PhyreLevel, rng: random.Random):
+        return actions.random_action(level, rng)
 
     @staticmethod
-    def neighbours(action: BallAction) -> list[BallAction]:
+    def neighbours(action) -> list:
         return actions.neighbours(action)
 
     @staticmethod
@@ -129,7 +134,7 @@ class Phyre(SimulatedDomain):
         return distractors(layout, index, rng)
 
     @staticmethod
-    def valid(level: PhyreLevel, action: BallAction) -> bool:
+    def valid(level: PhyreLevel, action) -> bool:
         return actions.valid(level, action)
 
     @staticmethod

@@ -17,7 +17,7 @@ import random
 
 from physc.backends import Circle, parts
 
-from physc_phyre.level import BallAction, PhyreLevel, SceneBody
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction
 from physc_phyre.world import SCENE, extent, outline
 
 RADII = (8, 16, 26)  # pixels
@@ -37,9 +37,19 @@ def outline_box(body: SceneBody) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction]]:
-    """(label, action) for every valid drop onto the first target's points of interest."""
-    first = scenario.interactions[0]
+def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
+    """(label, action) for every valid drop onto the first target's points of interest; in
+    the two-ball tier, pairs of such drops (two_balls.py)."""
+    if len(level.players) == 2:
+        from physc_phyre.two_balls import candidate_pairs
+
+        return candidate_pairs(level, scenario)
+    return drops(level, scenario.interactions[0])
+
+
+def drops(level: PhyreLevel, first) -> list[tuple[str, BallAction]]:
+    """(label, ball) for every valid drop onto the points of interest of the target of
+    `first`, a red ball's first interaction."""
     names = {b.name: b for b in level.bodies}
     if len(first.objects) < 2 or first.objects[1] not in names:
         return []
@@ -58,7 +68,7 @@ def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction
                     # As high as asked, or as high as the scene allows (a target near the top).
                     y = min(int(top + radius + gap), SCENE - radius)
                     action = BallAction(int(x_), y, radius, f"{target.name} {at}, r {radius}, {y - top - radius:.0f} px above")
-                    if (action.x, action.y, radius) not in seen and valid(level, action):
+                    if (action.x, action.y, radius) not in seen and placeable(level, action):
                         seen.add((action.x, action.y, radius))
                         out.append((action.aimed_at, action))
     return out
@@ -90,38 +100,58 @@ def _shoulders(point: str, x: float, radius: int, sides: list[str]) -> list[tupl
     return out
 
 
-def valid(level: PhyreLevel, action: BallAction) -> bool:
-    """Inside the scene, a radius PHYRE allows, and no body occluded (touching is fine)."""
-    r = action.radius
-    if not MIN_RADIUS <= r <= MAX_RADIUS or not (r <= action.x <= SCENE - r and r <= action.y <= SCENE - r):
+def valid(level: PhyreLevel, action: BallAction | TwoBallAction) -> bool:
+    """An action of the level's tier; each ball inside the scene, of a radius PHYRE allows,
+    occluding no body (touching is fine); two balls apart by PHYRE's rule."""
+    balls = getattr(action, "balls", ())
+    if len(balls) != len(level.players) or (len(balls) == 2 and not apart(*balls)):
         return False
-    return not any(_overlaps(body, action.x, action.y, r) for body in level.bodies)
+    return all(placeable(level, ball) for ball in balls)
 
 
-def from_unit(action) -> BallAction | None:
-    """An action in [0, 1]³ as PHYRE's ball tier reads it (action_mappers.py: x = int(a·255),
-    y likewise, r = round(2 + a·30); the inverse of BallAction.unit); None when PHYRE calls it
-    invalid before placing it (a value outside [0, 1], or the ball not inside the scene,
-    tested before quantising)."""
+def placeable(level: PhyreLevel, ball: BallAction) -> bool:
+    """One ball inside the scene, of a radius PHYRE allows, occluding no body of `level`."""
+    r = ball.radius
+    if not MIN_RADIUS <= r <= MAX_RADIUS or not (r <= ball.x <= SCENE - r and r <= ball.y <= SCENE - r):
+        return False
+    return not any(_overlaps(body, ball.x, ball.y, r) for body in level.bodies)
+
+
+def apart(a, b) -> bool:
+    """PHYRE's two-ball rule: the centres at least r1 + r2 + 1 px apart."""
+    return math.hypot(a.x - b.x, a.y - b.y) >= a.radius + b.radius + 1
+
+
+def from_unit(action) -> BallAction | TwoBallAction | None:
+    """An action in [0, 1]³ (ball tier) or [0, 1]⁶ (two-ball tier) as PHYRE reads it
+    (action_mappers.py: x = int(a·255), y likewise, r = round(2 + a·30); the inverse of
+    `unit`); None when PHYRE calls it invalid before placing it (a value outside [0, 1], a
+    ball not inside the scene, or two balls too close, tested before quantising)."""
     try:
-        a, b, c = (float(v) for v in action)
+        values = [float(v) for v in action]
     except (TypeError, ValueError):
         return None
-    if not all(0.0 <= v <= 1.0 for v in (a, b, c)):
+    if len(values) not in (3, 6) or not all(0.0 <= v <= 1.0 for v in values):
         return None
-    x, y, r = a * (SCENE - 1), b * (SCENE - 1), MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)
-    if not (r <= x <= SCENE - r and r <= y <= SCENE - r):
+    balls = []
+    for a, b, c in zip(values[0::3], values[1::3], values[2::3]):
+        x, y, r = a * (SCENE - 1), b * (SCENE - 1), MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)
+        if not (r <= x <= SCENE - r and r <= y <= SCENE - r):
+            return None
+        balls.append((x, y, r))
+    if len(balls) == 2 and math.dist(balls[0][:2], balls[1][:2]) < balls[0][2] + balls[1][2] + 1:
         return None
-    return BallAction(int(x), int(y), round(r))
+    placed = [BallAction(int(x), int(y), round(r)) for x, y, r in balls]
+    return placed[0] if len(placed) == 1 else TwoBallAction(*placed)
 
 
-def random_action(rng: random.Random) -> BallAction:
-    """A draw of PHYRE's random agent: uniform in [0, 1]³ until the ball lies inside the
-    scene (PHYRE's `sample(valid_only=True)`), read as PHYRE's ball tier reads it
-    (`from_unit`). Whether it occludes a body is `valid`'s to say, as PHYRE counts such an
-    action as an invalid attempt."""
+def random_action(level: PhyreLevel, rng: random.Random) -> BallAction | TwoBallAction:
+    """A draw of PHYRE's random agent in the level's tier: uniform in [0, 1]³ (or ⁶) until
+    PHYRE's mapper accepts it (its `sample(valid_only=True)`), read as `from_unit` reads it.
+    Whether it occludes a body is `valid`'s to say, as PHYRE counts such an action as an
+    invalid attempt."""
     while True:
-        placed = from_unit((rng.random(), rng.random(), rng.random()))
+        placed = from_unit([rng.random() for _ in range(3 * len(level.players))])
         if placed is not None:
             return placed
 
@@ -129,16 +159,26 @@ def random_action(rng: random.Random) -> BallAction:
 NEIGHBOUR_SHIFT = 0.5  # pixels: PHYRE's test of a stable solution moves the ball this far each way
 
 
-def neighbours(action: BallAction) -> list[BallAction]:
-    """The 8 balls PHYRE judges a solution's stability by: moved ±NEIGHBOUR_SHIFT px along x,
-    y or both (action_simulator.py's `_yield_user_input_neighborhood`), the radius kept."""
+def neighbours(action: BallAction | TwoBallAction) -> list:
+    """The 8 actions PHYRE judges a solution's stability by: every ball moved together
+    ±NEIGHBOUR_SHIFT px along x, y or both (action_simulator.py's
+    `_yield_user_input_neighborhood`), the radii kept."""
     d = NEIGHBOUR_SHIFT
-    return [BallAction(action.x + dx, action.y + dy, action.radius, action.aimed_at) for dx in (-d, 0.0, d) for dy in (-d, 0.0, d) if dx or dy]
+    return [moved(action, lambda ball: (dx, dy)) for dx in (-d, 0.0, d) for dy in (-d, 0.0, d) if dx or dy]
 
 
-def noisy(action: BallAction, rng: random.Random) -> BallAction:
-    """The action with the ball moved by σ = NOISE pixels along each axis."""
-    return BallAction(action.x + rng.gauss(0.0, NOISE), action.y + rng.gauss(0.0, NOISE), action.radius, action.aimed_at)
+def noisy(action: BallAction | TwoBallAction, rng: random.Random):
+    """The action with each ball moved by σ = NOISE pixels along each axis."""
+    return moved(action, lambda ball: (rng.gauss(0.0, NOISE), rng.gauss(0.0, NOISE)))
+
+
+def moved(action, shift):
+    """`action` with each ball moved by `shift(ball)` = (dx, dy) pixels."""
+    balls = []
+    for ball in action.balls:
+        dx, dy = shift(ball)
+        balls.append(BallAction(ball.x + dx, ball.y + dy, ball.radius, ball.aimed_at))
+    return balls[0] if len(balls) == 1 else TwoBallAction(*balls, action.aimed_at)
 
 
 def _overlaps(body: SceneBody, x: float, y: float, radius: float) -> bool:

@@ -2,8 +2,8 @@
 
 An agent is any Python callable that takes an `Observation` of a task (its id, PHYRE's
 256 × 256 picture of colour indices, its 14-number feature vectors, the task itself in PHYRE's
-structure) and yields actions in [0, 1]³ (x, y, radius, as PHYRE's ball tier reads them), best
-first. An agent that learns has a `fit(observations)` method too: it is called first with the
+structure) and yields actions in [0, 1]³ (x, y, radius, as PHYRE's ball tier reads them; six
+numbers, two balls, for a task whose `tier` is TWO_BALLS), best first. An agent that learns has a `fit(observations)` method too: it is called first with the
 fold's training tasks (train and dev when the test split is scored, train alone for dev, as
 PHYRE's agents/train.py does). Each action is played until the task is solved or 100 valid
 attempts are spent; an invalid action (outside the scene, or occluding a body) is not counted,
@@ -43,12 +43,13 @@ class Observation:
     task: dict = attrs.field(eq=False, repr=False)  # the task in PHYRE's structure (phyre_format.py), without its solutions
 
 
-def random_agent(seen: Observation) -> Iterable[tuple[float, float, float]]:
-    """PHYRE's random agent: uniform actions in [0, 1]³, drawn from a generator named after
-    the task."""
+def random_agent(seen: Observation) -> Iterable[tuple[float, ...]]:
+    """PHYRE's random agent: uniform actions in [0, 1]³ (two-ball tier: [0, 1]⁶), drawn from a
+    generator named after the task."""
     rng = random.Random(f"random-agent/{seen.task_id}")
+    size = 6 if seen.task.get("tier") == "TWO_BALLS" else 3
     while True:
-        yield (rng.random(), rng.random(), rng.random())
+        yield tuple(rng.random() for _ in range(size))
 
 
 def observations(folder: Path) -> dict[str, Observation]:

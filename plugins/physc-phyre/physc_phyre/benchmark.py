@@ -5,8 +5,8 @@
 * `observations.npy`: each task's first observation, PHYRE's 256 × 256 picture of colour
   indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
 * `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
-  `scenario` and `seed` it came from, its `level` and `task` files, the intended `action` in PHYRE's
-  [0, 1]³, the `description`, and `features` (PHYRE's 14 numbers per object);
+  `scenario` and `seed` it came from, its `level` and `task` files, its `tier`, the intended
+  `action` in PHYRE's [0, 1]³ (BALL) or [0, 1]⁶ (TWO_BALLS), the `description`, and `features` (PHYRE's 14 numbers per object);
 * `folds.json`: PHYRE's folds 0-9 of the cross- and within-template setups (folds.py).
 
 A scenario is a template, numbered in the order the dataset names them (00000, 00001, …);
@@ -67,7 +67,8 @@ def _parquet(entries) -> bytes:
         "seed": pa.array([row["seed"] for _, row, _ in entries], pa.int64()),
         "level": pa.array([row["level"] for _, row, _ in entries], pa.string()),
         "task": pa.array([row["task"] for _, row, _ in entries], pa.string()),
-        "action": pa.array([_action(task) for _, _, task in entries], pa.list_(pa.float64(), 3)),
+        "tier": pa.array([task["tier"] for _, _, task in entries], pa.string()),
+        "action": pa.array([_action(task) for _, _, task in entries], pa.list_(pa.float64())),
         "description": pa.array([task.get("description") for _, _, task in entries], pa.string()),
         "features": pa.array([observation.features(task).tolist() for _, _, task in entries], pa.list_(feature)),
     }
@@ -77,14 +78,15 @@ def _parquet(entries) -> bytes:
 
 
 def _action(task: dict) -> list[float] | None:
-    """The intended action in PHYRE's [0, 1]³ (the task's first solution's ball)."""
+    """The intended action in PHYRE's [0, 1]³, or [0, 1]⁶ in the two-ball tier (the task's
+    first solution's balls)."""
     from physc_phyre.level import BallAction
 
-    balls = [ball for solution in task.get("solutions", ()) for ball in solution.get("balls", ())]
-    if not balls:
+    solutions = task.get("solutions") or ()
+    if not solutions:
         return None
-    ball = balls[0]
-    return list(BallAction(ball["position"]["x"], ball["position"]["y"], ball["radius"]).unit())
+    balls = solutions[0].get("balls", ())
+    return [v for ball in balls for v in BallAction(ball["position"]["x"], ball["position"]["y"], ball["radius"]).unit()] or None
 
 
 def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
@@ -98,5 +100,6 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         files[f"{FOLDER}/{name}"] = phyre_format.collection_bytes(collection)
     files[f"{FOLDER}/observations.npy"] = _npy(np.stack([observation.raster(task) for _, _, task in entries]))
     files[f"{FOLDER}/tasks.parquet"] = _parquet(entries)
-    files[f"{FOLDER}/folds.json"] = (json.dumps(folds.folds([t for t, _, _ in entries]), indent=1) + "\n").encode()
+    tiers = {t: task["tier"] for t, _, task in entries}
+    files[f"{FOLDER}/folds.json"] = (json.dumps(folds.folds(list(tiers), tiers=tiers), indent=1) + "\n").encode()
     return files

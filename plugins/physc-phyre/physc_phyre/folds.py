@@ -12,7 +12,9 @@ and salt), shares from TRAIN_SHARE = 0.8.
   first round(80 %) kept for training and the rest test; the kept ids of every template
   pooled, ordered with `make_dev{seed}`, the first int(80 %) train and the rest dev.
 
-The salts say "ball" in every tier, as PHYRE's do. Every list is sorted, as PHYRE returns it.
+Each action tier is split on its own (PHYRE's setups are per tier: ball_cross_template,
+two_balls_cross_template, …) and the parts pooled. The salts say "ball" in every tier, as
+PHYRE's do. Every list is sorted, as PHYRE returns it.
 """
 
 from __future__ import annotations
@@ -70,10 +72,17 @@ def fold(setup: str, ids: Iterable[str], seed: int) -> tuple[list[str], list[str
     return (cross_template if setup == "cross_template" else within_template)(list(ids), seed)
 
 
-def folds(ids: Iterable[str], seeds: int = SEEDS) -> dict:
-    """Every setup's folds 0 .. seeds - 1: {setup: {seed: {"train": […], "dev": […], "test": […]}}}."""
+def folds(ids: Iterable[str], seeds: int = SEEDS, tiers: dict[str, str] | None = None) -> dict:
+    """Every setup's folds 0 .. seeds - 1: {setup: {seed: {"train": […], "dev": […], "test": […]}}}.
+    With `tiers` (a task id's action tier), each tier is split on its own, as PHYRE splits
+    its ball and two-ball tiers, and the parts pooled."""
     ids = list(ids)
-    return {
-        setup: {str(seed): dict(zip(("train", "dev", "test"), fold(setup, ids, seed))) for seed in range(seeds)}
-        for setup in SETUPS
-    }
+    groups: dict[str, list[str]] = {}
+    for task in ids:
+        groups.setdefault((tiers or {}).get(task, ""), []).append(task)
+
+    def split(setup: str, seed: int) -> dict:
+        parts = [fold(setup, group, seed) for _, group in sorted(groups.items())]
+        return {name: sorted(t for part in parts for t in part[k]) for k, name in enumerate(("train", "dev", "test"))}
+
+    return {setup: {str(seed): split(setup, seed) for seed in range(seeds)} for setup in SETUPS}

@@ -2,8 +2,8 @@
 
 It holds what PHYRE's Task holds (src/if/task.thrift): bodies with a shape, a position
 and angle, a colour and whether they move; the two goal bodies and their relation
-(TOUCHING); the action tier (BALL); and, once generated, the intended solution (PHYRE's
-`solutions`). Positions are in the scene's pixels. The walls are not bodies here: every
+(TOUCHING); the action tier (BALL for one red ball, TWO_BALLS for two); and, once generated,
+the intended solution (PHYRE's `solutions`). Positions are in the scene's pixels. The walls are not bodies here: every
 scene has them (world.walls).
 """
 
@@ -73,6 +73,10 @@ class BallAction:
     radius: float = attrs.field(validator=_radius)
     aimed_at: str = ""  # the candidate it came from (a point of interest of the first target)
 
+    @property
+    def balls(self) -> tuple[BallAction, ...]:
+        return (self,)
+
     def unit(self) -> tuple[float, float, float]:
         """The action as PHYRE's agents give it, in [0, 1]³ (action_mappers.py's BallScaler:
         x = int(a·255), y likewise, r = round(2 + a·30)): for each whole pixel p the least
@@ -93,6 +97,31 @@ def unit_of(pixel: float, scale: int) -> float:
 
 
 @attrs.frozen
+class TwoBallAction:
+    """PHYRE's two-ball tier: two red balls placed at once (a 6-D action, x1, y1, r1, x2, y2,
+    r2); invalid when their centres are closer than r1 + r2 + 1 px (action_mappers.py's
+    TwoBallsActionMapper)."""
+
+    first: BallAction
+    second: BallAction
+    aimed_at: str = ""
+
+    @property
+    def balls(self) -> tuple[BallAction, BallAction]:
+        return (self.first, self.second)
+
+    @property
+    def x(self) -> float:  # where the pair lies along the scene, for ordering and nudging
+        return self.first.x
+
+    def unit(self) -> tuple[float, ...]:
+        return self.first.unit() + self.second.unit()
+
+
+TIERS = {1: "BALL", 2: "TWO_BALLS"}  # PHYRE's SolutionTier, by the number of red balls
+
+
+@attrs.frozen
 class SceneBody:
     name: str
     shape: str = attrs.field(validator=attrs.validators.in_(SHAPES))  # ball | bar | jar | standingsticks
@@ -108,16 +137,22 @@ class SceneBody:
 class PhyreLevel:
     bodies: tuple[SceneBody, ...]
     goal: tuple[str, str]  # the green body and the one it must touch (PHYRE's bodyId1, bodyId2)
-    player: str = "redBall"  # what the scenario calls the agent's ball
+    players: tuple[str, ...] = ("redBall",)  # what the scenario calls the agent's balls, in the order the action places them
     floor: str = "floor"  # what the scenario calls the floor (the bottom wall)
     relation: str = "TOUCHING"
-    tier: str = "BALL"
-    solutions: tuple[BallAction, ...] = ()
+    solutions: tuple[BallAction | TwoBallAction, ...] = ()
 
     def __attrs_post_init__(self):
         names = {b.name for b in self.bodies}
         if len(self.goal) != 2 or not (set(self.goal) <= names or self.goal == ("", "")):
             raise ValueError(f"the goal must name two of the level's bodies, not {list(self.goal)!r}")
+        if len(self.players) not in TIERS:
+            raise ValueError(f"a task places one or two red balls, not {len(self.players)}")
+
+    @property
+    def tier(self) -> str:
+        """PHYRE's action tier: BALL or TWO_BALLS, by how many red balls the action places."""
+        return TIERS[len(self.players)]
 
     def body(self, name: str) -> SceneBody:
         for body in self.bodies:
@@ -152,6 +187,22 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         target = next((b.name for b in bodies if b.color in TARGET_COLOURS), "")
         if not (green and target):
             green = target = ""
-    player = next((o.name for o in scenario.objects if o.term == "redBall"), "redBall") if scenario is not None else "redBall"
     floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
-    return PhyreLevel(tuple(bodies), (green, target), player, floor)
+    return PhyreLevel(tuple(bodies), (green, target), players(scenario), floor)
+
+
+def players(scenario) -> tuple[str, ...]:
+    """The scenario's red balls, in the order they first act (one: PHYRE's ball tier; two:
+    its two-ball tier); the default name without a scenario."""
+    if scenario is None:
+        return ("redBall",)
+    red = {o.name for o in scenario.objects if o.term == "redBall"}
+    if len(red) > max(TIERS):
+        from physc.domains.base import DomainError
+
+        raise DomainError(
+            "E0703", f"scenario '{scenario.name}' names {len(red)} red balls, but PHYRE's tiers place one or two",
+            help="keep one red ball (the ball tier) or two (the two-ball tier)",
+        )
+    order = [name for term in scenario.interactions for name in term.objects if name in red]
+    return tuple(dict.fromkeys(order + sorted(red))) or ("redBall",)

@@ -13,7 +13,7 @@ from matplotlib import patches  # noqa: E402
 from physc.backends import Circle, parts  # noqa: E402
 from physc.picture import save  # noqa: E402
 
-from physc_phyre.level import BallAction, PhyreLevel, SceneBody  # noqa: E402
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction  # noqa: E402
 from physc_phyre.world import PIXELS_PER_METRE, SCENE, outline  # noqa: E402
 
 PALETTE = {"red": "#f34f46", "green": "#6bcebb", "blue": "#1877f2", "purple": "#4b4aa4", "gray": "#b9cad2", "black": "#000000"}
@@ -29,7 +29,7 @@ def _draw(axes, shape, x: float, y: float, angle: float, color: str) -> None:
             axes.add_patch(patches.Polygon(points, closed=True, color=color, zorder=2))
 
 
-def draw(level: PhyreLevel, title: str = "", action: BallAction | None = None, paths=None):
+def draw(level: PhyreLevel, title: str = "", action: BallAction | TwoBallAction | None = None, paths=None):
     figure, axes = plt.subplots(figsize=(5.4, 5.8), dpi=100)
     axes.set_xlim(0, SCENE)
     axes.set_ylim(0, SCENE)
@@ -40,8 +40,8 @@ def draw(level: PhyreLevel, title: str = "", action: BallAction | None = None, p
     body: SceneBody
     for body in level.bodies:
         _draw(axes, outline(body.shape, body.size), body.x, body.y, body.angle, PALETTE[body.color])
-    if action is not None:
-        axes.add_patch(patches.Circle((action.x, action.y), action.radius, color=PALETTE["red"], zorder=3))
+    for ball in action.balls if action is not None else ():
+        axes.add_patch(patches.Circle((ball.x, ball.y), ball.radius, color=PALETTE["red"], zorder=3))
     for name, points in (paths or {}).items():
         xs = [p[0] * PIXELS_PER_METRE for p in points]
         ys = [p[1] * PIXELS_PER_METRE for p in points]
@@ -52,5 +52,5 @@ def draw(level: PhyreLevel, title: str = "", action: BallAction | None = None, p
     return figure
 
 
-def picture(level: PhyreLevel, title: str, action: BallAction | None, paths, fmt: str) -> bytes:
+def picture(level: PhyreLevel, title: str, action: BallAction | TwoBallAction | None, paths, fmt: str) -> bytes:
     return save(draw(level, title, action, paths), fmt)

@@ -7,9 +7,9 @@ polygons with vertices relative to the position, counter-clockwise, or circles),
 `color` (1 red, 2 green, 3 blue, 4 purple, 5 gray, 6 black), `shapeType` (1 ball, 2 bar,
 3 jar, 4 standing sticks; 0 for walls) and `diameter`; the goal as `bodyId1`, `bodyId2`
 (indices into the bodies) and `relationships` ([6]: TOUCHING); the scene's
-`user_input_status` (0, as in PHYRE's own task files); `tier` ("BALL");
-`description` as PHYRE writes it; and `solutions`, PHYRE's UserInput: the red ball of
-the intended action. `physc` adds the bodies' names, so a reader can map a task back to
+`user_input_status` (0, as in PHYRE's own task files); `tier` ("BALL", or "TWO_BALLS");
+`description` as PHYRE writes it; and `solutions`, PHYRE's UserInput: the red ball (or
+balls) of the intended action. `physc` adds the bodies' names, so a reader can map a task back to
 its scenario. Numbers are rounded to 1e-6 px: the same level gives the same bytes.
 """
 
@@ -96,7 +96,7 @@ def task_json(level: PhyreLevel) -> str:
         "bodyId2": names.index(level.goal[1]),
         "relationships": [TOUCHING],
         "description": describe(level),
-        "solutions": [{"balls": [{"position": _vector(a.x, a.y), "radius": _number(a.radius)}]} for a in level.solutions],
+        "solutions": [{"balls": [{"position": _vector(b.x, b.y), "radius": _number(b.radius)} for b in a.balls]} for a in level.solutions],
         "tier": level.tier,
         "physc": {"names": names, "actions": [list(a.unit()) for a in level.solutions]},
     }
