@@ -7,8 +7,8 @@ numbers, two balls, for a task whose `tier` is TWO_BALLS), best first. An agent 
 fold's training tasks (train and dev when the test split is scored, train alone for dev, as
 PHYRE's agents/train.py does). Each action is played until the task is solved or 100 valid
 attempts are spent; an invalid action (outside the scene, or occluding a body) is not counted,
-as in PHYRE's evaluator. The score is PHYRE's AUCCESS over the split's tasks, per fold and
-per template (docs/phyre-sources.md, section 4.8).
+as in PHYRE's evaluator. The score is PHYRE's AUCCESS over the split's tasks, per fold, per
+action tier (PHYRE reports its ball and two-ball tiers apart) and per template (docs/phyre-sources.md, section 4.8).
 
 `random_agent` is PHYRE's random agent: uniform actions, from a generator named after the task.
 """
@@ -109,11 +109,14 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
         for task_id in parts[split]:
             scores[task_id] = auccess(first_solved(domain, level_of(task_id), seen[task_id], agent))
         per_template: dict[str, list[float]] = {}
+        per_tier: dict[str, list[float]] = {}
         for task_id, value in scores.items():
             per_template.setdefault(task_id[:5], []).append(value)
+            per_tier.setdefault(seen[task_id].task.get("tier", "BALL"), []).append(value)
         results[str(fold)] = {
             "tasks": len(scores),
             "auccess": round(statistics.mean(scores.values()), 5) if scores else None,
+            "tiers": {t: round(statistics.mean(v), 5) for t, v in sorted(per_tier.items())},
             "templates": {t: round(statistics.mean(v), 5) for t, v in sorted(per_template.items())},
         }
     means = [r["auccess"] for r in results.values() if r["auccess"] is not None]

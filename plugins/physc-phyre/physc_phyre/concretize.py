@@ -7,7 +7,7 @@ left, middle or right third; a surface something rolls or slides on is long enou
 gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a surface for a bounce
 tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
 wall stands the scene's height against the edge its toucher heads for; a green stick and a post
-stand upright.
+stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION
 
-from physc_phyre.level import KINDS
+from physc_phyre.level import HELD, KINDS
 from physc_phyre.world import BAR_HEIGHT, SCENE, WALL, extent
 
 PATH_LENGTH = (50.0, 90.0)
@@ -30,6 +30,8 @@ TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on:
 # Bars standing upright: a green or gray stick (PHYRE's templates 00003, 00009, 00017: 0.2-0.5
 # of the scene) and a black post.
 UPRIGHT = {"greenStick": (51.0, 128.0), "grayStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
+# A jar holding a ball: PHYRE's 00018 and 00022 use jars of scale 0.15-0.3 (38-77 px tall).
+HOLDING_HEIGHT = (45.0, 70.0)
 
 
 def _across(geometry: Geometry) -> float:
@@ -95,6 +97,8 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
             bodies[name] = Body(name, node.role, concrete, Geometry(round(rng.uniform(low, max(high, low + 30.0)), 1), BAR_HEIGHT))
         else:
             shape = KINDS[concrete][0]
-            width, height, _ = extent(shape, _size(shape, rng))
-            bodies[name] = Body(name, node.role, concrete, Geometry(round(width, 3), round(height, 3)))
+            size = round(rng.uniform(*HOLDING_HEIGHT), 1) if concrete in HELD else _size(shape, rng)
+            width, height, _ = extent(shape, size)
+            turned = 180.0 if concrete == "upsideDownJar" else 0.0
+            bodies[name] = Body(name, node.role, concrete, Geometry(round(width, 3), round(height, 3), turned))
     return {node.name: bodies[node.name] for node in graph.nodes}

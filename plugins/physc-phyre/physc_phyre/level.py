@@ -13,7 +13,7 @@ import math
 
 import attrs
 
-from physc_phyre.world import SCENE, extent, size_of
+from physc_phyre.world import BAR_HEIGHT, SCENE, extent, size_of
 
 # The shape and colour of each concrete object of the vocabulary (the floor is the bottom wall).
 KINDS = {
@@ -29,6 +29,9 @@ KINDS = {
     "grayStick": ("bar", "gray", True),  # standing upright
     "blueBall": ("ball", "blue", True),
     "blueJar": ("jar", "blue", True),
+    "blueBallInJar": ("jar", "blue", True),  # the ball's colour; its jar is gray (HELD)
+    "greenBallInJar": ("jar", "green", True),
+    "upsideDownJar": ("jar", "gray", True),  # turned 180°
     "purpleBar": ("bar", "purple", False),
     "purpleFloor": ("bar", "purple", False),
     "ball": ("ball", "gray", True),
@@ -38,6 +41,13 @@ KINDS = {
     "blackBar": ("bar", "black", False),
     "ramp": ("bar", "black", False),
 }
+# A ball lying in a jar, one object of the scenario: the ball bears the object's name, its jar
+# is a gray dynamic body named after it (PHYRE's templates put the blue ball, or the green
+# one, in a gray jar). The ball's radius is a share of the jar's height, so that it lies on
+# the jar's base between its walls.
+HELD = {"blueBallInJar": "gray", "greenBallInJar": "gray"}
+HELD_RADIUS = 0.25  # of the jar's height
+JAR_SUFFIX = "_jar"
 GOAL_COLOURS = ("green",)
 TARGET_COLOURS = ("blue", "purple")
 
@@ -175,6 +185,9 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         angle = math.radians(placed.rotation)
         x = placed.x + below * math.sin(angle)
         y = placed.y - below * math.cos(angle)
+        if placed.concrete in HELD:
+            bodies += held(placed.name, x, y, angle, size, color, HELD[placed.concrete])
+            continue
         bodies.append(SceneBody(placed.name, shape, round(x, 3), round(y, 3), round(angle, 6), round(size, 3), color, dynamic))
     # The goal pair is the scenario's `touch(green, target)`; without a scenario (a placed
     # layout's picture), the first green body and the first blue or purple one.
@@ -189,6 +202,18 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
             green = target = ""
     floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
     return PhyreLevel(tuple(bodies), (green, target), players(scenario), floor)
+
+
+def held(name: str, x: float, y: float, angle: float, height: float, color: str, jar_color: str) -> list[SceneBody]:
+    """A ball named `name` lying on the base of a jar `height` tall whose base's middle is at
+    (x, y): the jar, then the ball."""
+    radius = int(HELD_RADIUS * height) + 0.5
+    lift = BAR_HEIGHT / 2 + radius  # from the base's middle line to the ball's centre
+    bx, by = x - lift * math.sin(angle), y + lift * math.cos(angle)
+    return [
+        SceneBody(name + JAR_SUFFIX, "jar", round(x, 3), round(y, 3), round(angle, 6), round(height, 3), jar_color, True),
+        SceneBody(name, "ball", round(bx, 3), round(by, 3), 0.0, radius, color, True),
+    ]
 
 
 def players(scenario) -> tuple[str, ...]:
