@@ -19,7 +19,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from physc.compiler.task import Solution  # noqa: E402
 from physc.domains.base import provides  # noqa: E402
 from physc.evaluation.measure import NOISY_REPLAYS  # noqa: E402
 from physc.files import write_atomic  # noqa: E402

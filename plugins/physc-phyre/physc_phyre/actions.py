@@ -1,4 +1,5 @@
-"""The agent's action, PHYRE's ball tier: where the red ball is placed, and how big it is.
+"""The agent's action, PHYRE's ball tier: where the red ball is placed, and how big it is (the
+two-ball tier places two at once, under PHYRE's rule that they lie r1 + r2 + 1 px apart).
 
 Candidate actions follow the paper's points of interest: the ball is dropped onto the
 first target's upper corners, the middle of its top and the quarters between, in three sizes, from just above
