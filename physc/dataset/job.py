@@ -16,6 +16,7 @@ import attrs
 from physc import __version__, budget
 from physc.backends import DEFAULT_BACKEND, selected
 from physc.compiler.infeasible import Infeasible
+from physc.domains.base import DomainError
 from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
 from physc.domains import load_domain
@@ -108,7 +109,7 @@ def _make(job: TaskJob) -> dict:
                 source=job.source, min_robustness=job.min_robustness, verify_backend=job.verify_backend,
             ).task
             picture = domain.picture(task, "png") if job.picture else None
-    except Infeasible as error:
+    except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         row.update(outcome=NO_TASK, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return {"row": row, "files": {}}
     except budget.OutOfTime:

@@ -22,6 +22,7 @@ import attrs
 
 from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
+from physc.domains.base import DomainError
 from physc.compiler.pipeline import Pipeline
 from physc.backends import DEFAULT_BACKEND, selected
 from physc.compiler.task import MIN_ROBUSTNESS
@@ -102,7 +103,7 @@ def _evaluate(job: Job) -> dict:
             domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness,
             verify_backend=job.verify_backend, acceptance=job.acceptance,
         ).task
-    except Infeasible as error:
+    except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return record
     record.update(

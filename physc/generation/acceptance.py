@@ -160,7 +160,7 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
     by the search's `evaluator`."""
     import random
 
-    rule = domain.acceptance_of(level) if hasattr(domain, "acceptance_of") else None
+    rule = domain.acceptance_of(level) if hasattr(domain, "acceptance_of") else getattr(domain, "acceptance", None)
     if rule is None:
         return None
     rng = random.Random(f"acceptance/{label}")

@@ -1,5 +1,5 @@
-"""PHYRE-like tasks for physc: the agent places a red ball; the green object must touch
-the blue or purple one for 3 s.
+"""PHYRE-like tasks for physc: the agent places a red ball (or two, PHYRE's two-ball tier);
+the green object must touch the blue or purple one for 3 s.
 
 A domain plugin written against physc's public API only (physc.domains.simulated,
 physc.compiler, physc.backends, physc.simulation): it says what its world is (world.py,
@@ -95,7 +95,10 @@ class Phyre(SimulatedDomain):
             kinds[body.name] = "object" if body.dynamic else "surface"
             if body.shape == "ball":
                 radii[body.name] = body.size / world.PIXELS_PER_METRE
-        for name, ball in zip(level.players, action.balls if action is not None else ()):
+        balls = action.balls if action is not None else ()
+        if balls and len(balls) != len(level.players):
+            raise ValueError(f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}")
+        for name, ball in zip(level.players, balls):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))
             kinds[name] = "agent"
             radii[name] = ball.radius / world.PIXELS_PER_METRE
@@ -138,7 +141,7 @@ class Phyre(SimulatedDomain):
         return actions.valid(level, action)
 
     @staticmethod
-    def with_solution(level: PhyreLevel, solution: BallAction) -> PhyreLevel:
+    def with_solution(level: PhyreLevel, solution) -> PhyreLevel:
         return attrs.evolve(level, solutions=(solution,))
 
     @staticmethod

@@ -7,7 +7,7 @@ and from higher up (a fall gathers speed); for a first hit, also on the target's
 radius beyond an upper corner) and from the top of the scene, so that the drop pushes it across. Like PHYRE, an action places the ball at whole
 pixels with a whole radius from 2 to 32, inside the scene, occluding nothing (touching is
 allowed). The random agent draws actions as PHYRE's evaluation does, uniformly in
-[0, 1]³ scaled to the scene. Noise, for the robustness replays and the evaluation, moves
+[0, 1]³ (two balls: [0, 1]⁶) scaled to the scene. Noise, for the robustness replays and the evaluation, moves
 the ball by σ = 0.5 px: PHYRE's own test of a stable solution moves it by half a pixel.
 """
 

@@ -46,7 +46,7 @@ KINDS = {
 # one, in a gray jar). The ball's radius is a share of the jar's height, so that it lies on
 # the jar's base between its walls.
 HELD = {"blueBallInJar": "gray", "greenBallInJar": "gray"}
-HELD_RADIUS = 0.25  # of the jar's height
+HELD_RADIUS = 0.245  # of the jar's height at most: the widest ball that lies between the walls is 0.2476 of it
 JAR_SUFFIX = "_jar"
 GOAL_COLOURS = ("green",)
 TARGET_COLOURS = ("blue", "purple")
@@ -112,8 +112,8 @@ class TwoBallAction:
     r2); invalid when their centres are closer than r1 + r2 + 1 px (action_mappers.py's
     TwoBallsActionMapper)."""
 
-    first: BallAction
-    second: BallAction
+    first: BallAction = attrs.field(validator=attrs.validators.instance_of(BallAction))
+    second: BallAction = attrs.field(validator=attrs.validators.instance_of(BallAction))
     aimed_at: str = ""
 
     @property
@@ -207,7 +207,7 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
 def held(name: str, x: float, y: float, angle: float, height: float, color: str, jar_color: str) -> list[SceneBody]:
     """A ball named `name` lying on the base of a jar `height` tall whose base's middle is at
     (x, y): the jar, then the ball."""
-    radius = int(HELD_RADIUS * height) + 0.5
+    radius = int(HELD_RADIUS * height - 0.5) + 0.5
     lift = BAR_HEIGHT / 2 + radius  # from the base's middle line to the ball's centre
     bx, by = x - lift * math.sin(angle), y + lift * math.cos(angle)
     return [

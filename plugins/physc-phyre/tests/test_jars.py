@@ -16,7 +16,7 @@ def test_a_held_ball_lies_on_its_jars_base_and_stays_there():
     jar, ball = held("blue", 128.0, 5.12 + 2.56, 0.0, 60.0, "blue", "gray")
     assert (jar.name, jar.shape, jar.color, jar.dynamic) == ("blue" + JAR_SUFFIX, "jar", "gray", True)
     assert (ball.name, ball.shape, ball.color) == ("blue", "ball", "blue")
-    assert ball.size == int(HELD_RADIUS * 60.0) + 0.5
+    assert ball.size == int(HELD_RADIUS * 60.0 - 0.5) + 0.5
     assert math.isclose(ball.y - jar.y, 2.56 + ball.size)  # resting on the base plate
     level = PhyreLevel((FLOOR_BAR, jar, ball), ("blue", "target"))
     trace = DOMAIN.play(level, None, recognise=False)
@@ -41,3 +41,14 @@ def test_the_vocabularys_jars_become_bodies_of_the_right_shape_and_turn():
     assert names["target"].shape == "ball" and names["target"].y < 30.0  # low in its jar
     cover = names["cover"]
     assert cover.shape == "jar" and math.isclose(cover.angle, math.pi, abs_tol=1e-6) and cover.y > 30.0  # its base on top
+
+
+def test_a_held_ball_fits_between_its_jars_walls_at_every_height():
+    from physc_phyre.actions import placeable
+    from physc_phyre.concretize import HOLDING_HEIGHT
+    from physc_phyre.level import BallAction
+
+    low, high = HOLDING_HEIGHT
+    for tenth in range(int(low * 10), int(high * 10) + 1):
+        jar, ball = held("blue", 128.0, 100.0, 0.0, tenth / 10, "blue", "gray")
+        assert placeable(PhyreLevel((jar,), ("", "")), BallAction(ball.x, ball.y, ball.size)), tenth / 10
