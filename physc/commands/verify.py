@@ -43,7 +43,7 @@ def _parts(task: dict, path: str):
     """(domain, scenario, level, the level as the domain writes it, solution) of a task file."""
     from physc.compiler.task import Solution
     from physc.domains import load_domain
-    from physc.domains.base import DomainError, require
+    from physc.domains.base import DomainError, require, solution_classes
     from physc.dsl.frontend import analyze_text
     from physc.serialize import from_data
 
@@ -62,7 +62,7 @@ def _parts(task: dict, path: str):
         level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
         if not isinstance(level, domain.level_classes[0]):
             raise ValueError(f"the level is not a {domain.level_classes[0].__name__}")
-        kinds = domain.solution_classes
+        kinds = solution_classes(domain)
         solution = _solution(from_data(task["solution"], kinds), tuple(kinds.values()))
         level_text = domain.emit_level(level)  # also checks that the level is one the domain can write
     except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:

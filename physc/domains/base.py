@@ -115,6 +115,14 @@ def missing(domain: Any, hooks: tuple[str, ...]) -> tuple[str, ...]:
     return tuple(hook for hook in hooks if not provides(domain, hook))
 
 
+def solution_classes(domain: Any) -> dict[str, type]:
+    """The classes a task file's solution may be in `domain`, by name (its `solution_class`)."""
+    from physc.compiler.task import Solution
+
+    kinds = getattr(domain, "solution_class", None) or Solution
+    return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
+
+
 def require(domain: Any, hooks: tuple[str, ...], asked: str) -> None:
     """MissingCapability (E0703) unless `domain` has every hook of `hooks`."""
     lacking = missing(domain, hooks)
@@ -225,14 +233,6 @@ class Domain(abc.ABC):
     """The attrs class of a task's solution, or a tuple of them when a domain has several
     kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
-
-    @property
-    def solution_classes(self) -> dict[str, type]:
-        """The classes a task file's solution may be, by name (`solution_class`)."""
-        from physc.compiler.task import Solution
-
-        kinds = self.solution_class or Solution
-        return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
 
     measures: str = ""
     """What the domain's evaluation measures mean (stability's limit, the noise, the agent),

@@ -19,7 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from physc.domains.base import provides  # noqa: E402
+from physc.domains.base import provides, solution_classes  # noqa: E402
 from physc.evaluation.measure import NOISY_REPLAYS  # noqa: E402
 from physc.files import write_atomic  # noqa: E402
 
@@ -283,7 +283,7 @@ def _pictures(records: list[dict], folder: Path) -> None:
         if not domain.level_classes or not provides(domain, "picture"):
             continue
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
-        solution = from_data(record["solution"], domain.solution_classes)
+        solution = from_data(record["solution"], solution_classes(domain))
         task = Task(
             record["scenario"], domain.name, record["seed"], "", level, solution, record["trace"], None, tuple(record["robustness"]),
             (), (), (), record.get("layouts_tried", 0), 0, record.get("simulations", 0), {}, {},

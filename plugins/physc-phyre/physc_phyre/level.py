@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import attrs
+from physc.domains.base import DomainError
 
 from physc_phyre.world import BAR_HEIGHT, SCENE, extent, size_of
 
@@ -120,10 +121,6 @@ class TwoBallAction:
     def balls(self) -> tuple[BallAction, BallAction]:
         return (self.first, self.second)
 
-    @property
-    def x(self) -> float:  # where the pair lies along the scene, for ordering and nudging
-        return self.first.x
-
     def unit(self) -> tuple[float, ...]:
         return self.first.unit() + self.second.unit()
 
@@ -223,11 +220,7 @@ def players(scenario) -> tuple[str, ...]:
         return ("redBall",)
     red = {o.name for o in scenario.objects if o.term == "redBall"}
     if len(red) > max(TIERS):
-        from physc.domains.base import DomainError
-
-        raise DomainError(
-            "E0703", f"scenario '{scenario.name}' names {len(red)} red balls, but PHYRE's tiers place one or two",
-            help="keep one red ball (the ball tier) or two (the two-ball tier)",
-        )
+        message = f"scenario '{scenario.name}' names {len(red)} red balls, but PHYRE's tiers place one or two"
+        raise DomainError("E0703", message, help="keep one red ball (the ball tier) or two (the two-ball tier)")
     order = [name for term in scenario.interactions for name in term.objects if name in red]
     return tuple(dict.fromkeys(order + sorted(red))) or ("redBall",)

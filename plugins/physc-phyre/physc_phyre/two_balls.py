@@ -5,9 +5,12 @@ templates 00100-00124 are built so that both balls are needed). Each ball is dro
 the ball tier (actions.drops) onto the target of its own first interaction: the first ball's
 is the scenario's first interaction, the second ball's the first one it acts in. A pair is a
 drop of each, kept when PHYRE's mapper would place it (the centres r1 + r2 + 1 px apart)
-and neither ball occludes a body. Pairs come near-first-first: a pair of the i-th and j-th
-drops before any whose i + j is larger, so that every drop of either ball is tried early,
-and at most PAIRS of them (every pair is a simulation when the search screens a layout).
+and neither ball occludes a body.
+
+The second ball acts after the first, so pairs whose second ball falls from higher come
+first; then near-first-first (the i-th and j-th drops before any whose i + j is larger). As
+many pairs as the first ball has drops: the search simulates every candidate of its first
+layout, so a two-ball layout costs it what a one-ball layout does.
 """
 
 from __future__ import annotations
@@ -15,8 +18,6 @@ from __future__ import annotations
 import attrs
 
 from physc_phyre.level import PhyreLevel, TwoBallAction
-
-PAIRS = 150  # pairs offered at most
 
 
 def first_acts(scenario, name: str):
@@ -27,13 +28,18 @@ def first_acts(scenario, name: str):
 def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallAction]]:
     """(label, action) for pairs of drops of the two red balls (module docstring); none when
     the second ball never acts, or its first target is not in the level yet."""
-    from physc_phyre.actions import drops, valid
+    from physc_phyre.actions import drops, outline_box, valid
 
     firsts = [first_acts(scenario, name) for name in level.players]
     if any(term is None for term in firsts):
         return []
     one, two = (drops(level, term) for term in firsts)
-    pairs = sorted(((i, j) for i in range(len(one)) for j in range(len(two))), key=lambda p: (p[0] + p[1], p[0]))
+    tops = [outline_box(level.body(term.objects[1]))[3] for term in firsts]
+    heights = [[ball.y - ball.radius - top for _, ball in candidates] for candidates, top in zip((one, two), tops)]
+    pairs = sorted(
+        ((i, j) for i in range(len(one)) for j in range(len(two))),
+        key=lambda p: (heights[1][p[1]] <= heights[0][p[0]], p[0] + p[1], p[0]),
+    )
     out = []
     for i, j in pairs:
         (label1, ball1), (label2, ball2) = one[i], two[j]
@@ -41,6 +47,6 @@ def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallActio
         action = TwoBallAction(attrs.evolve(ball1, aimed_at=label1), attrs.evolve(ball2, aimed_at=label2), label)
         if valid(level, action):
             out.append((label, action))
-            if len(out) == PAIRS:
+            if len(out) == len(one):
                 break
     return out
