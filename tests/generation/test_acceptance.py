@@ -119,3 +119,20 @@ def test_undecided_within_the_draws_falls_back_on_phyres_rule(share):
     verdict = World(share, seed=1).judge(rule)
     assert verdict.valid == 60
     assert verdict.trivial == (verdict.stable / verdict.attempts >= 0.1)
+
+
+def test_the_tests_closed_forms_agree_with_scipys_binomtest():
+    """`good` is scipy's one-sided binomial test (PHYRE's binom_test) and `trivial_known` reads
+    scipy's exact interval, computed in closed form."""
+    from scipy.stats import binomtest
+
+    rule = Acceptance(threshold=1e-5)
+    for n in (1, 7, 40, 333, 1000):
+        for k in sorted({0, 1, 2, 3, n // 10, n // 3, n - 1, n}):
+            if not 0 <= k <= n:
+                continue
+            expected = k > 0 and binomtest(k, n, rule.threshold, alternative="greater").pvalue < rule.p_value
+            assert good(k, n, rule) == expected, (k, n)
+            interval = binomtest(k, n).proportion_ci(confidence_level=rule.confidence, method="exact")
+            known = True if interval.low >= rule.trivial else False if interval.high < rule.trivial else None
+            assert trivial_known(k, n, rule) == known, (k, n)
