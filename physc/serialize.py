@@ -46,8 +46,10 @@ def dumps(value: Any) -> str:
 
 def from_data(data: Any, classes: dict[str, type]) -> Any:
     """The IR value that `to_data` made `data` from, for the attrs classes in `classes` (by
-    name, as `node` names them): objects of another node are refused (ValueError), lists
-    become tuples. Reads back what a task file holds (its level, its solution)."""
+    name, as `node` names them): objects of another node, and fields the class does not have
+    (a file written by another version of its domain), are refused (ValueError), rather than
+    read as something else; lists become tuples. Reads back what a task file holds (its
+    level, its solution)."""
     if isinstance(data, dict):
         if "node" not in data:
             return {k: from_data(v, classes) for k, v in data.items()}
@@ -55,8 +57,10 @@ def from_data(data: Any, classes: dict[str, type]) -> Any:
         if cls is None:
             raise ValueError(f"a '{data['node']}' is not something this file may hold")
         known = {field.name for field in attrs.fields(cls)}
-        fields = {k: from_data(v, classes) for k, v in data.items() if k != "node" and k in known}
-        return cls(**fields)
+        unknown = sorted(set(data) - known - {"node"})
+        if unknown:
+            raise ValueError(f"a '{data['node']}' has no field {', '.join(repr(k) for k in unknown)} (a file written by another version of its domain?)")
+        return cls(**{k: from_data(v, classes) for k, v in data.items() if k != "node"})
     if isinstance(data, list):
         return tuple(from_data(v, classes) for v in data)
     return data

@@ -92,6 +92,9 @@ def test_the_solution_replays_in_both_engines(ledge, backend):
         (lambda t: t["level"]["bodies"][0].update(shape="cloud"), "'shape' must be in"),
         (lambda t: t["level"].update(goal=["green"]), "the goal must name two of the level's bodies"),
         (lambda t: t["level"].update(goal=["green", "wall_bottom"]), "the goal must name two of the level's bodies"),
+        # A task file of an older plugin (one `player`, before the two-ball tier): refused, not misread.
+        (lambda t: t["level"].update(player=t["level"].pop("players")[0]), "a 'PhyreLevel' has no field 'player'"),
+        (lambda t: t.update(solution={"node": "TwoBallAction", "first": 1, "second": 2}), "'first' must be"),
     ],
 )
 def test_a_damaged_task_file_is_a_usage_error(ledge, tmp_path, damage, message):
