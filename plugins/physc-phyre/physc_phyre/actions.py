@@ -18,24 +18,14 @@ import random
 
 from physc.backends import Circle, parts
 
-from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction
-from physc_phyre.world import SCENE, extent, outline
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, outline_box
+from physc_phyre.world import SCENE, outline
 
 RADII = (8, 16, 26)  # pixels
 GAPS = (4, 70)  # pixels between the ball and the target's top when dropped
 FALL_GAPS = (40, 100)  # for a first interaction that is a fall: from higher up
 NOISE = 0.5  # pixels, σ of the ball's position in a noisy replay
 MIN_RADIUS, MAX_RADIUS = 2, 32
-
-
-def outline_box(body: SceneBody) -> tuple[float, float, float, float]:
-    """(left, bottom, right, top) of a body's turned outline box, in pixels."""
-    width, height, below = extent(body.shape, body.size)
-    c, s = math.cos(body.angle), math.sin(body.angle)
-    cx, cy = body.x - below * s, body.y + below * c
-    corners = [(cx + dx * c - dy * s, cy + dx * s + dy * c) for dx in (-width / 2, width / 2) for dy in (-height / 2, height / 2)]
-    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
-    return min(xs), min(ys), max(xs), max(ys)
 
 
 def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:

@@ -10,6 +10,7 @@ scene has them (world.walls).
 from __future__ import annotations
 
 import math
+import random
 
 import attrs
 from physc.domains.base import DomainError
@@ -49,6 +50,9 @@ KINDS = {
 HELD = {"blueBallInJar": "gray", "greenBallInJar": "gray"}
 HELD_RADIUS = 0.245  # of the jar's height at most: the widest ball that lies between the walls is 0.2476 of it
 JAR_SUFFIX = "_jar"
+# How far above where it rests an object of `dropped(a)` starts, in pixels (PHYRE's template
+# 00001 drops its green ball from 0-40 px above the shelf; a lift under 10 px hardly falls).
+DROP_HEIGHT = (10.0, 40.0)
 GOAL_COLOURS = ("green",)
 TARGET_COLOURS = ("blue", "purple")
 
@@ -198,7 +202,41 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         if not (green and target):
             green = target = ""
     floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
+    lifted = {t.objects[0] for t in scenario.restrictions if t.name == "dropped"} if scenario is not None else set()
+    if lifted:
+        bodies = dropped(bodies, lifted, getattr(layout, "seed", 0))
     return PhyreLevel(tuple(bodies), (green, target), players(scenario), floor)
+
+
+def outline_box(body: SceneBody) -> tuple[float, float, float, float]:
+    """(left, bottom, right, top) of a body's turned outline box, in pixels."""
+    width, height, below = extent(body.shape, body.size)
+    c, s = math.cos(body.angle), math.sin(body.angle)
+    cx, cy = body.x - below * s, body.y + below * c
+    corners = [(cx + dx * c - dy * s, cy + dx * s + dy * c) for dx in (-width / 2, width / 2) for dy in (-height / 2, height / 2)]
+    xs, ys = [p[0] for p in corners], [p[1] for p in corners]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def dropped(bodies: list[SceneBody], names: set[str], seed: int) -> list[SceneBody]:
+    """`bodies` with those of the objects in `names` (a `dropped(a)` of the scenario; a held
+    ball with its jar) lifted by a height drawn from DROP_HEIGHT for the layout's `seed`, less
+    where a body above leaves less room (or the scene's top): they fall as the scene starts,
+    as PHYRE's templates drop theirs."""
+    out = list(bodies)
+    for name in sorted(names):
+        parts = [k for k, b in enumerate(out) if b.name in (name, name + JAR_SUFFIX) and b.dynamic]
+        if not parts:
+            continue
+        boxes = [outline_box(out[k]) for k in parts]
+        left, right, top = min(b[0] for b in boxes), max(b[2] for b in boxes), max(b[3] for b in boxes)
+        others = [outline_box(b) for j, b in enumerate(out) if j not in parts]
+        room = min([SCENE] + [bottom for l, bottom, r, _ in others if l < right and r > left and bottom >= top])
+        lift = min(random.Random(f"dropped/{seed}/{name}").uniform(*DROP_HEIGHT), room - top - 1.0)
+        if lift >= 1.0:
+            for k in parts:
+                out[k] = attrs.evolve(out[k], y=round(out[k].y + lift, 3))
+    return out
 
 
 def held(name: str, x: float, y: float, angle: float, height: float, color: str, jar_color: str) -> list[SceneBody]:

@@ -10,6 +10,7 @@ other dynamic objects gray and static ones black.
 from physc.domains.vocabulary import (
     INTERACTION,
     OBJECT,
+    RESTRICTION,
     SIDES,
     ConcreteObject,
     ObjectTerm,
@@ -78,7 +79,14 @@ TERMS = tuple(PAPER.values()) + (
         (Parameter("a", OBJECT, fits="greenObject", completes=True), Parameter("b", OBJECT, fits="targetObject")),
         "the green object a touches b, and keeps touching it for 3 s (PHYRE's goal)",
     ),
-) + RESTRICTIONS
+) + RESTRICTIONS + (
+    TermSignature(
+        "dropped",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits="fallableObject"),),
+        "a starts in the air above where it rests and falls there as the scene starts, before the action (PHYRE's templates drop their objects)",
+    ),
+)
 
 VOCABULARY = Vocabulary(
     object_terms=OBJECT_TERMS,

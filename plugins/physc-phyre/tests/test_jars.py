@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+import pytest
+
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.level import HELD_RADIUS, JAR_SUFFIX, held
 from physc_phyre.world import PIXELS_PER_METRE
@@ -52,3 +54,22 @@ def test_a_held_ball_fits_between_its_jars_walls_at_every_height():
     for tenth in range(int(low * 10), int(high * 10) + 1):
         jar, ball = held("blue", 128.0, 100.0, 0.0, tenth / 10, "blue", "gray")
         assert placeable(PhyreLevel((jar,), ("", "")), BallAction(ball.x, ball.y, ball.size)), tenth / 10
+
+
+def test_a_dropped_object_starts_in_the_air_below_whatever_is_above_it():
+    """`dropped(a)`: the object (a held ball with its jar) is lifted by a seeded height from
+    DROP_HEIGHT, less where a body above leaves less room; the rest stays where it was."""
+    from physc_phyre.level import DROP_HEIGHT, dropped
+
+    shelf = SceneBody("shelf", "bar", 128.0, 100.0, 0.0, 80.0, "black", False)
+    green = SceneBody("green", "ball", 128.0, 112.56, 0.0, 10.0, "green", True)
+    lifted = {b.name: b for b in dropped([shelf, green], {"green"}, seed=3)}
+    assert lifted["shelf"] == shelf and DROP_HEIGHT[0] <= lifted["green"].y - green.y <= DROP_HEIGHT[1]
+    assert lifted == {b.name: b for b in dropped([shelf, green], {"green"}, seed=3)}  # the same seed, the same lift
+    roof = SceneBody("roof", "bar", 128.0, 130.0, 0.0, 80.0, "black", False)  # 5 px of room above the ball
+    low = {b.name: b for b in dropped([shelf, green, roof], {"green"}, seed=3)}
+    assert 0 < low["green"].y - green.y <= 5.0
+    jar, ball = held("blue", 40.0, 102.56, 0.0, 50.0, "green", "gray")
+    both = {b.name: b for b in dropped([jar, ball], {"blue"}, seed=1)}
+    assert both["blue"].y - ball.y == pytest.approx(both["blue" + JAR_SUFFIX].y - jar.y)
+    assert both["blue"].y > ball.y
