@@ -124,15 +124,15 @@ def from_unit(action) -> BallAction | TwoBallAction | None:
         return None
     if len(values) not in (3, 6) or not all(0.0 <= v <= 1.0 for v in values):
         return None
-    balls = []
+    balls = []  # as PHYRE scales them, before quantising
     for a, b, c in zip(values[0::3], values[1::3], values[2::3]):
         x, y, r = a * (SCENE - 1), b * (SCENE - 1), MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)
         if not (r <= x <= SCENE - r and r <= y <= SCENE - r):
             return None
-        balls.append((x, y, r))
-    if len(balls) == 2 and math.dist(balls[0][:2], balls[1][:2]) < balls[0][2] + balls[1][2] + 1:
+        balls.append(BallAction(x, y, r))
+    if len(balls) == 2 and not apart(*balls):
         return None
-    placed = [BallAction(int(x), int(y), round(r)) for x, y, r in balls]
+    placed = [BallAction(int(ball.x), int(ball.y), round(ball.radius)) for ball in balls]
     return placed[0] if len(placed) == 1 else TwoBallAction(*placed)
 
 
