@@ -16,11 +16,11 @@ import statistics
 import time
 from pathlib import Path
 
-from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl import ast
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_text
+from physc.generation.pipeline import Pipeline
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 

@@ -87,14 +87,14 @@ def at_rest(game, world, name: str, seconds: float) -> tuple:
 
 
 def free_fall(backend) -> str:
-    game = Game(Level(objects=(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 3.0, "square"),)), backend)
+    game = Game(Level(objects=(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 3.0, "square"),)), PHYQ, backend)
     found = first_touch(game, game.build(), "square", GROUND, 5.0)
     expected = math.sqrt(2 * 3.0 / game.rules.gravity)
     return f"{found[0]:.2f} s (exact {expected:.2f} s)" if found else "never lands"
 
 
 def flight(backend, angle: float) -> str:
-    game = Game(Level(objects=()), backend)
+    game = Game(Level(objects=()), PHYQ, backend)
     world = game.build()
     game.launch(world, Shot(angle=angle))
     found = first_touch(game, world, BIRD, GROUND, 10.0)
@@ -103,7 +103,7 @@ def flight(backend, angle: float) -> str:
 
 def moving(backend, kind: str, speed: float) -> str:
     height = CIRCLE if kind == "Circle" else SQUARE
-    game = Game(Level(objects=(block(kind, 0.0, GROUND_TOP + height / 2, "body"),)), backend)
+    game = Game(Level(objects=(block(kind, 0.0, GROUND_TOP + height / 2, "body"),)), PHYQ, backend)
     world = game.build()
     world.step(game.rules.dt)  # settle onto the ground first
     world.begun(), world.ended()
@@ -117,7 +117,7 @@ def tipping(backend) -> str:
     platform = LevelObject("Platform", "Platform", 0.0, -1.0, 0.0, scale_x=3.0, scale_y=0.5, name="ledge")
     width, height = extent(platform)
     square = block("SquareSmall", width / 2 - SQUARE / 2 + 0.15, -1.0 + height / 2 + SQUARE / 2 + 0.015, "square")
-    game = Game(Level(objects=(platform, square)), backend)
+    game = Game(Level(objects=(platform, square)), PHYQ, backend)
     world = game.build()
     world.set_velocity("square", 0.6, 0.0)
     landed = first_touch(game, world, "square", GROUND, 5.0)
@@ -134,13 +134,13 @@ def triangle_on_ledge(backend) -> str:
     platform = LevelObject("Platform", "Platform", 0.0, -1.0, 0.0, scale_x=3.0, scale_y=0.5, name="ledge")
     width, height = extent(platform)
     triangle = block("Triangle", width / 2 - 0.3, -1.0 + height / 2 + 0.375 + 0.015, "triangle")
-    trace = Game(Level(objects=(platform, triangle)), backend).simulate(None, 5.0, stop_at_rest=False)
+    trace = Game(Level(objects=(platform, triangle)), PHYQ, backend).simulate(None, 5.0, stop_at_rest=False)
     return f"largest shift {largest_shift(trace):.3f}"
 
 
 def tnt_flight(backend) -> str:
     """A TNT crate (gravity scale 1/0.48) thrown at 10 units/s: it must not start turning."""
-    game = Game(Level(objects=(LevelObject("TNT", "TNT", 0.0, 2.0, 0.0, name="tnt"),)), backend)
+    game = Game(Level(objects=(LevelObject("TNT", "TNT", 0.0, 2.0, 0.0, name="tnt"),)), PHYQ, backend)
     world = game.build()
     world.set_velocity("tnt", 10.0, 0.0)
     for _ in steps(game, world, 1.0):
@@ -150,7 +150,7 @@ def tnt_flight(backend) -> str:
 
 def pushed_after_rest(backend) -> str:
     """A SquareSmall at rest on the ground for 5 s, then pushed at 3 units/s."""
-    game = Game(Level(objects=(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2, "body"),)), backend)
+    game = Game(Level(objects=(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2, "body"),)), PHYQ, backend)
     world = game.build()
     for _ in steps(game, world, 5.0):
         world.begun(), world.ended()
@@ -161,7 +161,7 @@ def pushed_after_rest(backend) -> str:
 
 def stack(backend) -> str:
     objects = tuple(block("SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 0.015 + k * (SQUARE + 0.015), f"b{k}") for k in range(5))
-    trace = Game(Level(objects=objects), backend).simulate(None, 10.0, stop_at_rest=False)
+    trace = Game(Level(objects=objects), PHYQ, backend).simulate(None, 10.0, stop_at_rest=False)
     return f"largest shift {largest_shift(trace):.3f}"
 
 
@@ -171,13 +171,13 @@ def templates(backend, circles: str, folder: pathlib.Path) -> str:
         return "no templates found"
     standing = 0
     for path in paths:
-        trace = Game(read_level(path.read_bytes()), backend, Rules(colliders=circles)).simulate(None, 10.0, stop_at_rest=False)
+        trace = Game(read_level(path.read_bytes()), catalogue_model(circles), backend).simulate(None, 10.0, stop_at_rest=False)
         standing += largest_shift(trace) <= 0.1 and not trace.destructions
     return f"{standing} of {len(paths)} ({standing / len(paths):.0%})"
 
 
 def speed(backend, shot) -> str:
-    game = Game(speed_level(), backend)
+    game = Game(speed_level(), PHYQ, backend)
     rates = []
     for _ in range(3):
         start = time.perf_counter()

@@ -55,7 +55,7 @@ def rolled_down(theta: float, length: float, ball: str, material: str) -> tuple[
         "Block", ball, down[0] * START + normal[0] * radius, down[1] * START + normal[1] * radius, 0.0, material, name="ball"
     )
     pig = LevelObject("Pig", PIG, foot[0] + PIG_GAP, foot[1] + by_prefab(PIG).height / 2 + 0.005, name="pig")
-    trace = Game(Level(objects=(decline, flat, rolling, pig))).simulate(None, 6.0, invulnerable=0.0)
+    trace = Game(Level(objects=(decline, flat, rolling, pig)), PHYQ, BOX2D).simulate(None, 6.0, invulnerable=0.0)
     states = trace.states[:, trace.index("ball"), :]
     return float(np.nanmax(np.hypot(states[:, 3], states[:, 4]))), any(d.name == "pig" for d in trace.destructions)
 
@@ -65,7 +65,7 @@ def pig_moved(theta: float) -> float:
     decline, down, normal = _decline(theta, 3.0)
     lift = by_prefab(PIG).height / 2 + 0.005
     pig = LevelObject("Pig", PIG, down[0] * 1.5 + normal[0] * lift, down[1] * 1.5 + normal[1] * lift, -theta, name="pig")
-    trace = Game(Level(objects=(decline, pig))).simulate(None, 10.0, stop_at_rest=False)
+    trace = Game(Level(objects=(decline, pig)), PHYQ, BOX2D).simulate(None, 10.0, stop_at_rest=False)
     points = trace.states[:, trace.index("pig"), :2]
     return float(np.nanmax(np.hypot(*(points - points[0]).T)))
 

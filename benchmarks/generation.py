@@ -20,9 +20,9 @@ import time
 from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
-from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
+from physc.generation.pipeline import Pipeline
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 

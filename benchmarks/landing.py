@@ -34,7 +34,7 @@ def rolled(faller: str, ball: str, faller_material: str, ball_material: str, sha
     platform = LevelObject("Platform", "Platform", 3.0, 0.0, 0.0, scale_x=14 / PLATFORM_BASE, scale_y=PLATFORM_THICKNESS / PLATFORM_BASE, name="platform")
     resting = LevelObject("Block", ball, 0.0, y, 0.0, ball_material, name="ball")
     falling = LevelObject("Block", faller, share * (ball_radius + half_width), y + ball_radius + half_height + height, 0.0, faller_material, name="faller")
-    trace = Game(Level(objects=(platform, resting, falling))).simulate(None, SECONDS)
+    trace = Game(Level(objects=(platform, resting, falling)), PHYQ, BOX2D).simulate(None, SECONDS)
     states = trace.states[:, trace.index("ball"), :]
     return float(states[-1, 0] - states[0, 0]), float(states[:, 3].max())
 

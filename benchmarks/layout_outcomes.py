@@ -22,8 +22,8 @@ from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
 from physc.generation import search
+from physc.generation.pipeline import Pipeline
 from physc.generation.settings import NOT_REALISED
-from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 

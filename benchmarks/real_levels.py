@@ -41,7 +41,7 @@ def measure(path: Path, seconds: float, circles: str, limit: float) -> tuple[boo
         level = read_level(path.read_bytes())
     except LevelError as error:
         return False, False, False, f"{error.code} {error}"
-    game = Game(level, rules=Rules(colliders=circles))
+    game = Game(level, catalogue_model(circles), BOX2D)
     trace = game.simulate(None, seconds, stop_at_rest=False)
     moved, name = movement(trace)
     destroyed = [d.name for d in trace.destructions]

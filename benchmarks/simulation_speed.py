@@ -42,7 +42,7 @@ def level() -> Level:
 
 def measure(shot, seconds: float, repeat: int, backend) -> list[float]:
     rates = []
-    game = Game(level(), backend)
+    game = Game(level(), PHYQ, backend)
     for _ in range(repeat):
         start = time.perf_counter()
         trace = game.simulate(shot, seconds, stop_at_rest=False)
@@ -53,7 +53,7 @@ def measure(shot, seconds: float, repeat: int, backend) -> list[float]:
 def measure_engine(shot, seconds: float, repeat: int, backend) -> list[float]:
     """The shot's steps on the world alone, as the game builds it."""
     rates = []
-    game = Game(level(), backend)
+    game = Game(level(), PHYQ, backend)
     rules = game.rules
     steps = int(round(seconds / rules.dt))
     for _ in range(repeat):

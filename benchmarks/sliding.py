@@ -44,7 +44,7 @@ def struck(prefab: str, material: str, x: float, point: str) -> tuple[float, flo
     height = by_prefab(prefab).height
     block = LevelObject("Block", prefab, x, PLATFORM_Y + PLATFORM_THICKNESS / 2 + height / 2 + 0.002, 0.0, material, name="block")
     target = points_of_interest(block)[point]
-    trace = Game(Level(objects=(platform, block))).play(Shot(target=target, trajectory="low"), SECONDS)
+    trace = Game(Level(objects=(platform, block)), PHYQ, BOX2D).play(Shot(target=target, trajectory="low"), SECONDS)
     states = trace.states[:, trace.index("block")]
     if np.isnan(states[-1, 0]):
         return None

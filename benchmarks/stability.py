@@ -35,7 +35,7 @@ def main() -> None:
     unstable = []
     for path in paths:
         level = read_level(path.read_bytes())
-        trace = Game(level, load_backend(args.backend), Rules(colliders=args.colliders)).simulate(None, args.seconds, stop_at_rest=False)
+        trace = Game(level, catalogue_model(args.colliders), load_backend(args.backend)).simulate(None, args.seconds, stop_at_rest=False)
         states = trace.states
         shift = np.hypot(states[:, :, 0] - states[0, :, 0], states[:, :, 1] - states[0, :, 1]) if states.shape[1] else np.zeros((1, 1))
         worst = float(np.nanmax(shift))

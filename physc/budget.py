@@ -5,7 +5,9 @@ points where stopping is safe. Two things stop it there:
 
 * the **deadline** of the innermost `deadline(seconds)` block: `check()` raises
   `OutOfTime`, so a budget is kept to within one stopping point (a simulated step, a
-  clause choice) instead of one whole layout or one whole simulation;
+  clause choice) instead of one whole layout or one whole simulation. A `Deadline`
+  started once may be kept by several blocks (`deadline(started)`): one budget for a
+  whole run, however its work is split;
 * **Ctrl-C**: inside `interruptible()` SIGINT only records the request, and the next
   `check()` raises KeyboardInterrupt. Raised at once instead, it could land inside a
   callback of the physics engine (cffi prints "Exception ignored" and the run goes on)
@@ -48,11 +50,22 @@ def check() -> None:
             raise OutOfTime(seconds)
 
 
+class Deadline:
+    """A time budget started once, when it is made: each `deadline(it)` block ends when it
+    does, however late the block begins."""
+
+    def __init__(self, seconds: float):
+        self.seconds = seconds
+        self.end = time.monotonic() + seconds
+
+
 @contextlib.contextmanager
-def deadline(seconds: float):
-    """Work inside the block raises OutOfTime at its next `check()` after `seconds`
-    (or after an enclosing block's deadline, whichever comes first)."""
-    end = time.monotonic() + seconds
+def deadline(seconds: float | Deadline):
+    """Work inside the block raises OutOfTime at its next `check()` after `seconds`, or at
+    the end of a `Deadline` started before (or at an enclosing block's deadline, whichever
+    comes first)."""
+    started = seconds if isinstance(seconds, Deadline) else Deadline(seconds)
+    end, seconds = started.end, started.seconds
     if _deadlines and _deadlines[-1][0] < end:
         end, seconds = _deadlines[-1]
     _deadlines.append((end, seconds))

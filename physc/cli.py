@@ -25,9 +25,7 @@ from physc.commands.common import (
     EXIT_USAGE,
     Parser,
     UsageError,
-    add_backend,
     add_format,
-    add_min_robustness,
 )
 from physc.commands.compile import cmd_compile
 from physc.commands.completion import add_command as add_completion_command
@@ -39,11 +37,13 @@ from physc.commands.fmt import cmd_fmt
 from physc.commands.generate import add_command as add_generate_command
 from physc.commands.lsp import add_command as add_lsp_command
 from physc.commands.play import add_commands as add_play_commands
-from physc.compiler.task import LAYOUT_BUDGET, TIME_BUDGET
+from physc.commands.options import add_generation, add_target
+from physc.commands.worlds import cmd_worlds
 from physc.compiler.stages import STAGES
 from physc.diagnostics import safe
 from physc.execution import ExecutorError
 from physc.files import OutputError
+from physc.worlds import WorldError
 
 
 # ---- the parser -----------------------------------------------------------------------
@@ -84,18 +84,8 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("--emit", metavar="STAGE", default="level", help=f"the stage to print (default level): {stage_names}")
     compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout (a folder for several scenarios)")
     compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
-    compile_.add_argument("--no-validate", action="store_true", help="skip the final validation of the generated task")
-    compile_.add_argument(
-        "--no-acceptance", action="store_true", help="keep the task without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
-    )
-    compile_.add_argument(
-        "--layouts", type=arguments.count, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
-    )
-    compile_.add_argument(
-        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
-    )
-    add_min_robustness(compile_)
-    add_backend(compile_)
+    add_generation(compile_)
+    add_target(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
@@ -119,6 +109,12 @@ def build_parser() -> argparse.ArgumentParser:
     add_format(backends, "the engines")
     backends.set_defaults(run=cmd_backends)
 
+    worlds = commands.add_parser("worlds", parents=[common], help="list each domain's worlds; -v: every setting and where it comes from")
+    worlds.add_argument("name", nargs="*", help="only these domains")
+    worlds.add_argument("-v", "--verbose", action="store_true", help="every setting of each world, with the file it is read from (a variant's changes: its reading)")
+    add_format(worlds, "the worlds")
+    worlds.set_defaults(run=cmd_worlds)
+
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")
     add_format(domains, "the domains")
@@ -134,7 +130,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_USAGE
     try:
         return args.run(args)
-    except (UsageError, OutputError, ExecutorError) as error:
+    except (UsageError, OutputError, ExecutorError, WorldError) as error:
         print(f"physc {args.command}: error: {safe(str(error))}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:

@@ -5,9 +5,9 @@ from __future__ import annotations
 import functools
 
 from conftest import EXAMPLES
-from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
+from physc.generation.pipeline import Pipeline
 
 DOMAIN = load_domain("angrybirds")
 

@@ -10,10 +10,8 @@ defined here, so every engine is judged by the same rules.
 
 from __future__ import annotations
 
-import contextlib
-import contextvars
 import functools
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from importlib.metadata import EntryPoint, entry_points
 from typing import Protocol
 
@@ -25,11 +23,6 @@ from physc.suggest import did_you_mean
 
 ENTRY_POINT_GROUP = "physc.backends"
 DEFAULT_BACKEND = "box2d"  # the engine of both target worlds (README, "The reference engine")
-# The backend the caller chose for what runs inside `selected` (a command's --backend):
-# the domain's game builds its worlds with `current()`, so generation, measurement and
-# verification all run in the engine the caller named, without every function between
-# the command and the game passing it on.
-_SELECTED: contextvars.ContextVar[str] = contextvars.ContextVar("physc_backend", default=DEFAULT_BACKEND)
 
 
 @attrs.frozen
@@ -206,21 +199,3 @@ def load_backend(name: str = DEFAULT_BACKEND) -> Backend:
         return installed[name].load()
     except Exception as error:  # a broken third-party plugin must not crash physc
         raise BackendError(f"the plugin of backend '{name}' ({installed[name].value}) fails to load: {error}") from error
-
-
-@contextlib.contextmanager
-def selected(name: str) -> Iterator[Backend]:
-    """Run the body with `name` as the backend `current()` gives (BackendError if it is not
-    installed or does not load, before anything runs)."""
-    backend = load_backend(name)
-    token = _SELECTED.set(name)
-    try:
-        yield backend
-    finally:
-        _SELECTED.reset(token)
-
-
-def current() -> Backend:
-    """The backend chosen by the innermost `selected`, else the default (box2d)."""
-    return load_backend(_SELECTED.get())
-

@@ -130,3 +130,21 @@ def backend(text: str) -> str:
     except BackendError as error:
         raise argparse.ArgumentTypeError(str(error)) from None
     return text
+
+
+def world(text: str) -> str:
+    """A world of some installed domain (`physc worlds`): which domain's it must be is checked
+    when the domain is known, with "did you mean"."""
+    from physc.domains import installed_domains, load_domain
+    from physc.suggest import did_you_mean
+
+    names = set()
+    for name in installed_domains():
+        try:
+            names |= {w.name for w in load_domain(name).worlds}
+        except Exception:  # a broken plugin is reported where it is used, not here
+            continue
+    if text not in names:
+        hint = did_you_mean(text, sorted(names)) or "the worlds: " + ", ".join(sorted(names))
+        raise argparse.ArgumentTypeError(f"no installed domain has a world '{text}'; {hint} (physc worlds lists them)")
+    return text

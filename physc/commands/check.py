@@ -14,6 +14,7 @@ from physc.commands.common import (
 
 
 def cmd_check(args) -> int:
+    from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze
 
     status = EXIT_OK
@@ -21,7 +22,7 @@ def cmd_check(args) -> int:
     as_json = []
     report = reporter(args)
     for path in args.files:
-        analysis = analyze(path)
+        analysis = analyze(path, vocabularies=INSTALLED)
         found = analysis.diagnostics
         status = max(status, diagnostics.exit_status(found))
         errors += sum(d.is_error for d in found)

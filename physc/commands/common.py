@@ -8,7 +8,6 @@ import sys
 from typing import Sequence
 
 from physc import diagnostics
-from physc.compiler.task import MIN_ROBUSTNESS
 from physc.console import EXIT_INTERRUPTED  # Ctrl-C: 128 + SIGINT, as shells report it
 from physc.diagnostics import Diagnostic
 
@@ -78,20 +77,6 @@ def print_json(data) -> None:
     print(json.dumps(data, indent=2))
 
 
-def add_min_robustness(parser) -> None:
-    from physc.commands.arguments import count
-
-    parser.add_argument(
-        "--min-robustness",
-        type=count,
-        default=MIN_ROBUSTNESS,
-        metavar="K",
-        help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
-        f"(6 in angrybirds), use the most robust one that passes at least K of them, and as many fresh replays "
-        f"(default {MIN_ROBUSTNESS}; 6: no such fallbacks); the task JSON records the replays passed",
-    )
-
-
 def check_min_robustness(value: int, domain) -> None:
     """--min-robustness counts the domain's noisy replays: more than there are cannot be passed."""
     replays = getattr(domain, "robustness_replays", None)
@@ -119,21 +104,3 @@ def check_backends(args) -> None:
     """--verify-backend must name another engine than the one that simulates."""
     if getattr(args, "verify_backend", None) and args.verify_backend == args.backend:
         raise UsageError(f"--verify-backend {args.verify_backend} is the engine that already simulates (--backend): name another one")
-
-
-def add_backend(parser, verify: bool = True) -> None:
-    """--backend (the engine that simulates) and, with `verify`, --verify-backend (a second
-    engine the task's solution must pass in too)."""
-    from physc.backends import DEFAULT_BACKEND
-    from physc.commands.arguments import backend
-
-    parser.add_argument(
-        "--backend", type=backend, default=DEFAULT_BACKEND, metavar="NAME",
-        help=f"the physics engine that simulates (default {DEFAULT_BACKEND}, the game's; pymunk and bullet are built in too: physc backends)",
-    )
-    if verify:
-        parser.add_argument(
-            "--verify-backend", type=backend, metavar="NAME",
-            help="a second physics backend (e.g. bullet) in which the task's solution must also solve the level and "
-            "realise the sequence, in its noisy replays too",
-        )

@@ -131,10 +131,10 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
 
 
 def cmd_compile(args) -> int:
-    from physc.backends import selected as backend_selected
     from physc.compiler.infeasible import Infeasible
-    from physc.compiler.pipeline import Pipeline
-    from physc.domains import load_domain
+    from physc.generation.pipeline import Pipeline
+    from physc.domains import bound, load_domain
+    from physc.domains.words import INSTALLED
     from physc.dsl import ast
     from physc.dsl.fmt import format_file
     from physc.dsl.frontend import analyze
@@ -154,7 +154,7 @@ def cmd_compile(args) -> int:
     if args.task and not generating:
         raise UsageError("--task writes the generated task: use it with --emit level or task")
     report = reporter(args)
-    analysis = analyze(args.file)
+    analysis = analyze(args.file, vocabularies=INSTALLED)
     if analysis.file is None or any(d.is_error for d in analysis.syntax):
         report(args.file, analysis.source, analysis.diagnostics)
         return diagnostics.exit_status(analysis.diagnostics)
@@ -184,7 +184,8 @@ def cmd_compile(args) -> int:
     for scenario in selected:
         name = checked[scenario.name.text].domain
         if name not in domains:
-            domains[name] = load_domain(name)
+            # The domain in the world and engine asked for: they pass down with it to every simulation.
+            domains[name] = bound(load_domain(name), args.world, args.backend)
             check_min_robustness(args.min_robustness, domains[name])
     lacking = _lacking(args, chosen.name, selected, checked, domains)
     if lacking:
@@ -214,14 +215,10 @@ def cmd_compile(args) -> int:
         try:
             # The picture (a simulation of the solution's paths) is part of the work: within
             # the time budget, and where Ctrl-C stops it safely.
-            with budget.interruptible(), budget.deadline(args.time_budget), backend_selected(args.backend), heartbeat or contextlib.nullcontext():
+            with budget.interruptible(), pipeline.within_budget(chosen.name), heartbeat or contextlib.nullcontext():
                 value = chosen.run(Unit(scenario, ir), pipeline)
                 picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:
-            failures.append(_infeasible(error, scenario))
-            continue
-        except budget.OutOfTime:
-            error = Infeasible(chosen.name, f"the time budget of {args.time_budget:g} s ran out", budget=Exhausted.TIME)
             failures.append(_infeasible(error, scenario))
             continue
         except DomainError as error:  # the domain cannot do what was asked (a picture format it lacks)

@@ -8,7 +8,8 @@ import time
 from pathlib import Path
 
 from physc.commands import arguments
-from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, print_json
+from physc.commands.options import add_generation, add_target, generation_settings
 from physc.commands.progress import Progress
 from physc.commands.running import add_executor, check_batch, command_arguments, executor_from, refused_domains, selected_jobs
 from physc.files import check_output, ensure_folder
@@ -66,12 +67,12 @@ def cmd_eval(args) -> int:
     if args.agent:
         return cmd_agent(args)
     from physc.domains.base import STAGE_NEEDS
-    from physc.evaluation.run import jobs_for, run
+    from physc.evaluation.run import run
+    from physc.generation.job import jobs_for
 
     check_batch(args)
-    jobs, problems = jobs_for(
-        args.files, args.tasks, args.seed, args.time_budget, args.min_robustness, args.backend, args.verify_backend, not args.no_acceptance
-    )
+    # Generation's final validation is skipped, as in the paper's evaluation.
+    jobs, problems = jobs_for(args.files, args.tasks, args.seed, **generation_settings(args), validate=False)
     jobs, status = selected_jobs(args, jobs, problems)
     if status is None:  # generation needs the domain's capabilities, and so do its replays and measurements
         status = refused_domains(args, jobs, STAGE_NEEDS["task"] + ("replay", "stability"), "physc eval")
@@ -102,12 +103,8 @@ def add_command(commands, common) -> None:
     parser.add_argument("--tasks", type=arguments.tasks, default=30, metavar="N", help="tasks per scenario (default 30)")
     add_executor(parser)
     parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
-    parser.add_argument("--time-budget", type=arguments.time_budget, default=300.0, metavar="S", help="seconds of generation per task at most (default 300; the measurements after it are not counted)")
-    add_min_robustness(parser)
-    add_backend(parser)
-    parser.add_argument(
-        "--no-acceptance", action="store_true", help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
-    )
+    add_generation(parser, validate=False)
+    add_target(parser)
     parser.add_argument("--out", required=True, metavar="DIR", help="where records and the report go; a rerun resumes")
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     add_format(parser, "the summary (or an agent's scores)")

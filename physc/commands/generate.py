@@ -6,7 +6,8 @@ import sys
 from pathlib import Path
 
 from physc.commands import arguments
-from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_backend, add_format, add_min_robustness, print_json
+from physc.commands.common import EXIT_INFEASIBLE, EXIT_OK, UsageError, add_format, print_json
+from physc.commands.options import add_generation, add_target, generation_settings
 from physc.commands.progress import Progress
 from physc.commands.running import (
     add_executor,
@@ -17,7 +18,6 @@ from physc.commands.running import (
     reproducing_command,
     selected_jobs,
 )
-from physc.compiler.task import TIME_BUDGET
 
 
 def _described(row: dict) -> str:
@@ -26,14 +26,14 @@ def _described(row: dict) -> str:
 
 def cmd_generate(args) -> int:
     from physc.dataset.build import build
-    from physc.dataset.job import NO_TASK, jobs_for
+    from physc.dataset.job import NO_TASK
+    from physc.generation.job import jobs_for
     from physc.domains.base import STAGE_NEEDS
 
     check_batch(args)
     jobs, problems = jobs_for(
-        args.files, args.tasks, args.seed, time_budget=args.time_budget, min_robustness=args.min_robustness,
-        validate=not args.no_validate, acceptance=not args.no_acceptance, picture=args.png, accidental=args.accidental,
-        backend=args.backend, verify_backend=args.verify_backend,
+        args.files, args.tasks, args.seed, **generation_settings(args), validate=not args.no_validate, picture=args.png,
+        accidental=args.accidental,
     )
     jobs, status = selected_jobs(args, jobs, problems)
     if status is not None:
@@ -79,15 +79,8 @@ def add_command(commands, common) -> None:
     parser.add_argument("--out", required=True, metavar="DIR", help="the dataset folder; a rerun resumes")
     parser.add_argument("--png", action="store_true", help="also draw each task (<seed>.png)")
     parser.add_argument("--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)")
-    parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each task")
-    parser.add_argument(
-        "--no-acceptance", action="store_true", help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts"
-    )
-    parser.add_argument(
-        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
-    )
-    add_min_robustness(parser)
-    add_backend(parser)
+    add_generation(parser)
+    add_target(parser)
     add_executor(parser)
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
     add_format(parser, "the summary (each task's outcome)")

@@ -1,5 +1,9 @@
 """`physc simulate`, `physc trace`, `physc render`: playing Science Birds levels.
 
+Through the domain's interface (physc.domains.base.Domain: `read_level`, `play`, `draw`, and
+the Science Birds domain's `shot`), in the world and engine chosen (--world, --backend, or the
+task file's with --task).
+
 Each reads a level file (real files as they are: declared utf-16, actually
 ASCII), optionally fires one full-stretch shot, and reports what happened: the
 outcome, the recognised interactions in `.phys` syntax, or a picture with the
@@ -11,39 +15,45 @@ from __future__ import annotations
 
 from physc import budget
 from physc.commands import arguments
-from physc.commands.common import EXIT_OK, UsageError, add_backend, add_format, plural, print_json, reporter
+from physc.commands.common import EXIT_OK, UsageError, add_format, plural, print_json, reporter
+from physc.commands.options import add_target
 from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
-
-def parse_shot(point: tuple[float, float, str] | None, angle: float | None):
-    """The Shot of --shot (already checked by arguments.shot) or --angle, or None."""
-    from physc.domains.angrybirds.launch import Shot
-
-    if point is None:
-        return None if angle is None else Shot(angle=angle)
-    x, y, trajectory = point
-    return Shot(target=(x, y), trajectory=trajectory)
+LEVEL_DOMAIN = "angrybirds"  # the domain whose level files these commands play
 
 
-def load_level(args):
+def _domain(args):
+    """The Science Birds domain in the world and engine the level is played in: --world and
+    --backend where given, else the task file's (--task), else the defaults."""
+    from physc.commands.options import replaying
+    from physc.domains import load_domain
+
+    domain = load_domain(LEVEL_DOMAIN)
+    if args.task is None:
+        return domain.at(args.world, args.backend)
+    from physc.commands.verify import read_task
+
+    recorded = read_task(args.task)
+    if recorded.get("domain") != LEVEL_DOMAIN:
+        raise UsageError(f"{args.task} is a task of the domain '{recorded.get('domain')}', not of {LEVEL_DOMAIN}'s levels")
+    return replaying(domain, recorded, args, args.command)
+
+
+def load_level(args, domain):
     """The level of args.level, or None after reporting why not (the exit status is returned too)."""
-    from physc.domains.angrybirds.level_checks import MAX_LEVEL_BYTES
-    from physc.domains.angrybirds.level_xml import LevelError, decode, read_level
+    from physc.domains.base import LevelError
 
-    data, problem = read_input(args.level, "the level", limit=MAX_LEVEL_BYTES + 1)
+    limit = domain.max_level_bytes
+    data, problem = read_input(args.level, "the level", limit=limit + 1)
     if data is None:
         return None, _fail(args, Diagnostic("E0001", problem))
-    if len(data) > MAX_LEVEL_BYTES:
-        return None, _fail(args, Diagnostic("E0906", f"the level file is larger than physc reads ({MAX_LEVEL_BYTES:,} bytes)"))
+    if len(data) > limit:
+        return None, _fail(args, Diagnostic("E0906", f"the level file is larger than physc reads ({limit:,} bytes)"))
     try:
-        return read_level(data), 0
+        return domain.read_level(data), 0
     except LevelError as error:
-        try:
-            text = decode(data)  # as the level was read, so that lines and columns match
-        except LevelError:
-            text = data.decode("utf-8", "replace")
-        source = SourceText(args.level, text)
+        source = SourceText(args.level, domain.level_text(data))  # as the level was read, so that lines and columns match
         span = None
         if error.line is not None and error.line <= source.line_count:
             start = source.offset(error.line, error.column or 1)
@@ -61,34 +71,25 @@ def _fail(args, diagnostic: Diagnostic, source=None) -> int:
     return diagnostics.exit_status([diagnostic])
 
 
-def _game(args, level):
-    from physc.backends import load_backend
-    from physc.domains.angrybirds.game import Game
-    from physc.domains.angrybirds.rules import Rules
-
-    return Game(level, load_backend(args.backend), Rules(colliders=args.colliders))  # --backend was checked when parsed
-
-
-def _play(args):
-    from physc.domains.angrybirds.launch import Unreachable
-
-    level, status = load_level(args)
+def _play(args, domain):
+    level, status = load_level(args, domain)
     if level is None:
         return None, None, status
-    shot = parse_shot(args.shot, args.angle)
+    shot = domain.shot(args.shot, args.angle)
     if shot is not None and not level.has_birds:
         help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
         return None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
-            trace = _game(args, level).play(shot, args.seconds)
-    except Unreachable as error:
+            trace = domain.play(level, shot, seconds=args.seconds, whole=True)
+    except ValueError as error:  # a target out of reach of the launch
         raise UsageError(str(error)) from None
     return level, shot, trace
 
 
 def cmd_simulate(args) -> int:
-    level, shot, trace = _play(args)
+    domain = _domain(args)
+    level, shot, trace = _play(args, domain)
     if level is None:
         return trace
     pigs = list(trace.goal)
@@ -97,7 +98,9 @@ def cmd_simulate(args) -> int:
         print_json(
             {
                 "level": args.level,
-                "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(), 4)},
+                "world": domain.world.name,
+                "backend": domain.backend.name,
+                "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(domain.world), 4)},
                 "seconds": round(trace.duration, 4),
                 "pigs": pigs,
                 "pigs_destroyed": [d.name for d in destroyed],
@@ -106,8 +109,8 @@ def cmd_simulate(args) -> int:
             }
         )
         return EXIT_OK
-    what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle():.2f}°)"
-    print(f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}")
+    what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle(domain.world):.2f}°)"
+    print(f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}; world {domain.world.name}")
     verdict = "solved" if trace.solved else "not solved"
     print(f"after {trace.duration:.2f} s: {len(destroyed)} of {plural(len(pigs), 'pig')} destroyed: {verdict}")
     for d in trace.destructions:
@@ -117,7 +120,7 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_trace(args) -> int:
-    level, shot, trace = _play(args)
+    level, shot, trace = _play(args, _domain(args))
     if level is None:
         return trace
     if args.format == "json":
@@ -132,24 +135,22 @@ def cmd_trace(args) -> int:
 
 
 def cmd_render(args) -> int:
-    from physc.domains.angrybirds.picture import draw_level, save
-
     if not args.output.lower().endswith((".png", ".svg")):
         raise UsageError("-o must name a .png or .svg file")
     check_output(args.output)
+    domain = _domain(args)
     if args.shot is None and args.angle is None:
-        level, status = load_level(args)
+        level, status = load_level(args, domain)
         if level is None:
             return status
         paths = {}
     else:
-        level, _, trace = _play(args)
+        level, _, trace = _play(args, domain)
         if level is None:
             return trace
         paths = trace.paths()
-    figure = draw_level(level, args.title or args.level, paths)
     kind = "svg" if args.output.lower().endswith(".svg") else "png"
-    write_atomic(args.output, save(figure, kind))
+    write_atomic(args.output, domain.draw(level, args.title or args.level, paths, kind))
     if args.format == "json":
         print_json({"level": args.level, "picture": args.output, "format": kind, "paths": sorted(paths)})
     return EXIT_OK
@@ -165,8 +166,10 @@ def add_commands(commands, common) -> None:
             "--seconds", type=arguments.seconds, default=10.0, metavar="S",
             help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
         )
-        parser.add_argument("--colliders", choices=("game", "round", "phyq"), default="game", help="the bodies' colliders: the game's own (default), or physc's catalogue model with Circle and CircleSmall as true circles (round) or flat-footed polygons (phyq)")
-        add_backend(parser, verify=False)
+        parser.add_argument(
+            "--task", metavar="TASK.json", help="the level's task file (`physc compile --task`): the level is played in its world and engine unless --world or --backend says otherwise",
+        )
+        add_target(parser, verify=False, replay=True)
 
     simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
     level_arguments(simulate)

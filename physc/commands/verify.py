@@ -21,7 +21,8 @@ from physc.files import read_input
 MAX_TASK_BYTES = 50_000_000
 
 
-def _task(path: str) -> dict:
+def read_task(path: str) -> dict:
+    """A task file's JSON, checked to be one (UsageError otherwise)."""
     data, problem = read_input(path, "the task file", limit=MAX_TASK_BYTES + 1)
     if data is None:
         raise UsageError(problem)
@@ -95,10 +96,12 @@ def _normalised(text: str) -> str:
 
 
 def cmd_verify(args) -> int:
+    from physc.commands.options import replaying
     from physc.generation.verify import noisy_replays, verify
 
-    task = _task(args.task)
+    task = read_task(args.task)
     domain, scenario, level, level_text, solution = _parts(task, args.task)
+    domain = replaying(domain, task, args, "verify")
     data, problem = read_input(args.level, "the level", limit=MAX_TASK_BYTES + 1)
     if data is None:
         raise UsageError(problem)
@@ -110,7 +113,7 @@ def cmd_verify(args) -> int:
     replays = args.replays if args.replays is not None else noisy_replays(domain)
     try:
         with budget.interruptible():
-            result = verify(domain, scenario, level, solution, args.backend, noisy=replays)
+            result = verify(domain, scenario, level, solution, domain.backend.name, noisy=replays)
     except ValueError as error:  # the file's solution cannot be played (angrybirds: a target out of reach)
         raise UsageError(f"{args.task}: its solution cannot be played: {error}") from None
     if args.format == "json":
@@ -119,6 +122,7 @@ def cmd_verify(args) -> int:
                 "level": args.level,
                 "task": args.task,
                 "scenario": scenario.name,
+                "world": domain.world.name,
                 "backend": result.backend,
                 "solved": result.solved,
                 "realised": result.realised,
@@ -140,14 +144,14 @@ def cmd_verify(args) -> int:
 
 def add_command(commands, common) -> None:
     from physc.commands import arguments
-    from physc.commands.common import add_backend
+    from physc.commands.options import add_target
 
     parser = commands.add_parser(
         "verify", parents=[common], help="replay a task's solution (in any backend): does it solve the level and realise the sequence?"
     )
     parser.add_argument("level", metavar="LEVEL", help="the task's level file ('-' reads standard input)")
     parser.add_argument("--task", required=True, metavar="TASK.json", help="the task file `physc compile --task` wrote")
-    add_backend(parser, verify=False)
+    add_target(parser, verify=False, replay=True)
     parser.add_argument(
         "--replays", type=arguments.replays, metavar="N",
         help="noisy replays that must realise the sequence too (default: the domain's, 6 in angrybirds; 0: none)",

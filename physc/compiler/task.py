@@ -43,6 +43,11 @@ class Task:
     given_up: dict
     seconds: dict  # stage → time spent
     acceptance: dict | None = None  # what random actions showed, for a domain with an acceptance rule (PHYRE's flags)
+    # The world the task was made in and the engine that simulated it (physc.worlds): what
+    # `verify`, `eval`, `simulate`, `trace` and `render` replay it in unless told otherwise.
+    # A task file written before worlds were named reads as the domain's default world.
+    world: str = ""
+    backend: str = ""
 
 
 def given_up_summary(given_up: dict) -> str:

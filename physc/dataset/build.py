@@ -12,7 +12,8 @@ from pathlib import Path
 
 from physc import budget
 from physc.dataset import manifest, readme
-from physc.dataset.job import TaskJob, make, scenario_file
+from physc.dataset.job import make, scenario_file
+from physc.generation.job import Job
 from physc.domains import load_domain
 from physc.execution import Executor
 from physc.files import OutputError, ensure_folder, write_atomic
@@ -20,7 +21,7 @@ from physc.files import OutputError, ensure_folder, write_atomic
 README = "README.md"
 
 
-def _finished(folder: Path, job: TaskJob, row: dict | None) -> bool:
+def _finished(folder: Path, job: Job, row: dict | None) -> bool:
     """Whether the task's row was made with the job's settings and its files are all there."""
     if row is None or row.get("settings") != job.settings:
         return False
@@ -38,7 +39,7 @@ def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
     return files
 
 
-def build(jobs: list[TaskJob], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:
+def build(jobs: list[Job], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:
     """Make the dataset of `jobs` in `folder`; every job's row, in the order of `jobs`."""
     folder = ensure_folder(folder)
     rows = manifest.read(folder)

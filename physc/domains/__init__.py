@@ -17,7 +17,7 @@ from physc.domains.base import REQUIRED, Domain, DomainError, MissingCapability
 from physc.domains.vocabulary import Vocabulary
 from physc.suggest import asking, closest
 
-__all__ = ["DEFAULT_DOMAIN", "ENTRY_POINT_GROUP", "Domain", "DomainError", "MissingCapability", "installed_domains", "load_domain"]
+__all__ = ["DEFAULT_DOMAIN", "ENTRY_POINT_GROUP", "Domain", "DomainError", "MissingCapability", "bound", "installed_domains", "load_domain", "world_name"]
 
 ENTRY_POINT_GROUP = "physc.domains"
 DEFAULT_DOMAIN = "angrybirds"
@@ -56,6 +56,24 @@ def load_domain(name: str) -> Domain:
             "the entry point names an instance of a physc.domains.base.Domain subclass (docs/plugins.md)",
         )
     return domain
+
+
+def bound(domain, world: str | None = None, backend: str | None = None):
+    """`domain` simulating in `world` with `backend` (`Domain.at`). A duck-typed plugin (no
+    `at`) simulates nothing of physc's: it is returned as it is, and naming a world for it is a
+    WorldError."""
+    if hasattr(domain, "at"):
+        return domain.at(world, backend)
+    if world is not None:
+        from physc.worlds import WorldError
+
+        raise WorldError(f"the domain '{domain.name}' names no worlds")
+    return domain
+
+
+def world_name(domain) -> str:
+    """The name of the world `domain` simulates in; "" for a domain that names none."""
+    return domain.world.name if getattr(domain, "worlds", ()) else ""
 
 
 def _not_a_domain(domain, name: str) -> str | None:

@@ -10,13 +10,17 @@ of promise:
   abstract, so a subclass that forgets one cannot be instantiated, and `load_domain`
   checks them on any plugin object (E0702).
 * **Generation** needs capabilities: `layout_rules`, `layout_parameters`,
-  `concretize`, `satisfy`, `emit_level`, `picture`, `replay` (verification), `stability`
-  (the evaluation). No default could be right for
+  `concretize`, `satisfy` (physc's one search, for a SimulatedDomain), `emit_level`,
+  `picture`, `replay` (verification), `stability` (the evaluation); and playing level files,
+  `read_level` and `draw`. No default could be right for
   another domain, so the base class has none; a domain that lacks them still loads and
   checks, and a command that needs one refuses before any work with E0703, naming the
   domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable`,
   `robustness_replays`, `level_classes`, `solution_class` and `accidental` have working
   defaults.
+* **Worlds**: a domain names the worlds it simulates (`worlds`, physc.worlds.World) and its
+  default; `at(world, backend)` binds a copy to one world and one physics engine, which then
+  pass down with the domain to every simulation (`world`, `backend`).
 
 A domain whose task is one action in a simulated scene subclasses
 physc.domains.simulated.SimulatedDomain instead, which makes `satisfy`, `replay`,
@@ -26,11 +30,14 @@ physc.domains.simulated.SimulatedDomain instead, which makes `satisfy`, `replay`
 from __future__ import annotations
 
 import abc
+import copy
 from typing import TYPE_CHECKING, Any
 
 from physc.domains.vocabulary import Vocabulary
 
 if TYPE_CHECKING:
+    from physc.backends import Backend
+    from physc.worlds import World
     from physc.compiler.concrete_layout import Body, ConcreteLayout
     from physc.compiler.dimension_graphs import LayoutParameters
     from physc.compiler.layout_graph import LayoutGraph
@@ -38,10 +45,12 @@ if TYPE_CHECKING:
     from physc.dsl.scenario import ScenarioIR
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
-CAPABILITIES = ("layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability")  # no default
+CAPABILITIES = (
+    "layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability", "read_level", "draw",
+)  # no default
 DEFAULTS = (
     "reach_targets", "reachable", "robustness_replays", "level_classes", "level_format", "level_suffix", "solution_class", "accidental", "measures",
-    "benchmark_files", "score_agent",
+    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "max_level_bytes",
 )  # working defaults (score_agent's: no agent is scored, MissingCapability)
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
@@ -75,6 +84,23 @@ class DomainError(Exception):
         self.suggestions = suggestions  # installed domain names the asked-for one may be a misspelling of
 
 
+class LevelError(Exception):
+    """An unusable level file (`Domain.read_level`): `code` is a physc diagnostic code, `line`
+    and `column` 1-based or None."""
+
+    def __init__(self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None):
+        super().__init__(message)
+        self.code = code
+        self.message = message
+        self.line = line
+        self.column = column
+        self.help = help
+
+    def __str__(self) -> str:
+        where = "" if self.line is None else f"line {self.line}" + ("" if self.column is None else f":{self.column}") + ": "
+        return where + self.message
+
+
 class MissingCapability(DomainError):
     """The domain `domain` lacks `hooks`, which `asked` (e.g. "--emit level") needs."""
 
@@ -100,10 +126,10 @@ def _no_default(function):
 def provides(domain: Any, hook: str) -> bool:
     """Whether `domain` (a `Domain`, or any plugin object) has `hook`: a duck-typed plugin
     has only what it defines itself, a subclass also the base class's defaults."""
+    if hook == "satisfy":  # physc's one search makes the tasks of a SimulatedDomain, and of no other
+        return bool(getattr(domain, "searched", False))
     if not hasattr(domain, hook):
         return False
-    if hook == "satisfy" and getattr(domain, "searched", False):
-        return True  # physc's one search makes its tasks (physc.domains.simulated)
     value = getattr(domain, hook)
     if value is None and hook in CAPABILITIES:  # layout_rules, layout_parameters: None is none
         return False
@@ -152,6 +178,56 @@ class Domain(abc.ABC):
         """The object and interaction terms of `.phys` in this domain: all the static
         checks need (physc.domains.vocabulary)."""
 
+    # --- the world it simulates, and the engine -----------------------------------
+
+    worlds: tuple[World, ...] = ()
+    """The worlds the domain simulates (physc.worlds.World): each a value with every setting
+    of its physics, a variant derived from another. Empty: the domain does not simulate."""
+
+    default_world: str = ""
+    """The name of the world a command uses unless `--world` names another ("": the first of
+    `worlds`)."""
+
+    _world: World | None = None
+    _backend: Backend | None = None
+
+    def at(self, world: str | World | None = None, backend: str | Backend | None = None) -> Domain:
+        """This domain simulating in `world` (a name of `worlds`, or a World) with the physics
+        backend `backend` (a name, or a Backend): a copy, so that the world and the engine pass
+        down with the domain, on one path, to every simulation a command runs. None keeps
+        this copy's (at first: the default world, the default backend). WorldError or
+        BackendError for a name that is not there."""
+        from physc.backends import Backend as BackendValue
+        from physc.backends import load_backend
+        from physc.worlds import by_name
+
+        bound = copy.copy(self)
+        if world is not None:
+            bound._world = world if not isinstance(world, str) else by_name(self.worlds, world, self.name)
+        if backend is not None:
+            bound._backend = backend if isinstance(backend, BackendValue) else load_backend(backend)
+        return bound
+
+    @property
+    def world(self) -> World:
+        """The world this domain simulates in (`at`; the default world unless told otherwise)."""
+        if self._world is None:
+            from physc.worlds import WorldError, by_name
+
+            if not self.worlds:
+                raise WorldError(f"the domain '{self.name}' names no world to simulate in")
+            return by_name(self.worlds, self.default_world or self.worlds[0].name, self.name)
+        return self._world
+
+    @property
+    def backend(self) -> Backend:
+        """The physics engine this domain simulates with (`at`; physc's default, box2d, unless told otherwise)."""
+        if self._backend is None:
+            from physc.backends import load_backend
+
+            return load_backend()
+        return self._backend
+
     # --- generation: capabilities without a default ----------------------------
 
     layout_rules: Any = None
@@ -172,11 +248,9 @@ class Domain(abc.ABC):
 
     @_no_default
     def satisfy(self, scenario: ScenarioIR, layout: ConcreteLayout, rng, validate: bool = True, accept: int | None = None):
-        """Make one placed layout a task by simulation (stage task), or say why not: a
-        physc.generation.outcome.Outcome (satisfied, simulations, the task's Parts, and for
-        a layout given up: why, how far it got, the most noisy replays a fragile solution
-        passed; docs/plugins.md). `accept=K`: a solution passing K of the noisy replays will
-        do (the fallbacks of --min-robustness)."""
+        """The capability of making a placed layout a task by simulation (stage task): physc's
+        one search (physc.generation.search) gives it to a SimulatedDomain, and nothing calls
+        this method; a domain that is not `searched` lacks it (E0703)."""
         raise MissingCapability(self.name, ("satisfy",), "generating a task")
 
     @_no_default
@@ -207,6 +281,26 @@ class Domain(abc.ABC):
         """(stable, the largest shift) of `level` left alone: the evaluation's physical
         stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
         raise MissingCapability(self.name, ("stability",), "measuring stability")
+
+    @_no_default
+    def read_level(self, data: bytes):
+        """The level of a level file's bytes (`physc simulate`, `trace`, `render`); LevelError
+        (a diagnostic's code, message, line and column) for a file that cannot be played."""
+        raise MissingCapability(self.name, ("read_level",), "reading a level file")
+
+    def level_text(self, data: bytes) -> str:
+        """A level file's text as `read_level` reads it, so that a LevelError's line and column
+        point into it. Default: UTF-8."""
+        return data.decode("utf-8", "replace")
+
+    max_level_bytes: int = 4 * 1024 * 1024
+    """The largest level file `read_level` is given (a larger one is refused unread, E0906)."""
+
+    @_no_default
+    def draw(self, level, title: str, paths: dict, fmt: str = "png") -> bytes:
+        """A picture of `level` with `paths` (body name → [(x, y), …], drawn as arrows), in the
+        domain's world (`physc render`)."""
+        raise MissingCapability(self.name, ("draw",), "drawing a level")
 
     level_format: str = "the domain's level file"
     """What a level file is, in words a dataset's README gives its users: the format, and whose

@@ -66,8 +66,10 @@ class SimulatedDomain(Domain):
     """The base class of a one-action domain (module docstring): the generation, replay and
     measurement hooks of `Domain` from a few of its own."""
 
-    recogniser: Recogniser | None = None
-    """The domain's recognition of interactions (thresholds in its units, its kinds)."""
+    @property
+    def recogniser(self) -> Recogniser:
+        """The recognition of interactions in the domain's world (thresholds in its units, its kinds)."""
+        return self.world.recogniser
 
     seconds: float = 10.0
     """A play's simulated time at most."""
@@ -213,7 +215,7 @@ class SimulatedDomain(Domain):
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
         return play(
-            self.scene(level, action), self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise,
+            self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise,
             resume,
         )
 
@@ -237,7 +239,7 @@ class SimulatedDomain(Domain):
         False, "stable" is PHYRE's acceptance of a scene: left alone, it does not solve itself
         (the shift is still reported)."""
         if self.still_start:
-            return stable(play(self.scene(level, None), RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
+            return stable(play(self.scene(level, None), self.backend, RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
         alone = self.play(level, None, recognise=False)
         return not alone.solved, stable(alone, self.stable_limit)[1]
 

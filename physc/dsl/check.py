@@ -13,20 +13,13 @@ from typing import Callable
 import attrs
 
 from physc.diagnostics import Diagnostic, Fix, Label, Span
-from physc.domains import DEFAULT_DOMAIN, DomainError, load_domain
-from physc.domains.vocabulary import (
-    DIRECTION,
-    INTERACTION,
-    RESTRICTION,
-    TermSignature,
-    Vocabulary,
-)
 from physc.dsl import ast
 from physc.dsl.fixes import Advice, Use, replacements, suggestion
 from physc.dsl.fmt import format_term
 from physc.dsl.objects import ObjectChecks, KnownObject
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
 from physc.dsl.sequence import SequenceChecks
+from physc.dsl.vocabularies import DIRECTION, INTERACTION, RESTRICTION, TermSignature, Vocabularies, Vocabulary, VocabularyError
 from physc.gc_pause import gc_paused
 
 
@@ -36,12 +29,21 @@ class CheckResult:
     diagnostics: tuple[Diagnostic, ...]
 
 
-def check_file(file: ast.File, path: str = "", domain_loader: Callable = load_domain) -> CheckResult:
+def check_file(
+    file: ast.File, path: str = "", vocabularies: Vocabularies | None = None, *, domain_loader: Callable | None = None
+) -> CheckResult:
+    """The scenarios of `file` checked against the `vocabularies` they are handed. `domain_loader`
+    (name -> a domain, whose `.vocabulary` is read) is the older form, kept for the callers that
+    do not hand vocabularies yet; with it, a scenario that names no domain asks it for ''."""
+    if vocabularies is None:
+        if domain_loader is None:
+            raise TypeError("check_file needs the vocabularies to check against")
+        vocabularies = Vocabularies(lambda name: domain_loader(name).vocabulary, "")
     with gc_paused():
-        return _check_file(file, path, domain_loader)
+        return _check_file(file, path, vocabularies)
 
 
-def _check_file(file: ast.File, path: str, domain_loader: Callable) -> CheckResult:
+def _check_file(file: ast.File, path: str, vocabularies: Vocabularies) -> CheckResult:
     diagnostics: list[Diagnostic] = []
     scenarios: list[ScenarioIR] = []
     first_by_name: dict[str, ast.Scenario] = {}
@@ -57,15 +59,15 @@ def _check_file(file: ast.File, path: str, domain_loader: Callable) -> CheckResu
                     notes=(Label(first.name.span, "first defined here"),),
                 )
             )
-        domain_name = scenario.domain.text if scenario.domain else DEFAULT_DOMAIN
+        domain_name = scenario.domain.text if scenario.domain else vocabularies.default
         try:
-            domain = domain_loader(domain_name)
-        except DomainError as error:
+            vocabulary = vocabularies.lookup(domain_name)
+        except VocabularyError as error:
             span = scenario.domain.span if scenario.domain else scenario.name.span
             fixes = replacements(scenario.domain, error.suggestions) if scenario.domain else ()
             diagnostics.append(Diagnostic(error.code, error.message, span, help=error.help, fixes=fixes))
             continue
-        checker = _ScenarioChecker(scenario, domain_name, domain.vocabulary, path)
+        checker = _ScenarioChecker(scenario, domain_name, vocabulary, path)
         result = checker.run()
         diagnostics.extend(checker.diagnostics)
         if result is not None and first is scenario:

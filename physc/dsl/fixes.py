@@ -15,8 +15,8 @@ from typing import Callable, Container, Sequence
 import attrs
 
 from physc.diagnostics import Edit, Fix, Span
-from physc.domains.vocabulary import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.ast import Term
+from physc.dsl.vocabularies import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.suggest import article, asking, closest
 
 Use = tuple[TermSignature, Parameter]

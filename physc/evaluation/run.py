@@ -23,75 +23,27 @@ import attrs
 from physc import __version__, budget
 from physc.compiler.infeasible import Infeasible
 from physc.domains.base import DomainError
-from physc.compiler.pipeline import Pipeline
-from physc.backends import DEFAULT_BACKEND, selected
-from physc.compiler.task import MIN_ROBUSTNESS
-from physc.domains import load_domain
-from physc.dsl.frontend import analyze_files, scenario_in
+from physc.generation.pipeline import Pipeline
 from physc.evaluation import measure
 from physc.execution import Executor
 from physc.files import ensure_folder, read_json_lines, write_atomic
-from physc.fingerprint import code_fingerprint, scenario_fingerprint
+from physc.generation.job import Job
 from physc.generation.verify import verify
 from physc.serialize import to_data
 
 RECORDS = "records.jsonl"
 
 
-@attrs.frozen
-class Job:
-    path: str  # the .phys file
-    scenario: str
-    seed: int
-    time_budget: float
-    min_robustness: int = MIN_ROBUSTNESS  # see Pipeline
-    fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
-    code: str = ""  # of the code that generates and measures it (code_fingerprint)
-    domain: str = ""  # the scenario's domain
-    backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
-    verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
-    acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
-    source: str = ""  # the scenario's text in block form: a worker reads this, never the file (it may run elsewhere)
-
-    @property
-    def key(self) -> tuple[str, str, int]:
-        return (self.path, self.scenario, self.seed)
-
-    @property
-    def settings(self) -> dict:
-        """What a task's record depends on besides its key: a record made with other
-        settings is stale."""
-        settings = {
-            "time_budget": self.time_budget,
-            "min_robustness": self.min_robustness,
-            "scenario": self.fingerprint,
-            "physc": __version__,
-            "code": self.code,
-        }
-        # Only when not the default, so that records made before backends could be chosen stay valid.
-        if self.backend != DEFAULT_BACKEND:
-            settings["backend"] = self.backend
-        if self.verify_backend is not None:
-            settings["verify_backend"] = self.verify_backend
-        if not self.acceptance:
-            settings["acceptance"] = False
-        return settings
-
-
 def evaluate(job: Job) -> dict:
-    """Generate one task (final validation skipped, as in the paper) and measure it, in the
-    job's backend; with a verify backend, replay its solution there too."""
-    with selected(job.backend):
-        return _evaluate(job)
-
-
-def _evaluate(job: Job) -> dict:
-    scenario = scenario_in(job.path, job.source, job.scenario)
-    domain = load_domain(scenario.domain)
+    """Generate one task (final validation skipped, as in the paper: the job says so) and
+    measure it, in the job's world and engine; with a verify backend, replay its solution there too."""
+    scenario, domain = job.target()
     record = {
         "file": job.path,
         "scenario": job.scenario,
         "domain": scenario.domain,
+        "world": domain.world.name,
+        "backend": domain.backend.name,
         "interactions": len(scenario.interactions),
         "seed": job.seed,
         "min_robustness": job.min_robustness,
@@ -100,7 +52,7 @@ def _evaluate(job: Job) -> dict:
     started = time.perf_counter()
     try:
         task = Pipeline(
-            domain, scenario, job.seed, validate=False, time_budget=job.time_budget, min_robustness=job.min_robustness,
+            domain, scenario, job.seed, validate=job.validate, layout_budget=job.layouts, time_budget=job.time_budget, min_robustness=job.min_robustness,
             verify_backend=job.verify_backend, acceptance=job.acceptance,
         ).task
     except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
@@ -146,21 +98,9 @@ def _evaluate(job: Job) -> dict:
     return record
 
 
-def jobs_for(
-    files: list[str], tasks: int, seed: int, time_budget: float, min_robustness: int = MIN_ROBUSTNESS,
-    backend: str = DEFAULT_BACKEND, verify_backend: str | None = None, acceptance: bool = True,
-) -> tuple[list[Job], list]:
-    """Every (scenario, seed) job of the files; and the diagnostics of files with errors."""
-    jobs = []
-    scenarios, problems = analyze_files(files)
-    for path, scenario, source in scenarios:
-        engines = tuple(name for name in (backend, verify_backend) if name)
-        fingerprint, code = scenario_fingerprint(scenario), code_fingerprint(scenario.domain, engines)
-        jobs += [
-            Job(path, scenario.name, seed + index, time_budget, min_robustness, fingerprint, code, scenario.domain, backend, verify_backend, acceptance, source)
-            for index in range(tasks)
-        ]
-    return jobs, problems
+def key(job: Job) -> tuple[str, str, int]:
+    """A record's key: scenarios of two files may share a name."""
+    return (job.path, job.scenario, job.seed)
 
 
 def done_records(folder: Path) -> dict:
@@ -174,7 +114,7 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
     ensure_folder(folder)
     records = done_records(folder)
     # A record made with other settings is made again (the last line of a key wins).
-    todo = [job for job in jobs if job.key not in records or records[job.key].get("settings") != job.settings]
+    todo = [job for job in jobs if key(job) not in records or records[key(job)].get("settings") != job.settings]
     path = folder / RECORDS
     # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
     if records:
@@ -195,4 +135,4 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
         finally:  # the bar's display ends whatever stopped the work
             if progress:
                 progress.stop()
-    return [records[job.key] for job in jobs if job.key in records]
+    return [records[key(job)] for job in jobs if key(job) in records]

@@ -1,8 +1,8 @@
 """The layout loop: placed layouts, one after another, until one gives a task.
 
 Generation is a search over layouts. For each layout the placement passes offer, physc's
-one search (search.py, for a SimulatedDomain; a domain of another kind: its own
-`satisfy`) says whether it gives a task, and if not, why it was given up and how robust its best solution was. The
+one search (search.py, with the hooks of a SimulatedDomain) says whether it gives a task,
+and if not, why it was given up and how robust its best solution was. The
 loop keeps the budgets (`--layouts`, and `--time-budget` through `physc.budget`),
 counts what each layout cost and why it was given up, reports progress, and when the
 budget ends without a robust task, tries the most robust fragile layouts again as
@@ -38,15 +38,15 @@ class Progress:
 
 @attrs.frozen
 class Generated:
-    """The outcome of the layout loop: the domain's satisfied outcome, the layout it
+    """The outcome of the layout loop: the search's satisfied outcome, the layout it
     came from, and what the search cost."""
 
-    outcome: object  # the domain's satisfy() result, satisfied
+    outcome: object  # the search's Outcome (search.satisfy), satisfied
     layout: object  # the ConcreteLayout it came from
     layouts: int
     simulations: int
     given_up: dict  # why → {"layouts": n, "simulations": n}
-    seconds: dict  # "layout" (placement), "satisfy", and the domain's own stages
+    seconds: dict  # "layout" (placement), "satisfy", and the stages after satisfaction
 
 
 @attrs.define
@@ -68,14 +68,10 @@ class LayoutLoop:
     acceptance: bool = True
 
     def satisfy(self, layout, accept: int | None = None):
-        """The domain's `satisfy` of one layout (accepting `accept` noisy replays, for a
-        fallback), then the check in the second backend, if one is asked for."""
-        domain = self.domain
-        if getattr(domain, "searched", False):  # a SimulatedDomain: physc's one search, with its hooks
-            result = search.satisfy(domain, self.scenario, layout, self.rng, self.validate, accept, self.acceptance)
-        else:
-            options = {} if accept is None else {"accept": accept}
-            result = domain.satisfy(self.scenario, layout, self.rng, self.validate, **options)
+        """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
+        noisy replays, for a fallback), then the check in the second backend, if one is
+        asked for."""
+        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.validate, accept, self.acceptance)
         if result.satisfied and self.verify_backend is not None:
             result = self.cross_checked(result, accept)
         return result
@@ -134,14 +130,13 @@ class LayoutLoop:
             finally:
                 seconds["satisfy"] += time.perf_counter() - clock
             simulations += result.simulations
-            reached = getattr(result, "best", 0)
-            if reached > best or (reached == best and not stopped):
-                best, stopped = reached, getattr(result, "stopped", "")
+            if result.best > best or (result.best == best and not stopped):
+                best, stopped = result.best, result.stopped
             if result.satisfied:
                 failure, used = None, placed.layout
                 break
             nearest = max(nearest, result.nearest)
-            why = given_up.setdefault(getattr(result, "given_up", "") or "not said", {"layouts": 0, "simulations": 0})
+            why = given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
             why["layouts"] += 1
             why["simulations"] += result.simulations
             if result.nearest >= self.min_robustness:
@@ -168,9 +163,8 @@ class LayoutLoop:
                 raise self.explained(failure, nearest, given_up, best, stopped)
             simulated, result, used = fallback
             simulations += simulated
-        # The domain's own stages after satisfaction (angrybirds: distract, validate), if it
-        # times them, counted apart from it.
-        for stage, spent in getattr(result, "seconds", {}).items():
+        # The stages after satisfaction (distract, validate, accept), counted apart from it.
+        for stage, spent in result.seconds.items():
             seconds["satisfy"] -= spent
             seconds[stage] = spent
         seconds["total"] = time.perf_counter() - started

@@ -1,6 +1,6 @@
-"""What a strategy answers for one placed layout: a task's parts, or why not.
+"""What the search answers for one placed layout: a task's parts, or why not.
 
-`Domain.satisfy` returns an `Outcome`; the layout loop reads it to count simulations,
+The search (search.satisfy) returns an `Outcome`; the layout loop reads it to count simulations,
 note why a layout was given up and how far it got, keep fragile layouts for the
 fallbacks, and, when it is satisfied, make the task from its `Parts`.
 """
@@ -36,4 +36,4 @@ class Outcome:
     given_up: str = ""  # why the layout was given up, when it was
     best: int = 0  # most interactions of the sequence realised, in order, in one simulation
     stopped: str = ""  # what that simulation shows about the next interaction (physc.simulation.stopped)
-    seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the domain's stages after satisfaction
+    seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfaction

@@ -4,7 +4,7 @@ A task is checked in the engine that generated it; a solution that also solves t
 and realises the declared sequence, in an engine with another contact solver shows that
 the physics is the scenario's and not an artefact of one solver. `verify` replays the
 solution once as recorded and, if asked, under the domain's noise, with the domain's
-`replay` inside `physc.backends.selected(backend)`. `physc verify`, `physc compile
+`replay`, the domain simulating in the same world with the other engine (`Domain.at`). `physc verify`, `physc compile
 --verify-backend` and `physc eval --verify-backend` all use it. Nothing here depends on a
 domain.
 """
@@ -15,7 +15,6 @@ import random
 
 import attrs
 
-from physc.backends import selected
 from physc.simulation.fidelity import fidelity
 
 
@@ -53,12 +52,13 @@ def noisy_replays(domain) -> int:
 def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> Verification:
     """Replay `solution` in `level` with `backend`: once as recorded, then `noisy` times
     under the domain's noise (drawn from a generator seeded by the backend and the
-    solution, so a verification is the same whenever and wherever it runs)."""
-    with selected(backend):
-        trace = domain.replay(level, solution, scenario)
-        check = fidelity(scenario, trace)
-        rng = random.Random(f"physc-verify/{backend}/{scenario.name}/{solution!r}")
-        passed = sum(fidelity(scenario, domain.replay(level, solution, scenario, rng)).valid for _ in range(noisy))
+    solution, so a verification is the same whenever and wherever it runs). The world is the
+    domain's (`Domain.at`)."""
+    there = domain.at(backend=backend)
+    trace = there.replay(level, solution, scenario)
+    check = fidelity(scenario, trace)
+    rng = random.Random(f"physc-verify/{backend}/{scenario.name}/{solution!r}")
+    passed = sum(fidelity(scenario, there.replay(level, solution, scenario, rng)).valid for _ in range(noisy))
     why = ""
     if not trace.solved:
         why = "the solution does not solve the level"

@@ -17,6 +17,7 @@ import attrs
 from lsprotocol import types
 
 from physc.diagnostics import Diagnostic, Severity, SourceText, Span
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import Analysis, analyze_text
 from physc.dsl.parser import MAX_SOURCE_BYTES
 from physc.lsp.positions import Positions
@@ -78,7 +79,7 @@ def analyze_document(uri: str, text: str) -> Analysis:
         return Analysis(uri, SourceText(uri, ""), None, (), (too_big,), ())
     if text.startswith("\ufeff"):
         text = " " + text[1:]
-    return analyze_text(uri, text)
+    return analyze_text(uri, text, INSTALLED)
 
 
 class Documents:

@@ -10,15 +10,42 @@ also break no restriction while the solution runs (from the shot until the decla
 sequence is complete: the paper's restrictions "only apply to the solution
 interaction sequence"), and meet the domain's goal (`Trace.solved`; Angry Birds: every
 pig destroyed). Nothing here depends on a domain: it reads the scenario and a trace.
+
+The scenario is the front end's checked IR (physc.dsl.scenario.ScenarioIR); this layer
+imports nothing of the front end, and reads only what `Declared` and `DeclaredTerm` name.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import Protocol
+
 import attrs
 import numpy as np
 
-from physc.dsl.scenario import ScenarioIR, TermIR
 from physc.simulation.trace import Interaction, Trace
+
+
+class DeclaredTerm(Protocol):
+    """A declared interaction as the front end checked it (physc.dsl.scenario.TermIR): its
+    term, objects, the directions it may be realised in (narrowed), and its text."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def objects(self) -> tuple[str, ...]: ...
+    @property
+    def directions(self) -> tuple[str, ...]: ...
+    @property
+    def text(self) -> str: ...
+
+
+class Declared(Protocol):
+    """What a trace is held against: the declared sequence of a scenario (a
+    physc.dsl.scenario.ScenarioIR), in order."""
+
+    @property
+    def interactions(self) -> Sequence[DeclaredTerm]: ...
 
 
 @attrs.frozen
@@ -46,7 +73,7 @@ class Fidelity:
         return (self.matched, -len(self.violations), self.solved, round(self.progress, 3))
 
 
-def matches(declared: TermIR, found: Interaction) -> bool:
+def matches(declared: DeclaredTerm, found: Interaction) -> bool:
     if declared.name != found.name or tuple(declared.objects) != found.objects[: len(declared.objects)]:
         return False
     if declared.name == "fall" or not declared.directions:  # a fall names where it landed; destroy, touch have none
@@ -54,7 +81,7 @@ def matches(declared: TermIR, found: Interaction) -> bool:
     return found.direction in declared.directions
 
 
-def fidelity(scenario: ScenarioIR, trace: Trace) -> Fidelity:
+def fidelity(scenario: Declared, trace: Trace) -> Fidelity:
     matched, times = 0, []
     for found in trace.interactions:
         if matched < len(scenario.interactions) and matches(scenario.interactions[matched], found):
@@ -74,7 +101,7 @@ def fidelity(scenario: ScenarioIR, trace: Trace) -> Fidelity:
     )
 
 
-def _progress(declared: TermIR, trace: Trace, since: float) -> float:
+def _progress(declared: DeclaredTerm, trace: Trace, since: float) -> float:
     """How near the trace came to the interaction it did not realise, after `since`."""
     start = int(since / trace.dt)
     if declared.name == "destroy":

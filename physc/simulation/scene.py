@@ -3,8 +3,8 @@
 A domain that judges one action by simulation says what its level is as physics: the
 bodies (physc.backends.BodySpec), the kind of each (what its recogniser calls surfaces,
 background, thrown), the rolling radius of the round ones, the velocities the action
-gives, and which bodies the goal is about. `play` builds that in the backend the caller
-selected (physc.backends.current), runs the generic loop (physc.simulation.run) with the
+gives, and which bodies the goal is about. `play` builds that in the backend it is handed
+(the domain's: physc.domains.base.Domain.at), runs the generic loop (physc.simulation.run) with the
 domain's rules, and judges the trace: interactions recognised, restrictions checked.
 Angry Birds' game builds its worlds itself (its rules need the level's own objects);
 a domain written on physc.domains.simulated plays through here.
@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.backends import BodySpec, current
+from physc.backends import Backend, BodySpec
 from physc.backends.settings import EngineSettings
 from physc.simulation.recognise import Recogniser, violations
 from physc.simulation.run import RunRules, run
@@ -43,14 +43,14 @@ class Scene:
 
 
 def play(
-    scene: Scene, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
+    scene: Scene, backend: Backend, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
     resume=None,
 ) -> Trace:
-    """`scene` run for `seconds` at most under `rules`, in the selected backend (from the
+    """`scene` run for `seconds` at most under `rules`, in `backend` (from the
     snapshot `resume`, if given); with `recognise`, the interactions recognised and the
     restrictions (`redirects`: the declared bounces, see physc.simulation.recognise.violations)
     checked."""
-    world = current().create_world(scene.gravity, scene.engine)
+    world = backend.create_world(scene.gravity, scene.engine)
     for body in scene.bodies:
         world.add(body)
     for name, velocity in scene.velocities.items():

@@ -11,14 +11,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from physc.dsl.scenario import ScenarioIR
-from physc.simulation.fidelity import Fidelity
+from physc.simulation.fidelity import Declared, Fidelity
 from physc.simulation.trace import Trace
 
 STRIKE = 0.2  # s before a hit that count for how fast it struck
 
 
-def why_stopped(scenario: ScenarioIR, trace: Trace, fidelity: Fidelity) -> str:
+def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
     """What the trace shows about the first declared interaction it does not realise ("" when
     it realises them all, or shows nothing useful)."""
     k = fidelity.matched

@@ -8,8 +8,10 @@ import time
 import pytest
 
 from conftest import EXAMPLES, run_physc
+from middle_end import DOMAIN, paper_scenarios
 from physc import budget
-from physc.compiler.infeasible import readable
+from physc.compiler.infeasible import Exhausted, Infeasible, readable
+from physc.generation.pipeline import Pipeline
 
 SRF = EXAMPLES / "paper" / "13_SRF.phys"
 
@@ -35,6 +37,34 @@ def test_an_inner_deadline_cannot_outlast_the_outer(monkeypatch):
             now[0] = 3.0
             with pytest.raises(budget.OutOfTime, match="2 s"):
                 budget.check()
+
+
+def test_a_started_deadline_is_one_budget_for_every_block_that_keeps_it(monkeypatch):
+    now = [0.0]
+    monkeypatch.setattr(budget.time, "monotonic", lambda: now[0])
+    started = budget.Deadline(5.0)
+    now[0] = 4.0
+    with budget.deadline(started):  # entered late, it still ends at 5 s
+        budget.check()
+        now[0] = 5.1
+        with pytest.raises(budget.OutOfTime, match="5 s"):
+            budget.check()
+
+
+def test_a_run_owns_one_deadline_for_the_rest_of_it(monkeypatch):
+    run = Pipeline(DOMAIN, paper_scenarios()["R"], time_budget=5.0)
+    now = [50.0]  # the budget starts with the run's work, not when the pipeline is made
+    monkeypatch.setattr(budget.time, "monotonic", lambda: now[0])
+    with run.within_budget("layout"):
+        now[0] = 53.0
+        budget.check()
+    assert run.deadline.end == 55.0
+    with pytest.raises(Infeasible) as ran_out:
+        with run.within_budget("layout"):  # a second block (a picture, say) keeps the same deadline
+            now[0] = 55.5
+            budget.check()
+    error = ran_out.value
+    assert error.budget is Exhausted.TIME and error.stage == "layout" and error.message == "the time budget of 5 s ran out"
 
 
 def test_generation_stops_at_its_time_budget():

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from middle_end import DOMAIN, pipeline, scenario_from_text
-from physc.compiler.pipeline import Pipeline
+from physc.generation.pipeline import Pipeline
 
 
 def edges(name):

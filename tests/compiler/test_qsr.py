@@ -156,7 +156,7 @@ def test_dnf_size_is_exact_and_lazy():
 def test_astronomically_large_dnf_is_never_expanded():
     hits = " > ".join(f"hit(bird, pig{i}, any) > destroy(bird, pig{i})" for i in range(60))
     scenario = scenario_from_text(f"scenario MANY {{ interactions {{ {hits} }} }}")
-    from physc.compiler.pipeline import Pipeline
+    from physc.generation.pipeline import Pipeline
 
     dnf = Pipeline(DOMAIN, scenario, 0).qsr
     assert dnf.size == 8**60 * 3**60

@@ -93,11 +93,11 @@ def test_records_of_a_changed_scenario_or_time_budget_are_made_again(tmp_path):
 
 
 def test_records_made_by_other_code_are_made_again(tmp_path, monkeypatch):
-    from physc.evaluation import run as evaluation_run
+    from physc.generation import job as generation_job
 
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path).stderr.count("resuming: 1 of 1") == 1
-    monkeypatch.setattr(evaluation_run, "code_fingerprint", lambda domain, backends=(): "edited")
+    monkeypatch.setattr(generation_job, "code_fingerprint", lambda domain, backends=(): "edited")
     run = run_physc("eval", SF, "--tasks", "1", "--out", tmp_path)
     assert run.status == 0 and "resuming" not in run.stderr
     (record,) = records(tmp_path).values()

@@ -9,14 +9,26 @@ from physc.backends import installed_backends, load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot, Unreachable
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.rules import RULES, Rules
-from physc.domains.angrybirds.world import BIRD_COLLIDER_OFFSET, BIRD_REST, DRAG_RADIUS, GRAVITY, launch_point, reachable
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+
+LAUNCH, GRAVITY = PHYQ.launch, PHYQ.gravity
+BIRD_REST, BIRD_COLLIDER_OFFSET, DRAG_RADIUS = LAUNCH.bird_rest, LAUNCH.collider_offset, LAUNCH.drag_radius
+
+
+BOX2D = load_backend("box2d")
+
+def launch_point(angle, stretch=1.0):
+    return LAUNCH.point(angle, stretch)
+
+
+def reachable(x, y):
+    return PHYQ.reachable(x, y)
 
 PIG_ON_GROUND = LevelObject("Pig", "BasicSmall", 0.0, -3.5 + 0.236, 0.0, name="pig")
 
 
-def play(objects, shot, seconds=8.0, rules=RULES, **options):
-    return Game(Level(objects=tuple(objects)), rules=rules).play(shot, seconds, **options)
+def play(objects, shot, seconds=8.0, rules=PHYQ, **options):
+    return Game(Level(objects=tuple(objects)), rules, BOX2D).play(shot, seconds, **options)
 
 
 def test_bird_destroys_a_small_pig_on_the_ground():
@@ -29,7 +41,7 @@ def test_a_true_circle_hit_from_the_left_rolls_right_where_the_games_circle_hops
     platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
     circle = LevelObject("Block", "Circle", -1.5, -1.0 + 0.16 + 0.385, 0.0, "wood", name="circle")
     shot = Shot(target=(-1.5, -0.46))
-    trace = play([platform, circle], shot, rules=Rules(colliders="round"))  # physc's earlier model
+    trace = play([platform, circle], shot, rules=catalogue_model("round"))  # physc's earlier model
     texts = [i.text() for i in trace.interactions]
     assert texts[:2] == ["hit(bird, circle, left)", "roll(circle, platform, right)"]
     x = trace.states[:, trace.index("circle"), 0]
@@ -71,14 +83,14 @@ def test_same_level_same_trace():
 def test_objects_leaving_the_level_are_destroyed():
     ramp = LevelObject("Platform", "Platform", 15.5, -2.0, -15.0, scale_x=6 / 0.64, scale_y=0.5, name="ramp")
     circle = LevelObject("Block", "Circle", 13.2, -0.6, 0.0, "wood", name="circle")
-    trace = Game(Level(objects=(ramp, circle))).simulate(None, seconds=8.0)
+    trace = Game(Level(objects=(ramp, circle)), PHYQ, BOX2D).simulate(None, seconds=8.0)
     (gone,) = trace.destructions
     assert (gone.name, gone.cause) == ("circle", "out of world")
     assert not trace.solved  # no pigs: nothing to solve
 
 
 def test_damage_formula_and_invulnerability():
-    game = Game(Level(objects=(PIG_ON_GROUND,)))
+    game = Game(Level(objects=(PIG_ON_GROUND,)), PHYQ, BOX2D)
     world = game.build()
     from physc.simulation.trace import ContactRecord
 
@@ -91,20 +103,20 @@ def test_damage_formula_and_invulnerability():
     assert record.by == "ground"
     # The level's first 2 s are invulnerable when nothing is shot.
     block = LevelObject("Block", "SquareHole", 0.0, 3.0, 0.0, "stone", name="block")
-    early = Game(Level(objects=(PIG_ON_GROUND, LevelObject("Block", "SquareHole", 0.0, -2.0, 0.0, "stone", name="block")))).simulate(None, 3.0)
+    early = Game(Level(objects=(PIG_ON_GROUND, LevelObject("Block", "SquareHole", 0.0, -2.0, 0.0, "stone", name="block"))), PHYQ, BOX2D).simulate(None, 3.0)
     assert not early.destructions
     del block
 
 
 def test_launch_model():
     shot = Shot(target=(0.0, -3.0))
-    low, high = shot.release_angle(), Shot(target=(0.0, -3.0), trajectory="high").release_angle()
+    low, high = shot.release_angle(PHYQ), Shot(target=(0.0, -3.0), trajectory="high").release_angle(PHYQ)
     assert 0 < low < 45 < high < 90
-    vx, vy = shot.velocity()
+    vx, vy = shot.velocity(PHYQ)
     assert np.hypot(vx, vy) == pytest.approx(10.0)
     # The game launches the bird where it was dragged to: the rest point pulled back a drag
     # radius along the shot, plus its collider's offset (ABBird.LaunchBird, BirdRed.prefab).
-    x0, y0 = shot.origin()
+    x0, y0 = shot.origin(PHYQ)
     theta = np.radians(low)
     assert (x0, y0) == pytest.approx((BIRD_REST[0] - DRAG_RADIUS * np.cos(theta) + BIRD_COLLIDER_OFFSET[0], BIRD_REST[1] - DRAG_RADIUS * np.sin(theta) + BIRD_COLLIDER_OFFSET[1]))
     assert launch_point(45.0) == pytest.approx((-12.15 - 0.7071 + 0.05, -1.7 - 0.7071 - 0.03), abs=1e-4)
@@ -113,12 +125,12 @@ def test_launch_model():
     assert y0 + vy * t - GRAVITY * t * t / 2 == pytest.approx(-3.0, abs=1e-9)
     assert not reachable(15.0, 5.0)
     with pytest.raises(Unreachable):
-        Shot(target=(15.0, 5.0)).release_angle()
-    assert RULES.gravity == pytest.approx(9.81 * 0.48)
+        Shot(target=(15.0, 5.0)).release_angle(PHYQ)
+    assert PHYQ.gravity == pytest.approx(9.81 * 0.48)
 
 
 def test_the_bird_is_launched_from_the_dragged_to_point_in_the_world():
-    game = Game(Level(objects=()))
+    game = Game(Level(objects=()), PHYQ, BOX2D)
     world = game.build()
     shot = Shot(angle=30.0)
     game.launch(world, shot)
@@ -145,7 +157,7 @@ def test_batched_states_match_one_by_one_reads_awake_asleep_and_gone():
     world.set_velocity("ball3", 2.0, 0.0)
     asleep = set()
     for step in range(400):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
         if step == 250:
             world.remove("ball1")
         rows = world.states(["ball3", *names])
@@ -175,7 +187,7 @@ def test_direct_steps_equal_pymunks_own_steps():
         world.set_velocity("box0", 6.0, 1.0)
         rows, contacts = [], []
         for step in range(300):
-            world.space.step(RULES.dt) if own_steps else world.step(RULES.dt)
+            world.space.step(PHYQ.engine.dt) if own_steps else world.step(PHYQ.engine.dt)
             if step == 120:
                 world.remove("box2")
             if step == 150:

@@ -15,8 +15,15 @@ from physc.domains.angrybirds.catalogue import MATERIAL
 from physc.domains.angrybirds.game import BIRD, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.rules import RULES, SCIENCE_BIRDS_ENGINE, Rules
-from physc.domains.angrybirds.world import GROUND_TOP
+import attrs
+
+from physc.domains.angrybirds.rules import Rules
+from physc.domains.angrybirds.worlds import PHYQ, SCIENCE_BIRDS_ENGINE
+
+BOX2D = load_backend("box2d")
+
+GROUND_TOP = PHYQ.frame.ground_top
+RULES, MODEL = PHYQ.rules, PHYQ.bodies
 from physc.simulation.trace import ContactRecord
 
 PIG = LevelObject("Pig", "BasicSmall", 0.0, GROUND_TOP + 0.236, 0.0, name="pig")
@@ -27,7 +34,7 @@ def test_the_engine_settings_are_unitys_physics2d_and_time_settings():
     assert (e.dt, e.velocity_iterations, e.position_iterations) == (0.02, 100, 100)
     assert (e.restitution_threshold, e.contact_offset, e.time_to_sleep, e.linear_sleep_tolerance) == (1.0, 0.01, 0.5, 0.01)
     assert e.angular_sleep_tolerance == pytest.approx(math.radians(2)) and e.max_translation == pytest.approx(2.0)
-    assert RULES.engine is e and RULES.dt == 0.02
+    assert PHYQ.engine is e and PHYQ.engine.dt == 0.02
 
 
 def test_masses_follow_the_first_collider_rule_and_equal_the_saved_auto_masses():
@@ -37,11 +44,11 @@ def test_masses_follow_the_first_collider_rule_and_equal_the_saved_auto_masses()
     # The density lands on the disabled circle: a Circle weighs the same in any material,
     # a pig its polygon's area (not twice it).
     assert prefabs.body_mass("Circle", MATERIAL["stone"].density) == prefabs.body_mass("Circle", MATERIAL["wood"].density)
-    assert prefabs.body_mass("BasicSmall", RULES.pig_density) == pytest.approx(0.1508, abs=1e-4)
+    assert prefabs.body_mass("BasicSmall", MODEL.pig_density) == pytest.approx(0.1508, abs=1e-4)
     # SquareHole: its box takes the material's density, its holed polygon keeps 1.
     box = 0.7636**2
     assert prefabs.body_mass("SquareHole", 1.5) == pytest.approx(box * 1.5 + (saved["SquareHole"] - box), rel=1e-5)
-    game = Game(Level(objects=(LevelObject("Block", "Circle", 0.0, 0.0, 0.0, "stone", name="c"), PIG)))
+    game = Game(Level(objects=(LevelObject("Block", "Circle", 0.0, 0.0, 0.0, "stone", name="c"), PIG)), PHYQ, BOX2D)
     world = game.build()
     assert world.mass("c") == pytest.approx(0.4277, abs=1e-3) and world.mass("pig") == pytest.approx(0.1508, abs=1e-3)
 
@@ -58,7 +65,7 @@ def test_the_games_colliders_are_its_polygons_with_holes_and_flat_feet():
 
 def test_a_pig_struck_by_the_bird_takes_the_half_formula_and_a_block_the_full_one():
     block = LevelObject("Block", "SquareSmall", 3.0, GROUND_TOP + 0.2, 0.0, "wood", name="block")
-    game = Game(Level(objects=(PIG, block)))
+    game = Game(Level(objects=(PIG, block)), PHYQ, BOX2D)
     world = game.build()
     game.launch(world, Shot(angle=10.0))
     game.kinds[BIRD] = "bird"
@@ -76,7 +83,7 @@ def test_tnt_falls_off_with_distance_and_spares_birds():
     tnt = LevelObject("TNT", "TNT", 0.0, GROUND_TOP + 0.33, 0.0, name="tnt")
     near = LevelObject("Block", "SquareSmall", 1.0, GROUND_TOP + 0.2, 0.0, "stone", name="near")
     far = LevelObject("Block", "SquareSmall", 2.0, GROUND_TOP + 0.2, 0.0, "stone", name="far")
-    game = Game(Level(objects=(tnt, near, far)))
+    game = Game(Level(objects=(tnt, near, far)), PHYQ, BOX2D)
     world = game.build()
     game.launch(world, Shot(angle=80.0))
     game.kinds[BIRD] = "bird"
@@ -88,24 +95,24 @@ def test_tnt_falls_off_with_distance_and_spares_birds():
     assert by["far"] < by["near"] and BIRD not in by
     assert world.state(BIRD)[3:5] == pytest.approx((10 * math.cos(math.radians(80)), 10 * math.sin(math.radians(80))), abs=1e-5)
     # TNT's own body: no material (0.4), angular drag 0.05, 0.64² × 1.
-    assert (RULES.tnt_friction, RULES.tnt_angular_drag) == (0.4, 0.05)
+    assert (MODEL.tnt_friction, MODEL.tnt_angular_drag) == (0.4, 0.05)
     assert world.mass("tnt") == pytest.approx(0.64**2)
 
 
 def test_the_bird_is_checked_three_seconds_after_its_first_collision_then_every_second():
     # A bird shot down into the ground by the slingshot comes to rest there.
-    trace = Game(Level(objects=())).simulate(Shot(angle=-45.0), 20.0, stop_at_rest=False)
+    trace = Game(Level(objects=()), PHYQ, BOX2D).simulate(Shot(angle=-45.0), 20.0, stop_at_rest=False)
     first = min(c.time for c in trace.contacts if BIRD in (c.a, c.b))
     (gone,) = [d for d in trace.destructions if d.name == BIRD]
     after = gone.time - first
     assert gone.cause == "removed" and after >= 3.0 - 1e-9
     assert abs((after - 3.0) - round(after - 3.0)) < 0.021  # at a whole second's check
-    still = Game(Level(objects=()), rules=Rules(bird_lifetime=2.0)).simulate(Shot(angle=45.0), 5.0, stop_at_rest=False)
+    still = Game(Level(objects=()), attrs.evolve(PHYQ, rules=Rules(bird_lifetime=2.0)), BOX2D).simulate(Shot(angle=45.0), 5.0, stop_at_rest=False)
     assert [d.time for d in still.destructions if d.name == BIRD] == [pytest.approx(2.0)]
 
 
 def test_birds_and_pigs_collide_continuously_and_blocks_do_not():
-    game = Game(Level(objects=(PIG, LevelObject("Block", "SquareSmall", 3.0, GROUND_TOP + 0.2, 0.0, "wood", name="block"))), load_backend("box2d"))
+    game = Game(Level(objects=(PIG, LevelObject("Block", "SquareSmall", 3.0, GROUND_TOP + 0.2, 0.0, "wood", name="block"))), PHYQ, load_backend("box2d"))
     world = game.build()
     game.launch(world, Shot(angle=20.0))
     assert world.bodies[BIRD].bullet and world.bodies["pig"].bullet and not world.bodies["block"].bullet

@@ -29,7 +29,6 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
-from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
 from physc.domains.base import STAGE_NEEDS, Domain, MissingCapability, missing
@@ -37,11 +36,14 @@ from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_source
+from physc.generation.pipeline import Pipeline
 from physc.simulation.fidelity import fidelity
 from physc.simulation.recognise import Recogniser, approach, side, violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.stability import stable
+from physc.backends.settings import EngineSettings
 from physc.simulation.trace import Interaction, Trace
+from physc.worlds import Incline, World
 
 # ---- the domain ---------------------------------------------------------------------------
 SIDES = ("left", "right", "above", "below")
@@ -56,6 +58,12 @@ STANDS = 0.05
 RECOGNISER = Recogniser(
     hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2,
     fall_height=0.4, bounce_time=0.2, bounce_speed=1.0, surfaces=("ground", "pad"), background=("ground",), thrown=("ball",),
+)
+
+# The one world this domain simulates (physc.worlds): Box2D's own engine settings, at this step.
+WORLD = World(
+    name="flat", description="flat ground, gravity 9.8", engine=EngineSettings(dt=DT), gravity=GRAVITY, recogniser=RECOGNISER,
+    incline=Incline(descending=(0.0, 0.0), other=(0.0, 0.0)),
 )
 
 VOCABULARY = Vocabulary(
@@ -190,6 +198,7 @@ class Minimal(SimulatedDomain):
     name = "minimal"
     description = "a ball pushed on flat ground, a box, goal pads a box must touch (physc's test domain)"
     vocabulary = VOCABULARY
+    worlds = (WORLD,)
     layout_rules = LayoutRules()
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=0.0, right=8.0, bottom=0.0, top=HEIGHT)
     seconds = SECONDS

@@ -73,7 +73,7 @@ def test_domains_come_from_entry_points():
 def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(marbles_domain):
     domain = domains.load_domain("marbles")
     assert isinstance(domain, Domain)
-    assert missing(domain, STAGE_NEEDS["level"] + ("picture", "replay", "stability")) == CAPABILITIES
+    assert missing(domain, STAGE_NEEDS["level"] + ("picture", "replay", "stability", "read_level", "draw")) == CAPABILITIES
     assert domain.reach_targets(None) == [] and domain.reachable(-1e6, 1e6) and domain.robustness_replays is None
     with pytest.raises(MissingCapability, match="the domain 'marbles' cannot .* it has no picture"):
         domain.picture(None)

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+from physc.backends import load_backend
+
 import pytest
 
 from conftest import GENERATED, TEMPLATES
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level_xml import read_level
-from physc.domains.angrybirds.rules import Rules
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 from physc.simulation.stability import largest_shift
 
 # Templates that do not stand in the default engine (Box2D at the game's settings), by collider
@@ -17,8 +19,10 @@ PHYQ_CIRCLES = {"3_5_1_1", "3_5_2_1", "3_7_5_1"}  # regular polygons and ellipse
 ROLL_OFF_ROUND = PHYQ_CIRCLES | {"3_5_5_1", "3_6_7_1", "3_7_4_1", "3_8_1_1", "3_8_2_1"}  # rest on flat-footed circles
 
 
+BOX2D = load_backend("box2d")
+
 def moved(path, colliders):
-    trace = Game(read_level(path.read_bytes()), rules=Rules(colliders=colliders)).simulate(None, 10.0, stop_at_rest=False)
+    trace = Game(read_level(path.read_bytes()), catalogue_model(colliders), BOX2D).simulate(None, 10.0, stop_at_rest=False)
     return largest_shift(trace), trace.destructions
 
 

@@ -7,6 +7,7 @@ import re
 import pytest
 
 from conftest import EXAMPLES
+from physc.domains.words import INSTALLED
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_text
 from physc.suggest import article
@@ -15,7 +16,7 @@ from physc.suggest import article
 def check(text: str):
     parsed = parse_text(text)
     assert parsed.diagnostics == ()
-    return check_file(parsed.file)
+    return check_file(parsed.file, vocabularies=INSTALLED)
 
 
 def ir(text: str):
@@ -30,7 +31,7 @@ def codes(text: str):
 
 def test_all_paper_scenarios_check_cleanly():
     parsed = parse_text((EXAMPLES / "paper" / "all.paper.phys").read_text(encoding="utf-8"))
-    result = check_file(parsed.file)
+    result = check_file(parsed.file, vocabularies=INSTALLED)
     assert result.diagnostics == ()
     assert len(result.scenarios) == 16
 

@@ -30,6 +30,7 @@ from conftest import EXAMPLES, GOLDEN, ROOT, run_physc
 from physc import error_codes
 from physc.diagnostics import exit_status, render, to_json
 from physc.domains.angrybirds.level_xml import LevelError, read_level
+from physc.domains.words import INSTALLED
 from physc.dsl.check import check_file
 from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
@@ -71,7 +72,7 @@ PAPER = EXAMPLES / "paper" / "04_R.phys"
 def check_phys(text: str) -> None:
     """Parse and check `text`; every diagnostic must be well-formed and safe to print."""
     parsed = parse_text(text, "fuzz.phys")
-    checked = check_file(parsed.file, "fuzz.phys")
+    checked = check_file(parsed.file, "fuzz.phys", INSTALLED)
     found = parsed.diagnostics + checked.diagnostics
     for diagnostic in found:
         error_codes.lookup(diagnostic.code)

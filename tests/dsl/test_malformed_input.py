@@ -8,6 +8,7 @@ import os
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from physc.domains.words import INSTALLED
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_text
 
@@ -89,7 +90,7 @@ def test_standard_input(physc, monkeypatch):
 @given(st.text(max_size=200))
 def test_random_text_never_raises(text):
     result = parse_text(text)
-    check_file(result.file)
+    check_file(result.file, vocabularies=INSTALLED)
 
 
 PIECES = ["scenario", "X", "{", "}", "(", ")", "[", "]", ",", ">", "|", "∨", "∧", "=", ":", "and", "or",
@@ -101,7 +102,7 @@ PIECES = ["scenario", "X", "{", "}", "(", ")", "[", "]", ",", ">", "|", "∨", "
 @given(st.lists(st.sampled_from(PIECES), max_size=40))
 def test_random_token_soup_never_raises(pieces):
     result = parse_text(" ".join(pieces))
-    checked = check_file(result.file)
+    checked = check_file(result.file, vocabularies=INSTALLED)
     for diagnostic in result.diagnostics + checked.diagnostics:
         assert diagnostic.span is not None and diagnostic.code
 

@@ -4,24 +4,24 @@ the most robust fragile one is used (and only one that passes at least K)."""
 from __future__ import annotations
 
 import json
+from unittest import mock
 
 import pytest
 
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
 from physc.compiler.infeasible import Infeasible
-from physc.compiler.pipeline import Pipeline
 from physc.compiler.task import MIN_ROBUSTNESS
+from physc.generation import search
 from physc.generation.layout_loop import FALLBACKS
 from physc.generation.outcome import Outcome, Parts
+from physc.generation.pipeline import Pipeline
 
 
 class Scripted:
-    """The angrybirds domain, but satisfaction follows a script: layout i (in order of
-    placement) is given up with `nearest[i]` replays passed, and a second try of layout i
-    succeeds, passing works[i] replays, when `accept` is at most that."""
-
-    searched = False  # its own `satisfy`, not physc's search
+    """The search, following a script (the angrybirds domain places the layouts): layout i
+    (in order of placement) is given up with `nearest[i]` replays passed, and a second try
+    of layout i succeeds, passing works[i] replays, when `accept` is at most that."""
 
     def __init__(self, nearest, works=None):
         self.nearest = nearest
@@ -29,10 +29,7 @@ class Scripted:
         self.order = {}
         self.calls = []
 
-    def __getattr__(self, name):
-        return getattr(DOMAIN, name)
-
-    def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+    def satisfy(self, domain, scenario, layout, rng, validate=True, accept=None, acceptance=True):
         index = self.order.setdefault(id(layout), len(self.order))
         self.calls.append((index, accept))
         if accept is None:
@@ -43,29 +40,30 @@ class Scripted:
         return Outcome(False, 1)
 
 
-def generate(domain, min_robustness, layouts=5):
-    return Pipeline(domain, paper_scenarios()["R"], 0, validate=False, layout_budget=layouts, min_robustness=min_robustness).task
+def generate(script, min_robustness, layouts=5):
+    with mock.patch.object(search, "satisfy", script.satisfy):
+        return Pipeline(DOMAIN, paper_scenarios()["R"], 0, validate=False, layout_budget=layouts, min_robustness=min_robustness).task
 
 
 def test_the_most_robust_fragile_layout_is_tried_first():
-    domain = Scripted([3, 5, 0, 5, 4], works={1: 5, 3: 5})
-    task = generate(domain, 4)
+    script = Scripted([3, 5, 0, 5, 4], works={1: 5, 3: 5})
+    task = generate(script, 4)
     assert task.robustness == (5, 6)
-    assert domain.calls[5:] == [(1, 4)]  # the first of the two that passed 5, accepting 4
+    assert script.calls[5:] == [(1, 4)]  # the first of the two that passed 5, accepting 4
 
 
 def test_fallbacks_go_on_when_a_second_try_fails():
-    domain = Scripted([4, 5, 0, 5, 4], works={0: 4})
-    task = generate(domain, 4)
+    script = Scripted([4, 5, 0, 5, 4], works={0: 4})
+    task = generate(script, 4)
     assert task.robustness == (4, 6)
-    assert domain.calls[5:] == [(1, 4), (3, 4), (0, 4)]  # most robust first, then in order of placement
+    assert script.calls[5:] == [(1, 4), (3, 4), (0, 4)]  # most robust first, then in order of placement
 
 
 def test_at_most_so_many_second_tries():
-    domain = Scripted([4] * (FALLBACKS + 2), works={FALLBACKS: 4})
+    script = Scripted([4] * (FALLBACKS + 2), works={FALLBACKS: 4})
     with pytest.raises(Infeasible):
-        generate(domain, 4, layouts=FALLBACKS + 2)
-    assert [index for index, accept in domain.calls if accept] == list(range(FALLBACKS))
+        generate(script, 4, layouts=FALLBACKS + 2)
+    assert [index for index, accept in script.calls if accept] == list(range(FALLBACKS))
 
 
 def test_nothing_below_the_floor_and_nothing_when_all_replays_are_asked_for():
@@ -106,7 +104,7 @@ def test_a_fragile_chain_compiles_as_a_fallback(tmp_path):
 
 def test_the_task_counts_why_layouts_were_given_up():
     class Reasons(Scripted):
-        def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+        def satisfy(self, domain, scenario, layout, rng, validate=True, accept=None, acceptance=True):
             index = len(self.calls)
             self.calls.append(accept)
             if index == 3:
@@ -121,7 +119,7 @@ def test_the_task_counts_why_layouts_were_given_up():
 
 def test_a_failure_names_the_reasons_most_frequent_first():
     class Reasons(Scripted):
-        def satisfy(self, scenario, layout, rng, validate=True, accept=None):
+        def satisfy(self, domain, scenario, layout, rng, validate=True, accept=None, acceptance=True):
             self.calls.append(accept)
             return Outcome(False, 1, given_up="not realised" if len(self.calls) % 2 == 0 else "broken")
 

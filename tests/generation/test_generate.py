@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from physc.backends import load_backend
+
 import json
 
 import attrs
@@ -9,13 +11,13 @@ import pytest
 
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
-from physc.compiler.pipeline import Pipeline
+from physc.generation.pipeline import Pipeline
 from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.level_xml import read_level
-from physc.domains.angrybirds.stability import stability
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 
 # A fixed seed per scenario that generation handles today in the game's physics (docs/results.md
 # has the rates of all 16): seed 0 of the 2- and 4-interaction scenarios but R. A scenario with a
@@ -24,6 +26,8 @@ from physc.domains.angrybirds.stability import stability
 # too long for a test: the evaluation measures them.
 GENERATED = {"SF": 0, "SFTB": 0, "SFLB": 0, "S": 0, "B": 0, "F": 0}
 
+
+BOX2D = load_backend("box2d")
 
 @pytest.mark.parametrize("name", GENERATED)
 def test_paper_scenario_compiles_and_validates(name):
@@ -39,18 +43,18 @@ def test_paper_scenario_compiles_and_validates(name):
     assert {type(n) for n in numbers} <= {float, type(None)}  # as the model says: no numpy scalars
     shot = Shot(target=tuple(task.solution.target), trajectory=task.solution.trajectory)
     redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"}
-    trace = Game(level).play(shot, 9.0, restrictions=scenario.restrictions, redirects=redirects)
+    trace = Game(level, PHYQ, BOX2D).play(shot, 9.0, restrictions=scenario.restrictions, redirects=redirects)
     result = fidelity(scenario, trace)
     assert result.valid, (result, trace.sequence())
-    assert stability(level)[0]  # left alone, it stands
+    assert DOMAIN.stability(level)[0]  # left alone, it stands
 
 
 def test_stability_sees_a_rolling_circle():
     task = Pipeline(DOMAIN, paper_scenarios()["SF"], seed=0).task
-    assert stability(task.level)[0]
+    assert DOMAIN.stability(task.level)[0]
     ramp = LevelObject("Platform", "Platform", 6.0, -1.0, 20.0, scale_x=4.0, scale_y=0.5, name="ramp")
     ball = LevelObject("Block", "Circle", 6.0, -0.4, 0.0, "wood", name="ball")
-    stable, shift = stability(attrs.evolve(task.level, objects=task.level.objects + (ramp, ball)))
+    stable, shift = DOMAIN.stability(attrs.evolve(task.level, objects=task.level.objects + (ramp, ball)))
     assert not stable and shift > 0.05
 
 

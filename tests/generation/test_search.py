@@ -12,10 +12,10 @@ from pathlib import Path
 import attrs
 import pytest
 
-from physc.compiler.pipeline import Pipeline
 from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 from physc.generation import choosing, guards
+from physc.generation.pipeline import Pipeline
 from physc.generation.search import Node, Search
 from physc.generation.settings import SearchSettings
 from physc.generation.stages import Stage, prefix, stages

@@ -103,7 +103,7 @@ def test_the_extension_carries_physcs_license():
 def test_the_lexers_guess_is_linear_on_long_calls():
     """analyse_text runs on any text a Pygments user guesses: a call with many arguments over
     many lines must not make its patterns backtrack (it did, exponentially, before)."""
-    from physc.dsl.pygments_lexer import PhysLexer
+    from physc.lsp.pygments_lexer import PhysLexer
 
     call = "result = compute(" + ",\n   ".join(f"arg{i}" for i in range(40)) + "\n"
     assert PhysLexer.analyse_text(call) == 0.0

@@ -13,14 +13,14 @@ import pytest
 from physc.backends import BackendError, BodySpec, Circle, Compound, Polygon, installed_backends, load_backend
 from physc.backends.convex import convex_parts, hull, is_convex, signed_area
 from physc.backends.settings import EngineSettings
-from physc.domains.angrybirds.rules import RULES, SCIENCE_BIRDS_ENGINE
+from physc.domains.angrybirds.worlds import PHYQ, SCIENCE_BIRDS_ENGINE
 
 BOX2D = load_backend("box2d")
 FLOOR = Polygon(((-5, -0.5), (5, -0.5), (5, 0.5), (-5, 0.5)))
 BOX = Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2)))
 
 
-def world(settings: EngineSettings = SCIENCE_BIRDS_ENGINE, gravity: float = RULES.gravity):
+def world(settings: EngineSettings = SCIENCE_BIRDS_ENGINE, gravity: float = PHYQ.gravity):
     made = BOX2D.create_world(gravity, settings)
     made.add(BodySpec("floor", FLOOR, 0.0, -0.5, static=True))
     return made
@@ -32,7 +32,7 @@ def drop(height: float, bounciness: float) -> float:
     w.add(BodySpec("box", BOX, 0.0, 0.2 + 0.01 + height, bounciness=bounciness))
     landed, peak = False, 0.0
     for _ in range(200):
-        w.step(RULES.dt)
+        w.step(PHYQ.engine.dt)
         y, vy = w.state("box")[1], w.state("box")[4]
         landed = landed or bool(w.touching("box"))
         if landed and vy > 0:
@@ -75,11 +75,11 @@ def test_contacts_begin_with_the_speed_before_the_impact_and_end_when_a_body_goe
     w.add(BodySpec("box", BOX, 0.0, 1.21, bounciness=0.5))
     begun = []
     for step in range(100):
-        w.step(RULES.dt)
+        w.step(PHYQ.engine.dt)
         begun += [(step, e) for e in w.begun()]
     first = begun[0][1]
     assert {first.a, first.b} == {"box", "floor"}
-    assert abs(first.relative_velocity[1]) == pytest.approx(math.sqrt(2 * RULES.gravity * 1.0), rel=0.05)
+    assert abs(first.relative_velocity[1]) == pytest.approx(math.sqrt(2 * PHYQ.gravity * 1.0), rel=0.05)
     w.ended()
     assert "floor" in w.touching("box")
     w.remove("box")
@@ -92,7 +92,7 @@ def test_the_same_bodies_and_steps_give_the_same_run_byte_for_byte():
         w = world()
         for k in range(6):
             w.add(BodySpec(f"b{k}", BOX, 0.3 * k - 0.8, 0.21 + 0.45 * k, angle=0.1 * k, friction=0.6))
-        rows = [w.states([f"b{k}" for k in range(6)]).copy() for _ in range(150) if w.step(RULES.dt) is None]
+        rows = [w.states([f"b{k}" for k in range(6)]).copy() for _ in range(150) if w.step(PHYQ.engine.dt) is None]
         return np.array(rows)
 
     assert run().tobytes() == run().tobytes()
@@ -102,12 +102,12 @@ def test_a_sleeping_bodys_row_is_its_last_and_a_velocity_wakes_it():
     w = world()
     w.add(BodySpec("box", BOX, 0.0, 0.21))
     for _ in range(60):
-        w.step(RULES.dt)
+        w.step(PHYQ.engine.dt)
     assert not w.bodies["box"].awake
     assert tuple(w.states(["box", "gone"])[0]) == w.state("box")
     assert np.isnan(w.states(["box", "gone"])[1]).all()
     w.set_velocity("box", 1.0, 0.0)
-    w.step(RULES.dt)
+    w.step(PHYQ.engine.dt)
     assert w.states(["box"])[0][3] > 0.5
 
 
@@ -122,7 +122,7 @@ def test_a_concave_polygon_with_a_hole_collides_as_its_convex_parts_and_weighs_i
     assert w.mass("notched") == pytest.approx(2.0 * (signed_area(outline) - 0.18))
     w.add(BodySpec("pellet", Circle(0.1), 0.0, 3.0))
     for _ in range(150):
-        w.step(RULES.dt)
+        w.step(PHYQ.engine.dt)
     assert w.state("pellet")[1] < 1.02 + 0.2 + 0.1 + 0.05  # it fell into the notch, below its rim
 
 
@@ -144,7 +144,7 @@ def test_a_continuous_body_does_not_pass_through_a_thin_moving_one():
         w.set_velocity("shot", 90.0, 0.0)
         w.set_velocity("wall", -0.01, 0.0)  # a dynamic body, awake
         for _ in range(5):
-            w.step(RULES.dt)
+            w.step(PHYQ.engine.dt)
         return w.state("shot")[0] > w.state("wall")[0]  # it went through, not along with the wall
 
     assert passes(False) and not passes(True)

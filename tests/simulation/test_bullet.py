@@ -10,12 +10,15 @@ import numpy as np
 import pybullet
 import pytest
 
-from physc.backends import BodySpec, Polygon, current, load_backend, selected
+from physc.backends import BodySpec, Polygon, load_backend
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.rules import RULES
-from physc.domains.angrybirds.world import GROUND_TOP
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+
+BOX2D = load_backend("box2d")
+
+GROUND_TOP = PHYQ.frame.ground_top
 
 BULLET = load_backend("bullet")
 SQUARE = 0.3772  # SquareSmall
@@ -35,14 +38,14 @@ def towers() -> Level:
 
 
 def run_steps(backend, level: Level, shot: Shot | None, steps: int, check=None):
-    game = Game(level, backend)
+    game = Game(level, PHYQ, backend)
     world = game.build()
     if shot is not None:
         game.launch(world, shot)
     names = [n for n in world.names if n in game.kinds and game.kinds[n] not in ("platform", "ground")]
     rows, events = [], []
     for step in range(steps):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
         events += [(step, e.a, e.b, e.point, e.relative_velocity) for e in world.begun()]
         events += [(step, a, b) for a, b in world.ended()]
         rows.append(world.states(names).copy())
@@ -75,46 +78,46 @@ def test_the_same_level_and_shot_give_the_same_run_byte_for_byte():
     second = run_steps(BULLET, towers(), Shot(target=(-2.0, -3.0)), 300)
     assert first[0].tobytes() == second[0].tobytes()
     assert first[1] == second[1] and first[1]
-    trace = Game(towers(), BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
-    again = Game(towers(), BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
+    trace = Game(towers(), PHYQ, BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
+    again = Game(towers(), PHYQ, BULLET).play(Shot(target=(-2.0, -3.0)), 6.0)
     assert trace.states.tobytes() == again.states.tobytes() and trace.sequence() == again.sequence()
 
 
 def test_a_fall_and_a_flight_take_as_long_and_go_as_far_as_in_pymunk():
     def landing(backend, level, shot, name):
-        game = Game(level, backend)
+        game = Game(level, PHYQ, backend)
         world = game.build()
         if shot is not None:
             game.launch(world, shot)
         for step in range(500):
-            world.step(RULES.dt)
+            world.step(PHYQ.engine.dt)
             for event in world.begun():
                 if {event.a, event.b} == {name, GROUND}:
-                    return (step + 1) * RULES.dt, world.state(name)[0]
+                    return (step + 1) * PHYQ.engine.dt, world.state(name)[0]
             world.ended()
         raise AssertionError("never landed")
 
     dropped = Level(objects=(LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + SQUARE / 2 + 3.0, 0.0, "wood", name="square"),))
     fall = {b: landing(load_backend(b), dropped, None, "square")[0] for b in ("pymunk", "bullet")}
     assert fall["bullet"] == pytest.approx(fall["pymunk"], abs=0.021)
-    assert fall["bullet"] == pytest.approx(math.sqrt(2 * 3.0 / RULES.gravity), abs=0.03)
+    assert fall["bullet"] == pytest.approx(math.sqrt(2 * 3.0 / PHYQ.gravity), abs=0.03)
     for angle in (30, 45, 60):
         x = {b: landing(load_backend(b), Level(objects=()), Shot(angle=angle), BIRD)[1] for b in ("pymunk", "bullet")}
         assert x["bullet"] == pytest.approx(x["pymunk"], abs=0.15), angle
 
 
 def test_contacts_begin_with_the_speed_before_the_collision_and_end():
-    world = BULLET.create_world(RULES.gravity)
+    world = BULLET.create_world(PHYQ.gravity)
     world.add(BodySpec("floor", Polygon(((-5, -0.5), (5, -0.5), (5, 0.5), (-5, 0.5))), 0.0, -0.5, static=True))
     world.add(BodySpec("box", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 0.0, 1.23, bounciness=0.5))
     begun, ended = [], []
     for step in range(150):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
         begun += [(step, e) for e in world.begun()]
         ended += [(step, pair) for pair in world.ended()]
     first = begun[0][1]
     assert {first.a, first.b} == {"box", "floor"}
-    speed = math.sqrt(2 * RULES.gravity * 1.0)  # a fall of 1 unit
+    speed = math.sqrt(2 * PHYQ.gravity * 1.0)  # a fall of 1 unit
     assert abs(first.relative_velocity[1]) == pytest.approx(speed, rel=0.05)
     assert ended and ended[0][0] > begun[0][0]  # it bounced off (bounciness 0.5 against the static world)
     assert "floor" in world.touching("box")  # and came to rest on the floor at last
@@ -142,12 +145,14 @@ def test_a_bird_striking_a_block_bounces_as_in_pymunk():
     assert speeds["bullet"] == pytest.approx(speeds["pymunk"], rel=0.15)
 
 
-def test_the_backend_a_caller_selects_is_the_one_the_game_uses():
-    assert current().name == "box2d"  # the default: the game's own engine
-    with selected("bullet"):
-        assert current().name == "bullet"
-        assert Game(towers()).backend.name == "bullet"
-    assert current().name == "box2d"
+def test_the_backend_a_caller_binds_is_the_one_the_game_uses():
+    from physc.domains import load_domain
+
+    domain = load_domain("angrybirds")
+    assert domain.backend.name == "box2d"  # the default: the game's own engine
+    there = domain.at(backend="bullet")
+    assert there.backend.name == "bullet" and there.game(towers()).backend.name == "bullet"
+    assert domain.backend.name == "box2d"  # binding makes a copy
 
 
 def test_pybullet_missing_is_a_clear_usage_error(monkeypatch):
@@ -180,34 +185,34 @@ def test_an_off_centre_polygon_has_its_mass_at_its_centroid():
 
 def test_a_body_set_moving_after_resting_moves_and_a_heavier_gravity_does_not_spin_it():
     box = LevelObject("Block", "SquareSmall", 0.0, GROUND_TOP + SQUARE / 2, 0.0, "wood", name="box")
-    world = Game(Level(objects=(box,)), BULLET).build()
+    world = Game(Level(objects=(box,)), PHYQ, BULLET).build()
     for _ in range(250):  # 5 s at rest
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
     start = world.state("box")[0]
     world.set_velocity("box", 3.0, 0.0)
     for _ in range(50):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
     assert world.state("box")[0] - start > 0.5  # pymunk: 0.78
     # TNT falls at the full 9.81 (its gravity scale): the extra pull acts at its centre of mass
-    world = Game(Level(objects=(LevelObject("TNT", "TNT", -5.0, 2.0, 0.0, name="tnt"),)), BULLET).build()
+    world = Game(Level(objects=(LevelObject("TNT", "TNT", -5.0, 2.0, 0.0, name="tnt"),)), PHYQ, BULLET).build()
     world.set_velocity("tnt", 10.0, 0.0)
     for _ in range(25):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
     assert abs(world.state("tnt")[2]) < 1e-6
     assert world.state("tnt")[4] == pytest.approx(-9.81 * 0.5, abs=0.2)  # set moving: 0.15 units/s of lag (set_velocity)
 
 
 def test_a_removed_body_ends_its_contacts_at_once():
-    world = BULLET.create_world(RULES.gravity)
+    world = BULLET.create_world(PHYQ.gravity)
     world.add(BodySpec("floor", Polygon(((-5, -0.5), (5, -0.5), (5, 0.5), (-5, 0.5))), 0.0, -0.5, static=True))
     world.add(BodySpec("box", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 0.0, 0.2))
     for _ in range(20):
-        world.step(RULES.dt)
+        world.step(PHYQ.engine.dt)
     assert "floor" in world.touching("box")
     world.begun(), world.ended()
     world.remove("box")
     assert {frozenset(pair) for pair in world.ended()} == {frozenset(("box", "floor"))}  # at once, and once
     assert world.touching("floor") == set()
     world.add(BodySpec("ball", Polygon(((-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2))), 3.0, 3.0))
-    world.step(RULES.dt)  # the new body may get the removed one's id: no stale contact is named after it
+    world.step(PHYQ.engine.dt)  # the new body may get the removed one's id: no stale contact is named after it
     assert world.ended() == [] and world.begun() == []

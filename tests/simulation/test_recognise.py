@@ -2,19 +2,23 @@
 
 from __future__ import annotations
 
+from physc.backends import load_backend
+
 import math
 
 import numpy as np
 
 from physc.domains.angrybirds.game import Game
-from physc.domains.angrybirds.rules import Rules
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.game import RECOGNISER
+RECOGNISER = PHYQ.recogniser
 from physc.simulation.recognise import side, violations
 from physc.dsl.scenario import TermIR
 from physc.simulation.trace import ContactRecord, Interaction, Trace
 
+
+BOX2D = load_backend("box2d")
 
 def test_side_of_the_target():
     assert side(-1.0, 0.2) == "left" and side(1.0, -0.3) == "right"
@@ -24,7 +28,7 @@ def test_side_of_the_target():
 def test_slide_is_recognised():
     platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
     block = LevelObject("Block", "SquareHole", -1.5, -1.0 + 0.16 + 0.3918 + 0.01, 0.0, "ice", name="block")
-    trace = Game(Level(objects=(platform, block))).play(Shot(target=(-1.9, -0.45)), 6.0)
+    trace = Game(Level(objects=(platform, block)), PHYQ, BOX2D).play(Shot(target=(-1.9, -0.45)), 6.0)
     names = [i.text() for i in trace.interactions]
     assert names[0] == "hit(bird, block, left)"
     assert "slide(block, platform, right)" in names
@@ -32,7 +36,7 @@ def test_slide_is_recognised():
 
 def test_bounce_is_recognised():
     ramp = LevelObject("Platform", "Platform", -6.0, 0.5, -30.0, scale_x=4 / 0.64, scale_y=0.5, name="ramp")
-    trace = Game(Level(objects=(ramp,))).play(Shot(target=(-6.0, 0.6), trajectory="high"), 5.0)
+    trace = Game(Level(objects=(ramp,)), PHYQ, BOX2D).play(Shot(target=(-6.0, 0.6), trajectory="high"), 5.0)
     texts = [i.text() for i in trace.interactions]
     assert texts[0].startswith("hit(bird, ramp, ")
     assert any(t.startswith("bounce(bird, ramp, ") for t in texts)
@@ -75,7 +79,7 @@ def test_a_ball_rolling_into_a_small_pig_hits_it_from_the_left():
     ball = LevelObject("Block", "Circle", -5.8, -1.0 + 2.4 * math.sin(tilt) + 0.16 + 0.385 + 0.05, 0.0, "ice", name="ball")
     pig = LevelObject("Pig", "BasicSmall", -2.3, -1.0 + 0.16 + 0.236, 0.0, name="pig")
     # A true circle (physc's catalogue model): the game's flat-footed one tumbles down the ramp.
-    trace = Game(Level(objects=(floor, ramp, ball, pig)), rules=Rules(colliders="round")).play(None, 8.0)
+    trace = Game(Level(objects=(floor, ramp, ball, pig)), catalogue_model("round"), BOX2D).play(None, 8.0)
     assert "roll(ball, floor, right) > hit(ball, pig, left)" in trace.sequence()
     contact = next(c for c in trace.contacts if {c.a, c.b} == {"ball", "pig"})
     vx, vy = contact.relative_velocity if contact.a == "ball" else (-contact.relative_velocity[0], -contact.relative_velocity[1])

@@ -14,7 +14,10 @@ from physc.backends.settings import EngineSettings
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 from physc.simulation.snapshot import Snapshot
+
+BOX2D = load_backend("box2d")
 
 PLATFORM = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
 BLOCK = LevelObject("Block", "SquareHole", -1.5, -1.0 + 0.16 + 0.42, 0.0, "wood", name="block")
@@ -24,7 +27,7 @@ SHOT = Shot(target=(-1.5, -0.6))
 
 
 def play(level=LEVEL, shot=SHOT, resume=None):
-    return Game(level).play(shot, 10.0, settle_after_solved=0.3, resume=resume)
+    return Game(level, PHYQ, BOX2D).play(shot, 10.0, settle_after_solved=0.3, resume=resume)
 
 
 @pytest.mark.parametrize("backend", sorted(installed_backends()))
@@ -90,7 +93,7 @@ def test_the_games_rules_go_on_from_the_lives_and_the_birds_checks():
     damaged = [d for d in trace.damage if d.target == "block"]
     assert damaged, "the shot damages the block"
     cut = int(math.ceil(damaged[0].time / trace.dt)) + 1
-    game = Game(LEVEL)
+    game = Game(LEVEL, PHYQ, BOX2D)
     continued = game.play(SHOT, 10.0, settle_after_solved=0.3, resume=Snapshot.of(trace, cut))
     assert [d for d in continued.damage if d.target == "block"][0] == damaged[0]
     assert game.life["block"] <= damaged[0].life
@@ -138,11 +141,11 @@ def test_with_snapshots_off_every_play_runs_from_the_start(monkeypatch):
 def test_a_run_cut_while_all_rests_ends_when_the_full_run_does():
     """The game stops 0.3 s after everything came to rest: a run continued from a cut inside
     that wait counts the rest before the cut, as the full run did."""
-    full = Game(LEVEL).simulate(SHOT, 10.0)
+    full = Game(LEVEL, PHYQ, BOX2D).simulate(SHOT, 10.0)
     speeds = np.nan_to_num(np.abs(full.states[:, :, 3:6]).sum(axis=2)).max(axis=1)
     bird = full.names.index("bird")
     resting = [k for k in range(full.steps - 1) if np.isnan(full.states[k, bird, 0]) and speeds[k] < 0.02]
     assert resting, "the run comes to rest before it ends"
     cut = resting[-1]  # inside the last 0.3 s of rest
-    continued = Game(LEVEL).simulate(SHOT, 10.0, resume=Snapshot.of(full, cut))
+    continued = Game(LEVEL, PHYQ, BOX2D).simulate(SHOT, 10.0, resume=Snapshot.of(full, cut))
     assert continued.steps == full.steps

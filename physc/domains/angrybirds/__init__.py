@@ -13,12 +13,12 @@ import random
 
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
-from physc.domains.angrybirds import world
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
 from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
+from physc.domains.angrybirds.worlds import PHYQ, WORLDS
 from physc.domains.simulated import SimulatedDomain
 
 REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
@@ -31,6 +31,8 @@ class AngryBirds(SimulatedDomain):
     name = "angrybirds"
     description = "Angry Birds levels in the Science Birds format (the paper's domain)"
     vocabulary = VOCABULARY
+    worlds = WORLDS
+    default_world = PHYQ.name
     layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right")
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
@@ -40,21 +42,19 @@ class AngryBirds(SimulatedDomain):
         "LevelLoader.cs) loads it (physc's docs/angrybirds.md)"
     )
     seconds = PLAY_SECONDS
-    layout_parameters = LayoutParameters(
-        clearance=0.1,
-        far=1.5,
-        left=world.PLACEMENT_AREA.left,
-        right=world.PLACEMENT_AREA.right,
-        bottom=world.PLACEMENT_AREA.bottom,
-        top=world.PLACEMENT_AREA.top,
-    )
+
+    @property
+    def layout_parameters(self) -> LayoutParameters:
+        """The QSRs' distances, and the world's placement area."""
+        area = self.world.frame.placement
+        return LayoutParameters(clearance=0.1, far=1.5, left=area.left, right=area.right, bottom=area.bottom, top=area.top)
+
     blocker = "flatPlatform"
     blocker_length = OBSTACLE_LENGTH
     blocker_thickness = PLATFORM_THICKNESS
 
-    @staticmethod
-    def concretize(graph, scenario, rng):
-        return concretize(graph, scenario, rng)
+    def concretize(self, graph, scenario, rng):
+        return concretize(graph, scenario, rng, self.world)
 
     @staticmethod
     def reach_targets(scenario) -> list[str]:
@@ -62,9 +62,8 @@ class AngryBirds(SimulatedDomain):
         first = scenario.interactions[0]
         return [first.objects[1]] if first.name == "hit" else []
 
-    @staticmethod
-    def reachable(x: float, y: float) -> bool:
-        return world.reachable(x, y)
+    def reachable(self, x: float, y: float) -> bool:
+        return self.world.reachable(x, y)
 
     # ---- the search's hooks ------------------------------------------------------------
     @staticmethod
@@ -75,14 +74,22 @@ class AngryBirds(SimulatedDomain):
 
     resumable = True  # `play` passes a snapshot on to the game's run
 
-    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None):
-        """The level played with the shot `action` (None: no shot), judged against the
-        scenario's restrictions and declared bounces; from the snapshot `resume`, if given."""
+    def game(self, level):
+        """`level` as the game plays it in this domain's world and engine."""
         from physc.domains.angrybirds.game import Game
 
+        return Game(level, self.world, self.backend)
+
+    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None, whole: bool = False):
+        """The level played with the shot `action` (None: no shot), judged against the
+        scenario's restrictions and declared bounces; from the snapshot `resume`, if given.
+        With `whole`, played out as the game plays it (until everything rests, not stopping
+        soon after the last pig goes: `physc simulate`)."""
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
-        game = Game(level)
+        game = self.game(level)
+        if whole:
+            return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects)
         if not recognise:
             return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0, resume=resume)
         return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3, resume=resume)
@@ -92,31 +99,27 @@ class AngryBirds(SimulatedDomain):
         first = scenario.interactions[0]
         return self.actions_at(level, first.objects[1]) if first.name == "hit" else []
 
-    @staticmethod
-    def actions_at(level, name: str) -> list:
+    def actions_at(self, level, name: str) -> list:
         from physc.domains.angrybirds.actions import candidate_shots
 
         obj = next((o for o in level.objects if o.name == name), None)
-        return [] if obj is None else candidate_shots(obj)
+        return [] if obj is None else candidate_shots(obj, self.world)
 
-    @staticmethod
-    def noisy(level, action, rng: random.Random):
+    def noisy(self, level, action, rng: random.Random):
         """The evaluation's noise: blocks and pigs jittered, the release angle too."""
         from physc.domains.angrybirds.launch import Shot
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 
         noisy = jitter(level, rng)
-        return noisy, Shot(angle=action.release_angle() + rng.gauss(0.0, ANGLE_SIGMA))
+        return noisy, Shot(angle=action.release_angle(self.world) + rng.gauss(0.0, ANGLE_SIGMA))
 
-    @staticmethod
-    def nudged(action, step: int):
-        return action.at_angle(action.release_angle() + step * CENTRING_STEP)
+    def nudged(self, action, step: int):
+        return action.at_angle(action.release_angle(self.world) + step * CENTRING_STEP, self.world)
 
-    @staticmethod
-    def solution(label: str, action):
+    def solution(self, label: str, action):
         from physc.compiler.task import Solution
 
-        return Solution(label, action.target, action.trajectory, round(action.release_angle(), 5))
+        return Solution(label, action.target, action.trajectory, round(action.release_angle(self.world), 5))
 
     @staticmethod
     def action_of(solution):
@@ -130,33 +133,61 @@ class AngryBirds(SimulatedDomain):
 
         return bodies(placed, scenario)
 
-    @staticmethod
-    def mass(placed) -> float:
+    def mass(self, placed) -> float:
         from physc.domains.angrybirds.bodies import mass
 
-        return mass(placed)
+        return mass(placed, self.world)
 
-    @staticmethod
-    def friction(placed) -> float:
+    def friction(self, placed) -> float:
         from physc.domains.angrybirds.bodies import friction
 
-        return friction(placed)
+        return friction(placed, self.world)
 
-    @staticmethod
-    def distractors(layout, index: int, rng: random.Random):
+    def distractors(self, layout, index: int, rng: random.Random):
         from physc.domains.angrybirds.distract import distractors
 
-        return distractors(layout, index, rng)
+        return distractors(layout, index, rng, self.world)
 
     # ---- files, pictures, evaluation ------------------------------------------------------
+    @staticmethod
+    def read_level(data: bytes) -> Level:
+        from physc.domains.angrybirds.level_xml import read_level
+
+        return read_level(data)
+
+    @staticmethod
+    def level_text(data: bytes) -> str:
+        """The level file's text as `read_level` decodes it (UTF-16 by its byte-order mark, else UTF-8)."""
+        from physc.domains.angrybirds.level_xml import decode
+        from physc.domains.base import LevelError
+
+        try:
+            return decode(data)
+        except LevelError:
+            return data.decode("utf-8", "replace")
+
+    @staticmethod
+    def shot(point: tuple[float, float, str] | None = None, angle: float | None = None):
+        """The shot at a target point (x, y, trajectory) or at a release angle; None for neither."""
+        from physc.domains.angrybirds.launch import Shot
+
+        if point is None:
+            return None if angle is None else Shot(angle=angle)
+        x, y, trajectory = point
+        return Shot(target=(x, y), trajectory=trajectory)
+
+    def draw(self, level, title: str, paths: dict, fmt: str = "png") -> bytes:
+        from physc.domains.angrybirds.picture import draw_level, save
+
+        return save(draw_level(level, self.world, title, paths), fmt)
+
     @staticmethod
     def emit_level(level) -> str:
         from physc.domains.angrybirds.level_xml import emit_level
 
         return emit_level(level)
 
-    @staticmethod
-    def picture(task, fmt: str = "png") -> bytes:
+    def picture(self, task, fmt: str = "png") -> bytes:
         """The task's level with the paths its solution makes, like the paper's figure; a
         placed layout (`--emit layout --png`) as the level it becomes."""
         from physc.compiler.concrete_layout import ConcreteLayout
@@ -165,12 +196,12 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.picture import draw_level, render, save
 
         if isinstance(task, ConcreteLayout):
-            return render(task, fmt)
+            return render(task, fmt, self.world)
         shot = Shot(target=task.solution.target, trajectory=task.solution.trajectory)
-        trace = Game(task.level).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
+        trace = Game(task.level, self.world, self.backend).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return save(draw_level(task.level, title, trace.paths(), supports), fmt)
+        return save(draw_level(task.level, self.world, title, trace.paths(), supports), fmt)
 
     def replay(self, level, solution, scenario, rng=None):
         """The solution's shot (or, with `rng`, the evaluation's noise: release angle and
@@ -186,19 +217,17 @@ class AngryBirds(SimulatedDomain):
             level = jitter(level, rng)
         return self.play(level, shot, scenario, REPLAY_SECONDS)
 
-    @staticmethod
-    def stability(level) -> tuple[bool, float]:
+    def stability(self, level) -> tuple[bool, float]:
         """10 s with no action: no object moves more than 0.05 units, nothing is destroyed."""
         from physc.domains.angrybirds.stability import stability
 
-        return stability(level)
+        return stability(self.game(level))
 
-    @staticmethod
-    def accidental(level, scenario, solution, rng) -> dict:
+    def accidental(self, level, scenario, solution, rng) -> dict:
         """The paper's heuristic agent (agent.py): it shoots at everything but the first target."""
         from physc.domains.angrybirds.agent import accidental
 
-        fraction, plays = accidental(level, scenario.interactions[0].objects[1])
+        fraction, plays = accidental(self.game(level), scenario.interactions[0].objects[1])
         return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}
 
 

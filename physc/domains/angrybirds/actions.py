@@ -12,7 +12,6 @@ from physc.compiler.qsr_evaluate import five_points
 from physc.domains.angrybirds.catalogue import extent
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject
-from physc.domains.angrybirds.world import reachable
 
 POINTS = ("ll", "ul", "ur", "lr", "c")
 
@@ -25,11 +24,11 @@ def points_of_interest(obj: LevelObject) -> dict[str, tuple[float, float]]:
     return points
 
 
-def candidate_shots(target: LevelObject) -> list[tuple[str, Shot]]:
-    """(label, shot) for every reachable point of interest and trajectory."""
+def candidate_shots(target: LevelObject, world) -> list[tuple[str, Shot]]:
+    """(label, shot) for every point of interest in reach in `world`, and trajectory."""
     out = []
     for label, (x, y) in points_of_interest(target).items():
-        if not reachable(x, y):
+        if not world.reachable(x, y):
             continue
         for trajectory in ("low", "high"):
             out.append((f"{target.name}.{label}, {trajectory}", Shot(target=(round(x, 5), round(y, 5)), trajectory=trajectory)))

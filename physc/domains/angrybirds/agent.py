@@ -9,25 +9,23 @@ from physc.domains.angrybirds import REPLAY_SECONDS
 from physc.domains.angrybirds.actions import agent_targets, points_of_interest
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
-from physc.domains.angrybirds.level import Level
-from physc.domains.angrybirds.world import reachable
 
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 
 
-def accidental(level: Level, solution_target: str) -> tuple[float | None, int]:
+def accidental(game: Game, solution_target: str) -> tuple[float | None, int]:
     """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it,
     and the number of plays. None when the agent found no play (no point of interest within
     reach): a fraction of nothing is not 0, and must not pull a mean down."""
     plays = solved = 0
-    for obj in agent_targets(level, solution_target):
+    for obj in agent_targets(game.level, solution_target):
         points = points_of_interest(obj)
         for name in AGENT_POINTS:
             x, y = points[name]
-            if not reachable(x, y):
+            if not game.world.reachable(x, y):
                 continue
             for trajectory in ("low", "high"):
                 plays += 1
-                trace = Game(level).simulate(Shot(target=(x, y), trajectory=trajectory), REPLAY_SECONDS, settle_after_solved=0.0)
+                trace = game.simulate(Shot(target=(x, y), trajectory=trajectory), REPLAY_SECONDS, settle_after_solved=0.0)
                 solved += trace.solved
     return (solved / plays if plays else None), plays

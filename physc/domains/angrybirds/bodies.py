@@ -6,8 +6,7 @@ from __future__ import annotations
 import attrs
 
 from physc.domains.angrybirds import prefabs
-from physc.domains.angrybirds.catalogue import MATERIAL, shape
-from physc.domains.angrybirds.rules import RULES
+from physc.domains.angrybirds.catalogue import shape
 
 
 def bodies(placed, scenario) -> list:
@@ -24,21 +23,27 @@ def bodies(placed, scenario) -> list:
     return out
 
 
-def mass(placed) -> float:
-    """The body's mass as the game gives it (`ABGameObject.Start`: density on the prefab's first
-    collider; docs/angrybirds.md)."""
+def _material(placed, world):
+    materials = world.bodies.materials
+    return materials.get(placed.material or "wood", materials["wood"])
+
+
+def mass(placed, world) -> float:
+    """The body's mass as the game gives it in `world` (`ABGameObject.Start`: density on the
+    prefab's first collider; docs/angrybirds.md)."""
     catalogue = shape(placed.concrete)
+    model = world.bodies
     if catalogue.kind == "bird":
-        return RULES.bird_mass
-    density = RULES.pig_density if catalogue.kind == "pig" else MATERIAL.get(placed.material or "wood", MATERIAL["wood"]).density
-    if RULES.colliders == "game" and catalogue.prefab in prefabs.prefabs():
-        return prefabs.body_mass(catalogue.prefab, density)
+        return model.bird_mass
+    density = model.pig_density if catalogue.kind == "pig" else _material(placed, world).density
+    if model.colliders == "game" and catalogue.prefab in prefabs.prefabs():
+        return prefabs.body_mass(catalogue.prefab, density, model.circle_colliders)
     return placed.width * placed.height * density
 
 
-def friction(placed) -> float:
-    """The body's friction: its material's (pigs: the game's pig friction)."""
+def friction(placed, world) -> float:
+    """The body's friction in `world`: its material's (pigs: the game's pig friction)."""
     catalogue = shape(placed.concrete)
     if catalogue.kind == "pig":
-        return RULES.pig_friction
-    return MATERIAL.get(placed.material or "wood", MATERIAL["wood"]).friction
+        return world.bodies.pig_friction
+    return _material(placed, world).friction

@@ -5,8 +5,9 @@ the same level. Concrete objects are drawn with physics-aware preferences, and
 materials adjusted so that momentum passes down a chain (preferences.py).
 Platforms get lengths by role: a surface that something rolls or slides on is
 long enough to gain speed on; a support is short. An inclined
-surface that something rolls or slides on declines towards the motion (10° to
-25°); any other inclined surface (for a bounce) tilts 15° to 40° either way.
+surface that something rolls or slides on declines towards the motion, any other inclined
+surface (for a bounce) tilts either way, at the angles of the world's incline rule
+(physc.worlds.Incline).
 """
 
 from __future__ import annotations
@@ -20,12 +21,6 @@ from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION, LayoutGraph
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS, shape
 from physc.domains.angrybirds.preferences import choose_concrete, light_chain_materials
-from physc.domains.angrybirds.world import (
-    BIRD_REST,
-    GROUND_TOP,
-    LEVEL_LEFT,
-    LEVEL_RIGHT,
-)
 from physc.dsl.scenario import ScenarioIR
 
 PATH_SURFACE_LENGTH = (1.5, 3.0)  # short: a rolling circle loses speed to angular drag
@@ -38,7 +33,10 @@ def _length(rng: random.Random, bounds: tuple[float, float]) -> float:
     return round(rng.uniform(*bounds), 2)
 
 
-def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random) -> dict[str, Body]:
+def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, world) -> dict[str, Body]:
+    """The concrete object, material and shape of every node, drawn from `rng`, in `world`
+    (its frame, launch and incline rule)."""
+    frame = world.frame
     headings = {}
     for term in scenario.interactions:
         if term.name in ("roll", "slide"):
@@ -54,21 +52,21 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random) -> 
         name = node.name
         chosen = concrete[name]
         if chosen == "ground":
-            width = LEVEL_RIGHT - LEVEL_LEFT
-            bodies[name] = Body(name, node.role, chosen, Geometry(width, 1.0), fixed=(0.0, GROUND_TOP - 0.5))
+            width = frame.right - frame.left
+            bodies[name] = Body(name, node.role, chosen, Geometry(width, 1.0), fixed=(0.0, frame.ground_top - 0.5))
             continue
         catalogue = shape(chosen)
         if catalogue.kind != "platform":
             material = rng.choice(catalogue.materials) if catalogue.materials else None
-            fixed = BIRD_REST if catalogue.kind == "bird" else None
+            fixed = world.launch.bird_rest if catalogue.kind == "bird" else None
             bodies[name] = Body(name, node.role, chosen, Geometry(catalogue.width, catalogue.height), material, fixed)
             continue
         if chosen == "inclinedPlatform":
             length = _length(rng, INCLINED_LENGTH)
             if name in headings:
-                angle = rng.uniform(10, 25) * (-1 if headings[name] == "right" else 1)
+                angle = rng.uniform(*world.incline.descending) * (-1 if headings[name] == "right" else 1)
             else:
-                angle = rng.uniform(15, 40) * rng.choice((-1, 1))
+                angle = rng.uniform(*world.incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, chosen, Geometry(length, PLATFORM_THICKNESS, round(angle, 2)))
             continue
         low, high = PATH_SURFACE_LENGTH if name in headings else SUPPORT_LENGTH if name in carried else PLATFORM_LENGTH

@@ -14,16 +14,16 @@ import random
 
 from physc.compiler.concrete_layout import PlacedObject
 from physc.domains.angrybirds.catalogue import shape
-from physc.domains.angrybirds.world import GROUND_TOP, PLACEMENT_AREA
 
 KINDS = ("squareSmall", "rectFat", "rectSmall", "rectTiny", "squareHole", "circleSmall", "triangle")
 SKIN = 0.015  # objects rest this far above their support, as in Science Birds
 PLACES = 4  # resting places tried per distractor
 
 
-def _resting_places(layout, width: float, rng: random.Random):
+def _resting_places(layout, width: float, rng: random.Random, frame):
     """(x range, top) of surfaces an object of this width can rest on."""
-    places = [((PLACEMENT_AREA.left + 1.5 + width / 2, PLACEMENT_AREA.right - width / 2), GROUND_TOP)]
+    area = frame.placement
+    places = [((area.left + 1.5 + width / 2, area.right - width / 2), frame.ground_top)]
     for obj in layout.objects:
         if shape(obj.concrete).kind == "platform" and abs(obj.rotation or 0.0) < 1e-6 and obj.width >= width + 0.2:
             places.append(((obj.x - obj.width / 2 + width / 2, obj.x + obj.width / 2 - width / 2), obj.y + obj.height / 2))
@@ -31,12 +31,12 @@ def _resting_places(layout, width: float, rng: random.Random):
     return places
 
 
-def distractors(layout, index: int, rng: random.Random):
+def distractors(layout, index: int, rng: random.Random, world):
     """Candidates for distractor number `index`: one random kind and material, on up to
     PLACES resting places."""
     kind = shape(rng.choice(KINDS))
     material = rng.choice(kind.materials)
-    for (low, high), top in _resting_places(layout, kind.width, rng)[:PLACES]:
+    for (low, high), top in _resting_places(layout, kind.width, rng, world.frame)[:PLACES]:
         if high < low:
             continue
         x = rng.uniform(low, high)

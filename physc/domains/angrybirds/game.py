@@ -14,90 +14,83 @@ import math
 
 import attrs
 
-from physc.backends import BodySpec, Circle, Polygon, current
+from physc.backends import Backend, BodySpec, Circle, Polygon
 from physc.domains.angrybirds import prefabs
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
-    MATERIAL,
     PHYQ_CIRCLES,
     extent,
     shape,
 )
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.rules import RULES, Rules
-from physc.domains.angrybirds.world import GROUND_TOP
-from physc.simulation.recognise import Recogniser, violations
+from physc.domains.angrybirds.worlds import ScienceBirdsWorld
+from physc.simulation.recognise import violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.trace import ContactRecord, DamageRecord, Trace
 
 BIRD = "bird"
 GROUND = "ground"
-STILL_SPEED = 0.02  # below this (units/s and rad/s) a body counts as at rest
-# Science Birds' recognition: thresholds in level units and seconds, and its kinds.
-RECOGNISER = Recogniser(
-    hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2,
-    fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
-    surfaces=("platform", "ground"), background=("ground",), thrown=("bird",),
-)
-FALLING_SPEED = 0.5  # coming down faster than this (units/s), a body is still falling
-
-
-def _material(obj: LevelObject) -> str:
-    return obj.material if obj.material in MATERIAL else "wood"
 
 
 class Game(RunRules):
-    """A Science Birds level played: its bodies, the shot, and the game's rules as the hooks
-    of the generic run loop (physc.simulation.run)."""
+    """A Science Birds level played in one world (its bodies, launch, rules and recognition)
+    with one physics engine: the game's rules as the hooks of the generic run loop
+    (physc.simulation.run)."""
 
-    def __init__(self, level: Level, backend=None, rules: Rules = RULES):
+    def __init__(self, level: Level, world: ScienceBirdsWorld, backend: Backend):
         self.level = level
-        self.backend = backend or current()  # the caller's choice (physc.backends.selected)
-        self.rules = rules
+        self.world = world
+        self.backend = backend
+        self.rules = world.rules
+        self.model = world.bodies
+
+    def _material(self, obj: LevelObject) -> str:
+        return obj.material if obj.material in self.model.materials else "wood"
 
     # ---- building the world ---------------------------------------------------------
     def _spec(self, obj: LevelObject) -> tuple[BodySpec, str, float, float]:
         """The body of a level object, its kind, life and defence."""
         catalogue = BY_PREFAB[obj.type]
-        rules = self.rules
+        rules, model = self.rules, self.model
         angle = math.radians(obj.rotation or 0.0)
         if catalogue.kind == "platform":
             w, h = (size / 2 for size in extent(obj))
             outline = Polygon(((-w, -h), (w, -h), (w, h), (-w, h)))
-            spec = BodySpec(obj.name, outline, obj.x, obj.y, angle, static=True, friction=rules.platform_friction)
+            spec = BodySpec(obj.name, outline, obj.x, obj.y, angle, static=True, friction=model.platform_friction)
             return spec, "platform", math.inf, 0.0
-        game = rules.colliders == "game" and obj.type in prefabs.prefabs()
+        game = model.colliders == "game" and obj.type in prefabs.prefabs()
         if game:
-            outline = prefabs.body_shape(obj.type)
-        elif catalogue.round and rules.colliders == "phyq" and catalogue.name in PHYQ_CIRCLES:
+            outline = prefabs.body_shape(obj.type, model.circle_colliders)
+        elif catalogue.round and model.colliders == "phyq" and catalogue.name in PHYQ_CIRCLES:
             outline = Polygon(catalogue.phyq_circle_points())
         elif catalogue.round:
             outline = Circle(catalogue.width / 2)
         else:
             outline = Polygon(catalogue.outline_points())
-        common = dict(angle=angle, angular_damping=rules.angular_drag)
+        common = dict(angle=angle, angular_damping=model.angular_drag)
         if catalogue.kind == "pig":
-            mass = prefabs.body_mass(obj.type, rules.pig_density) if game else None
+            mass = prefabs.body_mass(obj.type, model.pig_density, model.circle_colliders) if game else None
             spec = BodySpec(
-                obj.name, outline, obj.x, obj.y, mass=mass, density=rules.pig_density, friction=rules.pig_friction,
-                bounciness=rules.pig_bounciness, continuous=True, **common,
+                obj.name, outline, obj.x, obj.y, mass=mass, density=model.pig_density, friction=model.pig_friction,
+                bounciness=model.pig_bounciness, continuous=True, **common,
             )
             return spec, "pig", float(catalogue.life[""]), rules.pig_defence
         if catalogue.kind == "tnt":
             spec = BodySpec(
-                obj.name, outline, obj.x, obj.y, angle, density=rules.tnt_density, friction=rules.tnt_friction,
-                gravity_scale=rules.tnt_gravity_scale, angular_damping=rules.tnt_angular_drag,
+                obj.name, outline, obj.x, obj.y, angle, density=model.tnt_density, friction=model.tnt_friction,
+                gravity_scale=model.tnt_gravity_scale, angular_damping=model.tnt_angular_drag,
             )
             return spec, "tnt", float(catalogue.life[""]), 0.0
-        material = MATERIAL[_material(obj)]
-        mass = prefabs.body_mass(obj.type, material.density) if game else None
+        material = model.materials[self._material(obj)]
+        mass = prefabs.body_mass(obj.type, material.density, model.circle_colliders) if game else None
         spec = BodySpec(obj.name, outline, obj.x, obj.y, mass=mass, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
         return spec, "block", float(catalogue.life[material.name]), material.defence
 
     def build(self):
-        world = self.backend.create_world(self.rules.gravity, self.rules.engine)
-        ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, GROUND_TOP - 0.5, static=True, friction=self.rules.ground_friction)
+        world = self.backend.create_world(self.world.gravity, self.world.engine)
+        ground_top = self.world.frame.ground_top
+        ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, ground_top - 0.5, static=True, friction=self.model.ground_friction)
         world.add(ground)
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
@@ -108,16 +101,16 @@ class Game(RunRules):
             self.kinds[obj.name] = kind
             self.life[obj.name] = life
             self.defence[obj.name] = defence
-            self.material[obj.name] = _material(obj) if kind == "block" else ""
+            self.material[obj.name] = self._material(obj) if kind == "block" else ""
         return world
 
     def launch(self, world, shot: Shot) -> None:
         """Put the bird into `world` (built by `build`) at the slingshot, flying as `shot` sends it."""
-        rules = self.rules
-        origin, velocity = shot.start()
+        model = self.model
+        origin, velocity = shot.start(self.world)
         bird = BodySpec(
-            BIRD, Circle(shape("redBird").width / 2), *origin, mass=rules.bird_mass, friction=rules.bird_friction,
-            bounciness=rules.bird_bounciness, angular_damping=rules.angular_drag, continuous=True,
+            BIRD, Circle(shape("redBird").width / 2), *origin, mass=model.bird_mass, friction=model.bird_friction,
+            bounciness=model.bird_bounciness, angular_damping=model.bird_angular_drag, continuous=True,
         )
         world.add(bird)
         world.set_velocity(BIRD, *velocity)
@@ -158,9 +151,10 @@ class Game(RunRules):
         self._stop_at_rest, self._resting_since = stop_at_rest, None
         self._bird_check_at = rules.bird_lifetime  # the next time the bird may be removed (ABBird.cs)
         self._bird_struck = False  # whether the bird has collided yet
-        recorded = run(world, dynamic, self, seconds, rules.dt, resume)
+        dt = self.world.engine.dt
+        recorded = run(world, dynamic, self, seconds, dt, resume)
         return Trace(
-            rules.dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
+            dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
             recorded.damage, recorded.destructions, self._pigs, self._solved(recorded),
         )
 
@@ -195,7 +189,7 @@ class Game(RunRules):
         if self._pigs and set(self._pigs) <= set(gone):
             self._solved_at = max(gone[p] for p in self._pigs)
         if self._stop_at_rest:
-            self._resting_since = _resting_since(snapshot)
+            self._resting_since = _resting_since(snapshot, self.world.rest_speed)
 
     def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":
@@ -210,7 +204,8 @@ class Game(RunRules):
             if self._solved_at is not None and time - self._solved_at >= self._settle_after_solved and not self._falling(values, self._dynamic):
                 return True
         if self._stop_at_rest:
-            if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > STILL_SPEED for _, _, _, vx, vy, w in values):
+            still = self.world.rest_speed
+            if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
                 self._resting_since = None
             elif self._resting_since is None:
                 self._resting_since = time
@@ -226,7 +221,7 @@ class Game(RunRules):
     def judged(self, trace: Trace, restrictions=(), redirects=None) -> Trace:
         """`trace`, a simulation of this level, with the interactions recognised in it and
         the restrictions it violates (what `play` adds to `simulate`)."""
-        interactions = RECOGNISER.recognise(trace, self.radii())
+        interactions = self.world.recogniser.recognise(trace, self.radii())
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
     def removals_due(self, values: list, alive: set, time: float) -> bool:
@@ -235,7 +230,7 @@ class Game(RunRules):
         `values`: the state of each body, NaN for the bodies already gone (no test holds for NaN)."""
         if self.spent and not self.spent.isdisjoint(alive):
             return True
-        left, right = self.rules.world_left, self.rules.world_right
+        left, right = self.world.frame.left, self.world.frame.right
         for v in values:  # `_outside`, inlined: this runs every step, and a call per body nearly triples its cost
             if v[0] < left or v[0] > right:
                 return True
@@ -246,10 +241,10 @@ class Game(RunRules):
             self._bird_check_at = min(self._bird_check_at + self.rules.bird_still_every, self.rules.bird_lifetime)
         return False
 
-    @staticmethod
-    def _falling(values: list, dynamic: list[str]) -> bool:
+    def _falling(self, values: list, dynamic: list[str]) -> bool:
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
-        return any(v[4] < -FALLING_SPEED for v, name in zip(values, dynamic) if name != BIRD)
+        fast = self.world.falling_speed
+        return any(v[4] < -fast for v, name in zip(values, dynamic) if name != BIRD)
 
     def gone(self, name: str, state: tuple, time: float, damage: list) -> tuple | None:
         """Why `name` (its state: x, y, angle, vx, vy, ω) leaves the level now (the kind of
@@ -266,7 +261,7 @@ class Game(RunRules):
     def _outside(self, x: float) -> bool:
         """Whether `x` lies beyond the level's left or right edge (never for NaN: a body
         already gone)."""
-        return x < self.rules.world_left or x > self.rules.world_right
+        return x < self.world.frame.left or x > self.world.frame.right
 
     def _bird_done(self, vx: float, vy: float, time: float) -> bool:
         """At a check (`_bird_check_at`): whether the bird goes, too old or nearly still."""
@@ -284,7 +279,8 @@ class Game(RunRules):
         for obj in self.level.objects:
             catalogue = BY_PREFAB[obj.type]
             if catalogue.round or catalogue.kind == "pig":
-                out[obj.name] = min(catalogue.width, catalogue.height) / 2
+                circle = prefabs.circle_radius(obj.type, self.model.circle_colliders) if obj.type in prefabs.prefabs() else None
+                out[obj.name] = circle or min(catalogue.width, catalogue.height) / 2
         return out
 
     # ---- rules ----------------------------------------------------------------------------
@@ -346,14 +342,14 @@ class Game(RunRules):
                 damage.append(DamageRecord(time, other, amount, self.life[other], name))
 
 
-def _resting_since(snapshot) -> float | None:
+def _resting_since(snapshot, still: float) -> float | None:
     """When everything came to rest before `snapshot`'s cut, and stayed so (the bird gone):
     what `Game.finished` would hold at the cut; None when something still moves there."""
     import numpy as np
 
     rows = snapshot.states  # (steps, bodies, 6): x, y, angle, vx, vy, w; NaN once a body is gone
     speeds = np.nan_to_num(np.abs(rows[:, :, 3:6]).sum(axis=2), nan=0.0)
-    moving = (speeds > STILL_SPEED).any(axis=1)
+    moving = (speeds > still).any(axis=1)
     if BIRD in snapshot.names:
         moving |= ~np.isnan(rows[:, snapshot.names.index(BIRD), 0])
     if moving[-1]:

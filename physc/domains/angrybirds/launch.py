@@ -1,9 +1,14 @@
 """The launch model: a full-stretch shot, as the game launches it.
 
-velocity = direction · 10 · min(stretch, 1), set on the bird where it was dragged to
-(physc.domains.angrybirds.world.launch_point); to pass through a target point (dx, dy)
-from there, tan θ = (v² ± √(v⁴ − g(g dx² + 2 dy v²))) / (g dx): the minus root is the low
-trajectory, the plus root the high one; no real root means the point is out of reach.
+The game launches the bird from where it was dragged to, not from its rest point
+(ABBird.cs `LaunchBird`): the rest point pulled back along the shot by the stretch times
+the drag radius (1 unit at full stretch), its collider 0.05 right and 0.03 below that
+(BirdRed.prefab), with velocity = direction · 10 · min(stretch, 1). To pass through a
+target point (dx, dy) from there, tan θ = (v² ± √(v⁴ − g(g dx² + 2 dy v²))) / (g dx): the
+minus root is the low trajectory, the plus root the high one; no real root means the point
+is out of reach. The start depends on the angle, so the angle is found from the rest point
+first, then from the start it gives, until it settles. Gravity is the world's
+(physc.domains.angrybirds.worlds): every aim is made in one world.
 """
 
 from __future__ import annotations
@@ -12,59 +17,109 @@ import math
 
 import attrs
 
-from physc.domains.angrybirds.world import (
-    GRAVITY,
-    LAUNCH_SPEED,
-    aim,
-    launch_point,
-)
-
 
 class Unreachable(ValueError):
     pass
 
 
 @attrs.frozen
+class Launch:
+    """The slingshot's launch: where the bird rests, how far a full stretch pulls it, its speed."""
+
+    bird_rest: tuple[float, float] = attrs.field(default=(-12.15, -1.7), metadata={"source": "Phy-Q levels' bird (sciencebirds-facts §1)"})
+    speed: float = attrs.field(default=10.0, metadata={"source": "ABConstants.BIRD_MAX_LANUCH_SPEED"})
+    drag_radius: float = attrs.field(default=1.0, metadata={"source": "BirdRed.prefab `_dragRadius`"})
+    collider_offset: tuple[float, float] = attrs.field(default=(0.05, -0.03), metadata={"source": "BirdRed.prefab CircleCollider2D `m_Offset`"})
+
+    def point(self, angle: float, stretch: float = 1.0) -> tuple[float, float]:
+        """Where the bird's centre starts a shot released at `angle` degrees: the rest point
+        pulled back along the shot by `stretch` × the drag radius, plus the collider's offset."""
+        theta = math.radians(angle)
+        pull = self.drag_radius * min(max(stretch, 0.0), 1.0)
+        rest, offset = self.bird_rest, self.collider_offset
+        return (rest[0] - pull * math.cos(theta) + offset[0], rest[1] - pull * math.sin(theta) + offset[1])
+
+    def discriminant(self, x: float, y: float, gravity: float, origin: tuple[float, float] | None = None) -> float:
+        """v⁴ − g(g·dx² + 2·dy·v²) for (x, y) seen from `origin` (the rest point): the launch
+        equation has a real root (the point is in reach from there) exactly when it is ≥ 0."""
+        origin = origin or self.bird_rest
+        dx, dy, v = x - origin[0], y - origin[1], self.speed
+        return v**4 - gravity * (gravity * dx * dx + 2 * dy * v * v)
+
+    def _angle_from(self, origin, x: float, y: float, trajectory: str, gravity: float) -> float | None:
+        dx = x - origin[0]
+        disc = self.discriminant(x, y, gravity, origin)
+        if disc < 0:
+            return None
+        if dx == 0:
+            return 90.0
+        root, v2 = math.sqrt(disc), self.speed**2
+        tangent = (v2 - root) / (gravity * dx) if trajectory == "low" else (v2 + root) / (gravity * dx)
+        angle = math.degrees(math.atan(tangent))
+        return angle if dx > 0 else angle + 180.0
+
+    def aim(self, x: float, y: float, trajectory: str, gravity: float) -> float | None:
+        """The release angle (degrees) of the full-stretch shot whose flight, started where the
+        game starts it (`point`), passes through (x, y) on the low or high trajectory; None
+        when no such shot reaches the point."""
+        angle = self._angle_from(self.bird_rest, x, y, trajectory, gravity)
+        for _ in range(50):
+            if angle is None:
+                return None
+            again = self._angle_from(self.point(angle), x, y, trajectory, gravity)
+            if again is not None and abs(again - angle) < 1e-9:
+                return again
+            angle = again
+        return angle
+
+    def reachable(self, x: float, y: float, gravity: float) -> bool:
+        """Whether a full-stretch shot, launched as the game launches it, can pass through (x, y)."""
+        return self.aim(x, y, "high", gravity) is not None
+
+
+@attrs.frozen
 class Shot:
-    """A shot: at a target point on the low or high trajectory, or at a release angle."""
+    """A shot: at a target point on the low or high trajectory, or at a release angle. Where
+    it flies depends on the world (its launch and gravity), so each question takes one."""
 
     target: tuple[float, float] | None = None
     trajectory: str = "low"  # "low" | "high"
     angle: float | None = None  # degrees above the horizontal, counter-clockwise
 
-    def release_angle(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> float:
-        """The release angle in degrees."""
+    def release_angle(self, world) -> float:
+        """The release angle in degrees in `world` (physc.domains.angrybirds.worlds)."""
         if self.angle is not None:
             return self.angle
         x, y = self.target
-        angle = aim(x, y, self.trajectory, speed, gravity)
+        angle = world.launch.aim(x, y, self.trajectory, world.gravity)
         if angle is None:
             raise Unreachable(f"({x:g}, {y:g}) is out of reach of a full-stretch shot")
         return angle
 
-    def at_angle(self, angle: float, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> Shot:
+    def at_angle(self, angle: float, world) -> Shot:
         """The shot released at `angle` instead, named like this one: by the point of its
         flight above the same x as this shot's target, on the same trajectory."""
         x = self.target[0]
-        origin = launch_point(angle)
+        origin = world.launch.point(angle)
+        speed, gravity = world.launch.speed, world.gravity
         dx = x - origin[0]
         theta = math.radians(angle)
         y = origin[1] + dx * math.tan(theta) - gravity * dx * dx / (2 * speed**2 * math.cos(theta) ** 2)
         return Shot(target=(x, round(y, 6)), trajectory=self.trajectory)
 
-    def origin(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
+    def origin(self, world) -> tuple[float, float]:
         """Where the bird's centre starts this shot (the game's dragged-to point)."""
-        return self.start(speed, gravity)[0]
+        return self.start(world)[0]
 
-    def start(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[tuple[float, float], tuple[float, float]]:
-        """Where the bird starts this shot and its velocity there, from one release angle
-        (finding it from a target point iterates: `aim`)."""
-        angle = self.release_angle(speed, gravity)
+    def start(self, world) -> tuple[tuple[float, float], tuple[float, float]]:
+        """Where the bird starts this shot and its velocity there, from one release angle."""
+        angle = self.release_angle(world)
         theta = math.radians(angle)
-        return launch_point(angle), (speed * math.cos(theta), speed * math.sin(theta))
+        speed = world.launch.speed
+        return world.launch.point(angle), (speed * math.cos(theta), speed * math.sin(theta))
 
-    def velocity(self, speed: float = LAUNCH_SPEED, gravity: float = GRAVITY) -> tuple[float, float]:
-        return self.start(speed, gravity)[1]
+    def velocity(self, world) -> tuple[float, float]:
+        return self.start(world)[1]
 
     def text(self) -> str:
         if self.angle is not None:

@@ -34,6 +34,7 @@ import re
 
 from physc.diagnostics import SourceText
 from physc.domains.angrybirds.catalogue import BIRD_PREFABS, BY_PREFAB, MATERIALS
+from physc.domains.base import LevelError
 from physc.suggest import did_you_mean
 
 MAX_LEVEL_BYTES = 4 * 1024 * 1024
@@ -52,22 +53,6 @@ ELEMENT_TYPES = {"Block": BLOCK_TYPES, "Pig": PIG_TYPES, "TNT": ("TNT",), "Platf
 FIXED_PREFAB = {"TNT": "TNT", "Platform": "Platform"}
 
 _NUMBER = re.compile(r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*")
-
-
-class LevelError(Exception):
-    """An unusable level file: `code` is a physc diagnostic code, `line` and `column` 1-based or None."""
-
-    def __init__(self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None):
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.line = line
-        self.column = column
-        self.help = help
-
-    def __str__(self) -> str:
-        where = "" if self.line is None else f"line {self.line}" + ("" if self.column is None else f":{self.column}") + ": "
-        return where + self.message
 
 
 def check_size(data: bytes | str) -> None:

@@ -23,12 +23,6 @@ from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
 from physc.domains.angrybirds.catalogue import by_prefab, extent  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
-from physc.domains.angrybirds.world import (  # noqa: E402
-    BIRD_REST,
-    GROUND_TOP,
-    LEVEL_LEFT,
-    LEVEL_RIGHT,
-)
 
 MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
 KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}
@@ -49,18 +43,21 @@ def _outline(obj: LevelObject):
     return patches.Polygon([(obj.x + px * cos - py * sin, obj.y + px * sin + py * cos) for px, py in points])
 
 
-def draw_level(level: Level, title: str = "", paths=None, supports=frozenset(), bird=True):
-    """A matplotlib figure of a level; `paths` maps names to [(x, y), …], drawn as arrows."""
+def draw_level(level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True):
+    """A matplotlib figure of a level in `world` (its frame: bounds, ground, the bird's rest);
+    `paths` maps names to [(x, y), …], drawn as arrows."""
+    frame = world.frame
+    left, right, ground = frame.left, frame.right, frame.ground_top
     figure, axes = plt.subplots(figsize=(12, 5.2), dpi=100)
     tops = [o.y + 1.0 for o in level.objects] + [6.0]
-    axes.set_xlim(LEVEL_LEFT - 0.5, LEVEL_RIGHT + 0.5)
-    axes.set_ylim(GROUND_TOP - 1.2, max(tops) + 0.5)
+    axes.set_xlim(left - 0.5, right + 0.5)
+    axes.set_ylim(ground - 1.2, max(tops) + 0.5)
     axes.set_aspect("equal")
-    axes.add_patch(patches.Rectangle((LEVEL_LEFT, GROUND_TOP - 1.2), LEVEL_RIGHT - LEVEL_LEFT, 1.2, color="#8fbf5a", zorder=0))
+    axes.add_patch(patches.Rectangle((left, ground - 1.2), right - left, 1.2, color="#8fbf5a", zorder=0))
     sling_x, sling_y = level.slingshot
-    axes.add_patch(patches.Rectangle((sling_x - 0.12, GROUND_TOP), 0.24, sling_y + 0.9 - GROUND_TOP, color="#6b4226", zorder=1))
+    axes.add_patch(patches.Rectangle((sling_x - 0.12, ground), 0.24, sling_y + 0.9 - ground, color="#6b4226", zorder=1))
     if bird:
-        axes.add_patch(patches.Circle(BIRD_REST, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
+        axes.add_patch(patches.Circle(world.launch.bird_rest, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
     for obj in level.objects:
         kind = by_prefab(obj.type).kind
         if kind == "platform":
@@ -90,8 +87,8 @@ def draw_level(level: Level, title: str = "", paths=None, supports=frozenset(), 
     return figure
 
 
-def render(layout: ConcreteLayout, fmt: str = "png", title: str | None = None, paths=None) -> bytes:
-    """A picture of a concrete layout: as the Science Birds level it becomes."""
+def render(layout: ConcreteLayout, fmt: str, world, title: str | None = None, paths=None) -> bytes:
+    """A picture of a concrete layout: as the Science Birds level it becomes in `world`."""
     supports = frozenset(o.name for o in layout.objects if o.role == "support")
-    figure = draw_level(level_from_layout(layout), title or f"{layout.scenario} (seed {layout.seed})", paths, supports)
+    figure = draw_level(level_from_layout(layout), world, title or f"{layout.scenario} (seed {layout.seed})", paths, supports)
     return save(figure, fmt)

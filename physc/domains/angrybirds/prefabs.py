@@ -17,7 +17,10 @@ follow from two rules of Unity and one line of the game:
   holed polygon keeps 1.
 
 `body_shape` and `body_mass` give a level object's collision shape (convex parts,
-physc.backends.convex) and its mass under those rules.
+physc.backends.convex) and its mass under those rules. With `circle_colliders` (a world's
+body model: the `rolling` world) a prefab whose first collider is a disabled circle before an
+enabled polygon (`circle_first`) collides as that circle instead, and, being first, the
+circle takes the script's density.
 """
 
 from __future__ import annotations
@@ -69,20 +72,44 @@ def _area(collider: dict) -> float:
     return abs(signed_area(outline)) - sum(abs(signed_area(h)) for h in holes)
 
 
+def circle_first(prefab: str) -> bool:
+    """Whether the prefab's first collider is a disabled circle listed before an enabled
+    polygon (Phy-Q's Circle, CircleSmall and pigs)."""
+    colliders = prefabs()[prefab]["colliders"]
+    return (
+        len(colliders) >= 2 and colliders[0]["type"] == "circle" and not colliders[0]["enabled"]
+        and any(c["type"] == "polygon" and c["enabled"] for c in colliders[1:])
+    )
+
+
+def colliders(prefab: str, circle_colliders: bool = False) -> list[tuple[int, dict]]:
+    """(index, collider) of the colliders the body collides with: the enabled ones, or with
+    `circle_colliders` and a `circle_first` prefab, its first circle alone."""
+    listed = prefabs()[prefab]["colliders"]
+    if circle_colliders and circle_first(prefab):
+        return [(0, listed[0])]
+    return [(index, c) for index, c in enumerate(listed) if c["enabled"]]
+
+
 def enabled(prefab: str) -> list[dict]:
-    return [c for c in prefabs()[prefab]["colliders"] if c["enabled"]]
+    return [c for _, c in colliders(prefab)]
 
 
 @functools.cache
-def body_shape(prefab: str) -> Circle | Polygon | Compound:
-    """The prefab's enabled colliders as one body's shape (convex parts about its origin)."""
-    parts = tuple(part for collider in enabled(prefab) for part in _collider_parts(collider))
+def body_shape(prefab: str, circle_colliders: bool = False) -> Circle | Polygon | Compound:
+    """The prefab's colliders (`colliders`) as one body's shape (convex parts about its origin)."""
+    parts = tuple(part for _, collider in colliders(prefab, circle_colliders) for part in _collider_parts(collider))
     return parts[0] if len(parts) == 1 else Compound(parts)
 
 
 @functools.cache
-def body_mass(prefab: str, density: float) -> float:
+def body_mass(prefab: str, density: float, circle_colliders: bool = False) -> float:
     """The prefab's mass when its script's density is `density`: the first collider (enabled
-    or not) takes that density, every other keeps its own; only enabled ones weigh."""
-    colliders = prefabs()[prefab]["colliders"]
-    return sum(_area(c) * (density if index == 0 else c["density"]) for index, c in enumerate(colliders) if c["enabled"])
+    or not) takes that density, every other keeps its own; only those it collides with weigh."""
+    return sum(_area(c) * (density if index == 0 else c["density"]) for index, c in colliders(prefab, circle_colliders))
+
+
+def circle_radius(prefab: str, circle_colliders: bool = False) -> float | None:
+    """The radius of the prefab's body when it collides as one circle, else None."""
+    shape = body_shape(prefab, circle_colliders)
+    return shape.radius if isinstance(shape, Circle) else None

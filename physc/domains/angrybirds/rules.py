@@ -1,91 +1,76 @@
-"""The game rules of Science Birds (Phy-Q version), as named parameters.
+"""Science Birds' rules and body models, as named parameters of a world.
 
-Facts from shared/design/sciencebirds-facts.md §2–3; the choices where sources
-disagree are argued in docs/angrybirds.md.
+`Rules`: the game's rules (damage, TNT, the bird's removal, invulnerability); `Bodies`: how
+its objects are bodies (colliders, drags, masses, materials). Each field's source is its
+metadata (`physc worlds -v` lists them); the choices where sources disagree are argued in
+docs/angrybirds.md. A world (physc.domains.angrybirds.worlds) holds one of each.
 """
 
 from __future__ import annotations
 
-import math
-
 import attrs
 
-from physc.backends.settings import EngineSettings
-from physc.domains.angrybirds.world import GRAVITY, LEVEL_LEFT, LEVEL_RIGHT
+from physc.domains.angrybirds.catalogue import MATERIAL
 
-# Unity's 2D physics (Box2D) as Science Birds configures it: ProjectSettings/Physics2DSettings.asset
-# (100 velocity and 100 position iterations, velocity threshold 1, Baumgarte 0.2 / TOI 0.75,
-# max linear correction 0.2, max angular correction 8°, max translation speed 100 units/s,
-# sleeping after 0.5 s below 0.01 units/s and 2°/s, contact offset 0.01) and
-# ProjectSettings/TimeManager.asset (fixed step 0.02 s). docs/angrybirds.md cites each.
-SCIENCE_BIRDS_ENGINE = EngineSettings(
-    dt=0.02,
-    velocity_iterations=100,
-    position_iterations=100,
-    restitution_threshold=1.0,
-    linear_slop=0.005,  # half the contact offset 0.01
-    baumgarte=0.2,
-    toi_baumgarte=0.75,
-    max_linear_correction=0.2,
-    max_angular_correction=math.radians(8.0),
-    max_translation=100 * 0.02,  # m_MaxTranslationSpeed per step
-    time_to_sleep=0.5,
-    linear_sleep_tolerance=0.01,
-    angular_sleep_tolerance=math.radians(2.0),
-)
+
+def _cited(default, source: str, **options):
+    return attrs.field(default=default, metadata={"source": source}, **options)
 
 
 @attrs.frozen
 class Rules:
-    """Science Birds' rules, each a named parameter (docs/angrybirds.md cites the game file
-    of each). The defaults are the game's; another value is a deliberate departure."""
+    """Science Birds' rules. The defaults are the game's; another value is a deliberate departure."""
 
-    gravity: float = GRAVITY  # 9.81 × gravity scale 0.48: blocks, pigs and birds
-    # The bodies' collision shapes and masses: "game" (each prefab's own colliders and the
-    # masses the game gives them, physc.domains.angrybirds.prefabs; the default), or physc's
-    # catalogue model with Circle and CircleSmall as "round" (true circles that roll) or
-    # "phyq" (regular polygons with the game's flat foot) and density × area masses.
-    colliders: str = "game"
-    tnt_gravity_scale: float = 1 / 0.48  # TNT.prefab: gravity scale 1, so it falls at the full 9.81
-    engine: EngineSettings = SCIENCE_BIRDS_ENGINE
-    angular_drag: float = 2.0  # blocks', pigs' and birds' prefabs
-    tnt_angular_drag: float = 0.05  # TNT.prefab
-    tnt_friction: float = 0.4  # TNT.prefab names no material: Unity's default (0.4, bounciness 0)
-    tnt_density: float = 1.0  # TNT.prefab `_density` (Start turns auto mass on: 0.64² × 1)
-    damage_factor: float = 11.22  # ABConstants.DAMAGE_CONSTANT_MULTIPLIER
     # ABGameObject.OnCollisionEnter2D: |v_rel| · m_attacker · 11.22 · 0.5 − defence. Only
     # ABBlock overrides it for a bird (the full amount × the bird's multiplier), so a pig or
     # TNT struck by a bird takes the 0.5 formula too.
-    block_damage_share: float = 0.5
-    bird_multiplier: dict = attrs.field(factory=lambda: {"wood": 1.0, "stone": 1.0, "ice": 1.0, "": 1.0})  # BirdRed.prefab
-    pig_defence: float = 1.0
-    pig_density: float = 2.0  # the pigs' `_density`; with colliders "game" it lands on their disabled circle
-    pig_friction: float = 0.7
-    pig_bounciness: float = 0.05
-    bird_mass: float = 0.545  # BirdRed: circle r 0.17 × density 6
-    bird_friction: float = 0.3
-    bird_bounciness: float = 0.43
-    platform_friction: float = 0.4  # Platform.prefab names no material: Unity's default
-    ground_friction: float = 0.4
-    invulnerable_seconds: float = 2.0  # ABConstants.LEVEL_IMMORTAL_TIME: damage discarded for the first 2 s
+    damage_factor: float = _cited(11.22, "ABConstants.DAMAGE_CONSTANT_MULTIPLIER")
+    block_damage_share: float = _cited(0.5, "ABGameObject.OnCollisionEnter2D")
+    bird_multiplier: dict = attrs.field(
+        factory=lambda: {"wood": 1.0, "stone": 1.0, "ice": 1.0, "": 1.0}, metadata={"source": "BirdRed.prefab `_woodDamageMultiplier` etc."}
+    )
+    pig_defence: float = _cited(1.0, "the pigs' prefabs `_defense`")
+    invulnerable_seconds: float = _cited(2.0, "ABConstants.LEVEL_IMMORTAL_TIME: damage discarded for the first 2 s")
     # ABBird.cs: from its first collision on, the bird is checked 3 s later and then every
     # second, and removed once slower than 0.001 units/s; it never lives more than 20 s.
-    bird_still_after: float = 3.0
-    bird_still_every: float = 1.0
-    bird_still_speed: float = 0.001
-    bird_lifetime: float = 20.0
-    world_left: float = LEVEL_LEFT  # objects leaving [left, right] are destroyed
-    world_right: float = LEVEL_RIGHT
+    bird_still_after: float = _cited(3.0, "ABBird.OnCollisionEnter2D: InvokeRepeating after 3 s")
+    bird_still_every: float = _cited(1.0, "ABBird.OnCollisionEnter2D: InvokeRepeating every 1 s")
+    bird_still_speed: float = _cited(0.001, "ABBird.CheckVelocityToDie")
+    bird_lifetime: float = _cited(20.0, "BirdRed.prefab `lifeTime`")
     # ABTNT.cs: within the radius, damage and impulse fall off linearly with the distance
     # between the two objects' positions; birds are not affected.
-    tnt_radius: float = 2.5
-    tnt_damage: float = 100.0
-    tnt_impulse: float = 4.0
-
-    @property
-    def dt(self) -> float:
-        """The seconds of one step (Unity's fixed timestep)."""
-        return self.engine.dt
+    tnt_radius: float = _cited(2.5, "TNT.prefab `_explosionArea`")
+    tnt_damage: float = _cited(100.0, "TNT.prefab `_explosionDamage`")
+    tnt_impulse: float = _cited(4.0, "TNT.prefab `_explosionPower`")
 
 
-RULES = Rules()
+@attrs.frozen
+class Bodies:
+    """How the game's objects are bodies: colliders, drags, masses and materials."""
+
+    # "game": each prefab's own enabled colliders and the masses the game gives them
+    # (physc.domains.angrybirds.prefabs); or physc's catalogue model with Circle and
+    # CircleSmall as "round" (true circles) or "phyq" (regular polygons with the game's flat
+    # foot) and density × area masses (benchmarks of the catalogue model).
+    colliders: str = _cited("game", "the prefabs under Assets/Resources/Prefabs/GameWorld (tools/extract_prefabs.py)")
+    # Whether a prefab whose first collider is a disabled circle before an enabled polygon
+    # (Circle, CircleSmall, the pigs) collides as that circle instead (and the game's density
+    # rule lands on it): False in Phy-Q's game.
+    circle_colliders: bool = _cited(False, "Circle.prefab, CircleSmall.prefab, the pigs: the CircleCollider2D is disabled")
+    angular_drag: float = _cited(2.0, "the blocks' and pigs' prefabs: Rigidbody2D m_AngularDrag")
+    bird_angular_drag: float = _cited(2.0, "BirdRed.prefab: Rigidbody2D m_AngularDrag")
+    tnt_angular_drag: float = _cited(0.05, "TNT.prefab: Rigidbody2D m_AngularDrag")
+    tnt_gravity_scale: float = _cited(1 / 0.48, "TNT.prefab: gravity scale 1, so it falls at the full 9.81")
+    tnt_friction: float = _cited(0.4, "TNT.prefab names no material: Unity's default (0.4, bounciness 0)")
+    tnt_density: float = _cited(1.0, "TNT.prefab `_density` (Start turns auto mass on: 0.64² × 1)")
+    pig_density: float = _cited(2.0, "the pigs' prefabs `_density` (it lands on their first collider)")
+    pig_friction: float = _cited(0.7, "PigMedium.physicsMaterial2D")
+    pig_bounciness: float = _cited(0.05, "PigMedium.physicsMaterial2D")
+    bird_mass: float = _cited(0.545, "BirdRed.prefab: circle r 0.17 × `_density` 6")
+    bird_friction: float = _cited(0.3, "RedBird.physicsMaterial2D")
+    bird_bounciness: float = _cited(0.43, "RedBird.physicsMaterial2D")
+    platform_friction: float = _cited(0.4, "Platform.prefab names no material: Unity's default")
+    ground_friction: float = _cited(0.4, "the ground names no material: Unity's default")
+    materials: dict = attrs.field(
+        factory=lambda: dict(MATERIAL), metadata={"source": "Wood, Stone, Ice .physicsMaterial2D; densities and defences: the blocks' scripts"}
+    )

@@ -22,12 +22,13 @@ from physc.generation.acceptance import Acceptance
 from physc.picture import FORMATS
 from physc.simulation.scene import Scene
 
-from physc_phyre import actions, world
+from physc_phyre import actions, two_balls, world
 from physc_phyre.concretize import concretize
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
-from physc_phyre.rules import RECOGNISER, GoalRules
+from physc_phyre.rules import GoalRules
 from physc_phyre.task_file import task_json
 from physc_phyre.vocabulary import VOCABULARY
+from physc_phyre.worlds import PHYRE
 
 # PHYRE's SOLVABILITY_THRESHOLD_PROBS (docs/phyre-sources.md, section 5), by the level's tier.
 THRESHOLDS = {"BALL": 1e-5, "TWO_BALLS": 1e-6}
@@ -46,6 +47,7 @@ class Phyre(SimulatedDomain):
     name = "phyre"
     description = "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
     vocabulary = VOCABULARY
+    worlds = (PHYRE,)
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction, TwoBallAction)
@@ -55,7 +57,6 @@ class Phyre(SimulatedDomain):
         "in PHYRE's own binary TaskCollection is phyre/tasks.bin.lzma"
     )
     solution_class = (BallAction, TwoBallAction)
-    recogniser = RECOGNISER
     seconds = world.MAX_STEPS / world.FPS
     measures = (
         "stability = PHYRE's acceptance of a scene: left alone for 1,000 steps (16.7 s), it does not solve itself (its "
@@ -77,16 +78,14 @@ class Phyre(SimulatedDomain):
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
 
-    @staticmethod
-    def concretize(graph, scenario, rng):
-        return concretize(graph, scenario, rng)
+    def concretize(self, graph, scenario, rng):
+        return concretize(graph, scenario, rng, self.world.incline)
 
     @staticmethod
     def level_from_layout(layout, scenario) -> PhyreLevel:
         return level_from_layout(layout, scenario)
 
-    @staticmethod
-    def scene(level: PhyreLevel, action: BallAction | TwoBallAction | None) -> Scene:
+    def scene(self, level: PhyreLevel, action: BallAction | TwoBallAction | None) -> Scene:
         specs = world.walls(level.floor)
         kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
         radii = {}
@@ -102,15 +101,19 @@ class Phyre(SimulatedDomain):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))
             kinds[name] = "agent"
             radii[name] = ball.radius / world.PIXELS_PER_METRE
-        return Scene(tuple(specs), kinds, world.GRAVITY, world.ENGINE, radii, goal=level.goal)
+        return Scene(tuple(specs), kinds, self.world.gravity, self.world.engine, radii, goal=level.goal)
 
     @staticmethod
     def rules(level: PhyreLevel) -> GoalRules:
         return GoalRules(level.goal)
 
     @staticmethod
-    def actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction]]:
-        return actions.candidate_actions(level, scenario)
+    def actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
+        """Every valid drop onto the first target's points of interest (actions.py); in the
+        two-ball tier, pairs of such drops (two_balls.py)."""
+        if len(level.players) == 2:
+            return two_balls.candidate_pairs(level, scenario)
+        return actions.drops(level, scenario.interactions[0])
 
     @staticmethod
     def noisy(level: PhyreLevel, action, rng: random.Random):

@@ -28,16 +28,6 @@ NOISE = 0.5  # pixels, σ of the ball's position in a noisy replay
 MIN_RADIUS, MAX_RADIUS = 2, 32
 
 
-def candidate_actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
-    """(label, action) for every valid drop onto the first target's points of interest; in
-    the two-ball tier, pairs of such drops (two_balls.py)."""
-    if len(level.players) == 2:
-        from physc_phyre.two_balls import candidate_pairs
-
-        return candidate_pairs(level, scenario)
-    return drops(level, scenario.interactions[0])
-
-
 def drops(level: PhyreLevel, first) -> list[tuple[str, BallAction]]:
     """(label, ball) for every valid drop onto the points of interest of the target of
     `first`, a red ball's first interaction."""

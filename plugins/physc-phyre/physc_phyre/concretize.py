@@ -59,7 +59,9 @@ def _size(shape: str, rng: random.Random) -> float:
     return round(rng.uniform(45.0, 70.0), 1)
 
 
-def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
+def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
+    """The concrete object and shape of every node, drawn from `rng`; ramps at the angles of
+    the world's incline rule (physc.worlds.Incline)."""
     headings = {t.objects[1]: t.directions[0] for t in scenario.interactions if t.name in ("roll", "slide")}
     carried: dict[str, list[str]] = {}
     for edge in graph.edges:
@@ -86,9 +88,9 @@ def concretize(graph, scenario, rng: random.Random) -> dict[str, Body]:
         elif concrete == "ramp":
             length = round(rng.uniform(*RAMP_LENGTH), 1)
             if name in headings:
-                angle = rng.uniform(15, 30) * (-1 if headings[name] == "right" else 1)
+                angle = rng.uniform(*incline.descending) * (-1 if headings[name] == "right" else 1)
             else:
-                angle = rng.uniform(20, 40) * rng.choice((-1, 1))
+                angle = rng.uniform(*incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
         elif concrete in ("blackBar", "purpleBar") and node.static:
             widest = max((_across(bodies[o].geometry) for o in carried.get(name, ()) if o in bodies), default=0.0)

@@ -17,7 +17,8 @@ from __future__ import annotations
 
 import attrs
 
-from physc_phyre.level import PhyreLevel, TwoBallAction
+from physc_phyre.actions import drops, valid
+from physc_phyre.level import PhyreLevel, TwoBallAction, outline_box
 
 
 def first_acts(scenario, name: str):
@@ -28,8 +29,6 @@ def first_acts(scenario, name: str):
 def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallAction]]:
     """(label, action) for pairs of drops of the two red balls (module docstring); none when
     the second ball never acts, or its first target is not in the level yet."""
-    from physc_phyre.actions import drops, outline_box, valid
-
     firsts = [first_acts(scenario, name) for name in level.players]
     if any(term is None for term in firsts):
         return []

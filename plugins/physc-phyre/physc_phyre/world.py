@@ -132,3 +132,4 @@ def walls(floor: str = "floor") -> list[BodySpec]:
         "wall_right": (SCENE + WALL / 2, half, WALL, SCENE + 2 * WALL),
     }
     return [body_spec(name, rectangle(0.0, 0.0, w, h), x, y, 0.0, False) for name, (x, y, w, h) in places.items()]
+

@@ -172,9 +172,9 @@ def test_every_pixel_and_radius_survives_phyres_scaling():
 
 
 def _pipeline(name):
-    from physc.compiler.pipeline import Pipeline
     from physc.domains import load_domain
     from physc.dsl.frontend import analyze
+    from physc.generation.pipeline import Pipeline
 
     (scenario,) = analyze(str(EXAMPLES / "phyre" / name)).scenarios
     return Pipeline(load_domain("phyre"), scenario, 0)

@@ -1,13 +1,19 @@
-"""The compiler pipeline: the passes in order, for one scenario and one seed.
+"""The driver of one run: the compiler's passes in order, then the layout loop, for one
+scenario and one seed, within one time budget.
 
 Every stage's result is computed once and cached, so `--emit qsr` and `--emit
 layout` of the same scenario and seed run the same passes on the same random
 stream. The one random generator (`random.Random(seed)`) is handed to the passes
 explicitly, in pipeline order; nothing else draws random numbers.
+
+The run owns its deadline (`within_budget`): started once, when its work starts, it
+covers the generation and whatever the caller does with the result within the same
+block (a picture of the task), and an overrun comes out as one Infeasible.
 """
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import random
 
@@ -24,6 +30,7 @@ from physc.compiler.qsr_dnf import QsrDnf
 from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
 from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
+from physc.domains import world_name
 from physc.dsl.scenario import ScenarioIR
 from physc.generation.layout_loop import LayoutLoop
 
@@ -74,6 +81,25 @@ class Pipeline:
         # Whether a task must pass the domain's acceptance rule (PHYRE's GOOD_STABLE, not
         # TRIVIAL); off: --no-acceptance, for drafts.
         self.acceptance = acceptance
+
+    @functools.cached_property
+    def deadline(self) -> budget.Deadline:
+        """The run's time budget, started when it is first asked for: when the run's work
+        starts (`within_budget`), not when the pipeline is made."""
+        return budget.Deadline(self.time_budget)
+
+    @contextlib.contextmanager
+    def within_budget(self, stage: str = "task"):
+        """The rest of this run, within its one time budget: the stages computed inside the
+        block, and what the caller does with them there (a picture of the task), stop at
+        their next stopping point once `time_budget` seconds have passed since the first
+        such block began. An overrun that the layout loop has not already explained is
+        Infeasible(`stage`, budget=Exhausted.TIME)."""
+        try:
+            with budget.deadline(self.deadline):
+                yield
+        except budget.OutOfTime:
+            raise Infeasible(stage, f"the time budget of {self.time_budget:g} s ran out", budget=Exhausted.TIME) from None
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -128,7 +154,7 @@ class Pipeline:
             self.domain, self.scenario, self.rng, self.validate, self.layout_budget, self.time_budget,
             self.min_robustness, self.progress, self.verify_backend, self.acceptance,
         )
-        with budget.deadline(self.time_budget):
+        with self.within_budget():
             generated = loop.run(self.placements())
         result, used = generated.outcome, generated.layout
         parts = result.parts
@@ -136,6 +162,8 @@ class Pipeline:
             scenario=self.scenario.name,
             domain=self.domain.name,
             seed=self.seed,
+            world=world_name(self.domain),
+            backend=self.domain.backend.name,
             source=self.source,
             level=parts.level,
             solution=parts.solution,

@@ -1,0 +1,80 @@
+"""The options several commands share, each declared once with one default.
+
+`add_target`: where a command simulates (--world, --backend, and --verify-backend where a
+task is made); `add_generation`: the budgets and rules of making a task (compile, generate
+and eval). A command adds the groups it needs, so an option means the same, and defaults
+to the same, in every command.
+"""
+
+from __future__ import annotations
+
+from physc.backends import DEFAULT_BACKEND
+from physc.commands import arguments
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+
+
+def add_target(parser, verify: bool = True, replay: bool = False) -> None:
+    """--world and --backend; with `verify`, --verify-backend. With `replay` (a command that
+    replays a task: the task's own world and engine are the defaults, so none is set here)."""
+    default = None if replay else DEFAULT_BACKEND
+    where = "the task's world" if replay else "the domain's default world; physc worlds lists them"
+    parser.add_argument(
+        "--world", type=arguments.world, metavar="NAME", help=f"the world that is simulated: its engine settings, bodies and rules (default {where})"
+    )
+    parser.add_argument(
+        "--backend", type=arguments.backend, default=default, metavar="NAME",
+        help="the physics engine that simulates (default " + ("the task's, else " if replay else "") + f"{DEFAULT_BACKEND}, the game's; "
+        "pymunk and bullet are built in too: physc backends)",
+    )
+    if verify:
+        parser.add_argument(
+            "--verify-backend", type=arguments.backend, metavar="NAME",
+            help="a second physics backend (e.g. bullet) in which the task's solution must also solve the level and "
+            "realise the sequence, in its noisy replays too",
+        )
+
+
+def add_generation(parser, validate: bool = True) -> None:
+    """The budgets and rules of making a task; with `validate`, --no-validate (eval never
+    validates, as the paper's evaluation)."""
+    parser.add_argument(
+        "--layouts", type=arguments.count, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
+    )
+    parser.add_argument(
+        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
+    )
+    parser.add_argument(
+        "--min-robustness", type=arguments.count, default=MIN_ROBUSTNESS, metavar="K",
+        help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
+        f"(6 in angrybirds), use the most robust one that passes at least K of them, and as many fresh replays "
+        f"(default {MIN_ROBUSTNESS}; 6: no such fallbacks); the task JSON records the replays passed",
+    )
+    parser.add_argument(
+        "--no-acceptance", action="store_true",
+        help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts",
+    )
+    if validate:
+        parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each generated task")
+
+
+def generation_settings(args) -> dict:
+    """The fields of a job (physc.generation.job.Job) that `add_generation` and `add_target` set."""
+    return dict(
+        layouts=args.layouts, time_budget=args.time_budget, min_robustness=args.min_robustness, acceptance=not args.no_acceptance,
+        world=args.world or "", backend=args.backend, verify_backend=args.verify_backend,
+    )
+
+
+def replaying(domain, recorded: dict, args, command: str):
+    """`domain` in the world and engine a task is replayed in: --world and --backend where
+    given, else the ones the task file records (a task file from before worlds were named:
+    the domain's default world, and box2d). Says so on stderr when that is not where the task
+    was made, since its solution was found there."""
+    import sys
+
+    made_world, made_backend = recorded.get("world") or None, recorded.get("backend") or None
+    bound = domain.at(args.world or made_world, args.backend or made_backend)
+    for what, made, now, flag in (("world", made_world, bound.world.name, "--world"), ("engine", made_backend, bound.backend.name, "--backend")):
+        if made and made != now:
+            print(f"physc {command}: note: the task was made in the {what} '{made}'; replaying it in '{now}' ({flag})", file=sys.stderr)
+    return bound

@@ -1,0 +1,103 @@
+"""Science Birds' worlds: Phy-Q's game (`phyq`, the default) and a rolling variant.
+
+`phyq` is the game of the Phy-Q testbed (phy-q/benchmark, the Unity project under
+tasks/task_template_designer) as physc models it: Unity's Box2D at the project's settings,
+the prefabs' own colliders, masses and drags, the scripts' rules. Each setting cites the
+file it is read from (`physc worlds -v`; docs/angrybirds.md has the reasoning).
+
+`rolling` is physc's reading of the paper's unpublished changes ("a modified version of
+Science Birds, with adjusted physics parameters"): the same game, except that the circle
+colliders Phy-Q ships disabled on Circle, CircleSmall and the pigs are the ones used, and
+blocks and pigs have angular drag 0.05, as the original Science Birds' prefabs have. It is
+not the paper's own game, whose values were never published; patches/rolling/ makes the
+game itself play this way.
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.backends.settings import EngineSettings
+from physc.domains.angrybirds.frame import Frame
+from physc.domains.angrybirds.launch import Launch
+from physc.domains.angrybirds.rules import Bodies, Rules
+from physc.simulation.recognise import Recogniser
+from physc.worlds import Incline, World
+
+# Unity's 2D physics (Box2D) as Science Birds configures it.
+SCIENCE_BIRDS_ENGINE = EngineSettings(
+    dt=0.02,
+    velocity_iterations=100,
+    position_iterations=100,
+    restitution_threshold=1.0,
+    linear_slop=0.005,  # half the contact offset 0.01
+    baumgarte=0.2,
+    toi_baumgarte=0.75,
+    max_linear_correction=0.2,
+    max_angular_correction=math.radians(8.0),
+    max_translation=100 * 0.02,  # m_MaxTranslationSpeed per step
+    time_to_sleep=0.5,
+    linear_sleep_tolerance=0.01,
+    angular_sleep_tolerance=math.radians(2.0),
+)
+
+
+@attrs.frozen(kw_only=True)
+class ScienceBirdsWorld(World):
+    """A Science Birds world: the generic settings, and the game's frame, launch, bodies and rules."""
+
+    frame: Frame = attrs.field(factory=Frame)
+    launch: Launch = attrs.field(factory=Launch)
+    bodies: Bodies = attrs.field(factory=Bodies)
+    rules: Rules = attrs.field(factory=Rules)
+    rest_speed: float = attrs.field(default=0.02, metadata={"source": "physc: below this (units/s, rad/s) a body counts as at rest"})
+    falling_speed: float = attrs.field(default=0.5, metadata={"source": "physc: coming down faster (units/s), a body is still falling"})
+
+    def reachable(self, x: float, y: float) -> bool:
+        """Whether a full-stretch shot can pass through (x, y) in this world."""
+        return self.launch.reachable(x, y, self.gravity)
+
+
+PHYQ = ScienceBirdsWorld(
+    name="phyq",
+    description="Phy-Q's Science Birds as shipped (phy-q/benchmark): flat-footed circles, angular drag 2",
+    engine=SCIENCE_BIRDS_ENGINE,
+    gravity=9.81 * 0.48,
+    recogniser=Recogniser(
+        hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2,
+        fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
+        surfaces=("platform", "ground"), background=("ground",), thrown=("bird",),
+    ),
+    incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0)),
+    sources={
+        "engine": "ProjectSettings/Physics2DSettings.asset",
+        "engine.dt": "ProjectSettings/TimeManager.asset: Fixed Timestep 0.02",
+        "engine.linear_slop": "Physics2DSettings.asset: m_DefaultContactOffset 0.01, halved (Box2D's slop)",
+        "engine.max_translation": "Physics2DSettings.asset: m_MaxTranslationSpeed 100 units/s × the step",
+        "gravity": "Physics2DSettings.asset m_Gravity 9.81 × the prefabs' gravity scale 0.48",
+        "recogniser": "physc: recognition thresholds in level units (docs/generation.md)",
+    },
+)
+
+ROLLING = PHYQ.derive(
+    "rolling",
+    "Phy-Q's game with its circle colliders enabled and angular drag 0.05: physc's reading of the paper's modified game",
+    "physc's reading of the paper's unpublished 'adjusted physics parameters' (patches/rolling/)",
+    bodies=attrs.evolve(PHYQ.bodies, circle_colliders=True, angular_drag=0.05),
+)
+
+WORLDS = (PHYQ, ROLLING)
+
+
+def catalogue_model(colliders: str) -> ScienceBirdsWorld:
+    """Phy-Q's game with the bodies of physc's earlier catalogue model ("round": Circle and
+    CircleSmall as true circles; "phyq": regular polygons with the game's flat foot; masses
+    density × area), for the benchmarks that compare them with the game's own ("game": PHYQ)."""
+    if colliders == "game":
+        return PHYQ
+    return PHYQ.derive(
+        f"phyq-{colliders}", f"Phy-Q's game with physc's '{colliders}' catalogue bodies", "physc's catalogue model (benchmarks only)",
+        bodies=attrs.evolve(PHYQ.bodies, colliders=colliders),
+    )

@@ -1,0 +1,77 @@
+"""One task to make: the job `physc generate` and `physc eval` hand a worker.
+
+A job names a scenario (its text travels with it: a worker may be on another machine), a
+seed, the world and engine it is made in, and the generation's settings. It depends on
+nothing else, so the task it makes depends only on the job, never on the process or the
+number of workers. `settings` is what a stored result (a dataset row, an evaluation record)
+was made with: one made with other settings is made again.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc import __version__
+from physc.backends import DEFAULT_BACKEND
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.domains import bound, load_domain, world_name
+from physc.dsl.frontend import analyze_files, scenario_in
+from physc.fingerprint import code_fingerprint, scenario_fingerprint
+
+
+@attrs.frozen
+class Job:
+    path: str  # the .phys file
+    scenario: str
+    seed: int
+    time_budget: float = TIME_BUDGET
+    layouts: int = LAYOUT_BUDGET  # placed layouts simulation may try
+    min_robustness: int = MIN_ROBUSTNESS  # see physc.generation.pipeline.Pipeline
+    validate: bool = True  # the final validation of a generated task (`physc compile`'s; eval skips it, as the paper)
+    acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
+    picture: bool = False  # also draw the task (generate --png)
+    accidental: bool = False  # also measure accidental solvability (generate --accidental)
+    world: str = ""  # the domain's world ("": its default)
+    backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
+    verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
+    domain: str = ""  # the scenario's domain
+    fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
+    code: str = ""  # of the code that makes the task (code_fingerprint)
+    source: str = ""  # the scenario's text in block form: a worker reads this, never the file
+
+    @property
+    def key(self) -> tuple[str, int]:
+        return (self.scenario, self.seed)
+
+    @property
+    def settings(self) -> dict:
+        """What the job's result depends on besides its key."""
+        return {
+            "time_budget": self.time_budget, "layouts": self.layouts, "min_robustness": self.min_robustness, "validate": self.validate,
+            "acceptance": self.acceptance, "picture": self.picture, "accidental": self.accidental, "world": self.world,
+            "backend": self.backend, "verify_backend": self.verify_backend, "scenario": self.fingerprint, "physc": __version__,
+            "code": self.code,
+        }
+
+    def target(self):
+        """(the scenario's IR, its domain simulating in the job's world with the job's engine)."""
+        scenario = scenario_in(self.path, self.source, self.scenario)
+        return scenario, bound(load_domain(scenario.domain), self.world or None, self.backend)
+
+
+def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[Job], list]:
+    """Every (scenario, seed) job of the files, seeds `seed` to `seed + tasks - 1`, and the
+    diagnostics of files with errors. `settings`: the other fields of Job. The world is
+    named in each job (the domain's default when none is given), so a stored result says
+    which world made it."""
+    jobs = []
+    scenarios, problems = analyze_files(files)
+    engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), settings.get("verify_backend")) if n)
+    for path, scenario, source in scenarios:
+        world = world_name(bound(load_domain(scenario.domain), settings.get("world") or None))  # WorldError: not this domain's
+        common = dict(
+            settings, world=world, domain=scenario.domain, fingerprint=scenario_fingerprint(scenario),
+            code=code_fingerprint(scenario.domain, engines), source=source,
+        )
+        jobs += [Job(path, scenario.name, seed + index, **common) for index in range(tasks)]
+    return jobs, problems

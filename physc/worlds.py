@@ -1,0 +1,126 @@
+"""A world: everything one target world's physics is, as one value.
+
+A task is only useful where the user plays it, so a domain simulates in a *world* that
+describes its target as LLVM's `TargetMachine` describes a target: the engine settings,
+gravity, the incline rule of its surfaces, the recognition thresholds, and whatever the
+domain adds (Science Birds: level bounds, launch, body models, game rules). A domain owns
+its worlds and names one as its default (`Domain.worlds`, `Domain.default_world`); a
+command picks one with `--world NAME`, and the world passes down to the simulation with the
+domain (`Domain.at`), never through a module-level value.
+
+A variant is a small derivation of another world (`derive`), not a copy: it names its
+parent, what it changes and what the change is a reading of, and `settings()` reports each
+changed setting with that reading as its source (`physc worlds -v`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+
+import attrs
+
+from physc.backends.settings import EngineSettings
+from physc.simulation.recognise import Recogniser
+
+
+class WorldError(Exception):
+    """A world name the domain does not have (a usage error: exit status 2)."""
+
+
+@attrs.frozen
+class Incline:
+    """The incline rule: the angles (degrees from the horizontal) an inclined surface is drawn
+    at, for one that a body rolls or slides down (`descending`) and for any other (`other`,
+    a bounce surface, tilted either way). Data of the world: how steep a slope its bodies
+    still rest on, and carry a chain down, is its physics'."""
+
+    descending: tuple[float, float] = attrs.field(metadata={"source": "physc: drawn, then chosen by simulation"})
+    other: tuple[float, float] = attrs.field(metadata={"source": "physc: drawn, then chosen by simulation"})
+
+
+@attrs.frozen
+class Setting:
+    """One setting of a world as `physc worlds -v` lists it."""
+
+    path: str  # dotted: "engine.dt", "bodies.angular_drag"
+    value: object
+    source: str  # the target world's file it is read from, or physc's reason
+
+
+@attrs.frozen(kw_only=True)
+class World:
+    """A world a domain simulates (module docstring). A domain's subclass adds its own
+    settings as attrs fields; each field's `metadata["source"]` (or the world's `sources`,
+    by dotted prefix) says where its value comes from."""
+
+    name: str = attrs.field(metadata={"meta": True})
+    description: str = attrs.field(metadata={"meta": True})
+    engine: EngineSettings
+    gravity: float  # downwards, in the domain's units per second²
+    recogniser: Recogniser
+    incline: Incline
+    parent: str | None = attrs.field(default=None, metadata={"meta": True})
+    reading: str = attrs.field(default="", metadata={"meta": True})  # a variant: what its changes are a reading of
+    changed: tuple[str, ...] = attrs.field(default=(), metadata={"meta": True})  # a variant: the settings it changes
+    sources: Mapping[str, str] = attrs.field(factory=dict, eq=False, metadata={"meta": True})
+
+    def derive(self, name: str, description: str, reading: str, **changes) -> World:
+        """A variant of this world: `changes` by setting (a whole part, e.g. `bodies=`);
+        `reading` says what the changes are a reading of (the source of each changed setting)."""
+        variant = attrs.evolve(self, name=name, description=description, parent=self.name, reading=reading, changed=(), **changes)
+        ours = dict(_walk(self, "", self.sources))
+        changed = tuple(s.path for s in variant.settings() if ours.get(s.path, _MISSING) != s.value)
+        return attrs.evolve(variant, changed=changed)
+
+    def settings(self) -> list[Setting]:
+        """Every setting, in declaration order, with its source; a variant's changed settings
+        cite its reading."""
+        out = []
+        for path, value, source in _walk_sourced(self, "", self.sources):
+            if path in self.changed:
+                source = f"{self.name}: {self.reading}"
+            out.append(Setting(path, value, source))
+        return out
+
+
+_MISSING = object()
+
+
+def _source(path: str, field_source: str, sources: Mapping[str, str]) -> str:
+    """The longest prefix of `path` that `sources` names, else the field's own metadata."""
+    parts = path.split(".")
+    for end in range(len(parts), 0, -1):
+        prefix = ".".join(parts[:end])
+        if prefix in sources:
+            return sources[prefix]
+    return field_source
+
+
+def _walk_sourced(value, prefix: str, sources: Mapping[str, str], inherited: str = "") -> Iterator[tuple[str, object, str]]:
+    for field in attrs.fields(type(value)):
+        if field.metadata.get("meta"):
+            continue
+        path = f"{prefix}{field.name}"
+        own = field.metadata.get("source", inherited)
+        item = getattr(value, field.name)
+        if attrs.has(type(item)):
+            yield from _walk_sourced(item, path + ".", sources, _source(path, own, sources))
+        else:
+            yield path, item, _source(path, own, sources)
+
+
+def _walk(value, prefix: str, sources: Mapping[str, str]) -> Iterator[tuple[str, object]]:
+    for path, item, _ in _walk_sourced(value, prefix, sources):
+        yield path, item
+
+
+def by_name(worlds: tuple[World, ...], name: str, domain: str) -> World:
+    """The world `name` of a domain's `worlds`, or WorldError with "did you mean"."""
+    from physc.suggest import did_you_mean
+
+    for world in worlds:
+        if world.name == name:
+            return world
+    names = [w.name for w in worlds]
+    hint = did_you_mean(name, names) or "its worlds: " + (", ".join(names) or "none")
+    raise WorldError(f"the domain '{domain}' has no world '{name}'; {hint} (`physc worlds` lists them)")
