@@ -21,6 +21,7 @@ from pathlib import Path
 
 from physc.compiler.task import Solution
 from physc.domains import load_domain
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 from physc.files import write_atomic
 from physc.generation.verify import verify
@@ -35,7 +36,7 @@ def replayed(records: list[dict], backend: str, replays: int):
             continue
         key = (record["file"], record["scenario"])
         if key not in scenarios:
-            scenarios[key] = next(s for s in analyze(record["file"]).scenarios if s.name == record["scenario"])
+            scenarios[key] = next(s for s in analyze(record["file"], INSTALLED).scenarios if s.name == record["scenario"])
         scenario = scenarios[key]
         domain = load_domain(scenario.domain)
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})

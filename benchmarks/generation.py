@@ -21,6 +21,7 @@ from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
 from physc.domains import load_domain
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 from physc.generation.pipeline import Pipeline
 
@@ -35,7 +36,7 @@ def main() -> None:
     parser.add_argument("--file", default=str(PAPER), help="the scenarios (default: the paper's 16; examples/beyond/all.beyond.phys: ours)")
     args = parser.parse_args()
     domain = load_domain("angrybirds")
-    scenarios = analyze(args.file).scenarios
+    scenarios = analyze(args.file, INSTALLED).scenarios
     wanted = set(args.scenarios.split(",")) if args.scenarios else None
     by_count: dict[int, list[float]] = {}
     simulations_by_count: dict[int, list[int]] = {}

@@ -25,6 +25,7 @@ from physc.generation import search
 from physc.generation.pipeline import Pipeline
 from physc.generation.settings import NOT_REALISED
 from physc.domains import load_domain
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
@@ -58,7 +59,7 @@ def main() -> None:
     args = parser.parse_args()
     domain = load_domain("angrybirds")
     wanted = args.scenarios.split(",")
-    scenarios = {s.name: s for s in analyze(str(PAPER)).scenarios}
+    scenarios = {s.name: s for s in analyze(str(PAPER), INSTALLED).scenarios}
     print(f"machine: {platform.machine()}, Python {platform.python_version()}; seeds 0-{args.seeds - 1}; time budget {args.time_budget:g} s")
     for name in wanted:
         scenario = scenarios[name]

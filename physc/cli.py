@@ -102,6 +102,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_lsp_command(commands, common)
     add_completion_command(commands, common)
+    commands.choices["completion"].set_defaults(root=parser)  # the completion script is made from this parser
 
     backends = commands.add_parser("backends", parents=[common], help="list installed physics engines, their versions and what each honours")
     backends.add_argument("name", nargs="*", help="only these backends")

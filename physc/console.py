@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sys
 
-EXIT_INTERRUPTED = 130  # Ctrl-C: 128 + SIGINT, as shells report it (physc.commands.common uses this one)
+from physc.exits import EXIT_INTERRUPTED
 
 
 def main(argv=None) -> int:

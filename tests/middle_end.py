@@ -6,6 +6,7 @@ import functools
 
 from conftest import EXAMPLES
 from physc.domains import load_domain
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 from physc.generation.pipeline import Pipeline
 
@@ -14,7 +15,7 @@ DOMAIN = load_domain("angrybirds")
 
 @functools.cache
 def paper_scenarios():
-    analysis = analyze(str(EXAMPLES / "paper" / "all.paper.phys"))
+    analysis = analyze(str(EXAMPLES / "paper" / "all.paper.phys"), INSTALLED)
     return {s.name: s for s in analysis.scenarios}
 
 
@@ -29,7 +30,7 @@ def scenario_from_text(text: str):
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "x.phys"
         path.write_text(text)
-        analysis = analyze(str(path))
+        analysis = analyze(str(path), INSTALLED)
     assert not [d for d in analysis.diagnostics if d.is_error], analysis.diagnostics
     return analysis.scenarios[0]
 
@@ -43,7 +44,7 @@ def search(name: str, seed: int = 0, **settings):
 
     from physc.generation.search import Search
 
-    scenario = next(s for s in analyze(str(EXAMPLES / "paper" / "all.paper.phys")).scenarios if s.name == name)
+    scenario = next(s for s in analyze(str(EXAMPLES / "paper" / "all.paper.phys"), INSTALLED).scenarios if s.name == name)
     layout = Pipeline(DOMAIN, scenario, seed).placed.layout
     found = Search(DOMAIN, scenario, layout, random.Random(seed), DOMAIN.robustness_replays)
     if settings:

@@ -8,14 +8,9 @@ import sys
 from typing import Sequence
 
 from physc import diagnostics
-from physc.console import EXIT_INTERRUPTED  # Ctrl-C: 128 + SIGINT, as shells report it
+from physc.exits import EXIT_INFEASIBLE, EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_STATUSES, EXIT_USAGE  # noqa: F401
 from physc.diagnostics import Diagnostic
 
-EXIT_OK, EXIT_INPUT, EXIT_USAGE, EXIT_INFEASIBLE, EXIT_INTERNAL = 0, 1, 2, 3, 70
-EXIT_STATUSES = (
-    "exit status: 0 ok, 1 input errors, 2 usage or unreadable file, 3 no task could be generated, "
-    "70 internal error (a bug in physc), 130 interrupted (Ctrl-C)"
-)
 
 
 class UsageError(Exception):

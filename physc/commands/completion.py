@@ -12,9 +12,7 @@ FILE_OPTIONS = {"-o", "--output", "--task", "--png", "--out", "--log-file"}
 def cmd_completion(args) -> int:
     import shtab
 
-    from physc.cli import build_parser
-
-    parser = build_parser()
+    parser = args.root  # the whole command line's parser, handed over by physc.cli
     _mark_files(parser, shtab)
     print(shtab.complete(parser, shell=args.shell, root_prefix="physc"))
     return EXIT_OK

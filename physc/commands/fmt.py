@@ -25,7 +25,7 @@ def cmd_fmt(args) -> int:
     report = reporter(args)
     changed, listed = [], []
     for path in args.files:
-        analysis = analyze(path, check=False)
+        analysis = analyze(path, None, check=False)  # formatting checks nothing: no vocabularies
         if analysis.file is None or any(d.is_error for d in analysis.syntax):
             report(path, analysis.source, analysis.diagnostics)
             status = max(status, diagnostics.exit_status(analysis.diagnostics))

@@ -45,6 +45,7 @@ def _parts(task: dict, path: str):
     from physc.compiler.task import Solution
     from physc.domains import load_domain
     from physc.domains.base import DomainError, require, solution_classes
+    from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze_text
     from physc.serialize import from_data
 
@@ -55,7 +56,7 @@ def _parts(task: dict, path: str):
         raise UsageError(f"{path}: {error.message}") from None
     if not domain.level_classes:
         raise UsageError(f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)")
-    analysis = analyze_text(f"{path} (source)", str(task["source"]))
+    analysis = analyze_text(f"{path} (source)", str(task["source"]), INSTALLED)
     scenario = next((s for s in analysis.scenarios if s.name == task["scenario"]), None)
     if scenario is None or any(d.is_error for d in analysis.diagnostics):
         raise UsageError(f"{path}: its source does not hold a valid scenario '{task['scenario']}'")

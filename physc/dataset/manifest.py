@@ -23,7 +23,7 @@ PARQUET = "manifest.parquet"
 # The columns, in order, with their Arrow types ("struct": an object, its fields' types read from
 # the rows; "terms": a list of interactions in .phys syntax).
 COLUMNS = [
-    ("file", "string"), ("scenario", "string"), ("seed", "int64"), ("domain", "string"), ("title", "string"),
+    ("file", "string"), ("scenario", "string"), ("seed", "int64"), ("domain", "string"), ("world", "string"), ("backend", "string"), ("title", "string"),
     ("interactions", "int32"), ("sequence", "string"), ("sequence_terms", "terms"), ("outcome", "string"), ("reason", "string"),
     ("level", "string"), ("task", "string"), ("picture", "string"), ("solution", "struct"), ("trace", "string"),
     ("trace_terms", "terms"), ("robustness_passed", "int32"), ("robustness_run", "int32"), ("validated", "bool_"),

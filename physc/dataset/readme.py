@@ -42,6 +42,7 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
         missing=len(rows) - len(made),
         scenarios=scenarios,
         backends=", ".join(sorted({j.backend for j in jobs} | {j.verify_backend for j in jobs if j.verify_backend})),
+        worlds=_worlds(jobs),
         validated=all(j.validate for j in jobs),
         accidental=all(j.accidental for j in jobs),
         pictures=any(r.get("picture") for r in rows),
@@ -78,3 +79,11 @@ def _scenario(name: str, pairs: list) -> dict:
         "robustness": ", ".join(f"{k} × {v}" for k, v in sorted(robustness.items(), key=lambda kv: (-kv[1], kv[0]))) or "none generated",
         "reasons": "; ".join(f"{v} × {k}" for k, v in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0]))),
     }
+
+
+def _worlds(jobs) -> str:
+    """The worlds the tasks were made in, in words: "the world 'phyq'" or "the worlds 'phyq', 'rolling'"."""
+    names = sorted({j.world for j in jobs if j.world})
+    if not names:
+        return "the domain's world"
+    return ("the world " if len(names) == 1 else "the worlds ") + ", ".join(f"'{n}'" for n in names)

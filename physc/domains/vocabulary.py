@@ -21,10 +21,8 @@ import re
 
 import attrs
 
-OBJECT = "object"
-DIRECTION = "direction"
-INTERACTION = "interaction"
-RESTRICTION = "restriction"
+# The kinds of a term and of a parameter are the front end's words (the domains import it).
+from physc.dsl.vocabularies import DIRECTION, INTERACTION, OBJECT, RESTRICTION
 
 
 @attrs.frozen

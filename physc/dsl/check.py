@@ -8,8 +8,6 @@ are destroyed, which restriction narrows which interaction, and so on.
 
 from __future__ import annotations
 
-from typing import Callable
-
 import attrs
 
 from physc.diagnostics import Diagnostic, Fix, Label, Span
@@ -29,16 +27,9 @@ class CheckResult:
     diagnostics: tuple[Diagnostic, ...]
 
 
-def check_file(
-    file: ast.File, path: str = "", vocabularies: Vocabularies | None = None, *, domain_loader: Callable | None = None
-) -> CheckResult:
-    """The scenarios of `file` checked against the `vocabularies` they are handed. `domain_loader`
-    (name -> a domain, whose `.vocabulary` is read) is the older form, kept for the callers that
-    do not hand vocabularies yet; with it, a scenario that names no domain asks it for ''."""
-    if vocabularies is None:
-        if domain_loader is None:
-            raise TypeError("check_file needs the vocabularies to check against")
-        vocabularies = Vocabularies(lambda name: domain_loader(name).vocabulary, "")
+def check_file(file: ast.File, path: str = "", *, vocabularies: Vocabularies) -> CheckResult:
+    """The scenarios of `file` checked against the `vocabularies` they are handed (the layers
+    above build them: `physc.domains.words.INSTALLED`)."""
     with gc_paused():
         return _check_file(file, path, vocabularies)
 

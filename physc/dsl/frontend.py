@@ -26,22 +26,23 @@ class Analysis:
         return tuple(sorted(self.syntax + self.semantic, key=sort_key))
 
 
-def analyze(path: str, check: bool = True, vocabularies: Vocabularies | None = None) -> Analysis:
+def analyze(path: str, vocabularies: Vocabularies | None, check: bool = True) -> Analysis:
     """Read and parse `path` ('-' for standard input); with `check`, run the static checks
-    against `vocabularies`."""
+    against `vocabularies` (the layers above hand them: `physc.domains.words.INSTALLED`; None
+    only without `check`, which reads none)."""
     read = read_source(path)
     if read.source is None or read.diagnostics:
         return Analysis(path, read.source, None, (), read.diagnostics, ())
     return _analyzed(path, read.source, check, vocabularies)
 
 
-def analyze_text(name: str, text: str, vocabularies: Vocabularies | None = None) -> Analysis:
+def analyze_text(name: str, text: str, vocabularies: Vocabularies) -> Analysis:
     """`analyze` of a scenario held in memory (a task file's `source`), named `name` in
     diagnostics."""
     return _analyzed(name, SourceText(name, text), True, vocabularies)
 
 
-def scenario_in(name: str, text: str, scenario: str, vocabularies: Vocabularies | None = None) -> ScenarioIR:
+def scenario_in(name: str, text: str, scenario: str, vocabularies: Vocabularies) -> ScenarioIR:
     """The checked scenario `scenario` of `text` (a batch job's own text, named `name` as its
     file is): a worker reads the scenario it was sent, never a file, which on another machine
     or in another folder is missing or another."""
@@ -52,20 +53,13 @@ def _analyzed(path: str, source: SourceText, check: bool, vocabularies: Vocabula
     parsed = parse_source(source)
     if not check:
         return Analysis(path, parsed.source, parsed.file, (), parsed.diagnostics, ())
-    checked = check_file(parsed.file, path, vocabularies or _installed())
+    if vocabularies is None:
+        raise TypeError("checking needs the vocabularies to check against")
+    checked = check_file(parsed.file, path, vocabularies=vocabularies)
     return Analysis(path, parsed.source, parsed.file, checked.scenarios, parsed.diagnostics, checked.diagnostics)
 
 
-def _installed() -> Vocabularies:
-    """The installed domains' vocabularies, for the callers that do not hand them yet
-    (physc/evaluation/run.py, physc/dataset/job.py, physc/commands/verify.py, some tests and
-    benchmarks): the one place left where the front end reaches up to the domains."""
-    from physc.domains.words import INSTALLED
-
-    return INSTALLED
-
-
-def analyze_files(paths, vocabularies: Vocabularies | None = None) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
+def analyze_files(paths, vocabularies: Vocabularies) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
     """The checked scenarios of several files, each with its file's path and its own text in
     block form (what a worker on another machine is sent), in order; and, for each file with
     errors, (path, its analysis, its errors): a batch command (eval, generate) reports those and
@@ -75,7 +69,7 @@ def analyze_files(paths, vocabularies: Vocabularies | None = None) -> tuple[list
 
     scenarios, problems = [], []
     for path in paths:
-        analysis = analyze(path, vocabularies=vocabularies)
+        analysis = analyze(path, vocabularies)
         errors = [d for d in analysis.diagnostics if d.is_error]
         if errors:
             problems.append((path, analysis, errors))

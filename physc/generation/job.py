@@ -15,6 +15,7 @@ from physc import __version__
 from physc.backends import DEFAULT_BACKEND
 from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
 from physc.domains import bound, load_domain, world_name
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze_files, scenario_in
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
 
@@ -55,7 +56,7 @@ class Job:
 
     def target(self):
         """(the scenario's IR, its domain simulating in the job's world with the job's engine)."""
-        scenario = scenario_in(self.path, self.source, self.scenario)
+        scenario = scenario_in(self.path, self.source, self.scenario, INSTALLED)
         return scenario, bound(load_domain(scenario.domain), self.world or None, self.backend)
 
 
@@ -65,7 +66,7 @@ def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[
     named in each job (the domain's default when none is given), so a stored result says
     which world made it."""
     jobs = []
-    scenarios, problems = analyze_files(files)
+    scenarios, problems = analyze_files(files, INSTALLED)
     engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), settings.get("verify_backend")) if n)
     for path, scenario, source in scenarios:
         world = world_name(bound(load_domain(scenario.domain), settings.get("world") or None))  # WorldError: not this domain's

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-from physc.domains import load_domain
 from physc.domains.vocabulary import Vocabulary
+from physc.domains.words import vocabulary
 from physc.lsp.context import Place
 
 
@@ -11,7 +11,7 @@ def vocabulary_of(domain: str) -> Vocabulary | None:
     """The vocabulary of an installed domain; None for a domain that is not installed or fails to
     load (the diagnostics say why)."""
     try:
-        return load_domain(domain).vocabulary
+        return vocabulary(domain)
     except Exception:  # a broken plugin must not take the editor features down
         return None
 

@@ -36,6 +36,7 @@ from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_source
+from physc.dsl.vocabularies import Vocabularies
 from physc.generation.pipeline import Pipeline
 from physc.simulation.fidelity import fidelity
 from physc.simulation.recognise import Recogniser, approach, side, violations
@@ -282,7 +283,7 @@ scenario Push "A ball pushes a box against the goal" {
 def scenario_ir():
     """The checked scenario, with this module's domain as the one `domain minimal` selects."""
     parsed = parse_source(SourceText("push.phys", SOURCE))
-    checked = check_file(parsed.file, "push.phys", domain_loader=lambda name: DOMAIN)
+    checked = check_file(parsed.file, "push.phys", vocabularies=Vocabularies(lambda name: DOMAIN.vocabulary, "minimal"))
     assert not parsed.diagnostics and not checked.diagnostics, [d.message for d in checked.diagnostics]
     (ir,) = checked.scenarios
     return ir

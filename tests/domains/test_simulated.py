@@ -122,10 +122,11 @@ def test_the_next_target_goes_with_its_support_onto_the_actors_path():
     ledge and all, so that its top is under the path; the actor's own ledge does not move."""
     import numpy as np
 
+    from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze_text
     from physc.simulation.trace import Trace
 
-    scenario = analyze_text("s.phys", "scenario P { domain phyre interactions { hit(red, rObj, above) > hit(rObj, green, above) > touch(green, target) } }").scenarios[0]
+    scenario = analyze_text("s.phys", "scenario P { domain phyre interactions { hit(red, rObj, above) > hit(rObj, green, above) > touch(green, target) } }", INSTALLED).scenarios[0]
     objects = (
         _placed("rObj", 2, 5.5, 1, 1), _placed("ledge", 2, 4.9, 3, 0.2, "support"),
         _placed("green", 8, 2.5, 1, 1), _placed("support_green", 8, 1.9, 3, 0.2, "support"),

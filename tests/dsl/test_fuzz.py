@@ -72,7 +72,7 @@ PAPER = EXAMPLES / "paper" / "04_R.phys"
 def check_phys(text: str) -> None:
     """Parse and check `text`; every diagnostic must be well-formed and safe to print."""
     parsed = parse_text(text, "fuzz.phys")
-    checked = check_file(parsed.file, "fuzz.phys", INSTALLED)
+    checked = check_file(parsed.file, "fuzz.phys", vocabularies=INSTALLED)
     found = parsed.diagnostics + checked.diagnostics
     for diagnostic in found:
         error_codes.lookup(diagnostic.code)

@@ -118,7 +118,7 @@ def test_a_restriction_repeated_thousands_of_times_is_said_once(tmp_path, physc)
         'scenario SF "Single Force" {\n    interactions {\n        hit(bird, pig, any)\n        > destroy(bird, pig)\n    }\n'
         f"    restrictions {{\n{repeated}\n    }}\n}}\n"
     )
-    (scenario,) = analyze(str(path)).scenarios
+    (scenario,) = analyze(str(path), INSTALLED).scenarios
     assert [r.text for r in scenario.restrictions] == ["cannotHit(bird, pig, above)"]
     run = physc("compile", path, "--time-budget", "60", "-o", tmp_path / "sf.xml", "-q")
     assert run.status == 0, run.stderr

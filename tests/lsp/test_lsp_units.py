@@ -12,6 +12,7 @@ from hypothesis import strategies as st
 from lsprotocol import types
 
 from conftest import EXAMPLES, run_physc
+from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze_text
 from physc.lsp import context
 from physc.lsp.completion import complete
@@ -109,7 +110,7 @@ def test_every_code_has_its_explanation_shipped():
 
 def test_hover_explains_a_diagnostic_with_docs_errors_md():
     text = "scenario SF {\n    interactions {\n        hit(bird, pig, any)\n        > destory(bird, pig)\n    }\n}\n"
-    analysis = analyze_text("x.phys", text)
+    analysis = analyze_text("x.phys", text, INSTALLED)
     offset = text.index("destory") + 2
     shown = hover_text(context.locate(text, offset + 1), [d for d in analysis.diagnostics if d.span.start <= offset <= d.span.end])
     assert shown.startswith("**error[E0201]**: unknown interaction term 'destory'")
@@ -143,30 +144,30 @@ FIXABLE = [p.read_bytes().decode("utf-8", "replace") for p in BROKEN] + BRACKETE
 def test_every_quick_fix_removes_its_diagnostic(text):
     """A fix takes its diagnostic away and never breaks the syntax (a syntax error would hide every
     other diagnostic)."""
-    before = analyze_text("x.phys", text)
+    before = analyze_text("x.phys", text, INSTALLED)
     for diagnostic in before.diagnostics:
         for fix in diagnostic.fixes:
-            after = analyze_text("x.phys", applied(text, fix))
+            after = analyze_text("x.phys", applied(text, fix), INSTALLED)
             assert [d.code for d in after.syntax] == [d.code for d in before.syntax], fix.title
             assert (diagnostic.code, diagnostic.message) not in {(d.code, d.message) for d in after.diagnostics}, fix.title
 
 
 def test_inserted_terms_follow_their_neighbours_brackets():
-    (diagnostic,) = analyze_text("x", BRACKETED[0]).diagnostics
+    (diagnostic,) = analyze_text("x", BRACKETED[0], INSTALLED).diagnostics
     assert applied(BRACKETED[0], diagnostic.fixes[0]) == "scenario X = {[hit(bird)(pig)(left)] > [destroy(bird, pig)]}, {}"
-    (diagnostic,) = analyze_text("x", BRACKETED[1]).diagnostics
+    (diagnostic,) = analyze_text("x", BRACKETED[1], INSTALLED).diagnostics
     assert applied(BRACKETED[1], diagnostic.fixes[0]).startswith("scenario X = {[hit(bird, rBlock, left)] > [roll(")
     text = BRACKETED[5]
-    renamed = applied(text, analyze_text("x", text).diagnostics[0].fixes[0])  # every use, the broken term's too
+    renamed = applied(text, analyze_text("x", text, INSTALLED).diagnostics[0].fixes[0])  # every use, the broken term's too
     assert "rBlok" not in renamed
 
 
 def test_quick_fixes_where_a_help_proposes_a_change():
     """The codes whose broken example has a fix; a misspelt object is renamed at every use."""
-    fixed = {p.stem[:5] for p in BROKEN if any(d.fixes for d in analyze_text(p.name, p.read_bytes().decode("utf-8", "replace")).diagnostics)}
+    fixed = {p.stem[:5] for p in BROKEN if any(d.fixes for d in analyze_text(p.name, p.read_bytes().decode("utf-8", "replace"), INSTALLED).diagnostics)}
     assert {"E0201", "E0203", "E0301", "E0302", "E0303", "E0206", "E0401", "E0402", "E0403", "E0404", "E0701"} <= fixed
     text = (EXAMPLES / "errors" / "E0301_unknown_object.phys").read_text()
-    (diagnostic,) = analyze_text("x", text).diagnostics
+    (diagnostic,) = analyze_text("x", text, INSTALLED).diagnostics
     assert "rBlok" not in applied(text, diagnostic.fixes[0]) and len(diagnostic.fixes[0].edits) == 3
 
 
@@ -192,7 +193,7 @@ def test_lsp_without_pygls_is_a_usage_error(monkeypatch):
 @given(randoms, st.sampled_from(PHYS_CORPUS))
 def test_mutated_files_at_random_places(rng, text):
     text = mutate_text(rng, text, PHYS_PIECES, PHYS_CORPUS)
-    analysis = analyze_text("fuzz.phys", text)
+    analysis = analyze_text("fuzz.phys", text, INSTALLED)
     for _ in range(3):
         offset = rng.randint(0, len(text))
         found = context.locate(text, offset)

@@ -115,10 +115,11 @@ def test_the_goal_pair_is_the_scenarios_touch(tmp_path):
     assert status == 0, err
     from physc_phyre import DOMAIN
     from physc.compiler.concrete_layout import ConcreteLayout
+    from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze
     from physc.serialize import from_data
 
-    scenario = analyze(str(path)).scenarios[0]
+    scenario = analyze(str(path), INSTALLED).scenarios[0]
     layout = from_data(json.loads(out), {cls.__name__: cls for cls in (ConcreteLayout,)} | _layout_classes())
     assert "decoy" in {o.name for o in layout.objects}
     assert DOMAIN.level_from_layout(layout, scenario).goal == ("green", "target")
@@ -173,10 +174,11 @@ def test_every_pixel_and_radius_survives_phyres_scaling():
 
 def _pipeline(name):
     from physc.domains import load_domain
+    from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze
     from physc.generation.pipeline import Pipeline
 
-    (scenario,) = analyze(str(EXAMPLES / "phyre" / name)).scenarios
+    (scenario,) = analyze(str(EXAMPLES / "phyre" / name), INSTALLED).scenarios
     return Pipeline(load_domain("phyre"), scenario, 0)
 
 
