@@ -38,13 +38,13 @@ from simulation_speed import level as speed_level  # noqa: E402
 from physc.backends import load_backend  # noqa: E402
 from physc.domains.angrybirds.catalogue import extent  # noqa: E402
 from physc.domains.angrybirds.game import BIRD, GROUND, Game  # noqa: E402
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model  # noqa: E402
 from physc.domains.angrybirds.launch import Shot  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.level_xml import read_level  # noqa: E402
-from physc.domains.angrybirds.rules import Rules  # noqa: E402
-from physc.domains.angrybirds.world import GROUND_TOP  # noqa: E402
 from physc.simulation.stability import largest_shift  # noqa: E402
 
+GROUND_TOP = PHYQ.frame.ground_top
 TEMPLATES = pathlib.Path(__file__).resolve().parents[2] / "shared/data/sciencebirds/phyq-templates"
 SQUARE = 0.3772  # SquareSmall's side
 CIRCLE = 0.75

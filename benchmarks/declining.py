@@ -19,7 +19,11 @@ import math
 import numpy as np
 
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.worlds import PHYQ
+
+BOX2D = load_backend("box2d")
 from physc.domains.angrybirds.level import Level, LevelObject
 
 ANGLES = (10, 15, 20, 25)

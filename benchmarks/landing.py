@@ -16,7 +16,11 @@ from __future__ import annotations
 import argparse
 
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.worlds import PHYQ
+
+BOX2D = load_backend("box2d")
 from physc.domains.angrybirds.level import Level, LevelObject
 
 SHARES = (0.0, -0.2, -0.4, -0.6, -0.8, -1.0)

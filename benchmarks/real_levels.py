@@ -19,9 +19,12 @@ from pathlib import Path
 
 import numpy as np
 
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.worlds import catalogue_model
+
+BOX2D = load_backend("box2d")
 from physc.domains.angrybirds.level_xml import LevelError, read_level
-from physc.domains.angrybirds.rules import Rules
 
 
 def movement(trace) -> tuple[float, str]:

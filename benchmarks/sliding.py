@@ -23,7 +23,11 @@ import numpy as np
 
 from physc.domains.angrybirds.actions import points_of_interest
 from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.worlds import PHYQ
+
+BOX2D = load_backend("box2d")
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 

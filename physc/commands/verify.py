@@ -42,7 +42,6 @@ def read_task(path: str) -> dict:
 
 def _parts(task: dict, path: str):
     """(domain, scenario, level, the level as the domain writes it, solution) of a task file."""
-    from physc.compiler.task import Solution
     from physc.domains import load_domain
     from physc.domains.base import DomainError, require, solution_classes
     from physc.domains.words import INSTALLED

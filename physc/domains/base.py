@@ -269,8 +269,8 @@ class Domain(abc.ABC):
 
     @_no_default
     def replay(self, level, solution, scenario: ScenarioIR, rng=None):
-        """The solution played in `level`, in the backend the caller selected
-        (physc.backends.current): a physc.simulation.trace.Trace with its interactions
+        """The solution played in `level`, in the domain's world and backend (`at`): a
+        physc.simulation.trace.Trace with its interactions
         recognised and its restrictions checked. With `rng`, a noisy replay: the domain's
         noise model (the one its robustness replays use) drawn from `rng`. What `physc
         verify`, `--verify-backend` and the evaluation's replays run."""

@@ -18,9 +18,8 @@ import random
 import time
 from pathlib import Path
 
-import attrs
 
-from physc import __version__, budget
+from physc import budget
 from physc.compiler.infeasible import Infeasible
 from physc.domains.base import DomainError
 from physc.generation.pipeline import Pipeline

@@ -31,7 +31,7 @@ from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
 from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
-from physc.domains.base import STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.base import STAGE_NEEDS, MissingCapability, missing
 from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.check import check_file

@@ -9,7 +9,7 @@ import pytest
 from conftest import GENERATED, TEMPLATES
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level_xml import read_level
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+from physc.domains.angrybirds.worlds import catalogue_model
 from physc.simulation.stability import largest_shift
 
 # Templates that do not stand in the default engine (Box2D at the game's settings), by collider

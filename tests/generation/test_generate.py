@@ -17,7 +17,7 @@ from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.level_xml import read_level
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+from physc.domains.angrybirds.worlds import PHYQ
 
 # A fixed seed per scenario that generation handles today in the game's physics (docs/results.md
 # has the rates of all 16): seed 0 of the 2- and 4-interaction scenarios but R. A scenario with a

@@ -14,7 +14,7 @@ from physc.backends import BodySpec, Polygon, load_backend
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+from physc.domains.angrybirds.worlds import PHYQ
 
 BOX2D = load_backend("box2d")
 

@@ -14,7 +14,7 @@ from physc.backends.settings import EngineSettings
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+from physc.domains.angrybirds.worlds import PHYQ
 from physc.simulation.snapshot import Snapshot
 
 BOX2D = load_backend("box2d")
