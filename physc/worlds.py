@@ -72,6 +72,12 @@ class World:
         changed = tuple(s.path for s in variant.settings() if ours.get(s.path, _MISSING) != s.value)
         return attrs.evolve(variant, changed=changed)
 
+    def readings(self) -> tuple[World, ...]:
+        """This world under each reading of what the target world's files leave open, itself
+        first: a task counts only when its solution holds under every one (the generation's
+        check, physc.generation.layout_loop). A world whose files leave nothing open: itself."""
+        return (self,)
+
     def settings(self) -> list[Setting]:
         """Every setting, in declaration order, with its source; a variant's changed settings
         cite its reading."""

@@ -75,7 +75,7 @@ def print_json(data) -> None:
 def check_min_robustness(value: int, domain) -> None:
     """--min-robustness counts the domain's noisy replays: more than there are cannot be passed."""
     replays = getattr(domain, "robustness_replays", None)
-    if replays is not None and value > replays:
+    if value is not None and replays is not None and value > replays:
         raise UsageError(
             f"--min-robustness takes a whole number from 1 to {replays} (the noisy replays of domain "
             f"'{domain.name}'), not {value}"

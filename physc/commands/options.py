@@ -45,9 +45,9 @@ def add_generation(parser, validate: bool = True) -> None:
     )
     parser.add_argument(
         "--min-robustness", type=arguments.count, default=MIN_ROBUSTNESS, metavar="K",
-        help="when no layout within the budget gives a solution that passes every noisy replay of the generator "
-        f"(6 in angrybirds), use the most robust one that passes at least K of them, and as many fresh replays "
-        f"(default {MIN_ROBUSTNESS}; 6: no such fallbacks); the task JSON records the replays passed",
+        help="make fallbacks: when no layout within the budget gives a solution that passes every noisy replay of "
+        "the generator (6 in angrybirds), use the most robust one that passes at least K of them, and K of physc "
+        "verify's (default: none; a task must pass all); the task JSON and the manifest mark a fallback",
     )
     parser.add_argument(
         "--no-acceptance", action="store_true",

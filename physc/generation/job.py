@@ -27,7 +27,7 @@ class Job:
     seed: int
     time_budget: float = TIME_BUDGET
     layouts: int = LAYOUT_BUDGET  # placed layouts simulation may try
-    min_robustness: int = MIN_ROBUSTNESS  # see physc.generation.pipeline.Pipeline
+    min_robustness: int | None = MIN_ROBUSTNESS  # None: no fallbacks (see physc.generation.pipeline.Pipeline)
     validate: bool = True  # the final validation of a generated task (`physc compile`'s; eval skips it, as the paper)
     acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
     picture: bool = False  # also draw the task (generate --png)

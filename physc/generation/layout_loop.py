@@ -69,27 +69,31 @@ class LayoutLoop:
 
     def satisfy(self, layout, accept: int | None = None):
         """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
-        noisy replays, for a fallback), then the check in the second backend, if one is
-        asked for."""
+        noisy replays, for a fallback), then the checks that it holds where it is played."""
         result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.validate, accept, self.acceptance)
-        if result.satisfied and self.verify_backend is not None:
-            result = self.cross_checked(result, accept)
-        return result
+        return self.checked(result, accept) if result.satisfied else result
 
-    def cross_checked(self, result, accept: int | None):
-        """`result`, or, when its solution fails in the second backend, the layout given up
-        for that reason (the search goes on to the next layout)."""
+    def checked(self, result, accept: int | None):
+        """`result`, if its solution passes what `physc verify` runs (the recorded solution
+        and the domain's noisy replays, drawn as verify draws them) under every reading of
+        what the world's files leave open (`World.readings`), and in the second backend if
+        one is asked for; else the layout given up for that reason (the search goes on to
+        the next layout). `accept`: a fallback needs K of the noisy replays."""
         parts = result.parts
         replays = noisy_replays(self.domain)
-        needed = accept if accept is not None else replays  # as the generator's own acceptance: K of them for a fallback
-        check = verify(self.domain, self.scenario, parts.level, parts.solution, self.verify_backend, noisy=replays)
-        spent = 1 + check.noisy_run
-        if check.passes(needed):
-            return attrs.evolve(result, simulations=result.simulations + spent)
-        return attrs.evolve(
-            result, satisfied=False, parts=None, simulations=result.simulations + spent,
-            given_up=f"the solution fails in {self.verify_backend}", nearest=0,
-        )
+        needed = accept if accept is not None else replays
+        world = getattr(self.domain, "world", None) if getattr(self.domain, "worlds", ()) else None
+        places = [(self.domain.at(reading), reading.name, self.domain.backend.name) for reading in (world.readings() if world else ())]
+        if self.verify_backend is not None:
+            places.append((self.domain, f"{self.verify_backend}", self.verify_backend))
+        spent = 0
+        for domain, where, backend in places:
+            check = verify(domain, self.scenario, parts.level, parts.solution, backend, noisy=replays)
+            spent += 1 + check.noisy_run
+            if not check.passes(needed):
+                why = f"the solution fails in {where}" if where == self.verify_backend else f"the solution fails physc verify in the world '{where}'"
+                return attrs.evolve(result, satisfied=False, parts=None, simulations=result.simulations + spent, given_up=why, nearest=0)
+        return attrs.evolve(result, simulations=result.simulations + spent)
 
     def run(self, placements: Iterator) -> Generated:
         """Satisfy the placed layouts in turn (`placements` yields objects with a

@@ -54,7 +54,7 @@ class Pipeline:
         layout_budget: int = LAYOUT_BUDGET,
         time_budget: float = TIME_BUDGET,
         source: str = "",
-        min_robustness: int = MIN_ROBUSTNESS,
+        min_robustness: int | None = MIN_ROBUSTNESS,
         progress=None,
         verify_backend: str | None = None,
         acceptance: bool = True,
@@ -69,9 +69,9 @@ class Pipeline:
         self.source = source
         # Noisy replays (of the domain's robustness_replays) that a solution must pass at
         # least: when no layout within the budget gives one that passes them all, the most
-        # robust of the fragile ones that pass this many is used (a fallback). All of
-        # them: no fallbacks.
-        self.min_robustness = min_robustness
+        # robust of the fragile ones that pass this many is used (a fallback). None (the
+        # default): all of them, no fallbacks.
+        self.min_robustness = min_robustness if min_robustness is not None else (getattr(domain, "robustness_replays", None) or 1)
         self.rng = random.Random(seed)
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
@@ -170,6 +170,7 @@ class Pipeline:
             trace=parts.trace,
             validated=parts.validated,
             robustness=parts.robustness,
+            fallback=parts.robustness[0] < parts.robustness[1],
             repairs=parts.repairs,
             obstacles=parts.obstacles,
             distractors=parts.distractors,

@@ -43,8 +43,13 @@ def at_root(monkeypatch):
     monkeypatch.chdir(ROOT)
 
 
-def compile_(path, *options: str):
-    run = run_physc("compile", relative(path), "--seed", "0", "-q", *options)
+# B's seed 0 gives no task that holds under both readings of the game's files (issue 53): its
+# golden task is seed 2's.
+SEEDS = {"07_B": 2}
+
+
+def compile_(path, *options: str, seed: int = 0):
+    run = run_physc("compile", relative(path), "--seed", str(seed), "-q", *options)
     assert run.status == 0, run.stderr
     return run
 
@@ -91,7 +96,7 @@ def test_golden_generated(path, tmp_path):
     """One generation writes the level (--emit level), the task (--task: the bytes that
     --emit task prints) and the task's picture."""
     level, task, picture = tmp_path / "level.xml", tmp_path / "task.json", tmp_path / "task.svg"
-    compile_(path, "--emit", "level", "-o", str(level), "--task", str(task), "--png", str(picture))
+    compile_(path, "--emit", "level", "-o", str(level), "--task", str(task), "--png", str(picture), seed=SEEDS.get(path.stem, 0))
     check_golden(GOLDEN / "level" / f"{path.stem}.xml", level.read_text(encoding="utf-8"))
     check_golden(GOLDEN / "task" / f"{path.stem}.json", without_timings(task.read_text(encoding="utf-8")))
     check_golden(GOLDEN / "task" / f"{path.stem}.svg", picture.read_bytes().decode("utf-8"))

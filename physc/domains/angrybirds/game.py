@@ -289,23 +289,11 @@ class Game(RunRules):
         speed = contact.speed
         if speed <= 0:
             return
-        rv = contact.relative_velocity
-        kind_a, kind_b = self.kinds.get(contact.a), self.kinds.get(contact.b)
-        static_a = kind_a in ("platform", "ground")
-        static_b = kind_b in ("platform", "ground")
-        # The attacker: the body whose velocity projects more onto the approach.
-        if static_a:
-            attacker = contact.b
-        elif static_b:
-            attacker = contact.a
-        else:
-            push_a = contact.velocity_a[0] * rv[0] + contact.velocity_a[1] * rv[1]
-            push_b = -(contact.velocity_b[0] * rv[0] + contact.velocity_b[1] * rv[1])
-            attacker = contact.a if push_a >= push_b else contact.b
-        mass = world.mass(attacker)
         for target in (contact.a, contact.b):
             if target not in self.life or self.life[target] <= 0:
                 continue
+            attacker = self._attacker(world, contact, target)
+            mass = world.mass(attacker)
             if attacker == BIRD and self.kinds.get(target) == "block":  # ABBlock's override
                 amount = speed * mass * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
             else:
@@ -316,6 +304,31 @@ class Game(RunRules):
             self._wound(target, amount)
             other = contact.b if target == contact.a else contact.a
             out.append(DamageRecord(time, target, amount, self.life[target], other))
+
+    def _attacker(self, world, contact: ContactRecord, target: str) -> str:
+        """The body whose mass sets `target`'s damage in `contact`: against a platform or the
+        ground (no Rigidbody2D to compare), the moving body; a bird striking a block (ABBlock's
+        override); else the world's reading (`Rules.attacker`, `Rules.relative_velocity`)."""
+        other = contact.b if target == contact.a else contact.a
+        if self.kinds.get(other) in ("platform", "ground"):
+            return target
+        if self.kinds.get(target) in ("platform", "ground"):
+            return other
+        if other == BIRD and self.kinds.get(target) == "block":
+            return BIRD
+        rv = contact.relative_velocity  # a's velocity less b's, before the step
+        if self.rules.attacker == "contact":  # one attacker for both, from the velocities before the step
+            push_a = contact.velocity_a[0] * rv[0] + contact.velocity_a[1] * rv[1]
+            push_b = -(contact.velocity_b[0] * rv[0] + contact.velocity_b[1] * rv[1])
+            return contact.a if push_a >= push_b else contact.b
+        # ABGameObject.OnCollisionEnter2D, run by `target` after the step: project both bodies'
+        # velocities now on the contact's relative velocity, as Unity reports it to `target`.
+        sign = 1.0 if (target == contact.a) == (self.rules.relative_velocity == "this-minus-other") else -1.0
+        _, _, _, tx, ty, _ = world.state(target)
+        _, _, _, ox, oy, _ = world.state(other)
+        project_this = sign * (tx * rv[0] + ty * rv[1])
+        project_other = sign * (ox * rv[0] + oy * rv[1])
+        return other if project_other > project_this else target
 
     @staticmethod
     def _last_attacker(damage: list, name: str) -> str | None:

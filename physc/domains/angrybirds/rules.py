@@ -29,6 +29,15 @@ class Rules:
     bird_multiplier: dict = attrs.field(
         factory=lambda: {"wood": 1.0, "stone": 1.0, "ice": 1.0, "": 1.0}, metadata={"source": "BirdRed.prefab `_woodDamageMultiplier` etc."}
     )
+    # Who attacks in a contact. "object": as the game's scripts do, each object in its own
+    # OnCollisionEnter2D (called after the step) takes as attacker whichever of itself and the
+    # other body has the larger velocity (after the step) along `Collision2D.relativeVelocity`;
+    # "contact": physc's earlier model, one attacker per contact from the velocities before it.
+    attacker: str = _cited("object", "ABGameObject.OnCollisionEnter2D: projectCollision > projectThis")
+    # Which way `Collision2D.relativeVelocity` points, which the game's files leave open (Unity's
+    # 2D physics computes it): "this-minus-other" (this object's velocity less the other's) or
+    # "other-minus-this". A task must hold under both (ScienceBirdsWorld.readings).
+    relative_velocity: str = _cited("other-minus-this", "open: Unity's Collision2D.relativeVelocity (not in the game's files)")
     pig_defence: float = _cited(1.0, "the pigs' prefabs `_defense`")
     invulnerable_seconds: float = _cited(2.0, "ABConstants.LEVEL_IMMORTAL_TIME: damage discarded for the first 2 s")
     # ABBird.cs: from its first collision on, the bird is checked 3 s later and then every

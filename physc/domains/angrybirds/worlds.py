@@ -55,6 +55,17 @@ class ScienceBirdsWorld(World):
     rest_speed: float = attrs.field(default=0.02, metadata={"source": "physc: below this (units/s, rad/s) a body counts as at rest"})
     falling_speed: float = attrs.field(default=0.5, metadata={"source": "physc: coming down faster (units/s), a body is still falling"})
 
+    def readings(self) -> tuple[ScienceBirdsWorld, ...]:
+        """Itself, and itself with `Collision2D.relativeVelocity` pointing the other way: the
+        game's files do not say which, and it decides which body's mass sets a damage."""
+        if self.rules.attacker != "object":
+            return (self,)
+        other = {"other-minus-this": "this-minus-other", "this-minus-other": "other-minus-this"}[self.rules.relative_velocity]
+        return (self, self.derive(
+            f"{self.name}, relativeVelocity {other}", self.description, "the other reading of Collision2D.relativeVelocity",
+            rules=attrs.evolve(self.rules, relative_velocity=other),
+        ))
+
     def reachable(self, x: float, y: float) -> bool:
         """Whether a full-stretch shot can pass through (x, y) in this world."""
         return self.launch.reachable(x, y, self.gravity)

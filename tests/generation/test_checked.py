@@ -1,0 +1,78 @@
+"""Tasks that hold in the game (issue 53): a generated task passes what `physc verify` runs,
+under each reading of what the game's files leave open, and fallbacks are made only on request."""
+
+from __future__ import annotations
+
+from unittest import mock
+
+import attrs
+import pytest
+
+from middle_end import DOMAIN, paper_scenarios
+from physc.backends import load_backend
+from physc.domains.angrybirds.game import Game
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.worlds import PHYQ, ROLLING
+from physc.generation.layout_loop import LayoutLoop
+from physc.generation.outcome import Outcome
+from physc.generation.pipeline import Pipeline
+from physc.generation.verify import verify
+from physc.simulation.trace import ContactRecord
+
+BOX2D = load_backend("box2d")
+
+
+def test_the_games_open_point_gives_each_science_birds_world_two_readings():
+    for world in (PHYQ, ROLLING):
+        first, second = world.readings()
+        assert first is world
+        assert second.changed == ("rules.relative_velocity",) and second.parent == world.name
+        assert {first.rules.relative_velocity, second.rules.relative_velocity} == {"other-minus-this", "this-minus-other"}
+    contact_model = attrs.evolve(PHYQ, rules=attrs.evolve(PHYQ.rules, attacker="contact"))
+    assert contact_model.readings() == (contact_model,)  # physc's earlier model leaves nothing open
+
+
+def test_each_object_picks_its_attacker_after_the_step_as_the_reading_says():
+    """A moving block strikes a resting pig: after the step the block still moves on, the pig
+    barely. Read as other-minus-this, the block (the body that comes at the pig) attacks it; read
+    the other way, the pig is its own attacker and takes the damage of its own mass."""
+    pig = LevelObject("Pig", "BasicSmall", 0.0, 0.0, 0.0, name="pig")
+    block = LevelObject("Block", "SquareSmall", -1.0, 0.0, 0.0, "stone", name="block")
+    amounts = {}
+    for world in PHYQ.readings():
+        game = Game(Level(objects=(pig, block)), world, BOX2D)
+        built = game.build()
+        built.set_velocity("block", 3.0, 0.0)
+        contact = ContactRecord(0.0, "block", "pig", (-0.5, 0.0), (1.0, 0.0), (3.0, 0.0), (3.0, 0.0), (0.0, 0.0))
+        game.life["pig"] = 1000.0
+        out = []
+        game._damage(built, contact, out, 3.0)
+        (record,) = [r for r in out if r.target == "pig"]
+        amounts[world.rules.relative_velocity] = record.amount
+    stone = built.mass("block")
+    small_pig = built.mass("pig")
+    assert amounts["other-minus-this"] == pytest.approx(3.0 * stone * 11.22 * 0.5 - 1.0)
+    assert amounts["this-minus-other"] == pytest.approx(3.0 * small_pig * 11.22 * 0.5 - 1.0)
+    assert amounts["this-minus-other"] < amounts["other-minus-this"]
+
+
+def test_a_generated_task_passes_physc_verify_in_every_reading():
+    scenario = paper_scenarios()["SF"]
+    task = Pipeline(DOMAIN, scenario, seed=0).task
+    assert not task.fallback and task.robustness == (6, 6)
+    for world in PHYQ.readings():
+        check = verify(DOMAIN.at(world), scenario, task.level, task.solution, "box2d", noisy=6)
+        assert check.passes(6), (world.name, check.why)
+
+
+def test_a_solution_that_fails_a_reading_gives_the_layout_up():
+    scenario = paper_scenarios()["SF"]
+    task = Pipeline(DOMAIN, scenario, seed=0).task
+    loop = LayoutLoop(DOMAIN, scenario, None, False, 1, 10.0, 6)
+    parts = mock.Mock(level=task.level, solution=task.solution)
+    passed = loop.checked(Outcome(True, 5, parts), None)
+    assert passed.satisfied and passed.simulations == 5 + 2 * 7  # the recorded solution and 6 noisy replays, in each reading
+    x, y = task.solution.target
+    failing = attrs.evolve(task.solution, target=(x - 3.0, y - 1.0))  # a shot that misses
+    given_up = loop.checked(Outcome(True, 5, mock.Mock(level=task.level, solution=failing)), None)
+    assert not given_up.satisfied and given_up.given_up == "the solution fails physc verify in the world 'phyq'"
