@@ -53,9 +53,11 @@ def remove_redundant(edges: tuple[LayoutEdge, ...]) -> tuple[LayoutEdge, ...]:
 class InferLayout:
     name = "infer-layout"
 
-    def __init__(self, domain):
+    def __init__(self, domain, structure: str = "flat"):
         self.domain = domain
+        self.structure = structure  # the layout rules' reading (physc.compiler.layout_rules, "Structures")
 
     def run(self, scenario: ScenarioIR) -> LayoutGraph:
-        graph = self.domain.layout_rules.infer(scenario)
+        rules = self.domain.layout_rules
+        graph = rules.infer(scenario) if self.structure == "flat" else rules.infer(scenario, self.structure)
         return attrs.evolve(graph, edges=remove_redundant(graph.edges))

@@ -36,6 +36,14 @@ reading (docs/qsr.md, "From scenario to layout"):
   continuous top edge); for a path towards the left the arguments swap.
 * A surface that a dynamic object rests on is horizontal (an inclined one would
   not hold it still): such surfaces are narrowed to the flat support.
+
+Structures: the reading above is the `flat` structure, the paper's. Where the surface a mover
+rolls or slides on before it hits a target sideways may be inclined, the `ramp` structure reads
+it as the game's own designers build a roll (Phy-Q's templates 2_1_3, 2_1_6, 2_1_9): the
+surface is a ramp descending towards the target, and the target rests at its foot on a support
+of its own, which the mover's path continues onto. Gravity then carries what a strike cannot.
+`LayoutRules.structures(scenario)` names the structures a scenario has; generation tries
+them all (physc.generation.pipeline), and simulation decides.
 """
 
 from __future__ import annotations
@@ -93,8 +101,17 @@ class LayoutRules:
     ledge running into a ramp). Without it (angrybirds) they touch only under cannotFall,
     and the satisfier's repairs close the gaps in simulation."""
 
-    def infer(self, scenario: ScenarioIR) -> LayoutGraph:
-        return infer(scenario, self)
+    inclined: str | None = None
+    """The concrete object of an inclined surface (angrybirds: inclinedPlatform), for the
+    `ramp` structure; None: the domain offers no ramps."""
+
+    def infer(self, scenario: ScenarioIR, structure: str = "flat") -> LayoutGraph:
+        return infer(scenario, self, structure)
+
+    def structures(self, scenario: ScenarioIR) -> tuple[str, ...]:
+        """The structures the scenario can be laid out in: "flat" (the paper's reading), and
+        "ramp" where a mover's surface before a sideways hit may be inclined."""
+        return ("flat", "ramp") if _ramps(scenario, self) else ("flat",)
 
 
 class _Builder:
@@ -133,8 +150,16 @@ def _interaction_provenance(term: TermIR) -> Provenance:
     return Provenance("interaction", term.text, term.span)
 
 
-def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
+def _ramps(scenario: ScenarioIR, rules: LayoutRules) -> bool:
+    """Whether some target is hit sideways by a mover coming along a surface that may be inclined."""
+    if rules.inclined is None:
+        return False
+    return infer(scenario, rules, "ramp") != infer(scenario, rules, "flat")
+
+
+def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> LayoutGraph:
     b = _Builder(scenario, rules)
+    ramps: list[str] = []  # the surfaces the ramp structure makes inclined
     FLAT = rules.flat
     anywhere = (FLAT,) if rules.ground is None else (FLAT, rules.ground)  # a support that need not be a ledge
     # A list, not a set: iteration order must not depend on string hashing.
@@ -202,7 +227,19 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
             continue
         sideways = [d for d in term.directions if d in ("left", "right")]
         why = _interaction_provenance(term)
-        if path_of(actor) and sideways:
+        last = path_of(actor)[-1] if path_of(actor) else None
+        if (
+            structure == "ramp" and sideways and last in surfaces.get(actor, ()) and not b.is_ground(last)
+            and rules.inclined in b.nodes[last].concrete and last not in support.values()
+        ):
+            # The ramp: the mover comes down its surface; the target rests at the foot, on a
+            # support of its own facing the ramp, which the mover's path continues onto.
+            own = b.support_node(target, (FLAT,))
+            b.edge(ON_LOCATION, target, own, (OPPOSITE[heading[actor]],), Provenance("support", f"{target} rests at the foot of the ramp {last}: {term.text}", term.span))
+            support[target] = own
+            ramps.append(last)
+            paths[actor].append(own)
+        elif path_of(actor) and sideways:
             rest = path_of(actor)[-1]
             towards = heading[actor]
             where = (towards,)
@@ -253,6 +290,9 @@ def infer(scenario: ScenarioIR, rules: LayoutRules) -> LayoutGraph:
     # Objects at rest on a surface: that surface is horizontal.
     for rest in support.values():
         b.narrow_to_flat(rest)
+    for ramp in ramps:
+        if rules.inclined in b.nodes[ramp].concrete:
+            b.nodes[ramp] = attrs.evolve(b.nodes[ramp], concrete=(rules.inclined,))
 
     # 4. cannotFall (and, with continuous_paths, every path): consecutive platforms of the path touch.
     continuous = [(t.objects[0], Provenance("restriction", t.text, t.span)) for t in scenario.restrictions if t.name == "cannotFall"]

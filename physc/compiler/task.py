@@ -52,6 +52,9 @@ class Task:
     # Whether the solution passed fewer than all of the generator's noisy replays: a fallback,
     # made only on request (--min-robustness K).
     fallback: bool = False
+    # The layout rules' structure the task was laid out in (physc.compiler.layout_rules,
+    # "Structures"): "flat", the paper's reading, or "ramp".
+    structure: str = "flat"
 
 
 def given_up_summary(given_up: dict) -> str:

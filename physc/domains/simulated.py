@@ -184,6 +184,12 @@ class SimulatedDomain(Domain):
         """The friction of a placed body (the default: 0.5)."""
         return 0.5
 
+    def toughness(self, placed) -> float:
+        """The damage that destroys a placed body under the world's rules (the search gives an
+        object that is to be destroyed the weakest body it may take). The default: 0, every
+        body alike."""
+        return 0.0
+
     blocker: str | None = None
     """The concrete object of an obstacle the guards place (a static bar); None: the domain
     places none, and its restrictions are only judged."""

@@ -12,6 +12,8 @@ decides which body is best:
 * to destroy the goal straight away, with no motion of its own between: the momentum it
   brings, m₂·u, a heavier one. (What must first fall or roll is chosen for that: a fall's
   speed comes from its height, whatever its mass.)
+* to be destroyed (a goal object, which does nothing itself): the least damage destroys it,
+  by the world's damage rule (`SimulatedDomain.toughness`: life and defence).
 
 The domain says what bodies an object may take and their masses and frictions
 (`SimulatedDomain.bodies`, `mass`, `friction`); the search simulates the best few and keeps
@@ -34,14 +36,18 @@ def next_act(interactions, name: str, start: int) -> str | None:
     something, else the first term it acts in."""
     acts = [t.name for t in interactions[start:] if t.objects and t.objects[0] == name]
     if not acts:
-        return None
+        destroyed = any(t.name == "destroy" and t.objects[-1] == name for t in interactions[start:])
+        return "destroyed" if destroyed else None
     motion = next((a for a in acts if a not in ("hit", "destroy")), None)
     return motion or ("destroy" if "destroy" in acts else acts[0])
 
 
-def worth(act: str, mass: float, friction: float, actor_mass: float | None) -> float:
-    """The estimate of how well a body of `mass` and `friction` does `act` after a hit by an
-    actor of `actor_mass` (None: much heavier than anything it hits)."""
+def worth(act: str, mass: float, friction: float, actor_mass: float | None, toughness: float = 0.0) -> float:
+    """The estimate of how well a body of `mass` and `friction` (and `toughness`: the damage
+    that destroys it) does `act` after a hit by an actor of `actor_mass` (None: much heavier
+    than anything it hits)."""
+    if act == "destroyed":
+        return 1.0 / max(toughness, 1e-6)
     share = 1.0 if actor_mass is None else actor_mass / (actor_mass + mass)
     if act == "destroy":
         return mass * share
@@ -71,9 +77,9 @@ def alternatives(search, layout, declared, stage, attempt):
     if target not in stage.new or target not in objects or target in search.frame.fixed:
         return
     act = next_act(search.interactions, target, stage.start + 1)
+    domain = search.domain
     if act is None:
         return
-    domain = search.domain
     current = objects[target]
     options = domain.bodies(current, search.scenario)
     if not options:
@@ -81,7 +87,8 @@ def alternatives(search, layout, declared, stage, attempt):
     actor_mass = domain.mass(objects[actor]) if actor in objects else None
 
     def estimate(body) -> float:
-        return worth(act, domain.mass(body), domain.friction(body), actor_mass)
+        toughness = domain.toughness(body) if act == "destroyed" else 0.0
+        return worth(act, domain.mass(body), domain.friction(body), actor_mass, toughness)
 
     here = estimate(current)
     ranked = sorted(options, key=estimate, reverse=True)

@@ -41,6 +41,7 @@ PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 class Placed:
     graphs: DimensionGraphs
     layout: ConcreteLayout
+    structure: str = "flat"  # the layout rules' structure it was placed in
 
 
 class Pipeline:
@@ -110,13 +111,44 @@ class Pipeline:
         return ToQsr().run(self.layout_graph, self.rng, self.seed)
 
     @functools.cached_property
+    def structure_of(self) -> dict[int, str]:
+        """The structure of each layout placed so far, by the layout's id."""
+        return {}
+
+    @functools.cached_property
+    def structures(self) -> tuple[str, ...]:
+        """The structures the scenario can be laid out in (physc.compiler.layout_rules,
+        "Structures"): the paper's reading first."""
+        offered = getattr(self.domain.layout_rules, "structures", None)
+        return offered(self.scenario) if offered else ("flat",)
+
+    @functools.cached_property
     def placed(self) -> Placed:
         return next(self.placements())
 
     def placements(self):
-        """Placed layouts, one after the other, from the next consistent conjunctions."""
-        dnf = self.qsr
-        search = ToDimensionGraphs(self.domain, self.budget).run(dnf, self.layout_graph, self.scenario, self.rng)
+        """Placed layouts, one after the other: with one structure, from its next consistent
+        conjunctions; with several, a layout of each in turn, so that simulation decides which
+        structure carries the chain (a structure whose placements run out drops out; the
+        paper's reading's failure is reported when all have)."""
+        if len(self.structures) == 1:
+            yield from self._placements("flat", self.layout_graph, self.qsr)
+            return
+        streams = [self._placements(s, InferLayout(self.domain, s).run(self.scenario), None) for s in self.structures]
+        failures = []
+        while streams:
+            for stream in list(streams):
+                try:
+                    yield next(stream)
+                except Infeasible as error:
+                    failures.append(error)
+                    streams.remove(stream)
+        raise failures[0]
+
+    def _placements(self, structure: str, graph: LayoutGraph, dnf: QsrDnf | None):
+        """The placed layouts of one structure's layout graph."""
+        dnf = dnf or ToQsr().run(graph, self.rng, self.seed)
+        search = ToDimensionGraphs(self.domain, self.budget).run(dnf, graph, self.scenario, self.rng)
         place = Place(self.domain)
         consistent = 0
         try:
@@ -124,7 +156,8 @@ class Pipeline:
                 consistent += 1
                 layout = place.run(graphs, self.scenario, dnf.deferred, self.rng)
                 if layout is not None:
-                    yield Placed(graphs, layout)
+                    self.structure_of[id(layout)] = structure
+                    yield Placed(graphs, layout, structure)
                 if consistent >= PLACEMENT_BUDGET:
                     raise Infeasible(
                         Place.name,
@@ -171,6 +204,7 @@ class Pipeline:
             validated=parts.validated,
             robustness=parts.robustness,
             fallback=parts.robustness[0] < parts.robustness[1],
+            structure=self.structure_of.get(id(used), "flat"),
             repairs=parts.repairs,
             obstacles=parts.obstacles,
             distractors=parts.distractors,

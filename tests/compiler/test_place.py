@@ -85,8 +85,11 @@ def test_thirty_seeds_give_distinct_layouts(name):
 
 def test_layouts_keep_coming_while_the_caller_asks():
     """RS has 3 consistent conjunctions per shape draw: the first 12 draws give 36 layouts,
-    and shapes are drawn on for more (a --layouts budget above 36 is not capped)."""
-    placed = list(itertools.islice(pipeline("RS", seed=1).placements(), 45))
+    and shapes are drawn on for more (a --layouts budget above 36 is not capped). The flat
+    structure's stream (RS has a ramp structure too, whose layouts the pipeline interleaves)."""
+    run = pipeline("RS", seed=1)
+    assert run.structures == ("flat", "ramp")
+    placed = list(itertools.islice(run._placements("flat", run.layout_graph, run.qsr), 45))
     assert len(placed) == 45
     assert max(p.graphs.shape_draws for p in placed) > 12
     assert len({dumps(p.layout.objects) for p in placed}) == 45
@@ -127,3 +130,13 @@ def test_dot_output(stage):
 def test_dot_is_only_for_graphs():
     run = run_physc("compile", EXAMPLES / "paper" / "06_S.phys", "--emit", "layout", "--format", "dot")
     assert run.status == 2
+
+
+def test_the_structures_take_turns_and_each_layout_knows_its_own():
+    run = pipeline("RS", seed=1)
+    placed = list(itertools.islice(run.placements(), 6))
+    assert [p.structure for p in placed] == ["flat", "ramp"] * 3
+    for p in placed:
+        assert run.structure_of[id(p.layout)] == p.structure
+        surface = next(o for o in p.layout.objects if o.name == "surface")
+        assert (surface.concrete == "inclinedPlatform") == (p.structure == "ramp")

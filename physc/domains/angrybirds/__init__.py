@@ -33,7 +33,7 @@ class AngryBirds(SimulatedDomain):
     vocabulary = VOCABULARY
     worlds = WORLDS
     default_world = PHYQ.name
-    layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right")
+    layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform")
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
     level_suffix = "xml"  # Science Birds level files
@@ -137,6 +137,11 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.bodies import mass
 
         return mass(placed, self.world)
+
+    def toughness(self, placed) -> float:
+        from physc.domains.angrybirds.bodies import toughness
+
+        return toughness(placed, self.world)
 
     def friction(self, placed) -> float:
         from physc.domains.angrybirds.bodies import friction

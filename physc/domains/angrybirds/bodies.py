@@ -10,12 +10,14 @@ from physc.domains.angrybirds.catalogue import shape
 
 
 def bodies(placed, scenario) -> list:
-    """Every block `placed`'s scenario object allows (concrete object × material), as
+    """Every block or pig `placed`'s scenario object allows (concrete object × material), as
     placed objects of its name and place."""
     allowed = next((o.concrete for o in scenario.objects if o.name == placed.name), ())
     out = []
     for concrete in allowed:
         catalogue = shape(concrete)
+        if catalogue.kind == "pig":
+            out.append(attrs.evolve(placed, concrete=concrete, material=None, width=catalogue.width, height=catalogue.height))
         if catalogue.kind != "block":
             continue
         for material in catalogue.materials:
@@ -47,3 +49,13 @@ def friction(placed, world) -> float:
     if catalogue.kind == "pig":
         return world.bodies.pig_friction
     return _material(placed, world).friction
+
+
+def toughness(placed, world) -> float:
+    """The damage that destroys the body in `world`: its life and defence (ABGameObject.DealDamage
+    destroys at life ≤ 0; every hit takes the defence off first)."""
+    catalogue = shape(placed.concrete)
+    if catalogue.kind == "pig":
+        return catalogue.life[""] + world.rules.pig_defence
+    material = placed.material or "wood"
+    return catalogue.life.get(material, 0.0) + world.bodies.materials.get(material, world.bodies.materials["wood"]).defence
