@@ -105,6 +105,7 @@ class LayoutLoop:
         nearest = 0  # most noisy replays passed by a solution given up as too fragile
         best = 0  # most interactions of the sequence realised, in order, in any simulation
         stopped = ""  # what the first simulation that got that far shows about the next interaction
+        lost: dict[str, list] = {}  # the noisy replays' losses over the layouts: term → [count, why]
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
         while True:
@@ -136,6 +137,8 @@ class LayoutLoop:
             simulations += result.simulations
             if result.best > best or (result.best == best and not stopped):
                 best, stopped = result.best, result.stopped
+            for term, count, why in result.lost:
+                lost.setdefault(term, [0, why])[0] += count
             if result.satisfied:
                 failure, used = None, placed.layout
                 break
@@ -164,7 +167,7 @@ class LayoutLoop:
                 failure, fallback = self._out_of_time(layouts), None
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
-                raise self.explained(failure, nearest, given_up, best, stopped)
+                raise self.explained(failure, nearest, given_up, best, stopped, lost)
             simulated, result, used = fallback
             simulations += simulated
         # The stages after satisfaction (distract, validate, accept), counted apart from it.
@@ -193,7 +196,7 @@ class LayoutLoop:
             budget=Exhausted.TIME,
         )
 
-    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "") -> Infeasible:
+    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "", lost: dict | None = None) -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
         the most robust fragile solution found and what would accept it."""
         message = failure.message
@@ -204,6 +207,10 @@ class LayoutLoop:
                 message += f" (never `{interactions[best].text}` after them" + (f": {stopped})" if stopped else ")")
         if given_up:
             message += f"; given up: {given_up_summary(given_up)}"
+        if lost and best >= len(interactions):  # every link was made, but not robustly: say which one noise breaks
+            term, (count, why) = max(lost.items(), key=lambda item: item[1][0])
+            total = sum(n for n, _ in lost.values())
+            message += f"; of the {total} noisy replays that failed, {count} lost `{term}` first" + (f" ({why})" if why else "")
         if nearest:
             if nearest < self.min_robustness:
                 hint = f"--min-robustness {nearest} accepts such a one"

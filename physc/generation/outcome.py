@@ -37,3 +37,6 @@ class Outcome:
     best: int = 0  # most interactions of the sequence realised, in order, in one simulation
     stopped: str = ""  # what that simulation shows about the next interaction (physc.simulation.stopped)
     seconds: dict = attrs.field(factory=dict)  # stage → time spent, for the stages after satisfaction
+    # The noisy replays that failed, by the declared interaction they lost first: (term, count,
+    # what the first such replay shows about it, physc.simulation.stopped), most often lost first.
+    lost: tuple[tuple[str, int, str], ...] = ()

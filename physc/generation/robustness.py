@@ -17,6 +17,7 @@ import attrs
 
 from physc.generation.attempt import Attempt
 from physc.generation.settings import NOISE_STREAMS
+from physc.simulation.stopped import why_stopped
 
 
 class Robustness:
@@ -31,8 +32,26 @@ class Robustness:
         passed = 0
         for _ in range(self.domain.robustness_replays or 0):
             noisy_level, action = self.domain.noisy(level, attempt.action, noise)
-            passed += self.play(noisy_level, action).fidelity.valid
+            played = self.play(noisy_level, action)
+            passed += played.fidelity.valid
+            if not played.fidelity.valid:
+                self.lose(played)
         return passed
+
+    def lose(self, played: Attempt) -> None:
+        """Count a failed noisy replay against the declared interaction it lost first (a
+        restriction it broke, when it realised them all), with what the first such replay shows."""
+        interactions = self.scenario.interactions
+        k = played.fidelity.matched
+        term = interactions[k].text if k < len(interactions) else "the restrictions"
+        count, why = self.lost.get(term, (0, None))
+        if why is None:
+            why = why_stopped(self.scenario, played.trace, played.fidelity) if k < len(interactions) else ", ".join(played.fidelity.violations)
+        self.lost[term] = (count + 1, why)
+
+    def lost_links(self) -> tuple[tuple[str, int, str], ...]:
+        """The noisy replays' losses (Outcome.lost), most often lost first."""
+        return tuple(sorted(((term, n, why) for term, (n, why) in self.lost.items()), key=lambda item: -item[1]))
 
     def holds_up(self, attempt: Attempt, layout) -> bool:
         """Whether the solution in `layout` still passes as many noisy replays as it must,

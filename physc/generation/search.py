@@ -100,6 +100,7 @@ class Search(Robustness, Guards, Snapshots):
         self.furthest: Attempt | None = None
         self.nearest = 0  # most noisy replays passed by a working action given up as fragile
         self.tried = 0  # working actions put through the noisy replays
+        self.lost: dict[str, tuple[int, str]] = {}  # failed noisy replays by the interaction they lost (Robustness.lose)
         self.variants_tried = 0
         self.screened: list[str] = []  # labels of the first stage's actions that came nearest
         self.failed: dict[int, Attempt] = {}  # stage → the best attempt of a variant that failed there
@@ -187,7 +188,9 @@ class Search(Robustness, Guards, Snapshots):
         return "" if self.furthest is None else why_stopped(self.scenario, self.furthest.trace, self.furthest.fidelity)
 
     def give_up(self, why: str) -> Outcome:
-        return Outcome(False, self.evaluator.simulations, nearest=self.nearest, given_up=why, best=self.best, stopped=self.stopped)
+        return Outcome(
+            False, self.evaluator.simulations, nearest=self.nearest, given_up=why, best=self.best, stopped=self.stopped, lost=self.lost_links(),
+        )
 
     # ---- the stage search ----------------------------------------------------------------
     def chain(self, parent: Node, i: int) -> Node | None:

@@ -38,9 +38,13 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         target = declared.objects[1]
         struck = trace.states[max(int((since - STRIKE) / trace.dt), 0) :, trace.index(actor), 3:5]
         speed = float(np.nanmax(np.hypot(struck[:, 0], struck[:, 1]))) if len(struck) else speed
-        dealt = sum(d.amount for d in trace.damage if d.target == target and d.by == actor and d.time >= since)
+        dealt = [d for d in trace.damage if d.target == target and d.by == actor and d.time >= since]
         if dealt:
-            return f"{actor} struck {target} at up to {speed:.2f} units/s{after}, dealing {dealt:.2f} damage: not enough to destroy it"
+            left = min(d.life for d in dealt)
+            return (
+                f"{actor} struck {target} at up to {speed:.2f} units/s{after}, dealing {sum(d.amount for d in dealt):.2f} damage: "
+                f"not enough to destroy it ({left:.2f} of its life left)"
+            )
         return f"{actor} moved at up to {speed:.2f} units/s{after} but dealt {declared.objects[1]} no damage"
     if declared.name in ("roll", "slide"):
         surface = declared.objects[1] if len(declared.objects) > 1 else "its surface"

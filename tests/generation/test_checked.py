@@ -76,3 +76,15 @@ def test_a_solution_that_fails_a_reading_gives_the_layout_up():
     failing = attrs.evolve(task.solution, target=(x - 3.0, y - 1.0))  # a shot that misses
     given_up = loop.checked(Outcome(True, 5, mock.Mock(level=task.level, solution=failing)), None)
     assert not given_up.satisfied and given_up.given_up == "the solution fails physc verify in the world 'phyq'"
+
+
+def test_a_chain_that_noise_breaks_names_the_link_and_its_physics():
+    """R seed 0, 40 layouts: one layout realises all four links, but not robustly; the message
+    names the link the failed noisy replays lost and what the replay shows about it."""
+    from conftest import EXAMPLES, run_physc
+
+    run = run_physc("compile", EXAMPLES / "paper" / "04_R.phys", "--layouts", "40", "--color", "never", "-q", "--emit", "task")
+    assert run.status == 3
+    assert "the best simulation realised 4 of the 4 interactions in order" in run.stderr
+    assert "lost `destroy(rBlock, pig)` first (rBlock struck pig at up to" in run.stderr
+    assert "not enough to destroy it (" in run.stderr and "of its life left)" in run.stderr
