@@ -317,7 +317,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
     if not rules.player_placed:
         nodes = tuple(n for n in nodes if n.name not in players)
         edges = tuple(e for e in edges if e.a not in players and e.b not in players)
-    return LayoutGraph(scenario.name, scenario.domain, nodes, edges)
+    return LayoutGraph(scenario.name, scenario.domain, nodes, edges, tuple(ramps))
 
 
 def _falls_between(interactions, mover: str, first: str, second: str) -> bool:

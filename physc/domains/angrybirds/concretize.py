@@ -62,9 +62,11 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
             bodies[name] = Body(name, node.role, chosen, Geometry(catalogue.width, catalogue.height), material, fixed)
             continue
         if chosen == "inclinedPlatform":
+            incline = world.incline
+            ramp = name in graph.ramps and incline.ramp is not None
             length = _length(rng, INCLINED_LENGTH)
             if name in headings:
-                angle = rng.uniform(*world.incline.descending) * (-1 if headings[name] == "right" else 1)
+                angle = rng.uniform(*(incline.ramp if ramp else incline.descending)) * (-1 if headings[name] == "right" else 1)
             else:
                 angle = rng.uniform(*world.incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, chosen, Geometry(length, PLATFORM_THICKNESS, round(angle, 2)))

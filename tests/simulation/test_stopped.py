@@ -1,0 +1,24 @@
+"""What a stopped chain says about its first unrealised link (physc.simulation.stopped)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from middle_end import paper_scenarios
+from physc.simulation.fidelity import Fidelity
+from physc.simulation.stopped import why_stopped
+from physc.simulation.trace import DamageRecord, Trace
+
+
+def test_a_strike_that_does_not_destroy_says_the_speed_the_damage_and_the_life_left():
+    scenario = paper_scenarios()["R"]  # hit(bird, rBlock) > roll(rBlock, surface) > hit(rBlock, pig) > destroy(rBlock, pig)
+    states = np.zeros((50, 2, 6))
+    states[:, 0, 3] = 1.5  # rBlock moving at 1.5 units/s
+    damage = (DamageRecord(0.6, "pig", 0.4, 0.6, "rBlock"),)
+    trace = Trace(0.02, ("rBlock", "pig"), {"rBlock": "block", "pig": "pig"}, states, damage=damage)
+    fidelity = Fidelity(3, 4, (), False, (0.1, 0.3, 0.5))
+    why = why_stopped(scenario, trace, fidelity)
+    assert why == (
+        "rBlock struck pig at up to 1.50 units/s after `hit(rBlock, pig, left)`, dealing 0.40 damage: "
+        "not enough to destroy it (0.60 of its life left)"
+    )
