@@ -37,8 +37,9 @@ class Incline:
     descending: tuple[float, float] = attrs.field(metadata={"source": "physc: drawn, then chosen by simulation"})
     other: tuple[float, float] = attrs.field(metadata={"source": "physc: drawn, then chosen by simulation"})
     # A ramp of the ramp structure (a mover comes down it from a ledge at its head to the
-    # target at its foot): its angle. None: as `descending`.
+    # target at its foot): its angle and length. None: as `descending`, and the domain's length.
     ramp: tuple[float, float] | None = attrs.field(default=None, metadata={"source": "the world's own ramps"})
+    ramp_length: tuple[float, float] | None = attrs.field(default=None, metadata={"source": "the world's own ramps"})
 
 
 @attrs.frozen

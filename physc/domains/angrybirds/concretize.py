@@ -64,7 +64,7 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
         if chosen == "inclinedPlatform":
             incline = world.incline
             ramp = name in graph.ramps and incline.ramp is not None
-            length = _length(rng, INCLINED_LENGTH)
+            length = _length(rng, incline.ramp_length if ramp and incline.ramp_length else INCLINED_LENGTH)
             if name in headings:
                 angle = rng.uniform(*(incline.ramp if ramp else incline.descending)) * (-1 if headings[name] == "right" else 1)
             else:

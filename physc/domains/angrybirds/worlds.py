@@ -81,7 +81,7 @@ PHYQ = ScienceBirdsWorld(
         fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
         surfaces=("platform", "ground"), background=("ground",), thrown=("bird",),
     ),
-    incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0), ramp=(12.7, 26.8)),
+    incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0), ramp=(12.7, 26.8), ramp_length=(5.4, 7.1)),
     sources={
         "engine": "ProjectSettings/Physics2DSettings.asset",
         "engine.dt": "ProjectSettings/TimeManager.asset: Fixed Timestep 0.02",
@@ -90,6 +90,7 @@ PHYQ = ScienceBirdsWorld(
         "gravity": "Physics2DSettings.asset m_Gravity 9.81 × the prefabs' gravity scale 0.48",
         "recogniser": "physc: recognition thresholds in level units (docs/generation.md)",
         "incline.ramp": "Phy-Q's roll templates 2_1_3 (rotation 347.3: 12.7°), 2_1_6 and 2_1_9 (333.18: 26.8°)",
+        "incline.ramp_length": "Phy-Q's roll templates: Platform scaleX 8.39 (2_1_6, 2_1_9) and 11.10 (2_1_3) × 0.64",
     },
 )
 
