@@ -48,17 +48,12 @@ def cmd_worlds(args) -> int:
     for world, entry in listing:
         mark = " (default)" if entry["default"] else ""
         print(f"{entry['domain']}/{world.name}{mark}: {world.description}")
+        settings = world.settings()
         if world.parent:
-            changes = ", ".join(f"{path} = {_value(value)}" for path, value in _changed(world))
-            print(f"  derived from {world.parent}: {changes}")
+            values = {s.path: s.value for s in settings}
+            print(f"  derived from {world.parent}: " + ", ".join(f"{path} = {_value(values[path])}" for path in world.changed))
         if args.verbose:
-            settings = world.settings()
             width = max(len(s.path) for s in settings)
             for s in settings:
                 print(f"  {s.path:<{width}}  {_value(s.value)}  [{s.source}]")
     return EXIT_OK
-
-
-def _changed(world):
-    values = {s.path: s.value for s in world.settings()}
-    return [(path, values[path]) for path in world.changed]

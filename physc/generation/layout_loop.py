@@ -42,7 +42,7 @@ class Generated:
     came from, and what the search cost."""
 
     outcome: object  # the search's Outcome (search.satisfy), satisfied
-    layout: object  # the ConcreteLayout it came from
+    placed: object  # what it came from (the pipeline's Placed: its `layout`, and its `structure`)
     layouts: int
     simulations: int
     given_up: dict  # why → {"layouts": n, "simulations": n}
@@ -82,8 +82,8 @@ class LayoutLoop:
         parts = result.parts
         replays = noisy_replays(self.domain)
         needed = accept if accept is not None else replays
-        world = getattr(self.domain, "world", None) if getattr(self.domain, "worlds", ()) else None
-        places = [(self.domain.at(reading), reading.name, self.domain.backend.name) for reading in (world.readings() if world else ())]
+        readings = self.domain.world.readings() if getattr(self.domain, "worlds", ()) else ()
+        places = [(self.domain.at(reading), reading.name, self.domain.backend.name) for reading in readings]
         if self.verify_backend is not None:
             places.append((self.domain, f"{self.verify_backend}", self.verify_backend))
         spent = 0
@@ -101,7 +101,7 @@ class LayoutLoop:
         started = time.perf_counter()
         seconds = {"layout": 0.0, "satisfy": 0.0}
         layouts = simulations = 0
-        fragile: list[tuple[int, int, object]] = []  # (-replays passed, order, layout)
+        fragile: list[tuple[int, int, object]] = []  # (-replays passed, order, placed)
         nearest = 0  # most noisy replays passed by a solution given up as too fragile
         best = 0  # most interactions of the sequence realised, in order, in any simulation
         stopped = ""  # what the first simulation that got that far shows about the next interaction
@@ -140,14 +140,14 @@ class LayoutLoop:
             for term, count, why in result.lost:
                 lost.setdefault(term, [0, why])[0] += count
             if result.satisfied:
-                failure, used = None, placed.layout
+                failure, used = None, placed
                 break
             nearest = max(nearest, result.nearest)
             why = given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
             why["layouts"] += 1
             why["simulations"] += result.simulations
             if result.nearest >= self.min_robustness:
-                fragile.append((-result.nearest, layouts, placed.layout))
+                fragile.append((-result.nearest, layouts, placed))
             if self.progress is not None:
                 self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
             if layouts >= self.layout_budget:
@@ -180,13 +180,13 @@ class LayoutLoop:
     def fallback(self, fragile: list):
         """No solution survived every noisy replay: the layouts given up as fragile, most
         robust first, satisfied again accepting min_robustness replays. (simulations, the
-        outcome, its layout) of the first that succeeds, or None."""
+        outcome, what it was placed from) of the first that succeeds, or None."""
         simulations = 0
-        for _, _, layout in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
-            result = self.satisfy(layout, accept=self.min_robustness)
+        for _, _, placed in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
+            result = self.satisfy(placed.layout, accept=self.min_robustness)
             simulations += result.simulations
             if result.satisfied:
-                return simulations, result, layout
+                return simulations, result, placed
         return None
 
     def _out_of_time(self, layouts: int) -> Infeasible:

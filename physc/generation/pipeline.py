@@ -111,11 +111,6 @@ class Pipeline:
         return ToQsr().run(self.layout_graph, self.rng, self.seed)
 
     @functools.cached_property
-    def structure_of(self) -> dict[int, str]:
-        """The structure of each layout placed so far, by the layout's id."""
-        return {}
-
-    @functools.cached_property
     def structures(self) -> tuple[str, ...]:
         """The structures the scenario can be laid out in (physc.compiler.layout_rules,
         "Structures"): the paper's reading first."""
@@ -156,7 +151,6 @@ class Pipeline:
                 consistent += 1
                 layout = place.run(graphs, self.scenario, dnf.deferred, self.rng)
                 if layout is not None:
-                    self.structure_of[id(layout)] = structure
                     yield Placed(graphs, layout, structure)
                 if consistent >= PLACEMENT_BUDGET:
                     raise Infeasible(
@@ -189,7 +183,7 @@ class Pipeline:
         )
         with self.within_budget():
             generated = loop.run(self.placements())
-        result, used = generated.outcome, generated.layout
+        result, used = generated.outcome, generated.placed.layout
         parts = result.parts
         return Task(
             scenario=self.scenario.name,
@@ -204,7 +198,7 @@ class Pipeline:
             validated=parts.validated,
             robustness=parts.robustness,
             fallback=parts.robustness[0] < parts.robustness[1],
-            structure=self.structure_of.get(id(used), "flat"),
+            structure=generated.placed.structure,
             repairs=parts.repairs,
             obstacles=parts.obstacles,
             distractors=parts.distractors,
