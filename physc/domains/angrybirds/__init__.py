@@ -196,14 +196,13 @@ class AngryBirds(SimulatedDomain):
         """The task's level with the paths its solution makes, like the paper's figure; a
         placed layout (`--emit layout --png`) as the level it becomes."""
         from physc.compiler.concrete_layout import ConcreteLayout
-        from physc.domains.angrybirds.game import Game
         from physc.domains.angrybirds.launch import Shot
         from physc.domains.angrybirds.picture import draw_level, render, save
 
         if isinstance(task, ConcreteLayout):
             return render(task, fmt, self.world)
         shot = Shot(target=task.solution.target, trajectory=task.solution.trajectory)
-        trace = Game(task.level, self.world, self.backend).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
+        trace = self.game(task.level).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, self.world, title, trace.paths(), supports), fmt)

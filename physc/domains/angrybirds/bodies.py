@@ -57,5 +57,5 @@ def toughness(placed, world) -> float:
     catalogue = shape(placed.concrete)
     if catalogue.kind == "pig":
         return catalogue.life[""] + world.rules.pig_defence
-    material = placed.material or "wood"
-    return catalogue.life.get(material, 0.0) + world.bodies.materials.get(material, world.bodies.materials["wood"]).defence
+    material = _material(placed, world)
+    return catalogue.life.get(material.name, 0.0) + material.defence
