@@ -45,3 +45,15 @@ def test_a_goal_object_is_given_the_weakest_body_the_damage_rule_allows():
     assert set(options) == {"pigSmall", "pigMedium"}
     assert (toughness(options["pigSmall"], PHYQ), toughness(options["pigMedium"], PHYQ)) == (2.0, 16.0)  # life + defence
     assert worth("destroyed", 0.1, 0.7, 0.4, 2.0) > worth("destroyed", 0.4, 0.7, 0.4, 16.0)
+
+
+def test_a_ramp_takes_the_angle_and_length_of_the_worlds_own_ramps():
+    import random
+
+    scenario = paper_scenarios()["R"]
+    graph = DOMAIN.layout_rules.infer(scenario, "ramp")
+    assert graph.ramps == ("surface",)
+    assert (PHYQ.incline.ramp, PHYQ.incline.ramp_length) == ((12.7, 26.8), (5.4, 7.1))  # Phy-Q's 2_1_3, 2_1_6, 2_1_9
+    for seed in range(20):
+        ramp = DOMAIN.concretize(graph, scenario, random.Random(seed))["surface"].geometry
+        assert 12.7 <= -ramp.rotation <= 26.8 and 5.4 <= ramp.width <= 7.1  # descending to the right, towards the pig
