@@ -4,7 +4,8 @@ When no layout gives a task, the message names the first interaction the best si
 never realised. This says what the simulation shows about it: how fast the actor still
 moved, how near it came to its target, how much damage it dealt. For example: "rBlock3
 moved at most 0.21 units/s after `hit(rBlock2, rBlock3, left)`, too slow to roll on
-surface3". It reads only the scenario and the trace, so any domain's traces will do.
+surface3"; for a strike that did not destroy its target, also whose mass set the damage and
+the speed that would have (the domain's damage records say). It reads only the scenario and the trace, so any domain's traces will do.
 """
 
 from __future__ import annotations
@@ -43,7 +44,7 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
             left = min(d.life for d in dealt)
             return (
                 f"{actor} struck {target} at up to {speed:.2f} units/s{after}, dealing {sum(d.amount for d in dealt):.2f} damage: "
-                f"not enough to destroy it ({left:.2f} of its life left)"
+                f"not enough to destroy it ({left:.2f} of its life left{_needed(dealt[0])})"
             )
         return f"{actor} moved at up to {speed:.2f} units/s{after} but dealt {declared.objects[1]} no damage"
     if declared.name in ("roll", "slide"):
@@ -64,3 +65,12 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         if len(gaps):
             return f"{actor} came no nearer than {float(gaps.min()):.2f} units (centre to centre) to {target}{after}, moving at up to {speed:.2f} units/s"
     return f"{actor} moved at up to {speed:.2f} units/s{after}"
+
+
+def _needed(record) -> str:
+    """What the strike `record` lacked, where the domain's damage rule says: whose mass set the
+    damage, and the contact speed that would have destroyed the target with it."""
+    if record.needed is None:
+        return ""
+    whose = "its own" if record.attacker == record.target else f"{record.attacker}'s"
+    return f"; with {whose} mass setting the damage, a strike of {record.needed:.2f} units/s would have destroyed it"

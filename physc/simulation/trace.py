@@ -43,6 +43,11 @@ class DamageRecord:
     amount: float
     life: float  # left after the damage
     by: str
+    # The body whose mass set the damage (a domain's rule may make it the target itself), and
+    # the contact speed that would have destroyed the target with that attacker: what a link
+    # that was to destroy it needed (physc.simulation.stopped). None where no rule says.
+    attacker: str | None = None
+    needed: float | None = None
 
 
 @attrs.frozen

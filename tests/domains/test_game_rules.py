@@ -77,6 +77,9 @@ def test_a_pig_struck_by_the_bird_takes_the_half_formula_and_a_block_the_full_on
         game._damage(world, contact, out, 3.0)
         (record,) = out
         assert record.amount == pytest.approx(8.0 * bird_mass * 11.22 * share - defence)
+        # The strike that would have destroyed it: its life and defence over the damage per unit of speed.
+        assert record.attacker == BIRD
+        assert record.needed == pytest.approx((1000.0 + defence) / (bird_mass * 11.22 * share))
 
 
 def test_tnt_falls_off_with_distance_and_spares_birds():

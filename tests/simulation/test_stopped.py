@@ -22,3 +22,15 @@ def test_a_strike_that_does_not_destroy_says_the_speed_the_damage_and_the_life_l
         "rBlock struck pig at up to 1.50 units/s after `hit(rBlock, pig, left)`, dealing 0.40 damage: "
         "not enough to destroy it (0.60 of its life left)"
     )
+
+
+def test_a_strike_says_whose_mass_set_the_damage_and_the_speed_that_would_have_destroyed():
+    scenario = paper_scenarios()["R"]
+    states = np.zeros((50, 2, 6))
+    states[:, 0, 3] = 1.0
+    damage = (DamageRecord(0.6, "pig", 0.26, 0.74, "rBlock", attacker="pig", needed=2.38),)
+    trace = Trace(0.02, ("rBlock", "pig"), {"rBlock": "block", "pig": "pig"}, states, damage=damage)
+    why = why_stopped(scenario, trace, Fidelity(3, 4, (), False, (0.1, 0.3, 0.5)))
+    assert why.endswith(
+        "(0.74 of its life left; with its own mass setting the damage, a strike of 2.38 units/s would have destroyed it)"
+    )

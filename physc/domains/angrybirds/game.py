@@ -293,17 +293,18 @@ class Game(RunRules):
             if target not in self.life or self.life[target] <= 0:
                 continue
             attacker = self._attacker(world, contact, target)
-            mass = world.mass(attacker)
             if attacker == BIRD and self.kinds.get(target) == "block":  # ABBlock's override
-                amount = speed * mass * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
+                per_speed = world.mass(attacker) * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
             else:
-                amount = speed * mass * rules.damage_factor * rules.block_damage_share
-            amount -= self.defence[target]
+                per_speed = world.mass(attacker) * rules.damage_factor * rules.block_damage_share
+            amount = speed * per_speed - self.defence[target]
             if amount <= 0:
                 continue
+            # The strike that would have destroyed it: its life and defence over the damage a unit of speed deals.
+            needed = (self.life[target] + self.defence[target]) / per_speed
             self._wound(target, amount)
             other = contact.b if target == contact.a else contact.a
-            out.append(DamageRecord(time, target, amount, self.life[target], other))
+            out.append(DamageRecord(time, target, amount, self.life[target], other, attacker, needed))
 
     def _attacker(self, world, contact: ContactRecord, target: str) -> str:
         """The body whose mass sets `target`'s damage in `contact`: against a platform or the
