@@ -39,14 +39,25 @@ class Polygon:
 class Compound:
     """A body of several convex parts, rigidly joined (PHYRE's jar: a base and two walls).
     Each part is about the body's origin; the body's contacts are the union of its parts'
-    (two bodies touch while any of their parts do)."""
+    (two bodies touch while any of their parts do). `colliders` names the collider each part
+    belongs to, where the target world has several on one body and its scripts hear of a
+    contact once per pair of colliders (Unity's OnCollisionEnter2D: Science Birds' SquareHole,
+    a box and a holed polygon); None: the body is one collider."""
 
     parts: tuple[Circle | Polygon, ...]
+    colliders: tuple[int, ...] | None = None
 
 
 def parts(shape: Circle | Polygon | Compound) -> tuple[Circle | Polygon, ...]:
     """The convex parts of a body's shape (a single shape is its own one part)."""
     return shape.parts if isinstance(shape, Compound) else (shape,)
+
+
+def colliders(shape: Circle | Polygon | Compound) -> tuple[int, ...]:
+    """The collider of each of the shape's parts (Compound.colliders; one collider if none said)."""
+    if isinstance(shape, Compound) and shape.colliders is not None:
+        return shape.colliders
+    return (0,) * len(parts(shape))
 
 
 @attrs.frozen
@@ -69,7 +80,11 @@ class BodySpec:
 @attrs.frozen
 class ContactEvent:
     """Two bodies began touching. `normal` points from `a` to `b`; `relative_velocity`
-    is a's velocity minus b's at the contact point, before the collision is resolved."""
+    is a's velocity minus b's at the contact point, before the collision is resolved.
+    `first`: whether the two bodies touched nothing of each other before; False when another
+    pair of their colliders (Compound.colliders) began touching while they already touched,
+    which a world's rules hear of as a contact of its own (Science Birds' damage) and the
+    recording of what touched what does not."""
 
     a: str
     b: str
@@ -78,6 +93,7 @@ class ContactEvent:
     relative_velocity: tuple[float, float]
     velocity_a: tuple[float, float]
     velocity_b: tuple[float, float]
+    first: bool = True
 
 
 class World(Protocol):
@@ -113,6 +129,7 @@ class ContactLog:
         self._ended: list[tuple[str, str]] = []
         self._touching: dict[str, set[str]] = {}
         self._part_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
+        self._collider_contacts: dict[tuple, int] = {}  # a pair of (body, collider) → their parts in contact
 
     def _counted(self, a: str, b: str, change: int) -> int:
         """The parts of `a` and `b` in contact after `change` (+1 a pair of parts began
@@ -124,6 +141,30 @@ class ContactLog:
             self._part_contacts[key] = count
         else:
             self._part_contacts.pop(key, None)
+        return count
+
+    def _part_began(self, a: str, a_collider: int, b: str, b_collider: int, event) -> None:
+        """A part of `a`'s collider `a_collider` began touching a part of `b`'s `b_collider`:
+        the event (`event(first)` makes it, so that a world reads velocities only when one is
+        due) when that pair of colliders touched nothing of each other before, `first` when
+        the two bodies did not either."""
+        bodies = self._counted(a, b, 1)
+        if self._counted_colliders(a, a_collider, b, b_collider, 1) == 1:
+            self._began(event(bodies == 1))
+
+    def _part_ended(self, a: str, a_collider: int, b: str, b_collider: int) -> None:
+        """A part of `a`'s collider `a_collider` parted from a part of `b`'s `b_collider`."""
+        self._counted_colliders(a, a_collider, b, b_collider, -1)
+        if self._counted(a, b, -1) == 0:
+            self._parted(a, b)
+
+    def _counted_colliders(self, a: str, a_collider: int, b: str, b_collider: int, change: int) -> int:
+        key = ((a, a_collider), (b, b_collider)) if a < b else ((b, b_collider), (a, a_collider))
+        count = self._collider_contacts.get(key, 0) + change
+        if count > 0:
+            self._collider_contacts[key] = count
+        else:
+            self._collider_contacts.pop(key, None)
         return count
 
     def _began(self, event: ContactEvent) -> None:
@@ -141,6 +182,7 @@ class ContactLog:
     def _gone(self, name: str) -> None:
         """`name` left the world: it touches nothing any more."""
         self._part_contacts = {pair: n for pair, n in self._part_contacts.items() if name not in pair}
+        self._collider_contacts = {pair: n for pair, n in self._collider_contacts.items() if name not in (pair[0][0], pair[1][0])}
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
 

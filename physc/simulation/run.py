@@ -43,7 +43,8 @@ class RunRules:
         """The run is about to begin in `world`."""
 
     def on_contact(self, world, contact: ContactRecord, damage: list[DamageRecord], time: float) -> None:
-        """A contact began at `time` (append what it damaged to `damage`)."""
+        """A contact began at `time` (append what it damaged to `damage`): the two bodies'
+        first, or another pair of their colliders (physc.backends.ContactEvent.first)."""
 
     def removals_due(self, values: list, alive: set[str], time: float) -> bool:
         """Whether any body may leave this step (`values`: each dynamic body's state row,
@@ -101,12 +102,16 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
         budget.check()  # Ctrl-C and the time budget stop a run between steps
         world.step(dt)
         time = (step + 1) * dt
+        resumed = set()
         for event in world.begun():
-            if already and frozenset((event.a, event.b)) in already:
-                already.discard(frozenset((event.a, event.b)))
+            pair = frozenset((event.a, event.b))
+            if pair in resumed or (event.first and pair in already):
+                already.discard(pair)
+                resumed.add(pair)
                 continue  # touching at the snapshot already (reported when stepped, or woken): no new contact
             record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
-            contacts.append(record)
+            if event.first:  # what touched what; another pair of the same bodies' colliders is heard by the rules alone
+                contacts.append(record)
             rules.on_contact(world, record, damage, time)
         for a, b in world.ended():
             separations.append(SeparationRecord(time, a, b))

@@ -82,6 +82,26 @@ def test_a_pig_struck_by_the_bird_takes_the_half_formula_and_a_block_the_full_on
         assert record.needed == pytest.approx((1000.0 + defence) / (bird_mass * 11.22 * share))
 
 
+def test_a_squarehole_hears_of_a_strike_once_per_collider():
+    """SquareHole has two enabled colliders (a box and a holed polygon): Unity calls its
+    OnCollisionEnter2D for each pair of colliders that begins touching, so a bird's strike on
+    both deals the damage twice (and a blast reaches each: Physics2D.OverlapCircleAll)."""
+    platform = LevelObject("Platform", "Platform", 2.0, -1.0, 0.0, scale_x=10 / 0.64, scale_y=0.5, name="platform")
+    block = LevelObject("Block", "SquareHole", -1.5, -1.0 + 0.16 + 0.3918 + 0.01, 0.0, "ice", name="block")
+    trace = Game(Level(objects=(platform, block)), PHYQ, BOX2D).play(Shot(target=(-1.9, -0.45)), 6.0)
+    strikes = [d for d in trace.damage if d.target == "block" and d.by == BIRD]
+    assert len(strikes) == 2 and strikes[0].time == strikes[1].time and strikes[0].amount == pytest.approx(strikes[1].amount)
+    assert [d.name for d in trace.destructions] == ["block"]  # 2 × 54 of the ice's 70: once would leave it standing
+    tnt = LevelObject("TNT", "TNT", 0.0, GROUND_TOP + 0.33, 0.0, name="tnt")
+    holed = LevelObject("Block", "SquareHole", 1.0, GROUND_TOP + 0.42, 0.0, "stone", name="holed")
+    game = Game(Level(objects=(tnt, holed)), PHYQ, BOX2D)
+    world = game.build()
+    damage = []
+    game._explode(world, "tnt", {"tnt", "holed"}, damage, 3.0)
+    distance = math.dist(world.state("holed")[:2], world.state("tnt")[:2])
+    assert [d.amount for d in damage] == [pytest.approx(2 * 100 * (1 - distance / 2.5), rel=1e-3)]
+
+
 def test_tnt_falls_off_with_distance_and_spares_birds():
     tnt = LevelObject("TNT", "TNT", 0.0, GROUND_TOP + 0.33, 0.0, name="tnt")
     near = LevelObject("Block", "SquareSmall", 1.0, GROUND_TOP + 0.2, 0.0, "stone", name="near")

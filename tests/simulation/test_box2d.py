@@ -87,6 +87,28 @@ def test_contacts_begin_with_the_speed_before_the_impact_and_end_when_a_body_goe
     assert w.touching("floor") == set()
 
 
+@pytest.mark.parametrize("backend", ["box2d", "pymunk"])
+def test_each_pair_of_colliders_begins_a_contact_and_the_bodies_first_is_first(backend):
+    """A body of two colliders (Compound.colliders) landing flat on both: one event per pair
+    of colliders, the first of them marked first (Unity calls OnCollisionEnter2D for each);
+    two parts of one collider make one."""
+    left = Polygon(((-0.4, -0.2), (0.0, -0.2), (0.0, 0.2), (-0.4, 0.2)))
+    right = Polygon(((0.0, -0.2), (0.4, -0.2), (0.4, 0.2), (0.0, 0.2)))
+    firsts = {}
+    for colliders in ((0, 1), (0, 0)):
+        w = load_backend(backend).create_world(PHYQ.gravity, SCIENCE_BIRDS_ENGINE)
+        w.add(BodySpec("floor", FLOOR, 0.0, -0.5, static=True))
+        w.add(BodySpec("slab", Compound((left, right), colliders), 0.0, 0.5))
+        events = []
+        for _ in range(60):
+            w.step(PHYQ.engine.dt)
+            events += w.begun()
+        assert all({e.a, e.b} == {"slab", "floor"} for e in events)
+        firsts[colliders] = [e.first for e in events]
+    assert firsts[(0, 1)] == [True, False]
+    assert firsts[(0, 0)] == [True]
+
+
 def test_the_same_bodies_and_steps_give_the_same_run_byte_for_byte():
     def run():
         w = world()

@@ -13,7 +13,8 @@ them.
 Contacts are Box2D's own events: `BeginContact` (called while the step finds new touching
 pairs, before the solver, so the bodies' velocities are still those before the impact) and
 `EndContact` (also called when a body is destroyed). A compound body begins a contact when
-its first part touches and ends it when its last part parts. A concave polygon, or one with
+its first part touches and ends it when its last part parts; each pair of its colliders
+(Compound.colliders) that begins touching after that is an event of its own (`first` False). A concave polygon, or one with
 more than Unity's eight corners, is split into convex parts (physc.backends.convex). A
 `continuous` body is a Box2D bullet (Unity's Continuous collision detection): swept against
 moving bodies too, not only static ones.
@@ -32,7 +33,7 @@ from collections.abc import Sequence
 import Box2D
 import numpy as np
 
-from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, parts
+from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, colliders, parts
 from physc.backends.convex import MAX_CORNERS, convex_parts, signed_area
 from physc.backends.settings import EngineSettings
 
@@ -117,11 +118,13 @@ class Box2DWorld(ContactLog):
             type=kind, position=(spec.x, spec.y), angle=spec.angle, angularDamping=spec.angular_damping,
             gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
         )
-        shapes = [shape for part in parts(spec.shape) for shape in _box2d_shapes(part)]
-        area = sum(_area(shape) for shape in shapes)  # of the shapes as Box2D holds them (float32 corners)
+        shapes = [(shape, collider) for part, collider in zip(parts(spec.shape), colliders(spec.shape)) for shape in _box2d_shapes(part)]
+        area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
         density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
-        for shape in shapes:
-            body.CreateFixture(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness)
+        for shape, collider in shapes:
+            body.CreateFixture(
+                shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider,
+            )
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self._version += 1
@@ -192,24 +195,26 @@ class Box2DWorld(ContactLog):
 
     # ---- contact events ------------------------------------------------------------
     def _on_begin(self, contact) -> None:
-        body_a, body_b = contact.fixtureA.body, contact.fixtureB.body
+        fixture_a, fixture_b = contact.fixtureA, contact.fixtureB
+        body_a, body_b = fixture_a.body, fixture_b.body
         a, b = body_a.userData, body_b.userData
-        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
-            return
-        manifold = contact.worldManifold
-        count = contact.manifold.pointCount
-        point = tuple(manifold.points[0]) if count else tuple(body_a.worldCenter)
-        if count > 1:  # the middle of the two points of a face contact
-            point = tuple((p + q) / 2 for p, q in zip(manifold.points[0], manifold.points[1]))
-        va = body_a.GetLinearVelocityFromWorldPoint(point)
-        vb = body_b.GetLinearVelocityFromWorldPoint(point)
-        normal = tuple(manifold.normal)
-        self._began(ContactEvent(a, b, point, normal, (va[0] - vb[0], va[1] - vb[1]), (va[0], va[1]), (vb[0], vb[1])))
+
+        def event(first: bool) -> ContactEvent:
+            manifold = contact.worldManifold
+            count = contact.manifold.pointCount
+            point = tuple(manifold.points[0]) if count else tuple(body_a.worldCenter)
+            if count > 1:  # the middle of the two points of a face contact
+                point = tuple((p + q) / 2 for p, q in zip(manifold.points[0], manifold.points[1]))
+            va = body_a.GetLinearVelocityFromWorldPoint(point)
+            vb = body_b.GetLinearVelocityFromWorldPoint(point)
+            normal = tuple(manifold.normal)
+            return ContactEvent(a, b, point, normal, (va[0] - vb[0], va[1] - vb[1]), (va[0], va[1]), (vb[0], vb[1]), first)
+
+        self._part_began(a, fixture_a.userData, b, fixture_b.userData, event)
 
     def _on_end(self, contact) -> None:
-        a, b = contact.fixtureA.body.userData, contact.fixtureB.body.userData
-        if self._counted(a, b, -1) == 0:
-            self._parted(a, b)
+        fixture_a, fixture_b = contact.fixtureA, contact.fixtureB
+        self._part_ended(fixture_a.body.userData, fixture_a.userData, fixture_b.body.userData, fixture_b.userData)
 
 
 def _box2d_shapes(part) -> list:

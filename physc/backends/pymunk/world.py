@@ -30,7 +30,7 @@ import numpy as np
 import pymunk
 import pymunk.batch
 
-from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, parts
+from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, colliders, parts
 from physc.backends.settings import EngineSettings
 
 HONOURS = {
@@ -81,6 +81,7 @@ class PymunkWorld(ContactLog):
         self.bodies: dict[str, pymunk.Body] = {}
         self.shapes: dict[str, tuple[pymunk.Shape, ...]] = {}
         self._name_of: dict[int, str] = {}
+        self._collider_of: dict[int, int] = {}  # a shape → the collider of its body it belongs to (Compound.colliders)
         self._bounciness: dict[int, float] = {}
         self._drags: dict[str, pymunk.Constraint] = {}
         # One batched read of every body per step (pymunk.batch's own call, without
@@ -135,8 +136,9 @@ class PymunkWorld(ContactLog):
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self.shapes[spec.name] = shapes
-        for shape in shapes:
+        for shape, collider in zip(shapes, colliders(spec.shape)):
             self._name_of[id(shape)] = spec.name
+            self._collider_of[id(shape)] = collider
             self._bounciness[id(shape)] = spec.bounciness
 
     def remove(self, name: str) -> None:
@@ -237,13 +239,15 @@ class PymunkWorld(ContactLog):
         approach = (va.x - vb.x) * normal.x + (va.y - vb.y) * normal.y
         bounces = approach > self.settings.restitution_threshold
         arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])]) if bounces else 0.0
-        if self._counted(a, b, 1) > 1:  # another part of the pair already touches
-            return
-        self._began(ContactEvent(a, b, (point.x, point.y), (normal.x, normal.y), (va.x - vb.x, va.y - vb.y), (va.x, va.y), (vb.x, vb.y)))
+        first, second = arbiter.shapes
+        self._part_began(
+            a, self._collider_of[id(first)], b, self._collider_of[id(second)],
+            lambda new: ContactEvent(a, b, (point.x, point.y), (normal.x, normal.y), (va.x - vb.x, va.y - vb.y), (va.x, va.y), (vb.x, vb.y), new),
+        )
 
     def _on_separate(self, arbiter, space, data):
         a, b = self._pair(arbiter)
         if a is None or b is None:
             return
-        if self._counted(a, b, -1) == 0:
-            self._parted(a, b)
+        first, second = arbiter.shapes
+        self._part_ended(a, self._collider_of[id(first)], b, self._collider_of[id(second)])

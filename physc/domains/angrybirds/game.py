@@ -14,7 +14,7 @@ import math
 
 import attrs
 
-from physc.backends import Backend, BodySpec, Circle, Polygon
+from physc.backends import Backend, BodySpec, Circle, Polygon, colliders
 from physc.domains.angrybirds import prefabs
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
@@ -94,11 +94,13 @@ class Game(RunRules):
         world.add(ground)
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
+        self.colliders: dict[str, int] = {}  # how many colliders each body has (a blast reaches each)
         self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
             world.add(spec)
             self.kinds[obj.name] = kind
+            self.colliders[obj.name] = len(set(colliders(spec.shape)))
             self.life[obj.name] = life
             self.defence[obj.name] = defence
             self.material[obj.name] = self._material(obj) if kind == "block" else ""
@@ -348,10 +350,12 @@ class Game(RunRules):
             share = max(1.0 - distance / rules.tnt_radius, 0.0)
             if share <= 0.0 or distance == 0:
                 continue
-            push = rules.tnt_impulse * share / max(world.mass(other), 1e-6)
+            # Physics2D.OverlapCircleAll lists colliders: a body with several takes the blast from each.
+            hits = self.colliders.get(other, 1)
+            push = hits * rules.tnt_impulse * share / max(world.mass(other), 1e-6)
             world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
             if other in self.life:
-                amount = rules.tnt_damage * share
+                amount = hits * rules.tnt_damage * share
                 self._wound(other, amount)
                 damage.append(DamageRecord(time, other, amount, self.life[other], name))
 

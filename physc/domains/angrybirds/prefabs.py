@@ -97,9 +97,11 @@ def enabled(prefab: str) -> list[dict]:
 
 @functools.cache
 def body_shape(prefab: str, circle_colliders: bool = False) -> Circle | Polygon | Compound:
-    """The prefab's colliders (`colliders`) as one body's shape (convex parts about its origin)."""
-    parts = tuple(part for _, collider in colliders(prefab, circle_colliders) for part in _collider_parts(collider))
-    return parts[0] if len(parts) == 1 else Compound(parts)
+    """The prefab's colliders (`colliders`) as one body's shape (convex parts about its origin,
+    each naming its collider: the game hears of a contact once per pair of colliders)."""
+    pieces = [(index, part) for index, collider in colliders(prefab, circle_colliders) for part in _collider_parts(collider)]
+    parts = tuple(part for _, part in pieces)
+    return parts[0] if len(parts) == 1 else Compound(parts, tuple(index for index, _ in pieces))
 
 
 @functools.cache
