@@ -13,7 +13,8 @@ the platform) it writes, in the prefab's own component order:
 * each Collider2D: its type (box, circle, polygon), whether it is enabled, its offset, its
   size, radius or paths, its density and its own physics material;
 * the game script's fields (life, density, defence, a block's life per material, TNT's
-  explosion, a bird's drag radius and launch gravity, its damage multipliers);
+  explosion, a bird's drag radius and launch gravity, its damage multipliers) and of its
+  ABParticleSystem (`_systemLifetime`: how long a dying object stays before Destroy);
 
 and the friction and bounciness of every physics material it names. Reading Unity's YAML
 needs PyYAML (a maintenance tool, not a dependency of physc). physc's angrybirds domain reads
@@ -36,7 +37,7 @@ COLLIDERS = {"BoxCollider2D": "box", "CircleCollider2D": "circle", "PolygonColli
 SCRIPT_FIELDS = (
     "_life", "_density", "_defense", "_woodLife", "_stoneLife", "_iceLife", "_explosionArea", "_explosionPower",
     "_explosionDamage", "_dragRadius", "_launchGravity", "_woodDamageMultiplier", "_stoneDamageMultiplier",
-    "_iceDamageMultiplier", "lifeTime",
+    "_iceDamageMultiplier", "lifeTime", "_systemLifetime",
 )
 
 

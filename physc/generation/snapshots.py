@@ -26,7 +26,7 @@ class Snapshots:
             return None
         trace = source.trace
         met = placing.approach(trace, new, {o.name: (o.width, o.height) for o in scene.objects}, self.scale, settings.clear)
-        step = (trace.steps - 1 if met is None else met) - int(round(settings.snapshot_lead / trace.dt))
+        step = Snapshot.latest_cut(trace, (trace.steps - 1 if met is None else met) - int(round(settings.snapshot_lead / trace.dt)))
         if step * trace.dt < settings.snapshot_least or step >= trace.steps:
             return None
         return Snapshot.of(trace, step)

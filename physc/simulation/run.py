@@ -58,6 +58,13 @@ class RunRules:
     def on_removed(self, world, name: str, cause: str, alive: set[str], damage: list[DamageRecord], time: float) -> None:
         """`name` is leaving (still in the world): what its leaving does to the others."""
 
+    def lingers(self, world, name: str, cause: str) -> float:
+        """`name` has left the level (`gone`, `on_removed` done): the seconds it stays in the
+        world before it is taken out (0: now), doing there what the rules leave it (they may
+        change its state or colliders now). It is no longer recorded: its rows are NaN, and
+        its contacts count for the rules alone."""
+        return 0.0
+
     def finished(self, values: list, alive: set[str], time: float) -> bool:
         """Whether the run is over at `time`, before its end."""
         return False
@@ -92,6 +99,9 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     states = np.full((steps, len(dynamic), 6), np.nan)
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
+    lingering: dict[str, float] = {}  # bodies gone from the level but still in the world → when they leave it
+    unrecorded: set[str] = set()  # bodies that lingered: their contacts are no longer recorded
+    parting: list[tuple[str, str]] = []  # their contacts when they left the level: ended for the record next step, as a removal's are
     rules.on_start(world)
     first, already = 0, set()
     if resume is not None:
@@ -110,12 +120,22 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
                 resumed.add(pair)
                 continue  # touching at the snapshot already (reported when stepped, or woken): no new contact
             record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
-            if event.first:  # what touched what; another pair of the same bodies' colliders is heard by the rules alone
+            # What touched what; another pair of the same bodies' colliders, and a body that
+            # lingers after it left the level, are heard by the rules alone.
+            if event.first and not pair & unrecorded:
                 contacts.append(record)
             rules.on_contact(world, record, damage, time)
+        separations.extend(SeparationRecord(time, a, b) for a, b in parting)
+        parting.clear()
         for a, b in world.ended():
-            separations.append(SeparationRecord(time, a, b))
+            if a not in unrecorded and b not in unrecorded:
+                separations.append(SeparationRecord(time, a, b))
+        for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
+            world.remove(name)
+            del lingering[name]
         row = world.states(dynamic, out=states[step])  # NaN for the bodies already gone
+        for name in lingering:
+            row[index[name]] = np.nan
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
             # In `dynamic` order: the order of removals must not depend on string hashing,
@@ -126,9 +146,16 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
                 gone = rules.gone(name, state, time, damage)
                 if gone:
                     rules.on_removed(world, name, gone[0], alive, damage, time)
-                    destructions.append(DestructionRecord(time, name, gone[0], gone[1]))
-                    world.remove(name)
                     alive.discard(name)
+                    touched = sorted(world.touching(name))
+                    stay = rules.lingers(world, name, gone[0])
+                    if stay > 0:  # its contacts end for the record now, and begin no more
+                        parting.extend((name, other) for other in touched)
+                        lingering[name] = time + stay
+                        unrecorded.add(name)
+                    else:
+                        world.remove(name)
+                    destructions.append(DestructionRecord(time, name, gone[0], gone[1], time + stay if stay > 0 else None))
                 else:
                     row[index[name]] = state
             values = row.tolist()

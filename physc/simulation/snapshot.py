@@ -48,6 +48,8 @@ class Snapshot:
         """`trace` cut after `step` steps (1 ≤ step < trace.steps)."""
         if not 1 <= step < trace.steps:
             raise ValueError(f"a snapshot of a {trace.steps}-step run must be cut after 1 to {trace.steps - 1} steps, not {step}")
+        if cls.latest_cut(trace, step) != step:
+            raise ValueError(f"a snapshot cannot be cut after {step} steps: a body that left the level is still in the world there")
         time = step * trace.dt + 1e-9
 
         def until(records):
@@ -63,6 +65,20 @@ class Snapshot:
             step, trace.dt, trace.names, trace.states[:step].copy(), contacts, separations, until(trace.damage),
             until(trace.destructions), frozenset(p for p, t in touching.items() if t),
         )
+
+    @staticmethod
+    def latest_cut(trace: Trace, step: int) -> int:
+        """The latest cut at or before `step` at which no body that left the level still
+        lingers in the world (DestructionRecord.until): its state there is not recorded, so a
+        run cannot go on from inside that while. Below 1: there is none."""
+        dt = trace.dt
+        moved = True
+        while moved:
+            moved = False
+            for d in trace.destructions:
+                if d.until is not None and d.time <= step * dt + 1e-9 < d.until - 1e-9:
+                    step, moved = int(round(d.time / dt)) - 1, True
+        return step
 
     def state(self, name: str) -> tuple | None:
         """`name`'s state at the cut (None: gone by then, or not in the run)."""

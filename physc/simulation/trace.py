@@ -56,6 +56,9 @@ class DestructionRecord:
     name: str
     cause: str  # "damage" | "out of world" | "removed"
     by: str | None = None
+    # When the body left the world, where its rules kept it there a while after it left the
+    # level (Science Birds: a dying object until its Destroy): None, at `time`.
+    until: float | None = None
 
 
 @attrs.frozen

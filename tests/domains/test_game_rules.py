@@ -6,13 +6,14 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 from physc.backends import Compound, Polygon, load_backend
 from physc.backends.convex import signed_area
 from physc.domains.angrybirds import prefabs
 from physc.domains.angrybirds.catalogue import MATERIAL
-from physc.domains.angrybirds.game import BIRD, Game
+from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 import attrs
@@ -100,6 +101,36 @@ def test_a_squarehole_hears_of_a_strike_once_per_collider():
     game._explode(world, "tnt", {"tnt", "holed"}, damage, 3.0)
     distance = math.dist(world.state("holed")[:2], world.state("tnt")[:2])
     assert [d.amount for d in damage] == [pytest.approx(2 * 100 * (1 - distance / 2.5), rel=1e-3)]
+
+
+def test_a_dying_object_stops_loses_its_first_collider_and_stays_its_lifetime():
+    """ABGameObject.Die: velocity zeroed, GetComponent<Collider2D>() (the first collider,
+    enabled or not) disabled, Destroy after the prefab's `_systemLifetime`. A pig's first
+    collider is its disabled circle, so its polygon stays solid; a SquareHole keeps its holed
+    polygon; a block of one collider has nothing left and goes at once."""
+    assert (prefabs.lifetime("BasicSmall"), prefabs.lifetime("SquareHole"), prefabs.lifetime("RectFat")) == (0.2, 0.5, 0.5)
+    holed = LevelObject("Block", "SquareHole", 2.0, GROUND_TOP + 0.42, 0.0, "wood", name="holed")
+    fat = LevelObject("Block", "RectFat", 4.0, GROUND_TOP + 0.2, 0.0, "wood", name="fat")
+    game = Game(Level(objects=(PIG, holed, fat)), PHYQ, BOX2D)
+    world = game.build()
+    world.set_velocity("pig", 1.0, 2.0, 0.5)
+    mass = world.mass("holed")
+    assert game.lingers(world, "pig", "damage") == pytest.approx(0.2)
+    assert world.state("pig")[3:] == pytest.approx((0.0, 0.0, 0.5))
+    assert game.lingers(world, "holed", "damage") == pytest.approx(0.5)
+    assert world.mass("holed") < mass  # its box is gone, its holed polygon stays
+    assert game.lingers(world, "fat", "damage") == 0.0
+    # Every contact a dying object begins stops it again (OnCollisionEnter2D → DealDamage → Die).
+    world.set_velocity("pig", 0.0, -3.0, 0.0)
+    game._invulnerable, game._bird_struck = 10.0, True  # (the run's state, which `play` sets)
+    game.on_contact(world, ContactRecord(1.0, "pig", GROUND, (0, 0), (0, -1), (0.0, -3.0), (0.0, -3.0), (0.0, 0.0)), [], 1.0)
+    assert world.state("pig")[3:5] == pytest.approx((0.0, 0.0))
+    # In a run: the pig the bird kills leaves the level at once and the world 0.2 s later.
+    trace = Game(Level(objects=(PIG,)), PHYQ, BOX2D).play(Shot(target=(0.0, GROUND_TOP + 0.25)), 6.0)
+    (killed,) = [d for d in trace.destructions if d.name == "pig"]
+    assert killed.until == pytest.approx(killed.time + 0.2)
+    assert np.isnan(trace.states[int(round(killed.time / trace.dt)) - 1 :, trace.index("pig"), 0]).all()
+    assert attrs.evolve(RULES, dying_lingers=False).dying_lingers is False
 
 
 def test_tnt_falls_off_with_distance_and_spares_birds():

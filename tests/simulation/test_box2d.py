@@ -109,6 +109,25 @@ def test_each_pair_of_colliders_begins_a_contact_and_the_bodies_first_is_first(b
     assert firsts[(0, 0)] == [True]
 
 
+@pytest.mark.parametrize("backend", ["box2d", "pymunk"])
+def test_a_collider_taken_out_ends_its_contacts_and_its_mass(backend):
+    left = Polygon(((-0.4, -0.2), (0.0, -0.2), (0.0, 0.2), (-0.4, 0.2)))
+    right = Polygon(((0.0, -0.2), (0.4, -0.2), (0.4, 0.2), (0.0, 0.2)))
+    w = load_backend(backend).create_world(PHYQ.gravity, SCIENCE_BIRDS_ENGINE)
+    w.add(BodySpec("floor", FLOOR, 0.0, -0.5, static=True))
+    w.add(BodySpec("slab", Compound((left, right), (0, 1)), 0.0, 0.21, density=1.0))
+    for _ in range(20):
+        w.step(PHYQ.engine.dt)
+    w.begun(), w.ended()
+    whole = w.mass("slab")
+    w.disable_collider("slab", 0)
+    assert w.mass("slab") == pytest.approx(whole / 2, rel=0.02) and "floor" in w.touching("slab")  # its other collider still rests
+    w.disable_collider("slab", 1)
+    for _ in range(2):
+        w.step(PHYQ.engine.dt)
+    assert {frozenset(p) for p in w.ended()} == {frozenset(("slab", "floor"))}
+
+
 def test_the_same_bodies_and_steps_give_the_same_run_byte_for_byte():
     def run():
         w = world()

@@ -129,6 +129,12 @@ class Box2DWorld(ContactLog):
         self.bodies[spec.name] = body
         self._version += 1
 
+    def disable_collider(self, name: str, collider: int) -> None:
+        body = self.bodies[name]
+        for fixture in [f for f in body.fixtures if f.userData == collider]:
+            body.DestroyFixture(fixture)  # Box2D ends its contacts (EndContact) and resets the mass
+        self._version += 1
+
     def remove(self, name: str) -> None:
         body = self.bodies.pop(name)
         self.world.DestroyBody(body)  # Box2D ends its contacts (EndContact) here

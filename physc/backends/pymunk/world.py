@@ -141,6 +141,13 @@ class PymunkWorld(ContactLog):
             self._collider_of[id(shape)] = collider
             self._bounciness[id(shape)] = spec.bounciness
 
+    def disable_collider(self, name: str, collider: int) -> None:
+        shapes = self.shapes[name]
+        going = [shape for shape in shapes if self._collider_of[id(shape)] == collider]
+        self.space.remove(*going)  # Chipmunk separates their arbiters; the body's mass is the rest's
+        self.shapes[name] = tuple(shape for shape in shapes if shape not in going)
+        self._changed = True
+
     def remove(self, name: str) -> None:
         body, shapes = self.bodies.pop(name), self.shapes.pop(name)
         if name in self._drags:

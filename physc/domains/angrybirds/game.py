@@ -95,6 +95,8 @@ class Game(RunRules):
         self.kinds = {GROUND: "ground"}
         self.life, self.defence, self.material = {}, {}, {}
         self.colliders: dict[str, int] = {}  # how many colliders each body has (a blast reaches each)
+        self._objects = {obj.name: obj for obj in self.level.objects}
+        self._dying: set[str] = set()  # bodies that left the level but stay in the world a while (`lingers`)
         self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
@@ -167,6 +169,8 @@ class Game(RunRules):
 
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
     def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
+        for name in self._dying.intersection((contact.a, contact.b)):  # OnCollisionEnter2D → DealDamage → Die: it stops again
+            world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
         if not self._bird_struck and BIRD in (contact.a, contact.b):
             self._bird_struck = True
             # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
@@ -248,6 +252,25 @@ class Game(RunRules):
         fast = self.world.falling_speed
         return any(v[4] < -fast for v, name in zip(values, dynamic) if name != BIRD)
 
+    def lingers(self, world, name: str, cause: str) -> float:
+        """ABGameObject.Die (`Rules.dying_lingers`): a dying pig or block stops, loses its
+        first collider and stays for its prefab's `lifetime`; one left with no collider, or
+        whose backend cannot take a collider out, goes at once."""
+        obj = self._objects.get(name)
+        if not self.rules.dying_lingers or obj is None or self.kinds.get(name) not in ("pig", "block"):
+            return 0.0
+        stay = prefabs.lifetime(obj.type)
+        circles = self.model.circle_colliders
+        if stay <= 0 or obj.type not in prefabs.prefabs():
+            return 0.0
+        if prefabs.first_collider_enabled(obj.type, circles):
+            if self.colliders.get(name, 1) == 1 or not hasattr(world, "disable_collider"):
+                return 0.0  # nothing left to collide with (or no way to take the collider out)
+            world.disable_collider(name, 0)
+        world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
+        self._dying.add(name)
+        return stay
+
     def gone(self, name: str, state: tuple, time: float, damage: list) -> tuple | None:
         """Why `name` (its state: x, y, angle, vx, vy, ω) leaves the level now (the kind of
         destruction and by whom), if it does."""
@@ -292,7 +315,7 @@ class Game(RunRules):
         if speed <= 0:
             return
         for target in (contact.a, contact.b):
-            if target not in self.life or self.life[target] <= 0:
+            if target not in self.life or self.life[target] <= 0 or target in self._dying:
                 continue
             attacker = self._attacker(world, contact, target)
             if attacker == BIRD and self.kinds.get(target) == "block":  # ABBlock's override

@@ -115,3 +115,15 @@ def circle_radius(prefab: str, circle_colliders: bool = False) -> float | None:
     """The radius of the prefab's body when it collides as one circle, else None."""
     shape = body_shape(prefab, circle_colliders)
     return shape.radius if isinstance(shape, Circle) else None
+
+
+def lifetime(prefab: str) -> float:
+    """How long the prefab's object stays in the world once it dies, before its Destroy
+    (its ABParticleSystem's `_systemLifetime`; 0 when it has none)."""
+    return float(prefabs()[prefab]["script"].get("_systemLifetime", 0.0))
+
+
+def first_collider_enabled(prefab: str, circle_colliders: bool = False) -> bool:
+    """Whether the body collides with the prefab's first collider, the one a dying object
+    disables (ABGameObject.Die: GetComponent<Collider2D>())."""
+    return any(index == 0 for index, _ in colliders(prefab, circle_colliders))

@@ -46,6 +46,12 @@ class Rules:
     bird_still_every: float = _cited(1.0, "ABBird.OnCollisionEnter2D: InvokeRepeating every 1 s")
     bird_still_speed: float = _cited(0.001, "ABBird.CheckVelocityToDie")
     bird_lifetime: float = _cited(20.0, "BirdRed.prefab `lifeTime`")
+    # ABGameObject.Die: a dying object stops (velocity zeroed), disables GetComponent<Collider2D>()
+    # (the first collider, which Unity returns enabled or not) and is destroyed after its
+    # ABParticleSystem's `_systemLifetime` (prefabs.lifetime); until then what colliders it has
+    # left stay solid, and every contact it begins stops it again (OnCollisionEnter2D →
+    # DealDamage → Die). False: it leaves the world at once (physc's earlier model).
+    dying_lingers: bool = _cited(True, "ABGameObject.Die, DealDamage; the prefabs' ABParticleSystem `_systemLifetime`")
     # ABTNT.cs: within the radius, damage and impulse fall off linearly with the distance
     # between the two objects' positions; birds are not affected.
     tnt_radius: float = _cited(2.5, "TNT.prefab `_explosionArea`")
