@@ -58,7 +58,7 @@ ACCEPTANCE_METRICS = (
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
     "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
-    "min_robustness", "robustness", "layouts_tried", "simulations",
+    "min_robustness", "robustness", "layouts_tried", "simulations", "structure",
 )
 VERIFY_COLUMNS = ("verify_backend", "verified_solved", "verified_realised", "verified_noisy")  # with --verify-backend
 

@@ -64,6 +64,7 @@ def evaluate(job: Job) -> dict:
         layouts_tried=task.layouts_tried,
         simulations=task.simulations,
         given_up=task.given_up,
+        structure=task.structure,
     )
     if task.acceptance is not None:  # the domain's acceptance rule (PHYRE's flags)
         record.update(

@@ -66,8 +66,8 @@ def test_records_made_with_other_settings_are_made_again(tmp_path):
     (record,) = records(tmp_path).values()
     assert record["min_robustness"] == 6 and record["robustness"] == [6, 6]
     header, row = (tmp_path / "results.csv").read_text().splitlines()[:2]
-    assert header.endswith(",min_robustness,robustness,layouts_tried,simulations")
-    assert row.endswith(f",6,6/6,{record['layouts_tried']},{record['simulations']}") and record["layouts_tried"] >= 1
+    assert header.endswith(",min_robustness,robustness,layouts_tried,simulations,structure")
+    assert row.endswith(f",6,6/6,{record['layouts_tried']},{record['simulations']},flat") and record["layouts_tried"] >= 1
     assert record["simulations"] >= sum(why["simulations"] for why in record["given_up"].values())
 
 
