@@ -1,7 +1,8 @@
 """A PHYRE-like dataset as PHYRE's own benchmark: what `physc generate` writes under `phyre/`.
 
 * `tasks.bin.lzma` (and `tasksNN.bin.lzma` for templates from 01000 on): the tasks as PHYRE's
-  `TaskCollection`s (phyre_format.py), which PHYRE's loader reads as they are;
+  `TaskCollection`s (phyre_format.py), which PHYRE's loader reads as they are, without their
+  `solutions` (PHYRE's never carry them);
 * `observations.npy`: each task's first observation, PHYRE's 256 × 256 picture of colour
   indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
 * `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
@@ -95,7 +96,10 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
     files: dict[str, bytes] = {}
     by_file: dict[str, list[dict]] = {}
     for task_id, _, task in entries:
-        by_file.setdefault(phyre_format.collection_file(task_id), []).append(task)
+        # PHYRE's tasks never carry their solutions: an agent that reads the task must not
+        # read the answer. The intended action stays in physc's files and tasks.parquet.
+        shown = {k: v for k, v in task.items() if k != "solutions"}
+        by_file.setdefault(phyre_format.collection_file(task_id), []).append(shown)
     for name, collection in by_file.items():
         files[f"{FOLDER}/{name}"] = phyre_format.collection_bytes(collection)
     files[f"{FOLDER}/observations.npy"] = _npy(np.stack([observation.raster(task) for _, _, task in entries]))

@@ -112,7 +112,9 @@ def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     assert ids == ["00000:000", "00000:001", "00000:002", "00001:000", "00001:001", "00001:002"]  # Ledge, then Jar; seeds in order
     first = task_of(dataset)
     first.pop("physc")
+    assert first.pop("solutions")  # physc's task file has the intended ball; PHYRE's tasks never do
     assert tasks[0] == {**first, "taskId": "00000:000"}
+    assert not [t for t in tasks if "solutions" in t]
     observations = np.load(phyre / "observations.npy")
     assert observations.shape == (6, 256, 256) and observations.dtype == np.uint8
     assert np.array_equal(observations[0], observation.raster(first))
