@@ -48,6 +48,8 @@ def cmd_agent(args) -> int:
     except AgentError as error:
         print(f"physc eval: error: {error}", file=sys.stderr)
         return EXIT_INPUT
+    except DomainError as error:  # what the dataset does not hold (a --setup it has no folds for)
+        raise UsageError(f"{folder}: {error.message}" + (f" ({error.help})" if error.help else "")) from None
     except (OSError, ValueError, KeyError) as error:  # a dataset whose benchmark files are missing, unreadable or damaged
         raise UsageError(f"cannot read the dataset {folder} (generated to its end by physc generate?): {error}") from None
     out = Path(args.out)
@@ -110,7 +112,10 @@ def add_command(commands, common) -> None:
     add_format(parser, "the summary (or an agent's scores)")
     agent = parser.add_argument_group("scoring an agent on a generated dataset (a PHYRE-like benchmark)")
     agent.add_argument("--agent", metavar="MODULE:NAME", help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first (physc_phyre.agents:random_agent)")
-    agent.add_argument("--setup", choices=("cross_template", "within_template"), default="cross_template", help="PHYRE's evaluation setup (default cross_template)")
+    agent.add_argument(
+        "--setup", default="ball_cross_template", metavar="NAME",
+        help="PHYRE's evaluation setup, as the dataset's phyre/folds.json names them (ball_cross_template, ball_within_template, two_balls_…; default ball_cross_template)",
+    )
     agent.add_argument("--folds", type=int, choices=range(1, 11), default=10, metavar="N", help="folds 0 .. N-1, N from 1 to 10 (default 10, as PHYRE reports)")
     agent.add_argument("--split", choices=("test", "dev"), default="test", help="the split scored (default test; the agent's fit sees train and dev)")
     parser.set_defaults(run=cmd_eval)

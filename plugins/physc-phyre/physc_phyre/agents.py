@@ -23,6 +23,7 @@ from pathlib import Path
 
 import attrs
 import numpy as np
+from physc.domains.base import DomainError
 from physc.domains.simulated import auccess
 from physc.evaluation.agent import calling
 
@@ -90,7 +91,13 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
     seen = observations(folder)
     files = {row["task_id"]: row["task"] for row in _rows(folder)}
     classes = {c.__name__: c for c in domain.level_classes}
-    split_of = json.loads((folder / "phyre" / "folds.json").read_text())[setup]
+    setups = json.loads((folder / "phyre" / "folds.json").read_text())
+    if setup not in setups:
+        raise DomainError(
+            "E0703", f"the dataset has no evaluation setup '{setup}' (its folds.json: {', '.join(setups)})",
+            help="name one of them with --setup; PHYRE's setups are per action tier",
+        )
+    split_of = setups[setup]
     levels: dict = {}  # a task's level, read once though the folds share tasks
 
     def level_of(task_id: str):

@@ -12,9 +12,10 @@ and salt), shares from TRAIN_SHARE = 0.8.
   first round(80 %) kept for training and the rest test; the kept ids of every template
   pooled, ordered with `make_dev{seed}`, the first int(80 %) train and the rest dev.
 
-Each action tier is split on its own (PHYRE's setups are per tier: ball_cross_template,
-two_balls_cross_template, …) and the parts pooled. The salts say "ball" in every tier, as
-PHYRE's do. Every list is sorted, as PHYRE returns it.
+Each action tier is split on its own, under PHYRE's own setup names (`setup`):
+`ball_cross_template`, `ball_within_template`, `two_balls_cross_template`,
+`two_balls_within_template`. The salts say "ball" in every tier, as PHYRE's do. Every list is
+sorted, as PHYRE returns it.
 """
 
 from __future__ import annotations
@@ -23,8 +24,15 @@ import hashlib
 from collections.abc import Iterable
 
 TRAIN_SHARE = 0.8
-SETUPS = ("cross_template", "within_template")
+KINDS = ("cross_template", "within_template")  # the two ways PHYRE splits a tier's tasks
+TIERS = {"BALL": "ball", "TWO_BALLS": "two_balls"}  # an action tier → its setups' prefix
+SETUPS = tuple(f"{prefix}_{kind}" for prefix in TIERS.values() for kind in KINDS)  # PHYRE's eval setups
 SEEDS = 10  # PHYRE reports the mean over folds 0-9
+
+
+def setup(tier: str, kind: str) -> str:
+    """PHYRE's name of the evaluation setup that splits `tier`'s tasks by `kind`."""
+    return f"{TIERS[tier]}_{kind}"
 
 
 def stable_shuffle(strings: Iterable[str], salt: str = "") -> list[str]:
@@ -66,23 +74,27 @@ def within_template(ids: Iterable[str], seed: int) -> tuple[list[str], list[str]
 
 
 def fold(setup: str, ids: Iterable[str], seed: int) -> tuple[list[str], list[str], list[str]]:
-    """PHYRE's fold `seed` of `setup` ("cross_template" or "within_template") over `ids`."""
-    if setup not in SETUPS:
+    """PHYRE's fold `seed` of `setup` (one of SETUPS, or a kind of split: "cross_template",
+    "within_template") over `ids`."""
+    kind = next((k for k in KINDS if setup in (k, *(f"{prefix}_{k}" for prefix in TIERS.values()))), None)
+    if kind is None:
         raise ValueError(f"no evaluation setup '{setup}' (PHYRE's: {', '.join(SETUPS)})")
-    return (cross_template if setup == "cross_template" else within_template)(list(ids), seed)
+    return (cross_template if kind == "cross_template" else within_template)(list(ids), seed)
 
 
 def folds(ids: Iterable[str], seeds: int = SEEDS, tiers: dict[str, str] | None = None) -> dict:
-    """Every setup's folds 0 .. seeds - 1: {setup: {seed: {"train": […], "dev": […], "test": […]}}}.
-    With `tiers` (a task id's action tier), each tier is split on its own, as PHYRE splits
-    its ball and two-ball tiers, and the parts pooled."""
-    ids = list(ids)
+    """The folds 0 .. seeds - 1 of PHYRE's setups for the tiers among `ids` (`tiers`: a task
+    id's action tier; BALL when not given): {setup: {seed: {"train": […], "dev": […],
+    "test": […]}}}, each tier split on its own, as PHYRE's are."""
     groups: dict[str, list[str]] = {}
     for task in ids:
-        groups.setdefault((tiers or {}).get(task, ""), []).append(task)
+        groups.setdefault((tiers or {}).get(task, "BALL"), []).append(task)
 
-    def split(setup: str, seed: int) -> dict:
-        parts = [fold(setup, group, seed) for _, group in sorted(groups.items())]
-        return {name: sorted(t for part in parts for t in part[k]) for k, name in enumerate(("train", "dev", "test"))}
+    def split(kind: str, group: list[str], seed: int) -> dict:
+        return dict(zip(("train", "dev", "test"), fold(kind, group, seed)))
 
-    return {setup: {str(seed): split(setup, seed) for seed in range(seeds)} for setup in SETUPS}
+    return {
+        setup(tier, kind): {str(seed): split(kind, group, seed) for seed in range(seeds)}
+        for tier, group in sorted(groups.items(), key=lambda item: list(TIERS).index(item[0]))
+        for kind in KINDS
+    }

@@ -123,7 +123,8 @@ def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     assert table[0]["action"] == pytest.approx(task_of(dataset)["physc"]["actions"][0])
     assert len(table[0]["features"][0]) == 14
     fold_file = json.loads((phyre / "folds.json").read_text())
-    assert set(fold_file) == {"cross_template", "within_template"} and set(fold_file["within_template"]) == {str(s) for s in range(10)}
+    assert list(fold_file) == ["ball_cross_template", "ball_within_template"]  # PHYRE's setup names, the tiers present
+    assert set(fold_file["ball_within_template"]) == {str(s) for s in range(10)}
     # the same command again, in another folder: the same bytes
     assert physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "3", "--no-acceptance", "--out", tmp_path, "-q")[0] == 0
     for path in phyre.iterdir():
@@ -158,23 +159,23 @@ def test_an_agent_is_scored_by_phyres_auccess_on_the_folds(dataset, tmp_path, mo
     attempt (AUCCESS 1); an agent with `fit` sees the fold's train and dev tasks first."""
     monkeypatch.syspath_prepend(str(Path(__file__).parent))
     ANSWERS.update({r["task_id"]: r["action"] for r in pq.read_table(dataset / "phyre" / "tasks.parquet").to_pylist()})
-    status, _, err = physc("eval", "--agent", "test_phyre_format:oracle", dataset, "--setup", "within_template", "--folds", "2", "--out", tmp_path / "o", "-q")
+    status, _, err = physc("eval", "--agent", "test_phyre_format:oracle", dataset, "--setup", "ball_within_template", "--folds", "2", "--out", tmp_path / "o", "-q")
     assert status == 0, err
     scored = json.loads((tmp_path / "o" / "agent.json").read_text())
     assert scored["auccess"] == 1.0 and scored["folds"]["0"]["tasks"] == 2 and set(scored["folds"]["1"]["templates"]) == {"00000", "00001"}
     FITTED.clear()
-    assert physc("eval", "--agent", "test_phyre_format:Learner", dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path / "l", "-q")[0] == 1
+    assert physc("eval", "--agent", "test_phyre_format:Learner", dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path / "l", "-q")[0] == 1
     # a class is not an agent until made: the class itself, called, returns an instance, not actions
     learner = "test_phyre_format:LEARNER"
     globals()["LEARNER"] = Learner()
-    status, _, err = physc("eval", "--agent", learner, dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path / "l", "-q")
+    status, _, err = physc("eval", "--agent", learner, dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path / "l", "-q")
     assert status == 0, err
     train, dev, test = folds.fold("within_template", [t for t in ANSWERS], 0)
     assert FITTED[-1] == sorted(train + dev)
 
 
 def test_a_random_agent_scores_as_physcs_own_evaluation_counts(dataset, tmp_path):
-    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "within_template", "--folds", "1", "--out", tmp_path, "-q")
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path, "-q")
     assert status == 0, err
     scored = json.loads((tmp_path / "agent.json").read_text())
     assert 0.0 <= scored["auccess"] <= 1.0 and scored["split"] == "test"
@@ -191,8 +192,14 @@ def test_a_random_agent_scores_as_physcs_own_evaluation_counts(dataset, tmp_path
 )
 def test_a_broken_agent_is_the_agents_error_not_physcs(dataset, tmp_path, monkeypatch, agent, message):
     monkeypatch.syspath_prepend(str(Path(__file__).parent))
-    status, _, err = physc("eval", "--agent", agent, dataset, "--folds", "1", "--setup", "within_template", "--out", tmp_path, "-q")
+    status, _, err = physc("eval", "--agent", agent, dataset, "--folds", "1", "--setup", "ball_within_template", "--out", tmp_path, "-q")
     assert status == 1 and message in err and "Traceback" not in err
+
+
+def test_a_setup_the_dataset_has_no_folds_for_is_a_clear_error(dataset, tmp_path):
+    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "two_balls_cross_template", "--out", tmp_path, "-q")
+    assert status == 2 and "no evaluation setup 'two_balls_cross_template'" in err and "ball_cross_template, ball_within_template" in err
+    assert "Traceback" not in err
 
 
 def test_a_dataset_without_its_benchmark_files_is_a_clear_error(dataset, tmp_path):

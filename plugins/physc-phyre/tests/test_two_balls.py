@@ -89,13 +89,13 @@ def test_the_benchmark_keeps_six_numbers_and_splits_each_tier_on_its_own():
     ids = [f"{t:05d}:{i:03d}" for t in range(10) for i in range(5)]
     tiers = {task: "BALL" if task < "00005" else "TWO_BALLS" for task in ids}
     split = folds.folds(ids, seeds=3, tiers=tiers)
-    for setup in folds.SETUPS:
-        for seed in range(3):
-            parts = split[setup][str(seed)]
-            for tier in ("BALL", "TWO_BALLS"):
-                mine = [t for t in ids if tiers[t] == tier]
-                expected = folds.fold(setup, mine, seed)
-                assert [[t for t in parts[k] if tiers[t] == tier] for k in ("train", "dev", "test")] == [list(p) for p in expected]
+    assert list(split) == list(folds.SETUPS)  # PHYRE's names: ball_cross_template, …, two_balls_within_template
+    for tier in ("BALL", "TWO_BALLS"):
+        mine = [t for t in ids if tiers[t] == tier]
+        for kind in folds.KINDS:
+            for seed in range(3):
+                parts = split[folds.setup(tier, kind)][str(seed)]
+                assert [parts[k] for k in ("train", "dev", "test")] == [list(p) for p in folds.fold(kind, mine, seed)]
 
 
 def test_phyres_random_agent_draws_six_numbers_for_a_two_ball_task():
