@@ -54,7 +54,7 @@ class Phyre(SimulatedDomain):
     level_suffix = "json"  # task files in PHYRE's task structure
     level_format = (
         "PHYRE's Task (src/if/task.thrift of facebookresearch/phyre) as JSON with thrift's field names; the benchmark "
-        "in PHYRE's own binary TaskCollection is phyre/tasks.bin.lzma"
+        "in PHYRE's own binary TaskCollection is phyre/tasks50.bin.lzma"
     )
     solution_class = (BallAction, TwoBallAction)
     seconds = world.MAX_STEPS / world.FPS

@@ -1,8 +1,7 @@
 """A PHYRE-like dataset as PHYRE's own benchmark: what `physc generate` writes under `phyre/`.
 
-* `tasks.bin.lzma` (and `tasksNN.bin.lzma` for templates from 01000 on): the tasks as PHYRE's
-  `TaskCollection`s (phyre_format.py), which PHYRE's loader reads as they are, without their
-  `solutions` (PHYRE's never carry them);
+* `tasks50.bin.lzma`: the tasks as PHYRE's `TaskCollection` (phyre_format.py), which PHYRE's
+  loader reads as it is, without their `solutions` (PHYRE's never carry them);
 * `observations.npy`: each task's first observation, PHYRE's 256 × 256 picture of colour
   indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
 * `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
@@ -10,9 +9,10 @@
   `action` in PHYRE's [0, 1]³ (BALL) or [0, 1]⁶ (TWO_BALLS), the `description`, and `features` (PHYRE's 14 numbers per object);
 * `folds.json`: PHYRE's folds 0-9 of the cross- and within-template setups (folds.py).
 
-A scenario is a template, numbered in the order the dataset names them (00000, 00001, …);
-its generated tasks are its instances, numbered in seed order (000, 001, …), as PHYRE numbers
-the parameter sets of a template that were not skipped.
+A scenario is a template, numbered in the order the dataset names them from physc's own
+range (50000, 50001, …: phyre_format.FIRST_TEMPLATE); its generated tasks are its instances,
+numbered in seed order (000, 001, …), as PHYRE numbers the parameter sets of a template that
+were not skipped.
 """
 
 from __future__ import annotations
@@ -33,6 +33,11 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
     templates: dict[str, int] = {}
     for row, _ in tasks:
         templates.setdefault(row["scenario"], len(templates))
+    if len(templates) > phyre_format.TEMPLATES:
+        raise DomainError(
+            "E0703", f"the dataset has {len(templates)} scenarios, but physc's range of PHYRE templates holds {phyre_format.TEMPLATES}",
+            help="generate fewer scenarios into one dataset",
+        )
     out = []
     for scenario, template in templates.items():
         mine = sorted(((row, text) for row, text in tasks if row["scenario"] == scenario), key=lambda t: t[0]["seed"])
@@ -44,7 +49,7 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
         for instance, (row, text) in enumerate(mine):
             task = json.loads(text)
             task.pop("physc", None)
-            task["taskId"] = phyre_format.task_id(template, instance)
+            task["taskId"] = phyre_format.task_id(phyre_format.FIRST_TEMPLATE + template, instance)
             out.append((task["taskId"], row, task))
     return sorted(out, key=lambda t: t[0])
 

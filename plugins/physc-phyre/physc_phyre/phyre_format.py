@@ -24,6 +24,11 @@ IDL = thriftpy2.load(str(Path(__file__).with_name("phyre.thrift")), module_name=
 PROTOCOL = TBinaryProtocolFactory()
 TASK_ID = re.compile(r"^(\d{5}):(\d{3})$")
 INSTANCES = 1000  # PHYRE's instance ids have three digits
+# physc's templates are numbered from here: a range PHYRE's own never use (its ball tier
+# 00000-00024, two-ball tier 00100-00124, virtual tools 01000-01011), in a file of its own
+# (tasks50.bin.lzma), so that physc's tasks and PHYRE's load side by side from one folder.
+FIRST_TEMPLATE = 50_000
+TEMPLATES = 1000  # templates FIRST_TEMPLATE .. FIRST_TEMPLATE + 999 share that file
 
 
 def task_id(template: int, instance: int) -> str:

@@ -107,13 +107,15 @@ def test_folds_split_phyres_own_tasks_as_phyre_does():
 
 def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     phyre = dataset / "phyre"
-    tasks = phyre_format.read_collection((phyre / "tasks.bin.lzma").read_bytes())
+    assert sorted(p.name for p in phyre.glob("*.bin.lzma")) == ["tasks50.bin.lzma"]  # not PHYRE's own tasks.bin.lzma
+    tasks = phyre_format.read_collection((phyre / "tasks50.bin.lzma").read_bytes())
     ids = [t["taskId"] for t in tasks]
-    assert ids == ["00000:000", "00000:001", "00000:002", "00001:000", "00001:001", "00001:002"]  # Ledge, then Jar; seeds in order
+    assert ids == ["50000:000", "50000:001", "50000:002", "50001:000", "50001:001", "50001:002"]  # Ledge, then Jar; seeds in order
+    assert all(phyre_format.collection_file(t) == "tasks50.bin.lzma" for t in ids)
     first = task_of(dataset)
     first.pop("physc")
     assert first.pop("solutions")  # physc's task file has the intended ball; PHYRE's tasks never do
-    assert tasks[0] == {**first, "taskId": "00000:000"}
+    assert tasks[0] == {**first, "taskId": "50000:000"}
     assert not [t for t in tasks if "solutions" in t]
     observations = np.load(phyre / "observations.npy")
     assert observations.shape == (6, 256, 256) and observations.dtype == np.uint8
@@ -162,7 +164,7 @@ def test_an_agent_is_scored_by_phyres_auccess_on_the_folds(dataset, tmp_path, mo
     status, _, err = physc("eval", "--agent", "test_phyre_format:oracle", dataset, "--setup", "ball_within_template", "--folds", "2", "--out", tmp_path / "o", "-q")
     assert status == 0, err
     scored = json.loads((tmp_path / "o" / "agent.json").read_text())
-    assert scored["auccess"] == 1.0 and scored["folds"]["0"]["tasks"] == 2 and set(scored["folds"]["1"]["templates"]) == {"00000", "00001"}
+    assert scored["auccess"] == 1.0 and scored["folds"]["0"]["tasks"] == 2 and set(scored["folds"]["1"]["templates"]) == {"50000", "50001"}
     FITTED.clear()
     assert physc("eval", "--agent", "test_phyre_format:Learner", dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path / "l", "-q")[0] == 1
     # a class is not an agent until made: the class itself, called, returns an instance, not actions
