@@ -125,6 +125,16 @@ class World(Protocol):
     def touching(self, name: str) -> set[str]: ...
 
 
+def _count(table: dict, key, change: int) -> int:
+    """`table[key]` moved by `change`, the key dropped at zero: the parts in contact of a pair."""
+    count = table.get(key, 0) + change
+    if count > 0:
+        table[key] = count
+    else:
+        table.pop(key, None)
+    return count
+
+
 class ContactLog:
     """The contact bookkeeping a world reports through, the same for every engine: the
     contacts begun and ended since the last call, and who touches whom now. A world
@@ -141,13 +151,7 @@ class ContactLog:
         """The parts of `a` and `b` in contact after `change` (+1 a pair of parts began
         touching, -1 one parted): a compound body's parts each begin and end their own
         contacts, and the bodies touch while any do."""
-        key = (a, b) if a < b else (b, a)
-        count = self._part_contacts.get(key, 0) + change
-        if count > 0:
-            self._part_contacts[key] = count
-        else:
-            self._part_contacts.pop(key, None)
-        return count
+        return _count(self._part_contacts, (a, b) if a < b else (b, a), change)
 
     def _part_began(self, a: str, a_collider: int, b: str, b_collider: int, event) -> None:
         """A part of `a`'s collider `a_collider` began touching a part of `b`'s `b_collider`:
@@ -166,12 +170,7 @@ class ContactLog:
 
     def _counted_colliders(self, a: str, a_collider: int, b: str, b_collider: int, change: int) -> int:
         key = ((a, a_collider), (b, b_collider)) if a < b else ((b, b_collider), (a, a_collider))
-        count = self._collider_contacts.get(key, 0) + change
-        if count > 0:
-            self._collider_contacts[key] = count
-        else:
-            self._collider_contacts.pop(key, None)
-        return count
+        return _count(self._collider_contacts, key, change)
 
     def _began(self, event: ContactEvent) -> None:
         self._begun.append(event)

@@ -170,7 +170,7 @@ class Game(RunRules):
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
     def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
         for name in self._dying.intersection((contact.a, contact.b)):  # OnCollisionEnter2D → DealDamage → Die: it stops again
-            world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
+            _stop(world, name)
         if not self._bird_struck and BIRD in (contact.a, contact.b):
             self._bird_struck = True
             # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
@@ -259,15 +259,14 @@ class Game(RunRules):
         obj = self._objects.get(name)
         if not self.rules.dying_lingers or obj is None or self.kinds.get(name) not in ("pig", "block"):
             return 0.0
-        stay = prefabs.lifetime(obj.type)
-        circles = self.model.circle_colliders
-        if stay <= 0 or obj.type not in prefabs.prefabs():
+        stay = prefabs.lifetime(obj.type) if obj.type in prefabs.prefabs() else 0.0
+        if stay <= 0:
             return 0.0
-        if prefabs.first_collider_enabled(obj.type, circles):
+        if prefabs.first_collider_enabled(obj.type, self.model.circle_colliders):
             if self.colliders.get(name, 1) == 1 or not hasattr(world, "disable_collider"):
                 return 0.0  # nothing left to collide with (or no way to take the collider out)
             world.disable_collider(name, 0)
-        world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
+        _stop(world, name)
         self._dying.add(name)
         return stay
 
@@ -381,6 +380,11 @@ class Game(RunRules):
                 amount = hits * rules.tnt_damage * share
                 self._wound(other, amount)
                 damage.append(DamageRecord(time, other, amount, self.life[other], name))
+
+
+def _stop(world, name: str) -> None:
+    """ABGameObject.Die's `_rigidBody.velocity = Vector2.zero`: the body's motion stopped, its spin kept."""
+    world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
 
 
 def _resting_since(snapshot, still: float) -> float | None:

@@ -35,6 +35,9 @@ def setup(tier: str, kind: str) -> str:
     return f"{TIERS[tier]}_{kind}"
 
 
+_KIND_OF = {kind: kind for kind in KINDS} | {setup(tier, kind): kind for tier in TIERS for kind in KINDS}  # a setup → how it splits
+
+
 def stable_shuffle(strings: Iterable[str], salt: str = "") -> list[str]:
     """PHYRE's util.stable_shuffle: sorted by md5(string + salt)."""
     return sorted(strings, key=lambda s: hashlib.md5((str(s) + salt).encode("utf8")).hexdigest())
@@ -73,12 +76,12 @@ def within_template(ids: Iterable[str], seed: int) -> tuple[list[str], list[str]
     return tuple(sorted(part) for part in (kept[:trained], kept[trained:], test))
 
 
-def fold(setup: str, ids: Iterable[str], seed: int) -> tuple[list[str], list[str], list[str]]:
-    """PHYRE's fold `seed` of `setup` (one of SETUPS, or a kind of split: "cross_template",
-    "within_template") over `ids`."""
-    kind = next((k for k in KINDS if setup in (k, *(f"{prefix}_{k}" for prefix in TIERS.values()))), None)
+def fold(name: str, ids: Iterable[str], seed: int) -> tuple[list[str], list[str], list[str]]:
+    """PHYRE's fold `seed` of the setup `name` (one of SETUPS, or a kind of split:
+    "cross_template", "within_template") over `ids`."""
+    kind = _KIND_OF.get(name)
     if kind is None:
-        raise ValueError(f"no evaluation setup '{setup}' (PHYRE's: {', '.join(SETUPS)})")
+        raise ValueError(f"no evaluation setup '{name}' (PHYRE's: {', '.join(SETUPS)})")
     return (cross_template if kind == "cross_template" else within_template)(list(ids), seed)
 
 
