@@ -8,6 +8,8 @@ gather speed; a purple bar the green object must stay on is long; a ramp decline
 tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
 wall stands the scene's height against the edge its toucher heads for; a green stick and a post
 stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
+See-saws, teeters, cradles and purple ramps are furniture (furniture.py); the support of an
+object under `cradled(a)` is a cradle.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION
 
+from physc_phyre import furniture
 from physc_phyre.level import HELD, KINDS
 from physc_phyre.world import BAR_HEIGHT, SCENE, WALL, extent
 
@@ -69,13 +72,20 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
             carried.setdefault(edge.b, []).append(edge.a)
     # The agent's ball is the action's, never an object of the scene (it is rollable and
     # fallable only so that the red ball may roll and fall).
-    chosen = {node.name: rng.choice([c for c in node.concrete if c in KINDS or c == "floor"]) for node in graph.nodes}
+    chosen = {node.name: rng.choice([c for c in node.concrete if c in KINDS or c in furniture.KINDS or c == "floor"]) for node in graph.nodes}
+    # `cradled(a)`: the support the layout gave a is a cradle (furniture.py).
+    cradled = {t.objects[0] for t in scenario.restrictions if t.name == "cradled"}
+    for support, loads in carried.items():
+        if cradled & set(loads) and support in chosen and chosen[support] == "blackBar":
+            chosen[support] = "cradle"
     bodies: dict[str, Body] = {}
     # Objects first: a ledge's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: n.static):
         name, concrete = node.name, chosen[node.name]
         if concrete == "floor":
             bodies[name] = Body(name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2))
+        elif concrete in furniture.KINDS:
+            bodies[name] = Body(name, node.role, concrete, furniture.geometry(concrete, rng, _heading_to(scenario, name)))
         elif concrete == "purpleWall":  # upright against the edge its toucher heads for
             side = _heading_to(scenario, name) or rng.choice(("left", "right"))
             x = BAR_HEIGHT / 2 if side == "left" else SCENE - BAR_HEIGHT / 2

@@ -15,6 +15,7 @@ import random
 import attrs
 from physc.domains.base import DomainError
 
+from physc_phyre import furniture
 from physc_phyre.world import BAR_HEIGHT, SCENE, extent, size_of
 
 # The shape and colour of each concrete object of the vocabulary (the floor is the bottom wall).
@@ -178,6 +179,9 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
     the agent's ball and the floor (None: the defaults)."""
     bodies = []
     for placed in layout.objects:
+        if placed.concrete in furniture.KINDS:  # several bodies, or a bar at an angle of its own
+            bodies += furniture.bodies(placed, SceneBody)
+            continue
         if placed.concrete not in KINDS:  # the floor: the bottom wall every scene has
             continue
         shape, color, dynamic = KINDS[placed.concrete]
@@ -202,6 +206,9 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         if not (green and target):
             green = target = ""
     floor = next((o.name for o in layout.objects if o.concrete == "floor"), "floor")
+    pairs = [t.objects[:2] for t in scenario.restrictions if t.name == "inside"] if scenario is not None else []
+    if pairs:
+        bodies = furniture.inside(bodies, pairs, held)
     lifted = {t.objects[0] for t in scenario.restrictions if t.name == "dropped"} if scenario is not None else set()
     if lifted:
         bodies = dropped(bodies, lifted, getattr(layout, "seed", 0))

@@ -46,18 +46,26 @@ CONCRETE_OBJECTS = (
     ConcreteObject("blackBar", static=True, description="a black static bar, level"),
     ConcreteObject("ramp", static=True, description="a black static bar, inclined"),
     ConcreteObject("floor", static=True, description="the scene's floor (its bottom wall)"),
+    # Furniture (furniture.py): several bodies as one object, or a bar at an angle of its own.
+    ConcreteObject("seesaw", description="a gray bar balanced on a black static fulcrum ball under its middle (a see-saw)"),
+    ConcreteObject("blueSeesaw", description="a blue bar balanced on a black static fulcrum ball (PHYRE's template 00004), the dynamic object the green one must touch"),
+    ConcreteObject("teeter", description="a gray bar lying level on two black static fulcrum balls, under its middle and its right end: it tips when its left half is weighed down (PHYRE's template 00021)"),
+    ConcreteObject("cradle", static=True, description="two short black static bars tilted 5° into a shallow V, which holds a ball (PHYRE's template 00015)"),
+    ConcreteObject("purpleRamp", static=True, description="a purple static bar, a slope rising towards where its toucher comes from (PHYRE's templates 00010, 00011), the static object the green one must touch"),
 )
 
 OBJECT_TERMS = (
     ObjectTerm("redBall", ("redBall",), "red", noun="the agent's ball"),
     ObjectTerm("greenObject", ("greenBall", "greenBar", "greenStick", "greenBallInJar"), "green", noun="the green object"),
     ObjectTerm(
-        "targetObject", ("purpleFloor", "purpleBar", "purpleWall", "purpleBall", "purpleJar", "blueBall", "blueBar", "blueJar", "blueBallInJar"), "target",
+        "targetObject",
+        ("purpleFloor", "purpleBar", "purpleWall", "purpleBall", "purpleJar", "purpleRamp", "blueBall", "blueBar", "blueJar", "blueBallInJar", "blueSeesaw"),
+        "target",
         noun="the object the green one must touch",
     ),
     ObjectTerm("rollableObject", ("ball", "greenBall", "greenBallInJar", "blueBall", "redBall"), "rObj", noun="a rollable object"),
     ObjectTerm(
-        "fallableObject", ("ball", "bar", "grayStick", "jar", "sticks", "greenBall", "greenBar", "greenStick", "greenBallInJar", "blueBall", "blueBar", "blueJar", "upsideDownJar", "redBall"), "fObj",
+        "fallableObject", ("ball", "bar", "grayStick", "jar", "sticks", "greenBall", "greenBar", "greenStick", "greenBallInJar", "blueBall", "blueBar", "blueJar", "upsideDownJar", "seesaw", "teeter", "redBall"), "fObj",
         noun="a fallable object",
     ),
     ObjectTerm("slidableObject", ("bar", "greenBar", "blueBar"), "sObj", noun="a slidable object"),
@@ -85,6 +93,18 @@ TERMS = tuple(PAPER.values()) + (
         RESTRICTION,
         (Parameter("a", OBJECT, fits="fallableObject"),),
         "a starts in the air above where it rests and falls there as the scene starts, before the action (PHYRE's templates drop their objects)",
+    ),
+    TermSignature(
+        "inside",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits="fallableObject"), Parameter("b", OBJECT, fits="container")),
+        "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar)",
+    ),
+    TermSignature(
+        "cradled",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits="rollableObject"),),
+        "a rests in a cradle, two short bars tilted into a shallow V, which a sideways strike knocks it out of (PHYRE's template 00015)",
     ),
 )
 
