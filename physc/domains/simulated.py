@@ -151,8 +151,14 @@ class SimulatedDomain(Domain):
 
     def acceptance_of(self, level):
         """The acceptance rule for `level` (the default: `acceptance` for every level; PHYRE's
-        threshold depends on the level's action tier)."""
+        depends on the level's action tier)."""
         return self.acceptance
+
+    def action_pool(self, level, tier: str, chunk: int, size: int) -> list:
+        """The first `size` actions of chunk `chunk` (0, 1, …) of the benchmark's fixed pool
+        of random actions of `tier`, which its acceptance rule judges a task by (PHYRE:
+        chunks of 10,000, drawn as PHYRE draws them). Needed with an `acceptance` rule."""
+        raise MissingCapability(self.name, ("action_pool",), "judging a task by the benchmark's random actions")
 
     def neighbours(self, action) -> list:
         """The actions a solution's stability is judged by (PHYRE: the ball moved half a pixel

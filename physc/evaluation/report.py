@@ -51,9 +51,9 @@ AGENT_METRICS = (("auccess", "Random agent's AUCCESS (100 attempts)", None),)
 # With a domain's acceptance rule (PHYRE's): its flags for every task kept, from random actions.
 ACCEPTANCE_METRICS = (
     ("good_stable", "GOOD_STABLE (random actions solve it stably, shown above the threshold)", None),
-    ("trivial", "TRIVIAL (stable solutions ≥ 10 % of random actions)", None),
+    ("trivial", "TRIVIAL (stable solutions ≥ 10 % of random attempts)", None),
     ("solution_stable", "Intended solution stable (its neighbours solve it too)", None),
-    ("stable_rate", "Stable solutions per random action", None),
+    ("solve_rate", "Solutions per valid random action (PHYRE's pool, those simulated)", None),
 )
 CSV_COLUMNS = (
     "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",

@@ -69,7 +69,7 @@ def evaluate(job: Job) -> dict:
     if task.acceptance is not None:  # the domain's acceptance rule (PHYRE's flags)
         record.update(
             good_stable="GOOD_STABLE" in task.acceptance["flags"], trivial="TRIVIAL" in task.acceptance["flags"],
-            solution_stable=task.acceptance["solution_stable"], stable_rate=task.acceptance["stable_rate"],
+            solution_stable=task.acceptance["solution_stable"], solve_rate=task.acceptance.get("solve_rate"),
         )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = domain.stability(task.level)

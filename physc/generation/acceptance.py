@@ -1,105 +1,244 @@
-"""Whether a benchmark keeps a task, by how random actions fare in it (PHYRE's acceptance).
+"""Whether a benchmark keeps a task, by how its fixed pool of random actions fares in it:
+PHYRE's acceptance, decided as PHYRE's evaluation decides it, on PHYRE's own actions, with
+far fewer simulations.
 
-PHYRE keeps a task of its ball tier only if random actions solve it *stably* at a rate
-shown to be above 1e-5 (GOOD_STABLE: a one-sided binomial test, p < 0.05) and not
-trivially (TRIVIAL: stable solutions are 10 % or more of all attempts, invalid ones
-included); a solution is stable when each of its neighbours (PHYRE: the ball moved half a
-pixel in the 8 directions) also solves the task or is invalid. PHYRE decides on 10,000
-valid random actions or more (src/python/phyre/eval_task_complexity.py; docs/phyre-
-sources.md, section 5). A generator cannot spend 10,000 simulations on every task, so
-physc draws them one at a time and stops as soon as both answers are known with
-`confidence`: GOOD_STABLE as soon as PHYRE's own binomial test passes on the attempts made
-so far; TRIVIAL or not as soon as the exact (Clopper-Pearson) interval of the stable share
-lies on one side of `trivial`. What cannot be settled within `attempts` valid draws is
-decided as PHYRE would on those draws. A task is accepted when it is GOOD_STABLE, not
-TRIVIAL, and its intended solution is stable.
+PHYRE (src/python/phyre/eval_task_complexity.py; docs/phyre-sources.md, section 5)
+simulates a fixed pool of random actions on a task, in chunks of 10,000, and counts each
+as invalid (it occludes a body), not solved, solved unstably, or solved stably (each
+neighbour, the ball moved half a pixel, solves too or is invalid). After each chunk it
+computes its flags from the counts (`flags`) and stops once the task is done: at least
+10,000 valid attempts, GOOD or BAD, GOOD_STABLE or BAD_STABLE, and at least 3 solutions
+(stable solutions) where GOOD (GOOD_STABLE) holds. The task is kept when its flags then
+hold GOOD_STABLE and not TRIVIAL; a two-ball task also needs the ball tier's flags, done
+first, not to hold GOOD_STABLE (`Acceptance.unsolvable_in`: PHYRE's
+`reject_ball_solvable`).
 
-A domain states its rule as `acceptance` (an `Acceptance`; None: every task is kept; or per
-level, `acceptance_of`) and its
+The same verdict, sooner: which actions are valid is geometry, known without simulating,
+so each chunk's attempts and valid attempts are known before any simulation. Only the
+solved and stable counts are unknown, and each flag is monotone in one of them. physc
+simulates the pool's actions in order and bounds the counts at the end of the chunk that
+could be PHYRE's last; it stops as soon as every count within the bounds gives the same
+answer (`_settled`). A verdict reached so is PHYRE's verdict on that pool, given the
+engine's outcome of each action.
+
+Giving up: physc never keeps a task PHYRE would not, but it may reject one before PHYRE's
+rule decides: after `max_chunks` chunks (PHYRE draws until its rule decides, up to
+150,000 actions for a task with rare solutions), or when the stable share of the first
+`screen` attempts is above `trivial` beyond doubt (`give_up`: the exact interval at that
+level lies above it). The record says which.
+
+A domain states its rule as `acceptance` (an `Acceptance`; None: every task is kept; per
+level, `acceptance_of`), its pool as `action_pool(level, tier, chunk, size)` and the
 neighbourhood of an action as `neighbours` (physc.domains.simulated.SimulatedDomain).
 """
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 
 import attrs
 
 
-DRAWS_PER_ATTEMPT = 100  # draws per valid action at most (a scene random actions can hardly be placed in ends the draws)
+@attrs.frozen
+class Acceptance:
+    """A benchmark's rule for keeping a task (module docstring). The defaults are PHYRE's."""
+
+    threshold: float
+    """GOOD: the solve rate of random actions must be shown above this (PHYRE: 1e-5 ball, 1e-6 two balls)."""
+    tier: str = "ball"
+    """The tier whose pool of actions judges the task (the domain's name for it)."""
+    p_value: float = 0.05
+    """The level of PHYRE's one-sided binomial tests (P_VALUE)."""
+    trivial: float = 0.1
+    """TRIVIAL: stable solutions at this share of all attempts, invalid ones included, or more."""
+    min_valid: int = 10_000
+    """Valid attempts before the rule may decide (MIN_VALID_ATTEMPTS)."""
+    min_solutions: int = 3
+    """Solutions (stable ones) the rule needs before deciding GOOD (GOOD_STABLE) (MIN_SOLUTIONS)."""
+    chunk: int = 10_000
+    """Attempts a chunk (ACTION_POOL_SIZE: the rule decides only at a chunk's end)."""
+    max_chunks: int = 4
+    """physc gives the task up, rejected, if the rule has not decided after this many chunks."""
+    screen: int = 1_000
+    """The first attempts, whose solutions are all judged, for the TRIVIAL give-up."""
+    give_up: float = 1e-4
+    """The chance left that a task given up as TRIVIAL from its first attempts is not."""
+    unsolvable_in: tuple[Acceptance, ...] = ()
+    """Rules of other tiers under which the task must not be GOOD_STABLE (decided first)."""
 
 
 @attrs.frozen
-class Acceptance:
-    """A benchmark's rule for keeping a task (module docstring)."""
+class Counts:
+    """What a chunk's end sees: attempts and valid ones (known), solved and stable (bounds)."""
 
-    threshold: float
-    """GOOD_STABLE: the stable-solve rate of random actions must be shown to exceed this (PHYRE's ball tier: 1e-5)."""
-    p_value: float = 0.05
-    """The level of the one-sided binomial test (PHYRE's P_VALUE)."""
-    trivial: float = 0.1
-    """TRIVIAL: stable solutions at this share of all attempts or more."""
-    attempts: int = 10_000
-    """Valid random actions drawn at most (PHYRE's MIN_VALID_ATTEMPTS)."""
-    confidence: float = 0.99
-    """How sure the early decision on TRIVIAL must be (the exact interval's level)."""
+    attempts: int
+    valid: int
+    solved: tuple[int, int]
+    stable: tuple[int, int]
+
+
+@attrs.frozen
+class TierResult:
+    """One tier's evaluation: its answer (kept, or GOOD_STABLE for an `unsolvable_in` tier),
+    the counts where it was decided, the flags certain there, and why it was given up."""
+
+    tier: str
+    answer: bool
+    chunks: int
+    counts: Counts
+    flags: tuple[str, ...]
+    simulated: int  # random actions simulated (neighbours not counted)
+    solved_simulated: int  # of those, the solutions
+    given_up: str | None = None
+
+    def record(self) -> dict:
+        c = self.counts
+        return {
+            "tier": self.tier, "chunks": self.chunks, "attempts": c.attempts, "valid": c.valid, "solved": list(c.solved),
+            "stable": list(c.stable), "flags": list(self.flags), "simulated": self.simulated, "given_up": self.given_up,
+            "solve_rate": round(self.solved_simulated / max(self.simulated, 1), 6),
+        }
 
 
 @attrs.frozen
 class Verdict:
-    """What the random actions showed: the counts, PHYRE's flags, and whether the intended
-    solution is stable."""
+    """The rule's verdict on a task: its own tier's evaluation, those of the tiers it must not
+    be solvable in, and whether the intended solution is stable."""
 
-    attempts: int  # random actions drawn (invalid ones included, as PHYRE counts them)
-    valid: int
-    solved: int
-    stable: int  # of the solved, those judged stable (every neighbour solves too, or is invalid): a lower bound once the task is known not TRIVIAL
-    good_stable: bool
-    trivial: bool
     solution_stable: bool
+    main: TierResult | None  # None: the intended solution was not stable, nothing else judged
+    excluded: tuple[TierResult, ...] = ()
+    simulations: int = 0  # every play, neighbours included
 
     @property
     def accepted(self) -> bool:
-        return self.good_stable and not self.trivial and self.solution_stable
+        return self.solution_stable and self.main is not None and self.main.answer and not any(t.answer for t in self.excluded)
 
     @property
     def flags(self) -> list[str]:
-        """PHYRE's names of the flags that hold."""
-        return [name for name, holds in (("GOOD_STABLE", self.good_stable), ("TRIVIAL", self.trivial)) if holds]
+        return list(self.main.flags) if self.main is not None else []
+
+    @property
+    def trivial(self) -> bool:
+        return "TRIVIAL" in self.flags
+
+    @property
+    def reason(self) -> str:
+        """Why the task is not kept ('' when it is): unstable, trivial, solvable, not_good."""
+        if self.accepted:
+            return ""
+        if not self.solution_stable:
+            return "unstable"
+        if any(t.answer for t in self.excluded):
+            return "solvable"
+        return "trivial" if self.trivial else "not_good"
 
     def record(self) -> dict:
         """The figures a task file and `physc eval` keep."""
+        main = self.main.record() if self.main is not None else {}
         return {
-            "accepted": self.accepted, "flags": self.flags, "solution_stable": self.solution_stable, "attempts": self.attempts,
-            "valid": self.valid, "solved": self.solved, "stable": self.stable, "stable_rate": round(self.stable / max(self.attempts, 1), 6),
+            "accepted": self.accepted, "flags": self.flags, "solution_stable": self.solution_stable,
+            "simulations": self.simulations, **main, "unsolvable_in": [t.record() for t in self.excluded],
         }
 
 
-def good(stable: int, valid: int, rule: Acceptance) -> bool:
-    """PHYRE's GOOD_STABLE test: P[X ≥ stable] < p_value for X ~ Binomial(valid, threshold)
-    (the p-value of scipy's one-sided `binom_test`, which PHYRE calls, as the binomial's upper
-    tail: `bdtrc(k - 1, n, p)`)."""
+def flags(rule: Acceptance, attempts: int, valid: int, solved: int, stable: int) -> frozenset[str]:
+    """PHYRE's `compute_flags` on counts: GOOD/BAD and GOOD_STABLE/BAD_STABLE by one-sided
+    binomial tests against the threshold (twice it for BAD), IMPOSSIBLE with no solution,
+    TRIVIAL at a stable share of `trivial` of all attempts or more."""
+    out = set()
+    for suffix, count in (("", solved), ("_STABLE", stable)):
+        if _greater(count, valid, rule.threshold) < rule.p_value:
+            out.add("GOOD" + suffix)
+        if _less(count, valid, 2 * rule.threshold) < rule.p_value:
+            out.add("BAD" + suffix)
+    if not solved:
+        out.add("IMPOSSIBLE")
+    if stable / max(attempts, 1) >= rule.trivial:
+        out.add("TRIVIAL")
+    return frozenset(out)
+
+
+@functools.lru_cache(maxsize=4096)
+def _greater(k: int, n: int, p: float) -> float:
+    """P[X ≥ k], X ~ Binomial(n, p): scipy's `binom_test(k, n, p, alternative='greater')`,
+    which PHYRE calls, as the binomial's upper tail."""
     from scipy.special import bdtrc
 
-    return stable > 0 and bool(bdtrc(stable - 1, valid, rule.threshold) < rule.p_value)
+    return 1.0 if k <= 0 else float(bdtrc(k - 1, n, p))
 
 
-def trivial_known(stable: int, attempts: int, rule: Acceptance) -> bool | None:
-    """Whether the stable share is known to be at least `trivial` (True) or below it (False)
-    with `confidence`; None while the interval straddles it. The interval is the exact
-    (Clopper-Pearson) one, from the inverse of the incomplete beta function: scipy's
-    `binomtest(...).proportion_ci(method="exact")` gives the same bounds at a thousand times
-    the cost, which was half of a PHYRE-like task's acceptance."""
+@functools.lru_cache(maxsize=4096)
+def _less(k: int, n: int, p: float) -> float:
+    """P[X ≤ k] (`alternative='less'`)."""
+    from scipy.special import bdtr
+
+    return float(bdtr(k, n, p))
+
+
+def done(rule: Acceptance, valid: int, solved: int, stable: int, held: frozenset[str]) -> bool:
+    """PHYRE's `_update_done_stats`: whether the rule decides at these counts."""
+    if valid < rule.min_valid or not {"GOOD", "BAD"} & held or not {"GOOD_STABLE", "BAD_STABLE"} & held:
+        return False
+    return not ("GOOD" in held and solved < rule.min_solutions) and not ("GOOD_STABLE" in held and stable < rule.min_solutions)
+
+
+def answer(rule: Acceptance, held: frozenset[str], main: bool) -> bool:
+    """A decided tier's answer: kept (GOOD_STABLE, not TRIVIAL), or for a tier the task must
+    not be solvable in, whether it is (GOOD_STABLE)."""
+    return "GOOD_STABLE" in held and (not main or "TRIVIAL" not in held)
+
+
+def outcome(rule: Acceptance, counts: tuple[int, int, int, int], main: bool) -> bool | None:
+    """The answer if the rule decides at these counts (attempts, valid, solved, stable), else None."""
+    attempts, valid, solved, stable = counts
+    held = flags(rule, attempts, valid, solved, stable)
+    return answer(rule, held, main) if done(rule, valid, solved, stable, held) else None
+
+
+def _points(lo: int, hi: int, tests) -> list[int]:
+    """The counts in [lo, hi] at which any of the monotone `tests` changes, with the ends:
+    between two neighbouring points every test keeps its value."""
+    points = {lo, hi}
+    for test in tests:
+        first = test(lo)
+        if test(hi) == first:
+            continue
+        a, b = lo, hi  # test(a) == first != test(b)
+        while b - a > 1:
+            m = (a + b) // 2
+            a, b = (m, b) if test(m) == first else (a, m)
+        points.update((a, b))
+    return sorted(points)
+
+
+def _settled(rule: Acceptance, counts: Counts, main: bool) -> tuple[bool, set]:
+    """Whether every solved and stable count within `counts`' bounds (stable never beyond what
+    the solved count allows) gives the same outcome; and the outcomes found."""
+    n, t = counts.valid, counts.attempts
+    (s_lo, s_hi), (st_lo, st_hi) = counts.solved, counts.stable
+    solved_tests = (
+        lambda k: _greater(k, n, rule.threshold) < rule.p_value, lambda k: _less(k, n, 2 * rule.threshold) < rule.p_value,
+        lambda k: k >= rule.min_solutions, lambda k: k > 0,
+    )
+    stable_tests = solved_tests[:3] + (lambda k: k / max(t, 1) >= rule.trivial,)
+    seen = set()
+    for s in _points(s_lo, s_hi, solved_tests):
+        top = st_hi - (s_hi - s)  # the unknown stable ones are among the unknown solutions
+        for st in _points(st_lo, max(st_lo, top), stable_tests):
+            seen.add(outcome(rule, (t, n, s, st), main))
+            if len(seen) > 1:
+                return False, seen
+    return True, seen
+
+
+def _trivial_beyond_doubt(stable: int, attempts: int, rule: Acceptance) -> bool:
+    """Whether the exact (Clopper-Pearson) lower bound of the stable share, at `give_up`,
+    lies at `trivial` or above."""
     from scipy.special import betaincinv
 
-    tail = (1 - rule.confidence) / 2
-    low = 0.0 if stable == 0 else float(betaincinv(stable, attempts - stable + 1, tail))
-    high = 1.0 if stable == attempts else float(betaincinv(stable + 1, attempts - stable, 1 - tail))
-    if low >= rule.trivial:  # (a share of none: the interval is [0, …])
-        return True
-    if high < rule.trivial:
-        return False
-    return None
+    return stable > 0 and float(betaincinv(stable, attempts - stable + 1, rule.give_up)) >= rule.trivial
 
 
 def stable_solution(action, neighbours, valid: Callable, solves: Callable) -> bool:
@@ -107,72 +246,115 @@ def stable_solution(action, neighbours, valid: Callable, solves: Callable) -> bo
     return all(not valid(n) or solves(n) for n in neighbours(action))
 
 
-def judge(rule: Acceptance, solution, draw: Callable, valid: Callable, solves: Callable, neighbours: Callable) -> Verdict:
-    """The verdict on a task: `solution` its intended action, `draw()` a random action,
-    `valid(a)` whether it may be taken, `solves(a)` whether it solves the task (a
-    simulation), `neighbours(a)` the actions its stability is judged by.
+def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable, main: bool = True) -> TierResult:
+    """PHYRE's evaluation of a task in `rule`'s tier, settled early (module docstring):
+    `pool(chunk)` the chunk's actions, `valid(a)`, `solves(a)` (a simulation),
+    `neighbours(a)`. `main`: the answer is whether the task is kept; otherwise whether it is
+    GOOD_STABLE."""
+    chunks: list[list] = []  # the actions of each chunk drawn
+    valid_of: list[list[bool]] = []
+    attempts = valid_count = 0
+    cursor = [0, 0]  # the next action to simulate: chunk, position
+    solved = stable = simulated = 0
+    unjudged: list = []
 
-    A random solution's stability (its neighbours' simulations) is judged only while it can
-    change an answer: until the first stable one makes the task GOOD_STABLE, and while the
-    share of *solutions* (an upper bound of the stable share) does not already show that the
-    task is not TRIVIAL. A solution left unjudged is judged if that changes."""
-    solution_stable = valid(solution) and stable_solution(solution, neighbours, valid, solves)
-    if not solution_stable:  # rejected whatever random actions show
-        return Verdict(0, 0, 0, 0, False, False, False)
-    attempts = valid_count = solved = stable = 0
-    unjudged: list = []  # random solutions whose stability was not needed yet
-    is_good, is_trivial = False, None
-    check_every = 1
+    def bounds() -> Counts:
+        left = valid_count - simulated  # valid actions not simulated yet
+        return Counts(attempts, valid_count, (solved, solved + left), (stable, stable + len(unjudged) + left))
 
-    def judged(action) -> None:
-        nonlocal stable, is_good
-        if stable_solution(action, neighbours, valid, solves):
-            stable += 1
-            is_good = is_good or good(stable, valid_count, rule)
+    def result(answer_: bool, given_up: str | None = None) -> TierResult:
+        counts = bounds()
+        certain = [
+            name for name in ("GOOD_STABLE", "GOOD", "BAD_STABLE", "BAD", "IMPOSSIBLE", "TRIVIAL")
+            if all(name in flags(rule, counts.attempts, counts.valid, s, st) for s in counts.solved for st in counts.stable)
+        ]
+        return TierResult(rule.tier, answer_, len(chunks), counts, tuple(certain), simulated, solved_simulated[0], given_up)
 
-    while valid_count < rule.attempts and attempts < rule.attempts * DRAWS_PER_ATTEMPT:
-        action = draw()
-        attempts += 1
-        if not valid(action):
-            continue
-        valid_count += 1
-        if solves(action):
-            solved += 1
-            unjudged.append(action)
-            if not is_good:
-                judged(unjudged.pop())
-        if attempts % check_every and not (unjudged and is_good and is_trivial is None):
-            continue
-        check_every = max(1, attempts // 20)  # the interval, now and then: it costs more than a draw
-        if trivial_known(solved, attempts, rule) is False:  # not even the solutions reach the share
-            is_trivial = False
-        else:
-            while unjudged:
-                judged(unjudged.pop())
-            is_trivial = trivial_known(stable, attempts, rule)
-        if is_trivial or (is_trivial is False and is_good):
-            break
-    while unjudged and is_trivial is None:
-        judged(unjudged.pop())
-    if is_trivial is None:  # undecided within the draws: PHYRE's rule on them
-        is_trivial = stable / max(attempts, 1) >= rule.trivial
-    is_good = is_good or good(stable, valid_count, rule)
-    return Verdict(attempts, valid_count, solved, stable, is_good, bool(is_trivial), solution_stable)
+    solved_simulated = [0]
+    while True:
+        if len(chunks) == rule.max_chunks:
+            return result(False, f"undecided after {rule.max_chunks} chunks of {rule.chunk} attempts")
+        actions = pool(len(chunks))
+        chunks.append(actions)
+        valid_of.append([bool(valid(a)) for a in actions])
+        attempts += len(actions)
+        valid_count += sum(valid_of[-1])
+        wait = 0  # simulations before the bounds are tried again: they settle only near the end
+        while True:
+            counts = bounds()
+            if wait <= 0:
+                settled, seen = _settled(rule, counts, main)
+                if settled:
+                    break
+                wait = (counts.solved[1] - counts.solved[0]) // 100
+            wait -= 1
+            if counts.solved[1] > counts.solved[0]:  # simulate the next valid action
+                while not valid_of[cursor[0]][cursor[1]]:
+                    _advance(cursor, chunks)
+                action = chunks[cursor[0]][cursor[1]]
+                _advance(cursor, chunks)
+                simulated += 1
+                if solves(action):
+                    solved += 1
+                    solved_simulated[0] += 1
+                    screening = _done_before(cursor, chunks) <= rule.screen
+                    if screening or stable < rule.min_solutions:
+                        stable += stable_solution(action, neighbours, valid, solves)
+                    else:
+                        unjudged.append(action)
+                if main and _done_before(cursor, chunks) <= rule.screen and _trivial_beyond_doubt(stable, _done_before(cursor, chunks), rule):
+                    return result(False, f"TRIVIAL beyond doubt in the first {_done_before(cursor, chunks)} attempts")
+            else:  # every action simulated: judge the solutions left
+                stable += stable_solution(unjudged.pop(), neighbours, valid, solves)
+        (decided,) = seen
+        if decided is not None:
+            return result(decided)
+
+
+def _advance(cursor: list[int], chunks: list[list]) -> None:
+    cursor[1] += 1
+    if cursor[1] == len(chunks[cursor[0]]):
+        cursor[0], cursor[1] = cursor[0] + 1, 0
+
+
+def _done_before(cursor: list[int], chunks: list[list]) -> int:
+    """Attempts before the cursor, in pool order."""
+    return sum(len(c) for c in chunks[: cursor[0]]) + cursor[1]
+
+
+def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable) -> Verdict:
+    """The verdict on a task whose intended action is `solution`: `pool(rule, chunk)` the
+    chunk of `rule`'s tier and size, the rest as `evaluate` takes them. The tiers the task must not
+    be solvable in are judged first, as PHYRE does, and a task solvable there is not judged
+    in its own."""
+    plays = [0]
+
+    def counted(action) -> bool:
+        plays[0] += 1
+        return solves(action)
+
+    if not (valid(solution) and stable_solution(solution, neighbours, valid, counted)):
+        return Verdict(False, None, simulations=plays[0])
+    excluded = []
+    for other in rule.unsolvable_in:
+        excluded.append(evaluate(other, lambda chunk, r=other: pool(r, chunk), valid, counted, neighbours, main=False))
+        if excluded[-1].answer:
+            return Verdict(True, None, tuple(excluded), plays[0])
+    main = evaluate(rule, lambda chunk: pool(rule, chunk), valid, counted, neighbours)
+    return Verdict(True, main, tuple(excluded), plays[0])
 
 
 def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
-    """`domain`'s verdict on a finished level whose intended action is `action` (labelled
-    `label`); None when the domain has no rule. Random actions come from a generator named
-    after the label, so a seed gives the same verdict in any process; every play is counted
-    by the search's `evaluator`."""
-    import random
-
+    """`domain`'s verdict on a finished level whose intended action is `action` (`label`
+    names it in messages); None when the domain has no rule. Every play is counted by the
+    search's `evaluator`, whose budget it keeps."""
     rule = domain.acceptance_of(level) if hasattr(domain, "acceptance_of") else getattr(domain, "acceptance", None)
     if rule is None:
         return None
-    rng = random.Random(f"acceptance/{label}")
 
     def solves(candidate) -> bool:
         return evaluator.run(lambda: domain.play(level, candidate, recognise=False)).solved
 
-    return judge(rule, action, lambda: domain.random_action(level, rng), lambda a: domain.valid(level, a), solves, domain.neighbours)
+    return judge(
+        rule, action, lambda r, chunk: domain.action_pool(level, r.tier, chunk, r.chunk), lambda a: domain.valid(level, a), solves, domain.neighbours,
+    )

@@ -166,7 +166,8 @@ class Search(Robustness, Guards, Snapshots):
         accepting = time.perf_counter()
         verdict = judged(self.domain, level, attempt.label, attempt.action, self.evaluator) if self.acceptance else None
         if verdict is not None and not verdict.accepted:
-            return self.give_up(reasons.UNSTABLE_SOLUTION if not verdict.solution_stable else reasons.TRIVIAL if verdict.trivial else reasons.NOT_GOOD)
+            why = {"unstable": reasons.UNSTABLE_SOLUTION, "trivial": reasons.TRIVIAL, "solvable": reasons.SOLVABLE}
+            return self.give_up(why.get(verdict.reason, reasons.NOT_GOOD))
         solution = self.domain.solution(attempt.label, attempt.action)
         parts = Parts(
             level=self.domain.with_solution(level, solution),

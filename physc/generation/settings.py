@@ -23,6 +23,7 @@ NOT_VALIDATED = "validation failed"
 TRIVIAL = "random actions solve it too often (TRIVIAL)"
 NOT_GOOD = "random actions do not solve it (not GOOD_STABLE)"
 UNSTABLE_SOLUTION = "the solution's neighbours do not all solve it"
+SOLVABLE = "an easier tier's random actions solve it (GOOD_STABLE there)"
 
 
 @attrs.frozen

@@ -1,6 +1,6 @@
-"""A benchmark's acceptance of a task by random actions (physc.generation.acceptance): PHYRE's
-GOOD_STABLE and TRIVIAL, decided early when the answer is known, and the stability of a
-solution by its neighbours."""
+"""A benchmark's acceptance of a task by its pool of random actions (physc.generation.acceptance):
+PHYRE's flags and stopping rule, the same verdict as PHYRE's full evaluation with fewer
+simulations, and the give-ups."""
 
 from __future__ import annotations
 
@@ -8,131 +8,157 @@ import random
 
 import pytest
 
-from physc.generation.acceptance import Acceptance, good, judge, trivial_known
+from physc.generation.acceptance import Acceptance, done, evaluate, flags, judge, outcome
 
-PHYRE = Acceptance(threshold=1e-5, attempts=1000)
+# PHYRE's rule at a tenth of its pool, so that a test simulates thousands of actions, not
+# tens of thousands: the thresholds are scaled so that the same binomial tests decide.
+SMALL = Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, screen=100)
 INTENDED = -1.0  # the task's intended solution: it solves, and so do its neighbours
 
 
 class World:
-    """Actions are numbers in [0, 1); those below `solved` solve the task, and those below
-    `stable` also keep solving a neighbour's distance away (a + 2; an unstable one has a
-    neighbour that fails); those from `valid` to 1 are invalid."""
+    """Actions are numbers in [0, 1) from a pool of seeded chunks; those below `solved` solve
+    the task, and those below `stable` also keep solving a neighbour's distance away (a + 2;
+    an unstable one has a neighbour that fails); those from `valid` to 1 are invalid."""
 
-    def __init__(self, solved: float, stable: float | None = None, valid: float = 1.0, seed: int = 0):
+    def __init__(self, solved: float, stable: float | None = None, valid: float = 1.0, seed: int = 0, size: int = 1000):
         self.solved, self.stable, self.valid_below = solved, solved if stable is None else stable, valid
-        self.rng = random.Random(seed)
+        self.seed, self.size = seed, size
         self.plays = 0
 
-    def draw(self) -> float:
-        return self.rng.random()
+    def pool(self, chunk: int) -> list[float]:
+        rng = random.Random(f"{self.seed}/{chunk}")
+        return [rng.random() for _ in range(self.size)]
 
     def valid(self, a: float) -> bool:
         return a < self.valid_below or a >= 2 or a == INTENDED  # neighbours are valid
 
     def solves(self, a: float) -> bool:
         self.plays += 1
-        return a == INTENDED or 0 <= a < self.solved or (a >= 2 and a - 2 < self.stable)  # a neighbour of a stable solution is a + 2
+        return a == INTENDED or 0 <= a < self.solved or (a >= 2 and a - 2 < self.stable)
 
     def neighbours(self, a: float) -> list[float]:
         if a == INTENDED:
             return [INTENDED] * 8
         return [a + 2] * 8 if a < self.stable else [a + 2, 5.0]
 
-    def judge(self, rule=PHYRE, solution=None):
-        solution = INTENDED if solution is None else solution
-        return judge(rule, solution, self.draw, self.valid, self.solves, self.neighbours)
+    def evaluate(self, rule=SMALL, main=True):
+        return evaluate(rule, self.pool, self.valid, self.solves, self.neighbours, main)
 
 
-def test_phyres_binomial_test():
-    """One stable solution in 10,000 does not show a rate above 1e-5 (P = 0.095); two do
-    (0.005); one in 1,000 does (0.01)."""
-    rule = Acceptance(threshold=1e-5)
-    assert not good(1, 10_000, rule) and good(2, 10_000, rule) and good(1, 1000, rule) and not good(0, 10, rule)
-
-
-def test_the_trivial_share_is_known_once_its_interval_lies_on_one_side():
-    assert trivial_known(60, 100, PHYRE) is True
-    assert trivial_known(0, 100, PHYRE) is False
-    assert trivial_known(10, 100, PHYRE) is None
-
-
-def test_a_task_random_actions_never_solve_is_not_good_after_every_draw():
-    world = World(solved=0.0)
-    verdict = world.judge()
-    assert (verdict.valid, verdict.solved, verdict.good_stable, verdict.trivial) == (1000, 0, False, False)
-    assert not verdict.accepted and verdict.flags == []
-
-
-def test_a_task_half_the_random_actions_solve_is_trivial_early():
-    verdict = World(solved=0.5).judge()
-    assert verdict.trivial and verdict.good_stable and not verdict.accepted
-    assert verdict.attempts < 100  # known long before the draws run out
-    assert verdict.flags == ["GOOD_STABLE", "TRIVIAL"]
-
-
-def test_a_task_rarely_solved_stably_is_accepted_early_and_judges_few_solutions():
-    world = World(solved=0.02)
-    verdict = world.judge()
-    assert verdict.good_stable and not verdict.trivial and verdict.solution_stable and verdict.accepted
-    assert verdict.attempts < 400
-    # the first solution's neighbours are played (GOOD_STABLE needs one); the share of solutions
-    # shows it is not TRIVIAL, so the others' are not
-    assert world.plays < verdict.valid + 9 * 2 + 8
-
-
-def test_invalid_actions_count_as_attempts_for_trivial_but_not_for_good():
-    """PHYRE's TRIVIAL share is over all attempts, invalid ones included: 12 % of the valid
-    actions solve, but only 6 % of all."""
-    verdict = World(solved=0.06, valid=0.5).judge()
-    assert verdict.attempts > 1.8 * verdict.valid
-    assert not verdict.trivial and verdict.accepted
-
-
-def test_unstable_solutions_are_neither_good_nor_trivial():
-    """Every random solution has a neighbour that fails: none is stable, so the task is not
-    GOOD_STABLE, however often it is solved."""
-    verdict = World(solved=0.3, stable=0.0).judge()
-    assert verdict.solved > 0 and verdict.stable == 0 and not verdict.good_stable and verdict.solution_stable
-
-
-def test_an_intended_solution_that_is_not_stable_or_not_valid_ends_the_judging_at_once():
-    world = World(solved=0.3, stable=0.0)
-    verdict = world.judge(solution=0.1)
-    assert not verdict.solution_stable and verdict.attempts == 0 and not verdict.accepted
-    assert not World(solved=0.3, valid=0.5).judge(solution=0.7).solution_stable  # an invalid action
-
-
-def test_a_solution_with_a_failing_neighbour_is_not_accepted():
-    world = World(solved=0.02, stable=0.01)
-    assert world.judge(solution=0.015).solution_stable is False
-    assert world.judge(solution=0.005).solution_stable is True
-
-
-def test_the_verdict_is_the_same_for_the_same_draws():
-    assert World(0.05, seed=3).judge() == World(0.05, seed=3).judge()
-
-
-@pytest.mark.parametrize("share", [0.08, 0.12])
-def test_undecided_within_the_draws_falls_back_on_phyres_rule(share):
-    rule = Acceptance(threshold=1e-5, attempts=60)
-    verdict = World(share, seed=1).judge(rule)
-    assert verdict.valid == 60
-    assert verdict.trivial == (verdict.stable / verdict.attempts >= 0.1)
-
-
-def test_the_tests_closed_forms_agree_with_scipys_binomtest():
-    """`good` is scipy's one-sided binomial test (PHYRE's binom_test) and `trivial_known` reads
-    scipy's exact interval, computed in closed form."""
-    from scipy.stats import binomtest
-
-    rule = Acceptance(threshold=1e-5)
-    for n in (1, 7, 40, 333, 1000):
-        for k in sorted({0, 1, 2, 3, n // 10, n // 3, n - 1, n}):
-            if not 0 <= k <= n:
+def phyres(rule: Acceptance, world: World, main: bool = True) -> tuple[bool, int | None, int]:
+    """PHYRE's evaluation as eval_task_complexity.py runs it: every action of each chunk
+    simulated and every solution judged, the flags computed at each chunk's end, until done.
+    (answer, chunks, plays)."""
+    attempts = valid = solved = stable = 0
+    for chunk in range(rule.max_chunks):
+        for a in world.pool(chunk):
+            attempts += 1
+            if not world.valid(a):
                 continue
-            expected = k > 0 and binomtest(k, n, rule.threshold, alternative="greater").pvalue < rule.p_value
-            assert good(k, n, rule) == expected, (k, n)
-            interval = binomtest(k, n).proportion_ci(confidence_level=rule.confidence, method="exact")
-            known = True if interval.low >= rule.trivial else False if interval.high < rule.trivial else None
-            assert trivial_known(k, n, rule) == known, (k, n)
+            valid += 1
+            if world.solves(a):
+                solved += 1
+                stable += all(not world.valid(n) or world.solves(n) for n in world.neighbours(a))
+        decided = outcome(rule, (attempts, valid, solved, stable), main)
+        if decided is not None:
+            return decided, chunk + 1, world.plays
+    return False, None, world.plays
+
+
+def test_phyres_flags_on_a_task_of_its_own():
+    """PHYRE's 00000:000 in the ball tier (data/evaluations/00000.lzma): 20,000 attempts, 2,176
+    invalid, 164 unstable and 3 stable solutions: GOOD and GOOD_STABLE, done."""
+    rule = Acceptance(threshold=1e-5)
+    held = flags(rule, 20_000, 17_824, 167, 3)
+    assert held == {"GOOD", "GOOD_STABLE"}
+    assert done(rule, 17_824, 167, 3, held)
+    assert not done(rule, 9_999, 167, 3, held)  # fewer than 10,000 valid attempts
+    assert not done(rule, 17_824, 167, 2, flags(rule, 20_000, 17_824, 167, 2))  # GOOD_STABLE, but 2 stable solutions
+    assert flags(rule, 20_000, 17_824, 0, 0) == {"IMPOSSIBLE"}  # neither GOOD nor BAD: PHYRE draws on
+    assert "TRIVIAL" in flags(rule, 20_000, 17_824, 2_500, 2_000)  # a tenth of all attempts, invalid ones included
+
+
+@pytest.mark.parametrize(
+    ("solved", "stable", "valid", "seed"),
+    [
+        (0.02, 0.02, 1.0, 0), (0.02, 0.01, 0.85, 1), (0.005, 0.004, 0.9, 2), (0.09, 0.09, 0.95, 3), (0.12, 0.1, 1.0, 4),
+        (0.2, 0.05, 0.9, 5), (0.0, 0.0, 1.0, 6), (0.003, 0.001, 0.8, 7), (0.1, 0.1, 1.0, 8), (0.3, 0.3, 0.7, 9),
+    ],
+)
+def test_the_early_verdict_is_phyres(solved, stable, valid, seed):
+    """Whatever the rates, the verdict stopped early equals PHYRE's on every action, at the
+    same chunk; never more plays."""
+    rule = Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, screen=0)  # (no give-up: the verdict must be PHYRE's)
+    expected, chunks, full_plays = phyres(rule, World(solved, stable, valid, seed))
+    world = World(solved, stable, valid, seed)
+    result = world.evaluate(rule)
+    assert result.answer == expected
+    if chunks is not None:
+        assert result.chunks == chunks and result.given_up is None
+    assert world.plays <= full_plays
+
+
+def test_a_rarely_solved_task_is_kept_with_fewer_plays_than_phyres():
+    """Stability is judged only where it can change the verdict: here 3 stable solutions
+    and the bound on TRIVIAL, against PHYRE's 8 neighbours for every solution. (Showing that
+    a task is not TRIVIAL still takes most of its actions: any of them might be a stable
+    solution.)"""
+    world, reference = World(0.03, 0.03, 0.9), World(0.03, 0.03, 0.9)
+    result = world.evaluate()
+    expected, _, full_plays = phyres(SMALL, reference)
+    assert result.answer and expected
+    assert result.counts.stable[0] >= SMALL.min_solutions and "GOOD_STABLE" in result.flags and "TRIVIAL" not in result.flags
+    assert world.plays < 0.75 * full_plays
+    assert result.counts.attempts == 2000 and result.counts.valid < 2000  # two chunks: the first holds < 1,000 valid ones
+
+
+def test_a_task_stably_solved_by_half_its_actions_is_given_up_as_trivial_at_once():
+    world = World(0.5)
+    result = world.evaluate()
+    assert not result.answer and result.given_up.startswith("TRIVIAL beyond doubt")
+    assert world.plays < 200
+
+
+def test_a_task_never_solved_is_given_up_after_the_chunks_physc_allows():
+    """PHYRE would draw until BAD (about 150,000 attempts at its threshold); physc stops."""
+    result = World(0.0).evaluate(Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, max_chunks=2))
+    assert not result.answer and result.given_up == "undecided after 2 chunks of 1000 attempts" and result.chunks == 2
+    assert result.counts.solved[0] == 0
+
+
+def judged_in_two_tiers(ball: World, two_balls: World):
+    """A two-ball task's verdict: actions are (tier, number), each tier's its own world."""
+    worlds = {"ball": ball, "two_balls": two_balls}
+    rule = Acceptance(threshold=1e-5, tier="two_balls", min_valid=1000, chunk=1000, screen=100, unsolvable_in=(SMALL,))
+    return judge(
+        rule, INTENDED, lambda r, chunk: [(r.tier, u) for u in worlds[r.tier].pool(chunk)],
+        lambda a: a == INTENDED or worlds[a[0]].valid(a[1]), lambda a: a == INTENDED or worlds[a[0]].solves(a[1]),
+        lambda a: [INTENDED] * 8 if a == INTENDED else [(a[0], n) for n in worlds[a[0]].neighbours(a[1])],
+    )
+
+
+def test_a_task_solvable_in_an_easier_tier_is_rejected_before_its_own_is_judged():
+    """PHYRE's `reject_ball_solvable`: a two-ball task one ball solves (GOOD_STABLE) is dropped."""
+    two_balls = World(0.02, seed=1)
+    verdict = judged_in_two_tiers(World(0.02), two_balls)
+    assert not verdict.accepted and verdict.reason == "solvable" and verdict.main is None
+    assert verdict.record()["unsolvable_in"][0]["tier"] == "ball" and two_balls.plays == 0
+    kept = judged_in_two_tiers(World(0.0), World(0.02, seed=1))  # one ball never solves it
+    assert kept.accepted and not kept.excluded[0].answer and kept.main.tier == "two_balls"
+
+
+def test_an_unstable_intended_solution_is_rejected_without_drawing():
+    world = World(0.02, stable=0.005)
+    verdict = judge(SMALL, 0.01, lambda r, chunk: world.pool(chunk), world.valid, world.solves, world.neighbours)
+    assert not verdict.accepted and verdict.reason == "unstable" and verdict.simulations == 1  # its first neighbour fails
+
+
+def test_the_record_holds_the_counts_and_their_bounds():
+    world = World(0.03, 0.03, 0.9)
+    verdict = judge(SMALL, INTENDED, lambda r, chunk: world.pool(chunk), world.valid, world.solves, world.neighbours)
+    record = verdict.record()
+    assert record["accepted"] and record["tier"] == "ball" and record["chunks"] == 2 and record["attempts"] == 2000
+    lo, hi = record["stable"]
+    assert SMALL.min_solutions <= lo <= hi < 0.1 * record["attempts"]
+    assert record["simulations"] == world.plays and 0.02 < record["solve_rate"] < 0.05

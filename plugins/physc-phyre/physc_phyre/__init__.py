@@ -30,15 +30,11 @@ from physc_phyre.task_file import task_json
 from physc_phyre.vocabulary import VOCABULARY
 from physc_phyre.worlds import PHYRE
 
-# PHYRE's SOLVABILITY_THRESHOLD_PROBS (docs/phyre-sources.md, section 5), by the level's tier.
-THRESHOLDS = {"BALL": 1e-5, "TWO_BALLS": 1e-6}
-# Valid random actions the acceptance draws at most. PHYRE draws 10,000 and needs 2 stable
-# solutions among them (its binomial test: P[X ≥ 2] = 0.005, P[X ≥ 1] = 0.095); among 1,000, one
-# passes (P[X ≥ 1] = 0.01). A task solved stably by 1 random action in 1,000 or more is
-# GOOD_STABLE in both (PHYRE's 10,000 find two or more with probability ≥ 0.995); one solved
-# more rarely is mostly given up (at 2 in 10,000: physc keeps it 18 % of the time, PHYRE 59 %),
-# at a tenth of PHYRE's simulations.
-ACCEPTANCE_DRAWS = 1_000
+# PHYRE's SOLVABILITY_THRESHOLD_PROBS (docs/phyre-sources.md, section 5), by PHYRE's action tier.
+THRESHOLDS = {"ball": 1e-5, "two_balls": 1e-6}
+# A level's tier (task.thrift's `tier`) → the action tier that judges it.
+ACTION_TIERS = {"BALL": "ball", "TWO_BALLS": "two_balls"}
+BALLS = {"ball": 1, "two_balls": 2}  # red balls an action of the tier places
 
 __all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
 
@@ -66,14 +62,27 @@ class Phyre(SimulatedDomain):
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
         "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
     )
-    acceptance = Acceptance(threshold=THRESHOLDS["BALL"], attempts=ACCEPTANCE_DRAWS)
-    """PHYRE's acceptance of a ball-tier task: GOOD_STABLE (random actions solve it stably at a
-    rate shown above 1e-5, SOLVABILITY_THRESHOLD_PROBS["ball"] of eval_task_complexity.py)
-    and not TRIVIAL; its intended solution stable under half-pixel moves."""
+    acceptance = Acceptance(threshold=THRESHOLDS["ball"], tier="ball")
+    """PHYRE's acceptance of a ball-tier task, decided as PHYRE's eval_task_complexity.py
+    decides it on PHYRE's own pool of random actions (physc.generation.acceptance): done
+    after ≥ 10,000 valid attempts and ≥ 3 stable solutions, kept when GOOD_STABLE (a stable
+    solve rate shown above 1e-5) and not TRIVIAL; and, physc's own addition, its intended
+    solution stable under half-pixel moves."""
 
     def acceptance_of(self, level: PhyreLevel) -> Acceptance:
-        """The rule with the threshold of the level's tier (two balls: 1e-6)."""
-        return attrs.evolve(self.acceptance, threshold=THRESHOLDS[level.tier])
+        """The rule of the level's tier: two balls with threshold 1e-6, and the task must not
+        be GOOD_STABLE with one ball (PHYRE's two-ball templates all `reject_ball_solvable`)."""
+        if level.tier == "BALL":
+            return self.acceptance
+        tier = ACTION_TIERS[level.tier]
+        return attrs.evolve(self.acceptance, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(self.acceptance,))
+
+    @staticmethod
+    def action_pool(level: PhyreLevel, tier: str, chunk: int, size: int) -> list:
+        """The first `size` actions of chunk `chunk` of PHYRE's acceptance pool of `tier` (pool.py)."""
+        from physc_phyre.pool import acceptance_chunk
+
+        return acceptance_chunk(BALLS[tier], chunk, size)[1]
     trace_scale = world.PIXELS_PER_METRE
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
@@ -95,7 +104,7 @@ class Phyre(SimulatedDomain):
             if body.shape == "ball":
                 radii[body.name] = body.size / world.PIXELS_PER_METRE
         balls = action.balls if action is not None else ()
-        if balls and len(balls) != len(level.players):
+        if len(balls) > len(level.players):  # (fewer: the ball tier's actions on a two-ball task, as PHYRE judges it)
             raise ValueError(f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}")
         for name, ball in zip(level.players, balls):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))

@@ -8,6 +8,7 @@ import io
 import json
 from pathlib import Path
 
+import attrs
 import pytest
 from physc.cli import main
 
@@ -131,7 +132,18 @@ def _layout_classes():
     return {"ChosenRelation": ChosenRelation, "PlacedObject": PlacedObject}
 
 
-def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path):
+@pytest.fixture
+def tenth_of_phyres_pool(monkeypatch):
+    """PHYRE's acceptance at a tenth of its pool (chunks of 1,000, ten times the threshold, so
+    that the same binomial tests decide), for tests: the full rule costs a minute a task."""
+    from physc_phyre import Phyre
+
+    rule = attrs.evolve(Phyre.acceptance, threshold=1e-4, chunk=1000, min_valid=1000, screen=100)
+    monkeypatch.setattr(Phyre, "acceptance", rule)
+    return rule
+
+
+def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path, tenth_of_phyres_pool):
     """A task of PHYRE's template 00009 kept by PHYRE's acceptance rule (GOOD_STABLE, not
     TRIVIAL, its solution stable under half-pixel moves), with the figures in the record and
     the report."""
@@ -141,7 +153,7 @@ def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path):
     assert record["generated"] and record["stable"] and record["intended_exact"]
     assert record["agent_plays"] == 100 and 0 <= record["accidental"] <= 1 and 0 <= record["auccess"] <= 1
     assert record["good_stable"] is True and record["trivial"] is False and record["solution_stable"] is True
-    assert 0 < record["stable_rate"] < 0.1
+    assert 0 < record["solve_rate"] < 0.5
     report = (tmp_path / "eval" / "results.md").read_text()
     assert "AUCCESS" in report and "GOOD_STABLE" in report
     assert list((tmp_path / "eval").glob("task_*.png"))
@@ -223,7 +235,7 @@ def test_shapes_that_cannot_fit_the_scene_are_drawn_again_not_an_internal_error(
         _pipeline("task00000.phys").placed
 
 
-def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_path):
+def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_path, tenth_of_phyres_pool):
     import random
 
     from physc_phyre.distract import distractors

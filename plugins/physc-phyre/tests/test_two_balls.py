@@ -41,7 +41,8 @@ def test_six_numbers_are_read_as_phyres_two_ball_mapper_reads_them():
 def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
     far = TwoBallAction(BallAction(40, 200, 8), BallAction(200, 200, 8))
     assert DOMAIN.valid(TWO, far) and not DOMAIN.valid(ONE, far)
-    assert DOMAIN.valid(ONE, far.first) and not DOMAIN.valid(TWO, far.first)
+    assert DOMAIN.valid(ONE, far.first)
+    assert DOMAIN.valid(TWO, far.first)  # the ball tier's action: PHYRE judges a two-ball task by one ball too
     close = TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8))  # 16 px apart, 17 needed
     assert not DOMAIN.valid(TWO, close)
     on_the_ledge = TwoBallAction(BallAction(40, 200, 8), BallAction(128, 62, 8))
@@ -63,9 +64,17 @@ def test_random_actions_and_neighbours_are_phyres_for_two_balls():
         assert (dx1, dy1) == (dx2, dy2) != (0, 0) and {abs(dx1), abs(dy1)} <= {0.0, 0.5}
 
 
-def test_the_acceptance_threshold_is_the_tiers():
-    assert DOMAIN.acceptance_of(ONE).threshold == 1e-5
-    assert DOMAIN.acceptance_of(TWO).threshold == 1e-6  # SOLVABILITY_THRESHOLD_PROBS["two_balls"]
+def test_the_acceptance_rule_is_the_tiers():
+    """PHYRE's SOLVABILITY_THRESHOLD_PROBS by tier, its pool and stopping constants, and its
+    two-ball templates' `reject_ball_solvable`."""
+    ball, two = DOMAIN.acceptance_of(ONE), DOMAIN.acceptance_of(TWO)
+    assert (ball.threshold, ball.tier, ball.unsolvable_in) == (1e-5, "ball", ())
+    assert (two.threshold, two.tier, two.unsolvable_in) == (1e-6, "two_balls", (ball,))
+    assert (ball.min_valid, ball.min_solutions, ball.chunk, ball.p_value, ball.trivial) == (10_000, 3, 10_000, 0.05, 0.1)
+    # PHYRE's pool: a two-ball task is judged by one ball too (valid there), in PHYRE's order
+    first = DOMAIN.action_pool(TWO, "ball", 0, 10)[:3]
+    assert all(isinstance(a, BallAction) for a in first) and DOMAIN.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.action_pool(TWO, "two_balls", 0, 10)[0]
+    assert any(DOMAIN.valid(TWO, a) for a in first)
 
 
 def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
