@@ -16,7 +16,7 @@ import attrs
 from physc.domains.base import DomainError
 
 from physc_phyre import furniture
-from physc_phyre.world import BAR_HEIGHT, SCENE, extent, size_of
+from physc_phyre.world import SCENE, extent, jar_thickness, size_of
 
 # The shape and colour of each concrete object of the vocabulary (the floor is the bottom wall).
 KINDS = {
@@ -49,7 +49,9 @@ KINDS = {
 # one, in a gray jar). The ball's radius is a share of the jar's height, so that it lies on
 # the jar's base between its walls.
 HELD = {"blueBallInJar": "gray", "greenBallInJar": "gray"}
-HELD_RADIUS = 0.245  # of the jar's height at most: the widest ball that lies between the walls is 0.2476 of it
+# Of the jar's height at most: the widest ball that lies on the base of PHYRE's jar between its
+# walls is 0.2625 of it at 45 px (concretize.HOLDING_HEIGHT's least), more in a taller jar.
+HELD_RADIUS = 0.245
 JAR_SUFFIX = "_jar"
 # How far above where it rests an object of `dropped(a)` starts, in pixels (PHYRE's template
 # 00001 drops its green ball from 0-40 px above the shelf; a lift under 10 px hardly falls).
@@ -250,10 +252,13 @@ def held(name: str, x: float, y: float, angle: float, height: float, color: str,
     """A ball named `name` lying on the base of a jar `height` tall whose base's middle is at
     (x, y): the jar, then the ball."""
     radius = int(HELD_RADIUS * height - 0.5) + 0.5
-    lift = BAR_HEIGHT / 2 + radius  # from the base's middle line to the ball's centre
+    # From the base's middle line to the ball's centre, up to the level's 1e-3 px, so that the
+    # rounded ball never sinks into the base.
+    lift = math.ceil((jar_thickness(height) / 2 + radius) * 1000) / 1000
+    x, y = round(x, 3), round(y, 3)
     bx, by = x - lift * math.sin(angle), y + lift * math.cos(angle)
     return [
-        SceneBody(name + JAR_SUFFIX, "jar", round(x, 3), round(y, 3), round(angle, 6), round(height, 3), jar_color, True),
+        SceneBody(name + JAR_SUFFIX, "jar", x, y, round(angle, 6), round(height, 3), jar_color, True),
         SceneBody(name, "ball", round(bx, 3), round(by, 3), 0.0, radius, color, True),
     ]
 

@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-from physc_phyre.world import SCENE, jar_parts
+from physc_phyre.world import SCENE, jar_height, jar_parts
 
 SHAPE_TYPES = 4
 COLORS = 6
@@ -106,13 +106,11 @@ def raster(task: dict, ball: tuple[float, float, float] | None = None) -> np.nda
 
 def jar_offset(diameter: float) -> float:
     """How far above its origin (the middle of its base) a jar of `diameter` has its centre of
-    mass, in pixels, as PHYRE's featurizer rebuilds it from the diameter (diameter = 1.25 ×
-    height; plates log(height) / log(0.3 · 256) · 256 / 50 thick, shapes.py's Jar): the
-    area-weighted centroid of its plates. PHYRE cuts its walls' ends otherwise than physc's
-    jar does, so this lies up to 0.5 px below PHYRE's (7.8 against 8.2 at diameter 32)."""
-    height = diameter / 1.25
+    mass, in pixels, as PHYRE's featurizer finds it (simulation.py's `_get_jar_offset`:
+    `Jar.center_of_mass(diameter=...)`): the area-weighted centroid of PHYRE's own plates for
+    the height that diameter gives (world.jar_height, world.jar_parts)."""
     area = moment = 0.0
-    for part in jar_parts(height, math.log(height) / math.log(0.3 * SCENE) * SCENE / 50):
+    for part in jar_parts(jar_height(diameter)):
         points = part.points
         a = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / 2
         cy = sum((y0 + y1) * (x0 * y1 - x1 * y0) for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / (6 * a)

@@ -1,5 +1,11 @@
 """PHYRE's goal as the run's rules: the two goal bodies touching for 180 steps in a row.
 
+Touching is decided as PHYRE's `isTaskInSolvedState` decides it (src/simulator/
+task_validation.cpp): two goal bodies that are each one circle touch while their centres are
+closer than r1 + r2 + a tenth of a pixel (PHYRE's check "to improve stability", computed in
+single precision as PHYRE computes it); any other pair (a jar, a bar, sticks, static or
+dynamic alike) touches while the engine has a contact between them.
+
 The run ends as soon as the goal has held that long (PHYRE stops there too), or once
 nothing moves and the goal does not hold (nothing will change any more), or after
 1,000 steps. Also here: the recognition of interactions in PHYRE's units (metres).
@@ -7,13 +13,15 @@ nothing moves and the goal does not hold (nothing will change any more), or afte
 
 from __future__ import annotations
 
+import numpy as np
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 
-from physc_phyre.world import FPS, GOAL_STEPS
+from physc_phyre.world import FPS, GOAL_STEPS, PIXELS_PER_METRE
 
 STILL_SPEED = 0.01  # m/s and rad/s: slower is at rest
 STILL_STEPS = FPS // 2  # at rest this long without the goal: the run is over
+BALL_TOUCHING_THRESHOLD = 0.1 / PIXELS_PER_METRE  # PHYRE's kBallTouchingThreshold, a tenth of a pixel, in metres
 
 RECOGNISER = Recogniser(
     hit_speed=0.5, rehit=0.1, moving=0.3, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.25,
@@ -22,21 +30,43 @@ RECOGNISER = Recogniser(
 )
 
 
-class GoalRules(RunRules):
-    """The rules of one run: `goal` is (green body, the body it must touch)."""
+def balls_touch(a, b, r1: float, r2: float) -> bool:
+    """Whether balls of radii `r1`, `r2` centred at `a` and `b` (metres) touch, in PHYRE's
+    float arithmetic: sqrt(dx² + dy²) < r1 + r2 + BALL_TOUCHING_THRESHOLD."""
+    f = np.float32
+    dx, dy = f(a[0]) - f(b[0]), f(a[1]) - f(b[1])
+    return bool(np.sqrt(dx * dx + dy * dy) < f(r1) + f(r2) + f(BALL_TOUCHING_THRESHOLD))
 
-    def __init__(self, goal: tuple[str, str]):
+
+class GoalRules(RunRules):
+    """The rules of one run: `goal` is (green body, the body it must touch); `balls` the radius
+    in metres of the bodies that are one circle. When both goal bodies are balls, PHYRE's
+    distance rule decides whether they touch; otherwise the engine's contacts do."""
+
+    def __init__(self, goal: tuple[str, str], balls: dict[str, float] | None = None):
         self.goal = goal
+        self.radii = tuple(balls[n] for n in goal) if all(goal) and balls and set(goal) <= set(balls) else None
         self.held = 0  # steps in a row that the goal has held
         self.still = 0  # steps in a row that nothing moved
         self.met = False
 
+    @classmethod
+    def of(cls, level) -> GoalRules:
+        """A level's rules; PHYRE's ball rule is the relation TOUCHING's (physc's only one)."""
+        touching = level.relation == "TOUCHING"
+        return cls(level.goal, {b.name: b.size / PIXELS_PER_METRE for b in level.bodies if b.shape == "ball" and touching})
+
     def on_start(self, world) -> None:
         self.world = world
 
-    def finished(self, values: list, alive: set, time: float) -> bool:
+    def touching(self) -> bool:
         green, target = self.goal
-        self.held = self.held + 1 if green and target in self.world.touching(green) else 0
+        if self.radii:
+            return balls_touch(self.world.state(green), self.world.state(target), *self.radii)
+        return bool(green) and target in self.world.touching(green)
+
+    def finished(self, values: list, alive: set, time: float) -> bool:
+        self.held = self.held + 1 if self.touching() else 0
         if self.held >= GOAL_STEPS:
             self.met = True
             return True
@@ -45,8 +75,14 @@ class GoalRules(RunRules):
         return self.still >= STILL_STEPS
 
     def resume(self, world, snapshot) -> None:
-        """Going on from a snapshot: the goal has held since the goal bodies last began
-        touching, if they touch then (a snapshot is cut while something still moves)."""
+        """Going on from a snapshot: the steps in a row up to it that the goal held. Balls: the
+        rows in which they were within reach (a body the snapshot lacks, or a static one, stood
+        where it stands now); other bodies: since they last began touching, if they touch then."""
+        if self.radii:
+            rows = [snapshot.states[:, snapshot.names.index(n), :2] if n in snapshot.names else [world.state(n)[:2]] * snapshot.step for n in self.goal]
+            pairs = list(zip(*rows))[::-1]
+            self.held = next((k for k, (a, b) in enumerate(pairs) if not balls_touch(a, b, *self.radii)), len(pairs))
+            return
         pair = frozenset(self.goal)
         if pair in snapshot.touching:
             since = max(c.time for c in snapshot.contacts if frozenset((c.a, c.b)) == pair)

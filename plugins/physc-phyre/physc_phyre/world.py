@@ -4,8 +4,8 @@ Facts from PHYRE's sources (physc's docs/phyre-facts.md): a 256 × 256 scene in 
 6 pixels to the metre, gravity 9.8 m/s², 60 steps a second, at most 1,000 steps; every
 body has density 0.25 (dynamic ones), friction 0.5, restitution 0.2 and angular damping
 0.01; four static walls 5 px thick lie outside the scene. The shapes are our own,
-after PHYRE's: a ball; a bar 5.12 px thick; a jar of three plates whose origin is the
-middle of its base; standing sticks, two sticks crossed at ±77.5°.
+after PHYRE's: a ball; a bar 5.12 px thick; a jar, PHYRE's own three plates (shapes.py's
+Jar), whose origin is the middle of its base; standing sticks, two sticks crossed at ±77.5°.
 
 A level is in pixels, as PHYRE's scenes are; `body_spec` turns a body into metres.
 """
@@ -29,7 +29,11 @@ DENSITY, FRICTION, RESTITUTION, ANGULAR_DAMPING = 0.25, 0.5, 0.2, 0.01
 WALL = 5.0  # the walls' thickness, outside the scene
 BAR_HEIGHT = SCENE / 50  # 5.12 px
 STICKS_ANGLE = 77.5  # degrees from the horizontal of each standing stick
+# PHYRE's Jar (src/python/phyre/creator/shapes.py): the opening is 1/1.2 of the height wide,
+# the base 0.8 of the opening; the plates' thickness grows with the log of the height and is
+# BAR_HEIGHT (SCENE / 50) at a height of 0.3 of the scene (JAR_THICKNESS_HEIGHT).
 JAR_WIDTH_RATIO, JAR_BASE_RATIO = 1 / 1.2, 0.8
+JAR_THICKNESS_HEIGHT = 0.3 * SCENE
 
 
 def rectangle(cx: float, cy: float, width: float, height: float, angle: float = 0.0) -> Polygon:
@@ -39,21 +43,43 @@ def rectangle(cx: float, cy: float, width: float, height: float, angle: float = 
     return Polygon(tuple((cx + x * c - y * s, cy + x * s + y * c) for x, y in corners))
 
 
-def jar_parts(height: float, t: float = BAR_HEIGHT) -> tuple[Polygon, ...]:
-    """A jar `height` tall with plates `t` thick: its base plate (origin at its middle) and
-    two walls slanting out to an opening `height / 1.2` wide."""
+def jar_thickness(height: float) -> float:
+    """The thickness of a jar's plates, PHYRE's `Jar.thickness_from_height`: log(height) /
+    log(0.3 · 256) · 256 / 50 (4.35 px at 40 px tall, 4.83 px at 60 px)."""
+    return math.log(height) / math.log(JAR_THICKNESS_HEIGHT) * BAR_HEIGHT
+
+
+def jar_parts(height: float) -> tuple[Polygon, ...]:
+    """PHYRE's jar `height` tall (`Jar._build`, vertices as it lists them, counter-clockwise,
+    about its origin, the middle of its base): a base plate `base_width` wide, and two walls
+    slanting from the base's ends out to an opening `height / 1.2` wide, as thick as the base
+    across their length and cut level at the top. The jar spans y from -t/2 to height - t/2
+    and x from -width/2 to width/2 (t: `jar_thickness`)."""
     width = height * JAR_WIDTH_RATIO
-    base = width * JAR_BASE_RATIO
-    top = height - t
-    parts = [rectangle(0.0, 0.0, base, t)]
-    for side in (-1, 1):
-        # From the base's end, on its middle line, to the opening's edge: its corners stay
-        # within the outline box (`extent`), none below the base.
-        x0, x1 = side * (base - t) / 2, side * (width - t) / 2
-        length = math.hypot(x1 - x0, top)
-        angle = math.atan2(top, x1 - x0)
-        parts.append(rectangle((x0 + x1) / 2, top / 2, length, t, angle))
-    return tuple(parts)
+    base_width = width * JAR_BASE_RATIO
+    t = jar_thickness(height)
+    base = Polygon(((base_width / 2, t / 2), (-base_width / 2, t / 2), (-base_width / 2, -t / 2), (base_width / 2, -t / 2)))
+    run = (width - base_width) / 2  # how far a wall leans out over its height
+    hypotenuse = math.sqrt(height**2 + run**2)
+    cos, sin = run / hypotenuse, height / hypotenuse
+    x_delta, x_delta_top, y_delta = t * sin, t / sin, t * cos
+    top = height - t / 2
+    left = Polygon((
+        (-width / 2, top), (-base_width / 2, -t / 2), (-base_width / 2 + x_delta, y_delta - t / 2), (-width / 2 + x_delta_top, top),
+    ))
+    right = Polygon((
+        (width / 2, top), (width / 2 - x_delta_top, top), (base_width / 2 - x_delta, y_delta - t / 2), (base_width / 2, -t / 2),
+    ))
+    return (base, left, right)
+
+
+def jar_height(diameter: float) -> float:
+    """A jar's height from its `diameter` (PHYRE's `Jar.diameter_to_default_scale`, then
+    `default_sizes`: the diameter is the diagonal from the base's end to the far top corner,
+    1.25 × the height), with PHYRE's arithmetic."""
+    width_to_height = ((1.0 - JAR_BASE_RATIO) / 2.0 + JAR_BASE_RATIO) * JAR_WIDTH_RATIO
+    scale = math.sqrt(diameter**2 / (1 + width_to_height**2)) / SCENE
+    return (1.0 - scale) * 0.0 + scale * SCENE
 
 
 def sticks_parts(width: float) -> tuple[Polygon, ...]:
@@ -70,7 +96,7 @@ def extent(shape: str, size: float) -> tuple[float, float, float]:
     if shape == "bar":
         return size, BAR_HEIGHT, 0.0
     if shape == "jar":
-        return size * JAR_WIDTH_RATIO, size, size / 2 - BAR_HEIGHT / 2
+        return size * JAR_WIDTH_RATIO, size, size / 2 - jar_thickness(size) / 2
     if shape == "standingsticks":
         a = math.radians(STICKS_ANGLE)
         length, t = 2 * size / 3, 2 * BAR_HEIGHT / 3

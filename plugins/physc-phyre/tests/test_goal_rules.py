@@ -1,0 +1,61 @@
+"""PHYRE's goal: two goal balls touch by the distance of their centres (task_validation.cpp's
+kBallTouchingThreshold, a tenth of a pixel), every other pair by the engine's contact."""
+
+from __future__ import annotations
+
+import pytest
+from physc.simulation.scene import play
+from physc.simulation.snapshot import Snapshot
+
+from physc_phyre import DOMAIN, PhyreLevel, SceneBody
+from physc_phyre.rules import BALL_TOUCHING_THRESHOLD, RECOGNISER, GoalRules, balls_touch
+from physc_phyre.world import GOAL_STEPS, PIXELS_PER_METRE
+
+FLOOR_BAR = SceneBody("target_floor", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
+RADIUS = 10.5  # px
+
+
+def _balls(gap: float) -> PhyreLevel:
+    """A green and a blue ball resting on a purple bar, `gap` pixels apart."""
+    green = SceneBody("green", "ball", 100.0, 5.12 + RADIUS, 0.0, RADIUS, "green", True)
+    blue = SceneBody("blue", "ball", 100.0 + 2 * RADIUS + gap, 5.12 + RADIUS, 0.0, RADIUS, "blue", True)
+    return PhyreLevel((FLOOR_BAR, green, blue), ("green", "blue"))
+
+
+def _run(level: PhyreLevel, resume=None):
+    return play(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER, recognise=False, resume=resume)
+
+
+def test_the_threshold_is_a_tenth_of_a_pixel_in_metres():
+    assert BALL_TOUCHING_THRESHOLD * PIXELS_PER_METRE == pytest.approx(0.1)
+    r = RADIUS / PIXELS_PER_METRE
+    for gap, touching in ((0.0, True), (0.05, True), (0.09, True), (0.11, False), (0.2, False)):
+        centre = (2 * RADIUS + gap) / PIXELS_PER_METRE
+        assert balls_touch((0.0, 0.0), (centre, 0.0), r, r) is touching, gap
+
+
+@pytest.mark.parametrize(("gap", "solved"), [(0.05, True), (0.2, False)])
+def test_two_balls_a_twentieth_of_a_pixel_apart_touch_and_a_fifth_do_not(gap, solved):
+    """Neither pair is in contact in Box2D (circles collide only when they overlap); PHYRE's
+    rule counts the nearer one as touching, and it holds for 3 s."""
+    trace = _run(_balls(gap))
+    assert trace.solved is solved
+    if solved:
+        assert trace.steps == GOAL_STEPS  # from the first step on
+    assert not any({c.a, c.b} == {"green", "blue"} for c in trace.contacts)
+
+
+def test_a_ball_and_a_bar_still_touch_by_contact():
+    green = SceneBody("green", "ball", 100.0, 5.12 + RADIUS, 0.0, RADIUS, "green", True)
+    level = PhyreLevel((FLOOR_BAR, green), ("green", "target_floor"))
+    assert GoalRules.of(level).radii is None
+    assert GoalRules.of(_balls(0.05)).radii == (RADIUS / PIXELS_PER_METRE,) * 2
+    assert _run(level).solved
+
+
+def test_going_on_from_a_snapshot_counts_the_steps_the_balls_were_within_reach():
+    level = _balls(0.05)
+    full = _run(level)
+    snapshot = Snapshot.of(full, 100)
+    resumed = _run(level, resume=snapshot)
+    assert resumed.solved and resumed.steps == full.steps == GOAL_STEPS  # the 100 steps before it counted
