@@ -114,7 +114,8 @@ class Phyre(SimulatedDomain):
 
     @staticmethod
     def rules(level: PhyreLevel) -> GoalRules:
-        return GoalRules(level.goal)
+        """PHYRE's goal: two balls touch by its distance rule, other pairs by contact (rules.py)."""
+        return GoalRules.of(level)
 
     @staticmethod
     def actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
