@@ -47,8 +47,9 @@ def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
     assert not DOMAIN.valid(TWO, close)
     on_the_ledge = TwoBallAction(BallAction(40, 200, 8), BallAction(128, 62, 8))
     assert not DOMAIN.valid(TWO, on_the_ledge)  # the second ball occludes the ledge
-    with pytest.raises(ValueError, match="places 2 red balls"):
-        DOMAIN.scene(TWO, far.first)  # a task file's solution of the wrong tier is refused, not cut
+    with pytest.raises(ValueError, match="places 1 red balls"):
+        DOMAIN.scene(ONE, far)  # more balls than the level's tier places are refused, not cut
+    assert len(DOMAIN.scene(TWO, far.first).bodies) == len(DOMAIN.scene(TWO, far).bodies) - 1  # one ball: the ball tier's play
 
 
 def test_random_actions_and_neighbours_are_phyres_for_two_balls():
