@@ -9,8 +9,9 @@ neighbour, the ball moved half a pixel, solves too or is invalid). After each ch
 computes its flags from the counts (`flags`) and stops once the task is done: at least
 10,000 valid attempts, GOOD or BAD, GOOD_STABLE or BAD_STABLE, and at least 3 solutions
 (stable solutions) where GOOD (GOOD_STABLE) holds. The task is kept when its flags then
-hold GOOD_STABLE and not TRIVIAL; a two-ball task also needs the ball tier's flags, done
-first, not to hold GOOD_STABLE (`Acceptance.unsolvable_in`: PHYRE's
+hold GOOD_STABLE and not TRIVIAL (a template's `required_flags` and `excluded_flags`: a few
+of PHYRE's allow TRIVIAL); a two-ball task also needs the ball tier's flags, done first, not
+to hold GOOD_STABLE (`Acceptance.unsolvable_in`: PHYRE's
 `reject_ball_solvable`).
 
 The same verdict, sooner: which actions are valid is geometry, known without simulating,
@@ -66,6 +67,10 @@ class Acceptance:
     """The chance left that a task given up as TRIVIAL from its first attempts is not."""
     unsolvable_in: tuple[Acceptance, ...] = ()
     """Rules of other tiers under which the task must not be GOOD_STABLE (decided first)."""
+    required: tuple[str, ...] = ("GOOD_STABLE",)
+    """The flags a kept task holds when decided (PHYRE's `required_flags` of a template)."""
+    excluded: tuple[str, ...] = ("TRIVIAL",)
+    """The flags it must not hold (`excluded_flags`: most of PHYRE's templates exclude TRIVIAL)."""
 
 
 @attrs.frozen
@@ -185,9 +190,11 @@ def done(rule: Acceptance, valid: int, solved: int, stable: int, held: frozenset
 
 
 def answer(rule: Acceptance, held: frozenset[str], main: bool) -> bool:
-    """A decided tier's answer: kept (GOOD_STABLE, not TRIVIAL), or for a tier the task must
-    not be solvable in, whether it is (GOOD_STABLE)."""
-    return "GOOD_STABLE" in held and (not main or "TRIVIAL" not in held)
+    """A decided tier's answer: kept (the required flags held, the excluded ones not), or for
+    a tier the task must not be solvable in, whether it is (GOOD_STABLE)."""
+    if not main:
+        return "GOOD_STABLE" in held
+    return set(rule.required) <= held and not set(rule.excluded) & held
 
 
 def outcome(rule: Acceptance, counts: tuple[int, int, int, int], main: bool) -> bool | None:
@@ -297,13 +304,14 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
                 if solves(action):
                     solved += 1
                     solved_simulated[0] += 1
-                    screening = _done_before(cursor, chunks) <= rule.screen
+                    screening = main and "TRIVIAL" in rule.excluded and _done_before(cursor, chunks) <= rule.screen
                     if screening or stable < rule.min_solutions:
                         stable += stable_solution(action, neighbours, valid, solves)
                     else:
                         unjudged.append(action)
-                if main and _done_before(cursor, chunks) <= rule.screen and _trivial_beyond_doubt(stable, _done_before(cursor, chunks), rule):
-                    return result(False, f"TRIVIAL beyond doubt in the first {_done_before(cursor, chunks)} attempts")
+                screened = _done_before(cursor, chunks)
+                if main and "TRIVIAL" in rule.excluded and screened <= rule.screen and _trivial_beyond_doubt(stable, screened, rule):
+                    return result(False, f"TRIVIAL beyond doubt in the first {screened} attempts")
             else:  # every action simulated: judge the solutions left
                 stable += stable_solution(unjudged.pop(), neighbours, valid, solves)
         (decided,) = seen

@@ -162,3 +162,15 @@ def test_the_record_holds_the_counts_and_their_bounds():
     lo, hi = record["stable"]
     assert SMALL.min_solutions <= lo <= hi < 0.1 * record["attempts"]
     assert record["simulations"] == world.plays and 0.02 < record["solve_rate"] < 0.05
+
+
+def test_a_template_that_allows_trivial_tasks_keeps_one_after_a_few_plays():
+    """PHYRE's templates 00000, 00003, 00005, 00011 and 00024 require GOOD_STABLE and exclude
+    nothing: a task half the actions solve is kept, as soon as 3 stable solutions are known."""
+    rule = Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, screen=100, excluded=())
+    world = World(0.5)
+    result = world.evaluate(rule)
+    assert result.answer and result.given_up is None and "GOOD_STABLE" in result.flags
+    expected, chunks, full_plays = phyres(rule, World(0.5))
+    assert expected and result.chunks == chunks
+    assert world.plays < 50 < full_plays

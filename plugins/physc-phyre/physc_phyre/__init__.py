@@ -71,11 +71,14 @@ class Phyre(SimulatedDomain):
 
     def acceptance_of(self, level: PhyreLevel) -> Acceptance:
         """The rule of the level's tier: two balls with threshold 1e-6, and the task must not
-        be GOOD_STABLE with one ball (PHYRE's two-ball templates all `reject_ball_solvable`)."""
+        be GOOD_STABLE with one ball (PHYRE's two-ball templates all `reject_ball_solvable`);
+        TRIVIAL allowed where the scenario says `mayBeTrivial()`, as some of PHYRE's
+        templates do."""
+        rule = attrs.evolve(self.acceptance, excluded=()) if level.may_be_trivial else self.acceptance
         if level.tier == "BALL":
-            return self.acceptance
+            return rule
         tier = ACTION_TIERS[level.tier]
-        return attrs.evolve(self.acceptance, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(self.acceptance,))
+        return attrs.evolve(rule, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(self.acceptance,))
 
     @staticmethod
     def action_pool(level: PhyreLevel, tier: str, chunk: int, size: int) -> list:

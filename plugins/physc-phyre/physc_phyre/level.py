@@ -155,6 +155,7 @@ class PhyreLevel:
     floor: str = "floor"  # what the scenario calls the floor (the bottom wall)
     relation: str = "TOUCHING"
     solutions: tuple[BallAction | TwoBallAction, ...] = ()
+    may_be_trivial: bool = False  # `mayBeTrivial()`: PHYRE's acceptance does not exclude TRIVIAL (the template's search_params)
 
     def __attrs_post_init__(self):
         names = {b.name for b in self.bodies}
@@ -214,7 +215,8 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
     lifted = {t.objects[0] for t in scenario.restrictions if t.name == "dropped"} if scenario is not None else set()
     if lifted:
         bodies = dropped(bodies, lifted, getattr(layout, "seed", 0))
-    return PhyreLevel(tuple(bodies), (green, target), players(scenario), floor)
+    trivial = scenario is not None and any(t.name == "mayBeTrivial" for t in scenario.restrictions)
+    return PhyreLevel(tuple(bodies), (green, target), players(scenario), floor, may_be_trivial=trivial)
 
 
 def outline_box(body: SceneBody) -> tuple[float, float, float, float]:

@@ -95,6 +95,12 @@ TERMS = tuple(PAPER.values()) + (
         "a starts in the air above where it rests and falls there as the scene starts, before the action (PHYRE's templates drop their objects)",
     ),
     TermSignature(
+        "mayBeTrivial",
+        RESTRICTION,
+        (),
+        "PHYRE's acceptance keeps the task even when random actions solve it trivially often (its templates that do not exclude BALL:TRIVIAL)",
+    ),
+    TermSignature(
         "inside",
         RESTRICTION,
         (Parameter("a", OBJECT, fits="fallableObject"), Parameter("b", OBJECT, fits="container")),

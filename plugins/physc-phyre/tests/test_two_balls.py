@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import random
 
+import attrs
 import pytest
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody, TwoBallAction, actions, benchmark, folds, phyre_format
 from physc_phyre.level import BallAction
@@ -76,6 +77,8 @@ def test_the_acceptance_rule_is_the_tiers():
     first = DOMAIN.action_pool(TWO, "ball", 0, 10)[:3]
     assert all(isinstance(a, BallAction) for a in first) and DOMAIN.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.action_pool(TWO, "two_balls", 0, 10)[0]
     assert any(DOMAIN.valid(TWO, a) for a in first)
+    # `mayBeTrivial()`: the template's search_params exclude no flag (PHYRE's 00000, 00003, …)
+    assert ball.excluded == ("TRIVIAL",) and DOMAIN.acceptance_of(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
 
 
 def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
