@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc_phyre.actions import drops, valid
+from physc_phyre.actions import apart, drops, valid
 from physc_phyre.level import PhyreLevel, TwoBallAction, outline_box
 
 
@@ -44,7 +44,7 @@ def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallActio
         (label1, ball1), (label2, ball2) = one[i], two[j]
         label = f"{level.players[0]}: {label1}; {level.players[1]}: {label2}"
         action = TwoBallAction(attrs.evolve(ball1, aimed_at=label1), attrs.evolve(ball2, aimed_at=label2), label)
-        if valid(level, action):
+        if apart(*action.balls) and valid(level, action):  # as PHYRE's mapper places them
             out.append((label, action))
             if len(out) == len(one):
                 break

@@ -44,8 +44,10 @@ def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
     assert DOMAIN.valid(TWO, far) and not DOMAIN.valid(ONE, far)
     assert DOMAIN.valid(ONE, far.first)
     assert DOMAIN.valid(TWO, far.first)  # the ball tier's action: PHYRE judges a two-ball task by one ball too
-    close = TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8))  # 16 px apart, 17 needed
-    assert not DOMAIN.valid(TWO, close)
+    # Apart is PHYRE's mapper's test, before it rounds to pixels: a pair that close is never
+    # placed (from_unit), and one placed and then rounded closer is simulated as PHYRE does.
+    assert actions.from_unit((40 / 255, 200 / 255, 6 / 30, 56 / 255, 200 / 255, 6 / 30)) is None  # 16 px apart, 17 needed
+    assert DOMAIN.valid(TWO, TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8)))
     on_the_ledge = TwoBallAction(BallAction(40, 200, 8), BallAction(128, 62, 8))
     assert not DOMAIN.valid(TWO, on_the_ledge)  # the second ball occludes the ledge
     with pytest.raises(ValueError, match="places 1 red balls"):
