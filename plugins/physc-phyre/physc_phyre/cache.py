@@ -90,7 +90,7 @@ def chunks(tasks: list[tuple[str, str]], actions: np.ndarray) -> list[sc.Chunk]:
 def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, executor, say) -> list[Path]:
     """Simulate `count` actions on the tasks of each tier (tasks_of) and write each tier's
     cache; the files written."""
-    from physc import budget
+    import physc.budget as budget
     from physc.commands.common import plural
     from physc.files import ensure_folder, write_atomic
 
@@ -121,7 +121,7 @@ def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, ex
 
 
 def main(argv: list[str] | None = None) -> int:
-    from physc import budget
+    import physc.budget as budget
     from physc.commands.common import EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE, UsageError
     from physc.commands.running import executor_from
     from physc.diagnostics import safe
