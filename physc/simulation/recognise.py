@@ -28,7 +28,8 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
 * destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
 * touch(a, b): the trace's goal bodies a and b (`Trace.goal`) touch without a break for
   at least touch_time (PHYRE's goal: 3 s), recognised when the time is up; only in a
-  domain that sets touch_time.
+  domain that sets touch_time. Where the domain's rules time their goal (`Trace.goal_met`),
+  the touch is theirs: rules may judge touching by more than contacts (PHYRE's two balls).
 
 An interaction equal to the one just before it (one roll over two contact
 intervals, a double hit) is reported once.
@@ -109,6 +110,8 @@ class Recogniser:
         if self.touch_time is None or len(trace.goal) < 2:
             return []
         a, b = trace.goal[:2]
+        if trace.goal_met is not None:  # the rules timed their own verdict: it is the touch
+            return [Interaction("touch", (a, b), None, trace.goal_met)]
         dt, out = trace.dt, []
         for begin, end in intervals.get(frozenset((a, b)), ()):
             # Steps touching: to the separation, or, for a touch the run ended in, its last step too.

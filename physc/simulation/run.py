@@ -73,6 +73,12 @@ class RunRules:
         """Whether the run met the domain's goal (read once, after the run)."""
         return False
 
+    def goal_met(self, recording: Recording) -> float | None:
+        """When the run met the domain's goal, for rules that time it (None: untimed, or not
+        met). The recogniser's `touch` is then the rules' own verdict, even where they judge
+        touching by more than the engine's contacts (PHYRE's two balls)."""
+        return None
+
     def resume(self, world, snapshot: Snapshot) -> None:
         """The run goes on from `snapshot` (after `on_start`): set the state the events
         before it leave (the default: the rules keep none)."""

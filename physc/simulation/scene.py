@@ -59,7 +59,7 @@ def play(
     recorded = run(world, dynamic, rules, seconds, scene.dt, resume)
     trace = Trace(
         scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
-        recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded),
+        recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded), goal_met=rules.goal_met(recorded),
     )
     if not recognise:
         return trace

@@ -98,6 +98,7 @@ class Trace:
     solved: bool = False  # whether the domain's goal was met (angrybirds: every pig destroyed)
     interactions: tuple[Interaction, ...] = ()
     violations: tuple[Violation, ...] = ()
+    goal_met: float | None = None  # when the rules judged the goal met, where they time it (PHYRE: the touch held 3 s)
 
     @property
     def steps(self) -> int:

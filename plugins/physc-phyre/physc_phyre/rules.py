@@ -49,6 +49,7 @@ class GoalRules(RunRules):
         self.held = 0  # steps in a row that the goal has held
         self.still = 0  # steps in a row that nothing moved
         self.met = False
+        self.met_at = 0.0
 
     @classmethod
     def of(cls, level) -> GoalRules:
@@ -68,7 +69,7 @@ class GoalRules(RunRules):
     def finished(self, values: list, alive: set, time: float) -> bool:
         self.held = self.held + 1 if self.touching() else 0
         if self.held >= GOAL_STEPS:
-            self.met = True
+            self.met, self.met_at = True, time
             return True
         moving = any(abs(v[3]) + abs(v[4]) + abs(v[5]) > STILL_SPEED for v in values)
         self.still = 0 if moving or self.held else self.still + 1
@@ -90,3 +91,7 @@ class GoalRules(RunRules):
 
     def solved(self, recording) -> bool:
         return self.met
+
+    def goal_met(self, recording) -> float | None:
+        """The time the goal had held for 3 s: the recogniser's `touch(green, target)`."""
+        return self.met_at if self.met else None

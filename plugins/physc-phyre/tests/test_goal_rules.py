@@ -59,3 +59,14 @@ def test_going_on_from_a_snapshot_counts_the_steps_the_balls_were_within_reach()
     snapshot = Snapshot.of(full, 100)
     resumed = _run(level, resume=snapshot)
     assert resumed.solved and resumed.steps == full.steps == GOAL_STEPS  # the 100 steps before it counted
+
+
+def test_the_recognised_touch_is_the_rules_verdict():
+    """Balls within PHYRE's tenth of a pixel never make a Box2D contact, yet the goal holds:
+    the recognised `touch(green, blue)` is the rules' own, at the time it had held 3 s, so a
+    task whose goal PHYRE's rule meets realises its declared `touch`."""
+    level = _balls(0.05)
+    trace = play(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER)
+    assert trace.solved and trace.goal_met == pytest.approx(GOAL_STEPS / 60)
+    assert [(i.name, i.objects, i.time) for i in trace.interactions if i.name == "touch"] == [("touch", ("green", "blue"), trace.goal_met)]
+    assert _run(_balls(0.2)).goal_met is None
