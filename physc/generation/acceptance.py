@@ -118,7 +118,7 @@ class Verdict:
 
     @property
     def accepted(self) -> bool:
-        return self.solution_stable and self.main is not None and self.main.answer and not any(t.answer for t in self.excluded)
+        return self.solution_stable and self.main is not None and self.main.answer and not any(t.answer or t.given_up for t in self.excluded)
 
     @property
     def flags(self) -> list[str]:
@@ -130,13 +130,16 @@ class Verdict:
 
     @property
     def reason(self) -> str:
-        """Why the task is not kept ('' when it is): unstable, trivial, solvable, not_good."""
+        """Why the task is not kept ('' when it is): unstable, solvable, undecided (an easier
+        tier's rule did not decide within its chunks), trivial, not_good."""
         if self.accepted:
             return ""
         if not self.solution_stable:
             return "unstable"
         if any(t.answer for t in self.excluded):
             return "solvable"
+        if any(t.given_up for t in self.excluded):
+            return "undecided"
         return "trivial" if self.trivial else "not_good"
 
     def record(self) -> dict:
@@ -346,7 +349,7 @@ def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: C
     excluded = []
     for other in rule.unsolvable_in:
         excluded.append(evaluate(other, lambda chunk, r=other: pool(r, chunk), valid, counted, neighbours, main=False))
-        if excluded[-1].answer:
+        if excluded[-1].answer or excluded[-1].given_up:  # solvable there, or not shown unsolvable: not kept
             return Verdict(True, None, tuple(excluded), plays[0])
     main = evaluate(rule, lambda chunk: pool(rule, chunk), valid, counted, neighbours)
     return Verdict(True, main, tuple(excluded), plays[0])

@@ -166,7 +166,7 @@ class Search(Robustness, Guards, Snapshots):
         accepting = time.perf_counter()
         verdict = judged(self.domain, level, attempt.label, attempt.action, self.evaluator) if self.acceptance else None
         if verdict is not None and not verdict.accepted:
-            why = {"unstable": reasons.UNSTABLE_SOLUTION, "trivial": reasons.TRIVIAL, "solvable": reasons.SOLVABLE}
+            why = {"unstable": reasons.UNSTABLE_SOLUTION, "trivial": reasons.TRIVIAL, "solvable": reasons.SOLVABLE, "undecided": reasons.UNDECIDED}
             return self.give_up(why.get(verdict.reason, reasons.NOT_GOOD))
         solution = self.domain.solution(attempt.label, attempt.action)
         parts = Parts(

@@ -24,6 +24,7 @@ TRIVIAL = "random actions solve it too often (TRIVIAL)"
 NOT_GOOD = "random actions do not solve it (not GOOD_STABLE)"
 UNSTABLE_SOLUTION = "the solution's neighbours do not all solve it"
 SOLVABLE = "an easier tier's random actions solve it (GOOD_STABLE there)"
+UNDECIDED = "an easier tier's random actions did not show it unsolvable within the chunks allowed"
 
 
 @attrs.frozen

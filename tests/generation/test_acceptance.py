@@ -127,10 +127,12 @@ def test_a_task_never_solved_is_given_up_after_the_chunks_physc_allows():
     assert result.counts.solved[0] == 0
 
 
-def judged_in_two_tiers(ball: World, two_balls: World):
-    """A two-ball task's verdict: actions are (tier, number), each tier's its own world."""
+def judged_in_two_tiers(ball: World, two_balls: World, ball_chunks: int = 20):
+    """A two-ball task's verdict: actions are (tier, number), each tier's its own world. With
+    no one-ball solution, BAD_STABLE needs 15,000 valid attempts at this threshold."""
     worlds = {"ball": ball, "two_balls": two_balls}
-    rule = Acceptance(threshold=1e-5, tier="two_balls", min_valid=1000, chunk=1000, screen=100, unsolvable_in=(SMALL,))
+    ball_rule = Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, screen=100, max_chunks=ball_chunks)
+    rule = Acceptance(threshold=1e-5, tier="two_balls", min_valid=1000, chunk=1000, screen=100, unsolvable_in=(ball_rule,))
     return judge(
         rule, INTENDED, lambda r, chunk: [(r.tier, u) for u in worlds[r.tier].pool(chunk)],
         lambda a: a == INTENDED or worlds[a[0]].valid(a[1]), lambda a: a == INTENDED or worlds[a[0]].solves(a[1]),
@@ -144,8 +146,12 @@ def test_a_task_solvable_in_an_easier_tier_is_rejected_before_its_own_is_judged(
     verdict = judged_in_two_tiers(World(0.02), two_balls)
     assert not verdict.accepted and verdict.reason == "solvable" and verdict.main is None
     assert verdict.record()["unsolvable_in"][0]["tier"] == "ball" and two_balls.plays == 0
-    kept = judged_in_two_tiers(World(0.0), World(0.02, seed=1))  # one ball never solves it
+    kept = judged_in_two_tiers(World(0.0), World(0.02, seed=1))  # one ball never solves it: BAD_STABLE
     assert kept.accepted and not kept.excluded[0].answer and kept.main.tier == "two_balls"
+    assert kept.excluded[0].chunks == 15 and "BAD_STABLE" in kept.excluded[0].flags
+    # Not shown unsolvable with one ball within the chunks allowed: not kept (PHYRE would draw on)
+    undecided = judged_in_two_tiers(World(0.0), World(0.02, seed=1), ball_chunks=4)
+    assert not undecided.accepted and undecided.reason == "undecided" and undecided.main is None
 
 
 def test_an_unstable_intended_solution_is_rejected_without_drawing():

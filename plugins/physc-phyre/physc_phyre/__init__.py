@@ -35,6 +35,11 @@ THRESHOLDS = {"ball": 1e-5, "two_balls": 1e-6}
 # A level's tier (task.thrift's `tier`) → the action tier that judges it.
 ACTION_TIERS = {"BALL": "ball", "TWO_BALLS": "two_balls"}
 BALLS = {"ball": 1, "two_balls": 2}  # red balls an action of the tier places
+# PHYRE decides a two-ball task's ball tier first and draws until it is decided: with no
+# stable one-ball solution, BAD_STABLE needs about 150,000 valid attempts (P[X = 0] < 0.05 at
+# twice 1e-5), with one about 237,000; physc allows 30 chunks (300,000 attempts) before it
+# gives the task up.
+BALL_CHUNKS_FOR_TWO_BALLS = 30
 
 __all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
 
@@ -78,7 +83,8 @@ class Phyre(SimulatedDomain):
         if level.tier == "BALL":
             return rule
         tier = ACTION_TIERS[level.tier]
-        return attrs.evolve(rule, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(self.acceptance,))
+        ball = attrs.evolve(self.acceptance, max_chunks=BALL_CHUNKS_FOR_TWO_BALLS)
+        return attrs.evolve(rule, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(ball,))
 
     @staticmethod
     def action_pool(level: PhyreLevel, tier: str, chunk: int, size: int) -> list:
