@@ -13,13 +13,15 @@ the ball by σ = 0.5 px: PHYRE's own test of a stable solution moves it by half 
 
 from __future__ import annotations
 
+import functools
 import math
 import random
 
-from physc.backends import Circle, parts
+import numpy as np
 
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, outline_box
-from physc_phyre.world import SCENE, outline
+from physc_phyre.task_file import written
+from physc_phyre.world import SCENE
 
 RADII = (8, 16, 26)  # pixels
 GAPS = (4, 70)  # pixels between the ball and the target's top when dropped
@@ -165,27 +167,118 @@ def moved(action, shift):
     return balls[0] if len(balls) == 1 else TwoBallAction(*balls, action.aimed_at)
 
 
+# PHYRE's occlusion test, the one `simulate_action` makes before it simulates (an occluding ball:
+# INVALID_INPUT): src/simulator/image_to_box2d.cpp's doesBallOccludeBody (lines 210-228) with
+# src/simulator/geometry.h's helpers (lines 19-163), in the C++ float arithmetic PHYRE computes
+# it in; docs/phyre-facts.md, "Invalid actions".
+INSIDENESS_EPS = np.float32(1e-5)  # px, kInsidenessEps (geometry.h:20): a ball may sink this far into a body, a touch
+ZERO_LENGTH_EDGE_EPS = np.float32(1e-4)  # px², kZeroLengthEdgeEps (geometry.h:19): a polygon's edge this short (squared) is a point
+EXACT_WITHIN = 1e-3  # px: a ball this near a touch is judged in PHYRE's float arithmetic (its rounding is under 1e-4 px here)
+F32 = np.float32
+_EPS = float(INSIDENESS_EPS)  # the same, for the test in doubles
+
+
 def _overlaps(body: SceneBody, x: float, y: float, radius: float) -> bool:
-    """Whether a ball at (x, y) overlaps `body` by more than a touch (1e-5 px, PHYRE's)."""
-    c, s = math.cos(body.angle), math.sin(body.angle)
-    dx, dy = x - body.x, y - body.y
+    """Whether a ball at (x, y) occludes `body` by PHYRE's rule (doesBallOccludeBody), against
+    the body as its task file gives it to PHYRE (numbers rounded to 1e-6 px): a circle when the
+    centres lie closer than the radii's sum less INSIDENESS_EPS; a convex polygon when the
+    ball's centre is strictly inside it (its vertices counter-clockwise) or nearer its edges
+    than the radius less INSIDENESS_EPS. Touching is fine. The test runs in doubles; a ball
+    within EXACT_WITHIN of a touch is judged again in PHYRE's float32 arithmetic, which
+    settles it."""
+    return _occludes(_as_phyre_reads(body), x, y, radius)
+
+
+def _occludes(body: tuple, x: float, y: float, radius: float) -> bool:
+    """`_overlaps` on a body as PHYRE reads it: (x, y, angle, shapes), `_as_phyre_reads`."""
+    px, py, angle, shapes = body
+    dx, dy = x - px, y - py
+    c, s = math.cos(angle), math.sin(angle)
     lx, ly = dx * c + dy * s, -dx * s + dy * c  # the ball's centre in the body's frame
-    for part in parts(outline(body.shape, body.size)):
-        if isinstance(part, Circle):
-            if math.hypot(lx, ly) + 1e-5 < part.radius + radius:
+    for shape in shapes:
+        if isinstance(shape, float):  # a circle about the body's position (PHYRE ignores any offset)
+            margin = math.hypot(dx, dy) + _EPS - (radius + shape)
+            exact = _phyre_circle
+        else:
+            if _strictly_inside(shape, lx, ly):
                 return True
-        elif _distance(part.points, lx, ly) + 1e-5 < radius:
+            margin = _edge_distance(shape, lx, ly) + _EPS - radius
+            exact = _phyre_polygon
+        if margin < -EXACT_WITHIN or (margin <= EXACT_WITHIN and exact(shape, px, py, angle, x, y, radius)):
             return True
     return False
 
 
-def _distance(points, x: float, y: float) -> float:
-    """The distance from (x, y) to a convex polygon (0 inside)."""
-    inside, nearest = True, math.inf
+@functools.lru_cache(maxsize=4096)
+def _as_phyre_reads(body: SceneBody) -> tuple:
+    """(x, y, angle, shapes) of `body` as its task file writes them (task_file.written): each
+    shape a circle's radius (a float) or a polygon's vertices about the position."""
+    return _reads(written(body))
+
+
+def _reads(data: dict) -> tuple:
+    """(x, y, angle, shapes) of a body of a task file (task_file.py's structure)."""
+    shapes = tuple(
+        float(shape["circle"]["radius"]) if "circle" in shape else tuple((v["x"], v["y"]) for v in shape["polygon"]["vertices"])
+        for shape in data["shapes"]
+    )
+    return data["position"]["x"], data["position"]["y"], data["angle"], shapes
+
+
+def _strictly_inside(points, x: float, y: float) -> bool:
+    """geometry.h's isInsidePolygon (lines 131-142): (x, y) left of every edge, none on it
+    (a polygon listed clockwise has no inside)."""
+    for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points):
+        if (x1 - x0) * (y - y0) - (y1 - y0) * (x - x0) <= 0:
+            return False
+    return True
+
+
+def _edge_distance(points, x: float, y: float) -> float:
+    """The distance from (x, y) to a polygon's nearest edge."""
+    nearest = math.inf
     for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
         ex, ey = x1 - x0, y1 - y0
-        if ex * (y - y0) - ey * (x - x0) < 0:
-            inside = False
         t = max(0.0, min(1.0, ((x - x0) * ex + (y - y0) * ey) / (ex * ex + ey * ey)))
         nearest = min(nearest, math.hypot(x - x0 - t * ex, y - y0 - t * ey))
-    return 0.0 if inside else nearest
+    return nearest
+
+
+def _phyre_circle(circle_radius: float, px: float, py: float, angle: float, x: float, y: float, radius: float) -> bool:
+    """geometry.h's isPointInsideCircle(ball, body position, r + circle radius) (lines 158-163),
+    in its float arithmetic."""
+    return F32(np.sqrt(_square_distance(x, y, px, py))) + INSIDENESS_EPS < F32(radius + circle_radius)
+
+
+def _phyre_polygon(points, px: float, py: float, angle: float, x: float, y: float, radius: float) -> bool:
+    """geometry.h's doesBallOccludePolygon (lines 144-156) on the ball's centre in the body's
+    frame (reverseTranslatePoint, lines 57-62: the angle a float, its cosine and sine floats,
+    the rest doubles), in PHYRE's float arithmetic."""
+    a = -float(F32(angle))
+    c, s = float(F32(math.cos(a))), float(F32(math.sin(a)))
+    tx, ty = x - px, y - py
+    qx, qy = tx * c - ty * s, tx * s + ty * c
+    if all(F32((x1 - x0) * (qy - y0) - (y1 - y0) * (qx - x0)) > 0 for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points)):
+        return True
+    best = min(_square_distance_to_segment(p0, p1, qx, qy) for p0, p1 in zip(points[-1:] + points[:-1], points))
+    return F32(np.sqrt(best)) + INSIDENESS_EPS < F32(radius)
+
+
+def _square_distance(x0: float, y0: float, x1: float, y1: float):
+    """geometry.h's squareDistance (lines 73-78): the differences as floats, squared and summed in floats."""
+    dx, dy = F32(x0 - x1), F32(y0 - y1)
+    return dx * dx + dy * dy
+
+
+def _square_distance_to_segment(left, right, x: float, y: float):
+    """geometry.h's squareDistanceToSegment (lines 101-116), in its float arithmetic."""
+    (lx, ly), (rx, ry) = left, right
+    ex, ey = rx - lx, ry - ly
+    projection = F32(ex * (x - lx) + ey * (y - ly))
+    length2 = _square_distance(lx, ly, rx, ry)
+    if projection < 0 or length2 < ZERO_LENGTH_EDGE_EPS:
+        return _square_distance(lx, ly, x, y)
+    if projection > length2:
+        return _square_distance(rx, ry, x, y)
+    num = F32(ey * x - ex * y + rx * ly - ry * lx)
+    return num * num / length2

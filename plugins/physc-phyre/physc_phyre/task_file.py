@@ -73,6 +73,12 @@ def _body(body: SceneBody) -> dict:
     }
 
 
+def written(body: SceneBody) -> dict:
+    """`body` as its task file gives it to PHYRE (numbers rounded to 1e-6 px): `position`,
+    `angle` and `shapes`, what PHYRE's occlusion test reads (actions.py)."""
+    return _body(body)
+
+
 def _walls() -> list[dict]:
     half = SCENE / 2
     places = ((half, -WALL / 2, SCENE, WALL), (-WALL / 2, half, WALL, SCENE), (half, SCENE + WALL / 2, SCENE, WALL), (SCENE + WALL / 2, half, WALL, SCENE))
