@@ -6,8 +6,9 @@ carries an object is at least three of its widths long, so the object can rest i
 left, middle or right third; a surface something rolls or slides on is long enough to
 gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a surface for a bounce
 tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
-wall stands the scene's height against the edge its toucher heads for; a green stick and a post
-stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
+wall stands the scene's height against the edge its toucher heads for; a purple pad lies on the
+floor, placed against that edge (the search may move it along the floor to where the green
+object comes down, as PHYRE's lies anywhere on it); a green stick and a post stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
 See-saws, teeters, cradles and purple ramps are furniture (furniture.py); the support of an
 object under `cradled(a)` is a cradle.
 """
@@ -30,6 +31,8 @@ LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)
 TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
+# A purple pad lying on the floor (PHYRE's 00007: 0.2 of the scene; 00019: 0.1-0.2).
+PAD_LENGTH = (26.0, 51.0)
 # Bars standing upright: a green or gray stick (PHYRE's templates 00003, 00009, 00017: 0.2-0.5
 # of the scene) and a black post.
 UPRIGHT = {"greenStick": (51.0, 128.0), "grayStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
@@ -90,6 +93,11 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
             side = _heading_to(scenario, name) or rng.choice(("left", "right"))
             x = BAR_HEIGHT / 2 if side == "left" else SCENE - BAR_HEIGHT / 2
             bodies[name] = Body(name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT, 90.0), fixed=(x, SCENE / 2))
+        elif concrete == "purplePad":  # on the floor against the edge its toucher heads for
+            side = _heading_to(scenario, name) or rng.choice(("left", "right"))
+            length = round(rng.uniform(*PAD_LENGTH), 1)
+            x = length / 2 if side == "left" else SCENE - length / 2
+            bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT), fixed=(x, BAR_HEIGHT / 2))
         elif concrete in UPRIGHT:
             length = round(rng.uniform(*UPRIGHT[concrete]), 1)
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, 90.0))

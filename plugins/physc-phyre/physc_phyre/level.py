@@ -37,6 +37,7 @@ KINDS = {
     "upsideDownJar": ("jar", "gray", True),  # turned 180°
     "purpleBar": ("bar", "purple", False),
     "purpleFloor": ("bar", "purple", False),
+    "purplePad": ("bar", "purple", False),  # a short bar lying on the floor
     "ball": ("ball", "gray", True),
     "bar": ("bar", "gray", True),
     "jar": ("jar", "gray", True),

@@ -37,6 +37,7 @@ CONCRETE_OBJECTS = (
     ConcreteObject("blueBallInJar", description="a blue ball lying in a gray jar (PHYRE's templates 00018, 00022, 00023), the dynamic object the green one must touch"),
     ConcreteObject("greenBallInJar", description="the green goal ball lying in a gray jar (PHYRE's templates 00005, 00010)"),
     ConcreteObject("upsideDownJar", description="a gray jar turned upside down (PHYRE's templates 00006, 00018)"),
+    ConcreteObject("purplePad", static=True, description="a purple bar 0.1-0.2 of the scene long lying on the floor (PHYRE's templates 00007, 00019), the static object the green one must touch"),
     ConcreteObject("purpleBar", static=True, description="a purple static bar, the static object the green one must touch"),
     ConcreteObject("purpleFloor", static=True, description="a purple bar over the whole floor, the static object the green one must touch"),
     ConcreteObject("ball", description="a gray ball"),
@@ -59,7 +60,7 @@ OBJECT_TERMS = (
     ObjectTerm("greenObject", ("greenBall", "greenBar", "greenStick", "greenBallInJar"), "green", noun="the green object"),
     ObjectTerm(
         "targetObject",
-        ("purpleFloor", "purpleBar", "purpleWall", "purpleBall", "purpleJar", "purpleRamp", "blueBall", "blueBar", "blueJar", "blueBallInJar", "blueSeesaw"),
+        ("purpleFloor", "purpleBar", "purplePad", "purpleWall", "purpleBall", "purpleJar", "purpleRamp", "blueBall", "blueBar", "blueJar", "blueBallInJar", "blueSeesaw"),
         "target",
         noun="the object the green one must touch",
     ),
