@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 import random
+from pathlib import Path
 
 import pytest
 from physc.compiler.concrete_layout import PlacedObject
@@ -106,3 +107,26 @@ def test_the_layouts_furniture_and_restrictions_reach_the_level():
     level = level_from_layout(Layout, None)
     assert {b.name for b in level.bodies} == {"target", "target_fulcrum", "green"}
     assert level.goal == ("green", "target")
+
+
+def test_a_purple_pad_lies_on_the_floor_against_the_edge_and_the_ball_stays_on_it():
+    """PHYRE's 00019 (and 00007): the target is a short purple bar lying on the floor; the
+    layout puts it against an edge, and a ball come down onto it stays on it."""
+    from physc.domains import load_domain
+    from physc.domains.words import INSTALLED
+    from physc.dsl.frontend import analyze
+    from physc.generation.pipeline import Pipeline
+
+    from physc_phyre.concretize import PAD_LENGTH
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "phyre" / "task00019.phys"
+    (scenario,) = analyze(str(path), INSTALLED).scenarios
+    for seed in range(3):
+        layout = Pipeline(load_domain("phyre"), scenario, seed).placed.layout
+        pad = level_from_layout(layout, scenario).body("target")
+        assert (pad.shape, pad.color, pad.dynamic, pad.angle) == ("bar", "purple", False, 0.0)
+        assert PAD_LENGTH[0] <= pad.size <= PAD_LENGTH[1] and pad.y == pytest.approx(BAR_HEIGHT / 2)
+        assert min(pad.x - pad.size / 2, 256 - pad.x - pad.size / 2) == pytest.approx(0.0, abs=1e-3)
+    ball = SceneBody("green", "ball", pad.x, BAR_HEIGHT + 40.0, 0.0, 12.5, "green", True)
+    end = end_of(PhyreLevel((pad, ball), ("", "")), "green")
+    assert abs(end[0] - pad.x) < pad.size / 2 + 12.5 and end[1] == pytest.approx(BAR_HEIGHT + 12.5, abs=0.5)
