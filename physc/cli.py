@@ -52,13 +52,15 @@ def build_parser() -> argparse.ArgumentParser:
     # when given there (SUPPRESS), so its defaults never undo the top level's.
     top = argparse.ArgumentParser(add_help=False)
     top.add_argument("--color", choices=("auto", "always", "never"), default="auto", help="colour diagnostics")
+    top.add_argument("--no-color", dest="color", action="store_const", const="never", help="the same as --color never")
     top.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument("--color", choices=("auto", "always", "never"), default=argparse.SUPPRESS, help="colour diagnostics")
+    common.add_argument("--no-color", dest="color", action="store_const", const="never", default=argparse.SUPPRESS, help="the same as --color never")
     common.add_argument("--traceback", action="store_true", default=argparse.SUPPRESS, help="show Python tracebacks of internal errors")
 
     parser = Parser(prog="physc", description="Compile physical scenarios (.phys) into physics tasks.", epilog=EXIT_STATUSES, parents=[top])
-    parser.add_argument("--version", action="version", version=f"physc {__version__}")
+    parser.add_argument("-V", "--version", action="version", version=f"physc {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
 
     check = commands.add_parser("check", parents=[common], help="check .phys files and report every problem")
@@ -91,7 +93,10 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument(
         "--budget", type=arguments.count, default=50_000, metavar="N", help="clause choices the layout search may try (default 50000)"
     )
-    compile_.add_argument("--format", choices=("json", "dot", "xml"), help="json (default), dot (Graphviz, for graph stages), xml (levels)")
+    compile_.add_argument(
+        "--format", choices=("json", "dot", "xml"),
+        help="the printed stage's format: by default its own (a level: the domain's level file; the other stages: json); dot (Graphviz) for graph stages",
+    )
     compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")
     compile_.set_defaults(run=cmd_compile)
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import os
 import sys
 from typing import Sequence
@@ -17,12 +18,18 @@ class UsageError(Exception):
     pass
 
 
+NEGATIVE_VALUE = re.compile(r"^-\d*\.?\d+([eE][-+]?\d+)?(,.*)?$")  # -3, -.5, -1.62,4.61, -3.5,-0.8,high
+
+
 class Parser(argparse.ArgumentParser):
     """physc's argument parser: every command's help ends with the exit statuses."""
 
     def __init__(self, *args, **kwargs):
         kwargs.setdefault("epilog", EXIT_STATUSES)
         super().__init__(*args, **kwargs)
+        # A value that starts with a negative number is a value, not an option: `--shot
+        # -1.62,4.61` (argparse alone takes only a bare number such as -1.62 for one).
+        self._negative_number_matcher = NEGATIVE_VALUE
 
     def error(self, message):  # argparse's own errors: usage, exit 2
         self.print_usage(sys.stderr)

@@ -160,7 +160,7 @@ def add_commands(commands, common) -> None:
     def level_arguments(parser):
         parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
         shot = parser.add_mutually_exclusive_group()
-        shot.add_argument("--shot", type=arguments.shot, metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory; write --shot=-9,0.5 for a negative X")
+        shot.add_argument("--shot", type=arguments.shot, metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory (a negative X as it is: --shot -9,0.5)")
         shot.add_argument("--angle", type=arguments.angle, metavar="DEG", help="shoot at a release angle (degrees)")
         parser.add_argument(
             "--seconds", type=arguments.seconds, default=10.0, metavar="S",

@@ -16,8 +16,9 @@ SF = EXAMPLES / "paper" / "01_SF.phys"
 ALL = EXAMPLES / "paper" / "all.paper.phys"
 
 
-def test_version(physc):
-    run = physc("--version")
+@pytest.mark.parametrize("flag", ["--version", "-V"])
+def test_version(physc, flag):
+    run = physc(flag)
     assert run.status == 0 and run.stdout.strip() == f"physc {__version__}"
 
 
@@ -66,6 +67,25 @@ def test_diagnostic_text_matches_the_specification(physc):
 def test_color_always_paints(physc):
     run = physc("check", "--color", "always", EXAMPLES / "errors" / "E0203_type_mismatch.phys")
     assert "\033[1;31merror[E0203]" in run.stderr
+
+
+@pytest.mark.parametrize("where", ["before", "after"])
+def test_no_color_before_or_after_the_command(physc, where):
+    """`--no-color` is `--color never`, at the top level or the command's, even over an
+    earlier --color always."""
+    bad = EXAMPLES / "errors" / "E0203_type_mismatch.phys"
+    args = ("--color", "always", "--no-color", "check", bad) if where == "before" else ("check", "--color", "always", "--no-color", bad)
+    run = physc(*args)
+    assert run.status == 1 and "error[E0203]" in run.stderr and "\033[" not in run.stderr
+
+
+def test_a_negative_shot_is_a_value_not_an_option(physc):
+    """Most solutions aim left of the sling: `--shot -3.5,-0.8,high` as typed, no `=` needed."""
+    from conftest import TEMPLATES
+
+    run = physc("simulate", TEMPLATES[0], "--shot", "-3.5,-0.8,high", "--seconds", "1")
+    assert run.status == 0, run.stderr
+    assert "shot (-3.5, -0.8), high" in run.stdout
 
 
 @pytest.mark.parametrize("stage", ["ast", "scenario"])
