@@ -10,7 +10,8 @@ wall stands the scene's height against the edge its toucher heads for; a purple 
 floor, placed against that edge (the search may move it along the floor to where the green
 object comes down, as PHYRE's lies anywhere on it); a green stick and a post stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
 See-saws, teeters, cradles and purple ramps are furniture (furniture.py); the support of an
-object under `cradled(a)` is a cradle.
+object under `cradled(a)` is a cradle, of one under `pegged(a)` a row of pegs, as long as the
+black bar it stands for would be.
 """
 
 from __future__ import annotations
@@ -81,13 +82,18 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
     for support, loads in carried.items():
         if cradled & set(loads) and support in chosen and chosen[support] == "blackBar":
             chosen[support] = "cradle"
+    # `pegged(a)`: the support the layout gave a is a row of pegs (furniture.py).
+    pegged = {t.objects[0] for t in scenario.restrictions if t.name == "pegged"}
+    for support, loads in carried.items():
+        if pegged & set(loads) and support in chosen and chosen[support] == "blackBar":
+            chosen[support] = "pegRow"
     bodies: dict[str, Body] = {}
     # Objects first: a ledge's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: n.static):
         name, concrete = node.name, chosen[node.name]
         if concrete == "floor":
             bodies[name] = Body(name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2))
-        elif concrete in furniture.KINDS:
+        elif concrete in furniture.KINDS and concrete != "pegRow":
             bodies[name] = Body(name, node.role, concrete, furniture.geometry(concrete, rng, _heading_to(scenario, name)))
         elif concrete == "purpleWall":  # upright against the edge its toucher heads for
             side = _heading_to(scenario, name) or rng.choice(("left", "right"))
@@ -110,11 +116,13 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
             else:
                 angle = rng.uniform(*incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
-        elif concrete in ("blackBar", "purpleBar") and node.static:
+        elif concrete in ("blackBar", "purpleBar", "pegRow") and node.static:
             widest = max((_across(bodies[o].geometry) for o in carried.get(name, ()) if o in bodies), default=0.0)
             low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else TARGET_LENGTH if concrete == "purpleBar" else BAR_LENGTH
             low = max(low, 3 * widest + 6.0)
-            bodies[name] = Body(name, node.role, concrete, Geometry(round(rng.uniform(low, max(high, low + 30.0)), 1), BAR_HEIGHT))
+            length = round(rng.uniform(low, max(high, low + 30.0)), 1)
+            geometry = furniture.peg_row(length) if concrete == "pegRow" else Geometry(length, BAR_HEIGHT)
+            bodies[name] = Body(name, node.role, concrete, geometry)
         else:
             shape = KINDS[concrete][0]
             size = round(rng.uniform(*HOLDING_HEIGHT), 1) if concrete in HELD else _size(shape, rng)

@@ -11,6 +11,9 @@ working part (docs/phyre-sources.md, section 7):
 * a cradle: two short static bars tilted ±5° meeting in a shallow V, which holds a ball until
   it is struck sideways (00015; `cradle`);
 * a purple bar that is a slope (00010's and 00011's tilted targets; `purpleRamp`);
+* a peg row: small static black balls in a level row, close enough for a ball to rest and
+  roll on them (00012's and 00013's "stars"; `pegRow`, the support of an object under
+  `pegged(a)`);
 * a jar over an object, or an object in a jar (00018's cover jar over the green ball, 00005's
   green ball in a jar; the restriction `inside(a, jar)`).
 
@@ -38,6 +41,9 @@ CRADLE_TILT = 5.0  # degrees, 00015's two bars
 CRADLE_BAR = (13.0, 26.0)  # px, each bar: 0.05-0.1 of the scene
 PURPLE_RAMP_LENGTH = (80.0, 150.0)  # px
 PURPLE_RAMP_TILT = (10.0, 30.0)  # degrees, rising towards the way its toucher comes (00011: 15-30)
+PEG = 5.5  # px, a peg's radius (00012's stars: scale 0.04)
+PEG_SPACING = 18.0  # px between pegs' centres at most: a ball of radius 7.5 or more rests on them
+PEG_ROW_LENGTH = (50.0, 90.0)  # px, when concretize does not say
 COVER_FIT = 0.21  # a covered ball's radius is this share of its cover jar's height (00018: 6.5 / 30.7)
 
 # concrete object → (colour of the main body, whether it moves)
@@ -47,8 +53,9 @@ KINDS = {
     "teeter": ("gray", True),
     "cradle": ("black", False),
     "purpleRamp": ("purple", False),
+    "pegRow": ("black", False),
 }
-SUFFIXES = ("_fulcrum", "_end", "_right")  # the parts other than the main body
+SUFFIXES = ("_fulcrum", "_end", "_right", "_peg")  # the parts other than the main body
 
 
 def geometry(concrete: str, rng: random.Random, heading: str | None = None) -> Geometry:
@@ -66,7 +73,14 @@ def geometry(concrete: str, rng: random.Random, heading: str | None = None) -> G
         tilt = rng.uniform(*PURPLE_RAMP_TILT)
         sign = {"right": 1, "left": -1}.get(heading) or rng.choice((-1, 1))
         return Geometry(round(rng.uniform(*PURPLE_RAMP_LENGTH), 1), BAR_HEIGHT, round(sign * tilt, 2))
+    if concrete == "pegRow":
+        return peg_row(round(rng.uniform(*PEG_ROW_LENGTH), 1))
     raise ValueError(f"no furniture '{concrete}'")
+
+
+def peg_row(length: float) -> Geometry:
+    """The outline box of a row of pegs about `length` long."""
+    return Geometry(max(length, 2 * PEG + PEG_SPACING), 2 * PEG)
 
 
 def bodies(placed, body_class) -> list:
@@ -93,6 +107,12 @@ def bodies(placed, body_class) -> list:
         ]
     if placed.concrete == "purpleRamp":
         return [body_class(name, "bar", round(cx, 3), round(placed.y, 3), round(math.radians(placed.rotation), 6), placed.width, color, False)]
+    if placed.concrete == "pegRow":  # evenly spread over the box, the outermost at its ends
+        gaps = math.ceil((placed.width - 2 * PEG) / PEG_SPACING - 1e-9)
+        step = (placed.width - 2 * PEG) / gaps
+        left, y = cx - placed.width / 2 + PEG, round(bottom + PEG, 3)
+        names = [name] + [f"{name}_peg{k}" for k in range(1, gaps + 1)]
+        return [body_class(n, "ball", round(left + k * step, 3), y, 0.0, PEG, color, False) for k, n in enumerate(names)]
     raise ValueError(f"no furniture '{placed.concrete}'")
 
 

@@ -52,6 +52,7 @@ CONCRETE_OBJECTS = (
     ConcreteObject("blueSeesaw", description="a blue bar balanced on a black static fulcrum ball (PHYRE's template 00004), the dynamic object the green one must touch"),
     ConcreteObject("teeter", description="a gray bar lying level on two black static fulcrum balls, under its middle and its right end: it tips when its left half is weighed down (PHYRE's template 00021)"),
     ConcreteObject("cradle", static=True, description="two short black static bars tilted 5° into a shallow V, which holds a ball (PHYRE's template 00015)"),
+    ConcreteObject("pegRow", static=True, description="small black static balls (pegs) in a level row, which a ball rests and rolls on (PHYRE's templates 00012, 00013)"),
     ConcreteObject("purpleRamp", static=True, description="a purple static bar, a slope rising towards where its toucher comes from (PHYRE's templates 00010, 00011), the static object the green one must touch"),
 )
 
@@ -112,6 +113,12 @@ TERMS = tuple(PAPER.values()) + (
         RESTRICTION,
         (Parameter("a", OBJECT, fits="rollableObject"),),
         "a rests in a cradle, two short bars tilted into a shallow V, which a sideways strike knocks it out of (PHYRE's template 00015)",
+    ),
+    TermSignature(
+        "pegged",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits="rollableObject"),),
+        "a rests on a row of pegs, small black static balls, which it rolls along or is knocked off (PHYRE's templates 00012, 00013)",
     ),
 )
 

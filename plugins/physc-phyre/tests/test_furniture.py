@@ -1,4 +1,4 @@
-"""Scene furniture (physc_phyre.furniture): see-saws, teeters, cradles, purple ramps, and an
+"""Scene furniture (physc_phyre.furniture): see-saws, teeters, cradles, purple ramps, peg rows, and an
 object inside or under a jar; each becomes the bodies PHYRE's templates build it from, and
 behaves as they do."""
 
@@ -12,7 +12,7 @@ import pytest
 from physc.compiler.concrete_layout import PlacedObject
 
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
-from physc_phyre.furniture import COVER_FIT, KINDS, bodies, geometry, inside
+from physc_phyre.furniture import COVER_FIT, KINDS, PEG, PEG_SPACING, bodies, geometry, inside
 from physc_phyre.level import held, level_from_layout, outline_box
 from physc_phyre.world import BAR_HEIGHT, PIXELS_PER_METRE
 
@@ -130,3 +130,46 @@ def test_a_purple_pad_lies_on_the_floor_against_the_edge_and_the_ball_stays_on_i
     ball = SceneBody("green", "ball", pad.x, BAR_HEIGHT + 40.0, 0.0, 12.5, "green", True)
     end = end_of(PhyreLevel((pad, ball), ("", "")), "green")
     assert abs(end[0] - pad.x) < pad.size / 2 + 12.5 and end[1] == pytest.approx(BAR_HEIGHT + 12.5, abs=0.5)
+
+
+PEGGED = """scenario Pegged "Green ball knocked off the pegs" {
+    domain phyre
+    objects {
+        green: greenObject = greenBall
+        target: targetObject = purpleFloor
+    }
+    interactions {
+        hit(red, green, above) > fall(green, target) > touch(green, target)
+    }
+    restrictions {
+        pegged(green)
+    }
+}
+"""
+
+
+def test_a_peg_row_spreads_small_black_balls_over_its_box_and_holds_a_ball(tmp_path):
+    """PHYRE's 00012 and 00013: a ball comes down onto small static black balls and rests
+    there; `pegged(a)` makes a's support such a row."""
+    pegs = bodies(placed("pegRow", 128.0, 60.0, seed=3), SceneBody)
+    assert len(pegs) >= 3 and all((p.shape, p.color, p.dynamic, p.size) == ("ball", "black", False, PEG) for p in pegs)
+    steps = [b.x - a.x for a, b in zip(pegs, pegs[1:])]
+    assert max(steps) <= PEG_SPACING + 1e-3 and max(steps) - min(steps) < 0.01
+    ball = SceneBody("green", "ball", 128.0, 60.0 + 2 * PEG + 12.5 + 20.0, 0.0, 12.5, "green", True)
+    end = end_of(PhyreLevel(tuple(pegs) + (ball,), ("", "")), "green")
+    assert abs(end[0] - 128.0) < PEG_SPACING and 60.0 + PEG < end[1] - 12.5 < 60.0 + 2 * PEG
+
+    from physc.domains import load_domain
+    from physc.domains.words import INSTALLED
+    from physc.dsl.frontend import analyze
+    from physc.generation.pipeline import Pipeline
+
+    path = tmp_path / "pegged.phys"
+    path.write_text(PEGGED)
+    (scenario,) = analyze(str(path), INSTALLED).scenarios
+    layout = Pipeline(load_domain("phyre"), scenario, 0).placed.layout
+    row = [o for o in layout.objects if o.concrete == "pegRow"]
+    green = next(o for o in layout.objects if o.name == "green")
+    assert len(row) == 1 and row[0].width >= 3 * green.width
+    level = level_from_layout(layout, scenario)
+    assert sum(b.name.startswith(row[0].name) for b in level.bodies) >= 3
