@@ -28,7 +28,7 @@ async function start(context) {
     const path = configuration.get("path") || "physc";
     vscode.window.showErrorMessage(
       `physc: cannot start the language server with '${path} lsp' (${error.message || error}). ` +
-        "Install it with `pip install 'physc[lsp]'`, or set physc.path to the physc executable."
+        "Install it with `pip install -e '.[lsp]'` in physc's checkout, or set physc.path to the physc executable."
     );
     client = undefined;
   }

@@ -15,8 +15,8 @@ from physc.files import check_output
 def add_executor(parser) -> None:
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--jobs", type=arguments.jobs, default=1, metavar="N", help="local processes (default 1); results do not depend on it")
-    where.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask cluster, e.g. tcp://host:8786 (needs physc[dask])")
-    where.add_argument("--dask-workers", type=arguments.jobs, metavar="N", help="start a Dask cluster of N worker processes here (needs physc[dask])")
+    where.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install -e '.[dask]')")
+    where.add_argument("--dask-workers", type=arguments.jobs, metavar="N", help="start a Dask cluster of N worker processes here (needs the dask extra: pip install -e '.[dask]')")
 
 
 def check_batch(args) -> None:

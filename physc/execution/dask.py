@@ -62,7 +62,7 @@ class DaskCluster(Executor):
             from distributed import Client, LocalCluster
         except ImportError as error:
             raise ExecutorError(
-                f"--scheduler and --dask-workers need Dask ({error.name} is missing): pip install 'physc[dask]'"
+                f"--scheduler and --dask-workers need Dask ({error.name} is missing): pip install -e '.[dask]' in physc's checkout"
             ) from error
         self.cluster = None
         self.address = scheduler

@@ -199,7 +199,7 @@ def test_an_unwritable_folder_is_a_usage_error(tmp_path):
 def test_without_dask_a_clear_message(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "distributed", None)
     run = run_physc("generate", SF, "--tasks", "1", "--out", tmp_path, "--dask-workers", "2")
-    assert run.status == 2 and "pip install 'physc[dask]'" in run.stderr
+    assert run.status == 2 and "pip install -e '.[dask]'" in run.stderr
 
 
 def test_one_executor_at_a_time_and_unique_scenario_names(tmp_path):

@@ -36,3 +36,14 @@ def test_the_readmes_first_command_writes_only_where_git_does_not_look():
     assert outputs and all(path.startswith("out/") for path in outputs), outputs
     ignored = subprocess.run(["git", "check-ignore", "-q", "out/f.xml"], cwd=ROOT).returncode
     assert ignored == 0  # /out/ is in .gitignore
+
+
+def test_install_hints_name_what_works_from_a_checkout():
+    """physc is on no package index: a hint says `pip install -e '.[lsp]'` (in physc's
+    checkout), never `pip install 'physc[lsp]'`, which no index can serve."""
+    places = [*ROOT.glob("physc/**/*.py"), *ROOT.glob("*.md"), *ROOT.glob("docs/*.md"), ROOT / "grammar" / "README.md",
+              ROOT / "grammar" / "extension.js", ROOT / "grammar" / "package.json"]
+    for path in places:
+        text = path.read_text(encoding="utf-8")
+        assert not re.search(r"pip install '?physc\[", text), path
+        assert "needs physc[" not in text, path

@@ -185,7 +185,7 @@ def test_lsp_without_pygls_is_a_usage_error(monkeypatch):
     monkeypatch.delitem(sys.modules, "physc.lsp.server", raising=False)
     run = run_physc("lsp")
     assert run.status == 2
-    assert "pip install 'physc[lsp]'" in run.stderr and "Traceback" not in run.stderr
+    assert "pip install -e '.[lsp]'" in run.stderr and "Traceback" not in run.stderr
 
 
 # ---- fuzzing: no input and no offset makes the editor features fail ------------------------------
