@@ -47,7 +47,6 @@ def phys_lexer(vocabularies) -> type[RegexLexer]:
         aliases = ["phys", "physc"]
         filenames = ["*.phys"]
         mimetypes = ["text/x-phys"]
-        url = "https://pypi.org/project/physc/"
 
         def analyse_text(text):
             """How sure it is that `text` is a .phys file (Pygments' guess_lexer asks every lexer)."""

@@ -47,3 +47,10 @@ def test_install_hints_name_what_works_from_a_checkout():
         text = path.read_text(encoding="utf-8")
         assert not re.search(r"pip install '?physc\[", text), path
         assert "needs physc[" not in text, path
+
+
+def test_no_link_to_a_package_page_that_does_not_exist():
+    """physc is on no package index: no page of one is linked (the extension, the Pygments
+    lexer, the dataset card)."""
+    for path in (ROOT / "grammar" / "package.json", ROOT / "physc" / "dsl" / "pygments_lexer.py", ROOT / "physc" / "dataset" / "templates" / "README.md.j2"):
+        assert "pypi.org" not in path.read_text(encoding="utf-8"), path
