@@ -163,6 +163,8 @@ class Search(Robustness, Guards, Snapshots):
                 return self.give_up(reasons.NOT_VALIDATED)
             validated, trace = True, final.trace
         level = self.level_of(layout)
+        if not self.domain.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
+            return self.give_up(reasons.INVALID_ACTION)
         accepting = time.perf_counter()
         verdict = judged(self.domain, level, attempt.label, attempt.action, self.evaluator) if self.acceptance else None
         if verdict is not None and not verdict.accepted:
