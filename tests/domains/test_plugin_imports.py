@@ -51,14 +51,15 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # 1,100 with issue 44's objects, acceptance and distractors; 1,300 with its two-ball tier,
     # balls held in jars and objects dropped at the start; 1,330 with its world as one value,
     # issue 52; 1,700 with issue 54's furniture, PHYRE's own jars, ball goal and occlusion
-    # test, and its acceptance per tier and template); PHYRE's own formats, pools, simulation cache, folds
+    # test, and its acceptance per tier and template; 1,730 with its peg rows, PHYRE's 00012 and
+    # 00013); PHYRE's own formats, pools, simulation cache, folds
     # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), are
     # counted apart.
     phyres_own = {
         "phyre_format.py", "observation.py", "folds.py", "benchmark.py", "agents.py", "pool.py", "simulation_cache.py", "cache.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
-    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1700, counted
+    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1730, counted
     assert sum(n for name, n in counted.items() if name in phyres_own) <= 1000, counted
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.

@@ -39,6 +39,7 @@ PAD_LENGTH = (26.0, 51.0)
 UPRIGHT = {"greenStick": (51.0, 128.0), "grayStick": (51.0, 128.0), "verticalBar": (30.0, 80.0)}
 # A jar holding a ball: PHYRE's 00018 and 00022 use jars of scale 0.15-0.3 (38-77 px tall).
 HOLDING_HEIGHT = (45.0, 70.0)
+SUPPORTS = {"cradled": "cradle", "pegged": "pegRow"}  # restriction on an object → its support
 
 
 def _across(geometry: Geometry) -> float:
@@ -77,16 +78,12 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
     # The agent's ball is the action's, never an object of the scene (it is rollable and
     # fallable only so that the red ball may roll and fall).
     chosen = {node.name: rng.choice([c for c in node.concrete if c in KINDS or c in furniture.KINDS or c == "floor"]) for node in graph.nodes}
-    # `cradled(a)`: the support the layout gave a is a cradle (furniture.py).
-    cradled = {t.objects[0] for t in scenario.restrictions if t.name == "cradled"}
+    # `cradled(a)`, `pegged(a)`: the support the layout gave a is a cradle, a row of pegs (furniture.py).
+    under = {t.objects[0]: SUPPORTS[t.name] for t in scenario.restrictions if t.name in SUPPORTS}
     for support, loads in carried.items():
-        if cradled & set(loads) and support in chosen and chosen[support] == "blackBar":
-            chosen[support] = "cradle"
-    # `pegged(a)`: the support the layout gave a is a row of pegs (furniture.py).
-    pegged = {t.objects[0] for t in scenario.restrictions if t.name == "pegged"}
-    for support, loads in carried.items():
-        if pegged & set(loads) and support in chosen and chosen[support] == "blackBar":
-            chosen[support] = "pegRow"
+        kinds = [under[a] for a in loads if a in under]
+        if kinds and chosen.get(support) == "blackBar":
+            chosen[support] = kinds[0]
     bodies: dict[str, Body] = {}
     # Objects first: a ledge's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: n.static):
