@@ -21,15 +21,35 @@ JSONL = "manifest.jsonl"
 PARQUET = "manifest.parquet"
 
 # The columns, in order, with their Arrow types ("struct": an object, its fields' types read from
-# the rows; "terms": a list of interactions in .phys syntax).
+# the rows; "terms": a list of interactions in .phys syntax; "settings" and "seconds": structs
+# of fixed fields, so that datasets made with other settings, or whose tasks passed other
+# stages, have the same schema and combine).
 COLUMNS = [
     ("file", "string"), ("scenario", "string"), ("seed", "int64"), ("domain", "string"), ("world", "string"), ("backend", "string"), ("title", "string"),
     ("interactions", "int32"), ("sequence", "string"), ("sequence_terms", "terms"), ("outcome", "string"), ("reason", "string"),
     ("level", "string"), ("task", "string"), ("picture", "string"), ("solution", "struct"), ("trace", "string"),
     ("trace_terms", "terms"), ("robustness_passed", "int32"), ("robustness_run", "int32"), ("validated", "bool_"),
     ("layouts_tried", "int32"), ("simulations", "int64"), ("accidental", "float64"), ("agent_plays", "int32"),
-    ("auccess", "float64"), ("generation_seconds", "float64"), ("seconds", "struct"), ("settings", "struct"),
+    ("auccess", "float64"), ("generation_seconds", "float64"), ("seconds", "seconds"), ("settings", "settings"),
 ]
+# A job's settings (physc.generation.job.Job.settings), each field typed whether or not a run set it.
+SETTINGS = (
+    ("acceptance", "bool_"), ("accidental", "bool_"), ("backend", "string"), ("code", "string"), ("layouts", "int64"),
+    ("min_robustness", "int64"), ("physc", "string"), ("picture", "bool_"), ("scenario", "string"), ("time_budget", "float64"),
+    ("validate", "bool_"), ("verify_backend", "string"), ("world", "string"),
+)
+# The seconds of the generation's stages (physc.generation.layout_loop; a stage a task did not pass: null).
+SECONDS = (("accept", "float64"), ("distract", "float64"), ("layout", "float64"), ("satisfy", "float64"), ("total", "float64"), ("validate", "float64"))
+
+
+NAMES = {name for name, _ in COLUMNS}
+FIXED = {"settings": SETTINGS, "seconds": SECONDS}
+
+
+def _struct(fields):
+    import pyarrow as pa
+
+    return pa.struct([(name, getattr(pa, kind)()) for name, kind in fields])
 
 
 def key(row: dict) -> tuple[str, int]:
@@ -62,8 +82,14 @@ def terms(text: str | None) -> list[str] | None:
     return None if text is None else [term.strip() for term in text.split(">") if term.strip()]
 
 
+def complete(row: dict) -> dict:
+    """The row with every column of COLUMNS (null where the run has none) and, after them, any
+    field of its own: JSON Lines and Parquet have the same columns."""
+    return {name: row.get(name) for name, _ in COLUMNS} | {k: v for k, v in row.items() if k not in NAMES}
+
+
 def line(row: dict) -> str:
-    return json.dumps(row, sort_keys=True, ensure_ascii=False) + "\n"
+    return json.dumps(complete(row), sort_keys=True, ensure_ascii=False) + "\n"
 
 
 def write_jsonl(folder: Path, rows: list[dict]) -> None:
@@ -80,7 +106,10 @@ def write_parquet(folder: Path, rows: list[dict]) -> None:
     arrays = []
     for name, kind in COLUMNS:
         values = [row.get(name) for row in rows]
-        if kind == "struct":  # the fields' order sorted, so the type depends on the rows alone
+        if kind in FIXED:
+            fields = FIXED[kind]
+            arrays.append(pa.array([None if v is None else {f: v.get(f) for f, _ in fields} for v in values], _struct(fields)))
+        elif kind == "struct":  # the fields' order sorted, so the type depends on the rows alone
             try:
                 arrays.append(pa.array([_sorted(v) for v in values]))
             except (pa.ArrowInvalid, pa.ArrowTypeError):  # a field whose type differs between rows (a plugin's): JSON text

@@ -53,7 +53,25 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
         command=command,
         version=__version__,
         code=", ".join(sorted({j.code for j in jobs})),
+        config=config_name(rows),
     )
+
+
+def config_name(rows: list[dict]) -> str:
+    """The card's one configuration, named after what the dataset holds (its rows, times left
+    out, so the same command names it alike). Hugging Face keys its cache by the folder's name
+    and the configuration: under a shared name, a second dataset in a folder of the same name
+    loaded as the first one ("default" did that)."""
+    import hashlib
+    import json
+
+    from physc.dataset.manifest import complete
+
+    held = [{k: v for k, v in complete(row).items() if k not in TIMES} for row in rows]  # as the manifest holds them
+    return "physc-" + hashlib.sha256(json.dumps(held, sort_keys=True).encode()).hexdigest()[:16]
+
+
+TIMES = ("generation_seconds", "seconds")  # what differs between runs of one command
 
 
 def _scenario(name: str, pairs: list) -> dict:

@@ -7,6 +7,7 @@ import errno
 import hashlib
 import json
 import os
+import shutil
 import signal
 import subprocess
 import sys
@@ -99,6 +100,27 @@ def test_a_dataset_loads_in_hugging_face_datasets_as_it_is(reference, monkeypatc
     assert tasks[4]["sequence_terms"][0].startswith("hit(bird")
     card = (reference / "README.md").read_text().split("---\n")[1]
     assert "license: mit" in card and "path: manifest.parquet" in card
+
+
+def test_two_datasets_in_folders_of_one_name_each_load_as_themselves(reference, tmp_path, monkeypatch):
+    """Hugging Face keys its cache by the folder's name and the card's configuration: the card
+    names its configuration after what the dataset holds, so a second `ds` is not the first."""
+    datasets = pytest.importorskip("datasets")
+    from physc.dataset import manifest, readme
+
+    monkeypatch.setenv("HF_HUB_OFFLINE", "1")
+    monkeypatch.setenv("HF_DATASETS_OFFLINE", "1")
+    monkeypatch.setenv("HF_DATASETS_CACHE", str(tmp_path / "hf-cache"))
+    rows = [json.loads(line) for line in (reference / "manifest.jsonl").read_text().splitlines()]
+    first, second = tmp_path / "a" / "ds", tmp_path / "b" / "ds"
+    shutil.copytree(reference, first)
+    shutil.copytree(reference, second)
+    manifest.write_parquet(second, rows[:2])  # a smaller dataset in a folder of the same name
+    card = (second / "README.md").read_text()
+    (second / "README.md").write_text(card.replace(readme.config_name(rows), readme.config_name(rows[:2])))
+    assert readme.config_name(rows) in card
+    assert datasets.load_dataset(str(first), split="test").num_rows == 8
+    assert datasets.load_dataset(str(second), split="test").num_rows == 2
 
 
 def test_the_readme_shows_no_absolute_path(tmp_path, monkeypatch):
