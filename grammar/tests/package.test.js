@@ -10,10 +10,17 @@ const os = require("os");
 const path = require("path");
 
 const root = path.join(__dirname, "..");
-const out = path.join(fs.mkdtempSync(path.join(os.tmpdir(), "physc-vsix-")), "phys.vsix");
-const said = execSync(`npx vsce package --allow-missing-repository --out ${out} 2>&1`, { cwd: root, encoding: "utf8" });
+const folder = fs.mkdtempSync(path.join(os.tmpdir(), "physc-vsix-"));
+const out = path.join(folder, "phys.vsix");
+let said, size;
+try {
+  said = execSync(`npx vsce package --allow-missing-repository --out ${out} 2>&1`, { cwd: root, encoding: "utf8" });
+  size = fs.statSync(out).size;
+} finally {
+  fs.rmSync(folder, { recursive: true, force: true }); // nothing left behind
+}
 assert.ok(!/WARNING/i.test(said), `vsce warned:\n${said}`);
-assert.ok(fs.statSync(out).size > 0);
+assert.ok(size > 0);
 for (const file of ["dist/extension.js", "LICENSE.txt", "icon.png", "readme.md", "syntaxes/phys.tmLanguage.json"]) {
   assert.ok(said.includes(path.basename(file)), `the package lacks ${file}:\n${said}`);
 }
@@ -24,4 +31,5 @@ const manifest = JSON.parse(fs.readFileSync(path.join(root, "package.json"), "ut
 assert.strictEqual(manifest.main, "./dist/extension.js");
 assert.strictEqual(manifest.capabilities.untrustedWorkspaces.supported, "limited");
 assert.deepStrictEqual(manifest.capabilities.untrustedWorkspaces.restrictedConfigurations, ["physc.path"]);
+assert.ok(!fs.existsSync(folder), "the package's temporary folder was left behind");
 console.log("package: ok");

@@ -6,7 +6,6 @@ from lsprotocol import types
 
 import json
 import re
-import tempfile
 from pathlib import Path
 
 from conftest import EXAMPLES, run_physc
@@ -15,7 +14,6 @@ from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
 
 URI = "file:///work/scenario.phys"
-TMP = Path(tempfile.mkdtemp(prefix="physc-lsp-"))
 BROKEN = """scenario SF {
     interactions {
         hit(bird, pig, any)
@@ -59,7 +57,7 @@ async def test_diagnostics_at_the_right_range_then_cleared_by_an_edit(client):
     assert list(await diagnostics(client, URI, 2)) == []
 
 
-async def test_diagnostics_are_those_of_physc_check(client):
+async def test_diagnostics_are_those_of_physc_check(client, tmp_path):
     """Every broken example (but the one that is not UTF-8, which no editor sends), and one with a
     byte-order mark: the codes, places and messages that `physc check --format json` prints."""
     paths = [p for p in sorted((EXAMPLES / "errors").glob("*.phys")) if not p.name.startswith("E0002")]
@@ -67,7 +65,7 @@ async def test_diagnostics_are_those_of_physc_check(client):
         text = path.read_text(encoding="utf-8")
         if path.name == "objects.phys":
             text = "\ufeff" + text.replace("cannotFall(rBlock)", "cannotFal(rBlock)")
-            path = TMP / "bom.phys"
+            path = tmp_path / "bom.phys"
             path.write_text(text, encoding="utf-8")
         uri = f"file:///work/{path.name}"
         open_document(client, uri, text)
