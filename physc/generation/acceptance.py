@@ -261,16 +261,14 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
     `pool(chunk)` the chunk's actions, `valid(a)`, `solves(a)` (a simulation),
     `neighbours(a)`. `main`: the answer is whether the task is kept; otherwise whether it is
     GOOD_STABLE."""
-    chunks: list[list] = []  # the actions of each chunk drawn
-    valid_of: list[list[bool]] = []
-    attempts = valid_count = 0
-    cursor = [0, 0]  # the next action to simulate: chunk, position
-    solved = stable = simulated = 0
+    chunks = attempts = 0
+    pending: list[tuple[int, object]] = []  # the valid actions in pool order, each with its attempt's number (from 1)
+    solved = stable = simulated = 0  # simulated: pending[:simulated] are done
     unjudged: list = []
 
     def bounds() -> Counts:
-        left = valid_count - simulated  # valid actions not simulated yet
-        return Counts(attempts, valid_count, (solved, solved + left), (stable, stable + len(unjudged) + left))
+        left = len(pending) - simulated  # valid actions not simulated yet
+        return Counts(attempts, len(pending), (solved, solved + left), (stable, stable + len(unjudged) + left))
 
     def result(answer_: bool, given_up: str | None = None) -> TierResult:
         counts = bounds()
@@ -278,17 +276,17 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
             name for name in ("GOOD_STABLE", "GOOD", "BAD_STABLE", "BAD", "IMPOSSIBLE", "TRIVIAL")
             if all(name in flags(rule, counts.attempts, counts.valid, s, st) for s in counts.solved for st in counts.stable)
         ]
-        return TierResult(rule.tier, answer_, len(chunks), counts, tuple(certain), simulated, solved_simulated[0], given_up)
+        return TierResult(rule.tier, answer_, chunks, counts, tuple(certain), simulated, solved, given_up)
 
-    solved_simulated = [0]
+    screens = main and "TRIVIAL" in rule.excluded  # the TRIVIAL give-up, on the first `screen` attempts
     while True:
-        if len(chunks) == rule.max_chunks:
+        if chunks == rule.max_chunks:
             return result(False, f"undecided after {rule.max_chunks} chunks of {rule.chunk} attempts")
-        actions = pool(len(chunks))
-        chunks.append(actions)
-        valid_of.append([bool(valid(a)) for a in actions])
-        attempts += len(actions)
-        valid_count += sum(valid_of[-1])
+        for action in pool(chunks):
+            attempts += 1
+            if valid(action):
+                pending.append((attempts, action))
+        chunks += 1
         wait = 0  # simulations before the bounds are tried again: they settle only near the end
         while True:
             counts = bounds()
@@ -298,39 +296,23 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
                     break
                 wait = (counts.solved[1] - counts.solved[0]) // 100
             wait -= 1
-            if counts.solved[1] > counts.solved[0]:  # simulate the next valid action
-                while not valid_of[cursor[0]][cursor[1]]:
-                    _advance(cursor, chunks)
-                action = chunks[cursor[0]][cursor[1]]
-                _advance(cursor, chunks)
+            if simulated < len(pending):  # simulate the next valid action
+                screened, action = pending[simulated]  # attempts up to this one
                 simulated += 1
+                screening = screens and screened <= rule.screen
                 if solves(action):
                     solved += 1
-                    solved_simulated[0] += 1
-                    screening = main and "TRIVIAL" in rule.excluded and _done_before(cursor, chunks) <= rule.screen
                     if screening or stable < rule.min_solutions:
                         stable += stable_solution(action, neighbours, valid, solves)
                     else:
                         unjudged.append(action)
-                screened = _done_before(cursor, chunks)
-                if main and "TRIVIAL" in rule.excluded and screened <= rule.screen and _trivial_beyond_doubt(stable, screened, rule):
+                if screening and _trivial_beyond_doubt(stable, screened, rule):
                     return result(False, f"TRIVIAL beyond doubt in the first {screened} attempts")
             else:  # every action simulated: judge the solutions left
                 stable += stable_solution(unjudged.pop(), neighbours, valid, solves)
         (decided,) = seen
         if decided is not None:
             return result(decided)
-
-
-def _advance(cursor: list[int], chunks: list[list]) -> None:
-    cursor[1] += 1
-    if cursor[1] == len(chunks[cursor[0]]):
-        cursor[0], cursor[1] = cursor[0] + 1, 0
-
-
-def _done_before(cursor: list[int], chunks: list[list]) -> int:
-    """Attempts before the cursor, in pool order."""
-    return sum(len(c) for c in chunks[: cursor[0]]) + cursor[1]
 
 
 def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable) -> Verdict:

@@ -48,8 +48,7 @@ class GoalRules(RunRules):
         self.radii = tuple(balls[n] for n in goal) if all(goal) and balls and set(goal) <= set(balls) else None
         self.held = 0  # steps in a row that the goal has held
         self.still = 0  # steps in a row that nothing moved
-        self.met = False
-        self.met_at = 0.0
+        self.met_at: float | None = None  # when the goal had held for GOAL_STEPS (None: not met)
 
     @classmethod
     def of(cls, level) -> GoalRules:
@@ -69,7 +68,7 @@ class GoalRules(RunRules):
     def finished(self, values: list, alive: set, time: float) -> bool:
         self.held = self.held + 1 if self.touching() else 0
         if self.held >= GOAL_STEPS:
-            self.met, self.met_at = True, time
+            self.met_at = time
             return True
         moving = any(abs(v[3]) + abs(v[4]) + abs(v[5]) > STILL_SPEED for v in values)
         self.still = 0 if moving or self.held else self.still + 1
@@ -90,8 +89,8 @@ class GoalRules(RunRules):
             self.held = int(round((snapshot.time - since) / snapshot.dt)) + 1
 
     def solved(self, recording) -> bool:
-        return self.met
+        return self.met_at is not None
 
     def goal_met(self, recording) -> float | None:
         """The time the goal had held for 3 s: the recogniser's `touch(green, target)`."""
-        return self.met_at if self.met else None
+        return self.met_at
