@@ -43,7 +43,7 @@ def test_emitted_format():
         )
     )
     assert emit_level(level) == (
-        '<?xml version="1.0" encoding="utf-16"?>\n'
+        '<?xml version="1.0" encoding="utf-8"?>\n'
         '<Level width="2">\n'
         '  <Camera x="0" y="-1" minWidth="25" maxWidth="35" />\n'
         '  <Score highScore="0" />\n'
@@ -147,3 +147,23 @@ def test_bad_level_on_the_command_line(tmp_path):
     binary = tmp_path / "binary.xml"
     binary.write_bytes(bytes(range(256)))
     assert run_physc("simulate", binary).status == 1
+
+
+def test_emitted_files_are_what_they_declare():
+    """Issue 55: the declaration is utf-8 and the bytes are UTF-8 (ASCII), so standard parsers
+    read the file from its bytes; physc reads its own form, the game's (utf-16 declared over
+    ASCII) and true UTF-16 alike."""
+    import xml.etree.ElementTree as ElementTree
+
+    from lxml import etree
+
+    level = read_level(GENERATED[0].read_bytes())
+    data = emit_level(level).encode("utf-8")
+    assert data.startswith(b'<?xml version="1.0" encoding="utf-8"?>')
+    assert data.isascii()
+    assert ElementTree.fromstring(data).tag == "Level"
+    assert etree.fromstring(data).tag == "Level"
+    assert len(ElementTree.fromstring(data).find("GameObjects")) == len(level.objects)
+    games_form = data.replace(b'encoding="utf-8"', b'encoding="utf-16"')
+    for form in (data, games_form, emit_level(level).encode("utf-16")):
+        assert read_level(form) == level

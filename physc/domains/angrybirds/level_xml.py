@@ -11,7 +11,8 @@ code and a position (level_checks.py), never a Python exception.
 
 The emitter writes the exact format of the game's loader with a jinja2 template:
 fixed element order, one element per line, no comments, numbers with a '.' and
-at most the digits they need.
+at most the digits they need; declared utf-8, as its bytes are (the game's own files declare
+utf-16 over ASCII bytes; its loader ignores the declaration: docs/angrybirds.md, "Encoding").
 """
 
 from __future__ import annotations
