@@ -2,6 +2,67 @@
 
 A `.phys` scenario (a causal sequence of physical interactions plus restrictions)
 is compiled into a task whose intended solution realises that sequence.
+
+As a library (docs/api.md):
+
+    import physc
+    task = physc.compile("examples/paper/05_F.phys", seed=1)   # a Task: level, solution, trace, seconds
+    physc.save_level(task, "f.xml")
+    trace = physc.simulate(task, physc.Shot(angle=40))           # what one shot does
+    physc.verify(task).passes()
+
+Agents play the tasks through Gymnasium (`import physc.envs`; `physc/AngryBirds-v0`,
+`physc/PhyreLike-v0`) or PHYRE's way (`physc.ActionSimulator`). The names are imported when
+first used, so `import physc` stays cheap for the command line.
 """
 
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING
+
 __version__ = "0.1.0"
+
+# Each exported name → the module that defines it.
+_EXPORTS = {
+    **dict.fromkeys(
+        ("check", "compile", "scenarios", "load_task", "save_task", "save_level", "level_text", "picture", "domain_of", "scenario_of",
+         "read_level", "simulate", "verify", "generate", "load_dataset", "evaluate", "Dataset", "Evaluation", "PhyscError",
+         "ScenarioError", "NoTask", "FileError"),
+        "physc.api",
+    ),
+    "Task": "physc.compiler.task",
+    "Solution": "physc.compiler.task",
+    "Trace": "physc.simulation.trace",
+    "Diagnostic": "physc.diagnostics",
+    "Shot": "physc.domains.angrybirds.launch",
+    "ActionSimulator": "physc.envs.simulator",
+    "Simulation": "physc.envs.simulator",
+    "SimulationStatus": "physc.envs.simulator",
+}
+
+__all__ = ["__version__", *sorted(_EXPORTS)]
+
+if TYPE_CHECKING:  # what type checkers and editors see; at run time the names are imported when first used
+    from physc.api import (
+        Dataset, Evaluation, FileError, NoTask, PhyscError, ScenarioError, check, compile, domain_of, evaluate, generate,
+        level_text, load_dataset, load_task, picture, read_level, save_level, save_task, scenario_of, scenarios, simulate, verify,
+    )
+    from physc.compiler.task import Solution, Task
+    from physc.diagnostics import Diagnostic
+    from physc.domains.angrybirds.launch import Shot
+    from physc.envs.simulator import ActionSimulator, Simulation, SimulationStatus
+    from physc.simulation.trace import Trace
+
+
+def __getattr__(name: str):
+    module = _EXPORTS.get(name)
+    if module is None:
+        raise AttributeError(f"module 'physc' has no attribute {name!r}")
+    value = getattr(importlib.import_module(module), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_EXPORTS))

@@ -21,45 +21,11 @@ from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
-from physc.compiler.infeasible import Exhausted, readable
+from physc.api.compiling import no_task, pipeline as scenario_pipeline
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
 
-def _infeasible(error, scenario) -> Diagnostic:
-    """An Infeasible answer as a diagnostic that points back at the source."""
-    from physc.diagnostics import Label
-
-    notes = []
-    for edge in error.conflicts:
-        for why in edge.provenance:
-            if why.span is not None:
-                notes.append(Label(why.span, f"{edge.text()} comes from {why.rule} `{why.text}`"))
-            else:
-                notes.append(Label(scenario.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
-    code = "E0803" if error.budget is Exhausted.SIZE else "E0802" if error.budget else "E0801"
-    tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
-    if error.conflicts:
-        help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
-    else:
-        help_text = BUDGET_HELP.get(error.budget, "try another --seed, or simplify the scenario")
-    return Diagnostic(
-        code,
-        f"no task for scenario '{scenario.name.text}': {error.message} (stage {error.stage}{tried})",
-        scenario.name.span,
-        help=help_text,
-        notes=tuple(notes),
-    )
-
-
-# What would help when a budget ran out (Infeasible.budget names it).
-BUDGET_HELP = {
-    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
-    Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
-    Exhausted.TIME: "the time ran out: allow more with --time-budget, or try another --seed",
-    Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
-    Exhausted.SIZE: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
-}
 FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}
 
 
@@ -132,11 +98,8 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
 
 def cmd_compile(args) -> int:
     from physc.compiler.infeasible import Infeasible
-    from physc.generation.pipeline import Pipeline
     from physc.domains import bound, load_domain
     from physc.domains.words import INSTALLED
-    from physc.dsl import ast
-    from physc.dsl.fmt import format_file
     from physc.dsl.frontend import analyze
     from physc.serialize import to_data
 
@@ -196,16 +159,16 @@ def cmd_compile(args) -> int:
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
         heartbeat = Heartbeat(f"[{index}/{len(selected)}] {ir.name}") if generating and not args.quiet else None
-        pipeline = Pipeline(
-            domain,
+        pipeline = scenario_pipeline(
+            scenario,
             ir,
+            domain,
             args.seed,
-            args.budget,
+            budget=args.budget,
             validate=not args.no_validate,
             acceptance=not args.no_acceptance,
             layout_budget=args.layouts,
             time_budget=args.time_budget,
-            source=format_file(ast.File((scenario,))),
             min_robustness=args.min_robustness,
             progress=None if heartbeat is None else heartbeat.update,
             verify_backend=args.verify_backend,
@@ -219,7 +182,7 @@ def cmd_compile(args) -> int:
                 value = chosen.run(Unit(scenario, ir), pipeline)
                 picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:
-            failures.append(_infeasible(error, scenario))
+            failures.append(no_task(error, scenario))
             continue
         except DomainError as error:  # the domain cannot do what was asked (a picture format it lacks)
             span = scenario.domain.span if scenario.domain else scenario.name.span

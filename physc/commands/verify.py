@@ -10,84 +10,20 @@ interactions it realised. Exit 0 when it passes, 1 when it does not.
 
 from __future__ import annotations
 
-import json
-import math
-
 from physc import budget
 from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, print_json
 from physc.diagnostics import safe
 from physc.files import read_input
 
-MAX_TASK_BYTES = 50_000_000
-
-
 def read_task(path: str) -> dict:
-    """A task file's JSON, checked to be one (UsageError otherwise)."""
-    data, problem = read_input(path, "the task file", limit=MAX_TASK_BYTES + 1)
-    if data is None:
-        raise UsageError(problem)
-    if len(data) > MAX_TASK_BYTES:
-        raise UsageError(f"{path}: the task file is larger than physc reads ({MAX_TASK_BYTES:,} bytes)")
-    try:
-        task = json.loads(data.decode("utf-8-sig"))
-    except (UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise UsageError(f"{path} is not a task file (JSON): {error}") from None
-    except RecursionError:
-        raise UsageError(f"{path} is not a task file: its JSON is nested too deeply") from None
-    fields = ("domain", "scenario", "source", "level", "solution")
-    if not isinstance(task, dict) or task.get("node") != "Task" or not all(field in task for field in fields):
-        raise UsageError(f"{path} is not a task file: write one with `physc compile FILE --task {path}`")
-    return task
-
-
-def _parts(task: dict, path: str):
-    """(domain, scenario, level, the level as the domain writes it, solution) of a task file."""
-    from physc.domains import load_domain
-    from physc.domains.base import DomainError, require, solution_classes
-    from physc.domains.words import INSTALLED
-    from physc.dsl.frontend import analyze_text
-    from physc.serialize import from_data
+    """A task file's JSON (physc.api.tasks.read_task), a usage error when it is not one."""
+    from physc.api.errors import FileError
+    from physc.api.tasks import read_task as read
 
     try:
-        domain = load_domain(str(task["domain"]))
-        require(domain, ("replay", "emit_level"), "physc verify")
-    except DomainError as error:
-        raise UsageError(f"{path}: {error.message}") from None
-    if not domain.level_classes:
-        raise UsageError(f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)")
-    analysis = analyze_text(f"{path} (source)", str(task["source"]), INSTALLED)
-    scenario = next((s for s in analysis.scenarios if s.name == task["scenario"]), None)
-    if scenario is None or any(d.is_error for d in analysis.diagnostics):
-        raise UsageError(f"{path}: its source does not hold a valid scenario '{task['scenario']}'")
-    try:
-        level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
-        if not isinstance(level, domain.level_classes[0]):
-            raise ValueError(f"the level is not a {domain.level_classes[0].__name__}")
-        kinds = solution_classes(domain)
-        solution = _solution(from_data(task["solution"], kinds), tuple(kinds.values()))
-        level_text = domain.emit_level(level)  # also checks that the level is one the domain can write
-    except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:
-        raise UsageError(f"{path}: its level or solution cannot be read: {error or type(error).__name__}") from None
-    return domain, scenario, level, level_text, solution
-
-
-def _solution(solution, kind: tuple[type, ...]):
-    """The task file's solution, if it is one of the classes `kind` and, for angrybirds' Solution, its fields
-    are what a shot holds (ValueError if not; another domain's class checks its own fields
-    when it is made)."""
-    from physc.compiler.task import Solution
-
-    if not isinstance(solution, kind):
-        raise ValueError(f"the solution is not a {' or a '.join(k.__name__ for k in kind)}")
-    if not isinstance(solution, Solution):
-        return solution
-    target = solution.target
-    numbers = (*target, solution.release_angle) if isinstance(target, tuple) and len(target) == 2 else None
-    if numbers is None or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
-        raise ValueError("the solution's target and release angle must be finite numbers")
-    if solution.trajectory not in ("low", "high"):
-        raise ValueError(f"the solution's trajectory is 'low' or 'high', not {solution.trajectory!r}")
-    return solution
+        return read(path)
+    except FileError as error:
+        raise UsageError(str(error)) from None
 
 
 def _normalised(text: str) -> str:
@@ -99,9 +35,17 @@ def cmd_verify(args) -> int:
     from physc.commands.options import replaying
     from physc.generation.verify import noisy_replays, verify
 
+    from physc.api.errors import FileError
+    from physc.api.tasks import task_parts
+
     task = read_task(args.task)
-    domain, scenario, level, level_text, solution = _parts(task, args.task)
+    try:
+        domain, scenario, level, level_text, solution = task_parts(task, args.task)
+    except FileError as error:
+        raise UsageError(str(error)) from None
     domain = replaying(domain, task, args, "verify")
+    from physc.api.tasks import MAX_TASK_BYTES
+
     data, problem = read_input(args.level, "the level", limit=MAX_TASK_BYTES + 1)
     if data is None:
         raise UsageError(problem)

@@ -328,6 +328,10 @@ class Domain(abc.ABC):
     kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
 
+    playing: Any = None
+    """How agents play the domain's tasks (a physc.envs.playing.Playing): what gives it a
+    Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
+
     measures: str = ""
     """What the domain's evaluation measures mean (stability's limit, the noise, the agent),
     a few sentences for the report of `physc eval`."""

@@ -44,6 +44,13 @@ class AngryBirds(SimulatedDomain):
     seconds = PLAY_SECONDS
 
     @property
+    def playing(self):
+        """How agents play its levels (playing.py; physc/AngryBirds-v0)."""
+        from physc.domains.angrybirds.playing import PLAYING
+
+        return PLAYING
+
+    @property
     def layout_parameters(self) -> LayoutParameters:
         """The QSRs' distances, and the world's placement area."""
         area = self.world.frame.placement

@@ -67,6 +67,13 @@ class Phyre(SimulatedDomain):
         "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
         "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
     )
+    @property
+    def playing(self):
+        """How agents play its tasks (playing.py; physc/PhyreLike-v0)."""
+        from physc_phyre.playing import PLAYING
+
+        return PLAYING
+
     acceptance = Acceptance(threshold=THRESHOLDS["ball"], tier="ball")
     """PHYRE's acceptance of a ball-tier task, decided as PHYRE's eval_task_complexity.py
     decides it on PHYRE's own pool of random actions (physc.generation.acceptance): done

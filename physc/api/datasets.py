@@ -1,0 +1,179 @@
+"""Datasets and evaluations from Python: what `physc generate` and `physc eval` do.
+
+`generate` makes a dataset folder exactly as `physc generate` does (a task's level, task file
+and picture per scenario and seed, the manifest in JSON Lines and Parquet, a README that
+Hugging Face reads, and the domain's own benchmark files), resuming a folder already there;
+`load_dataset` reads one back. `evaluate` runs `physc eval`'s measurements and returns its
+records and summary.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator, Sequence
+from pathlib import Path
+
+import attrs
+
+from physc.api.errors import FileError, ScenarioError
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+
+__all__ = ["Dataset", "Evaluation", "evaluate", "generate", "load_dataset"]
+
+
+@attrs.frozen
+class Dataset:
+    """A dataset folder made by `physc generate`: its manifest's rows (one per scenario and
+    seed, with `outcome` "ok", "fallback" or "no task"), in the manifest's order."""
+
+    folder: Path
+    rows: tuple[dict, ...] = attrs.field(repr=False)
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+    def __iter__(self) -> Iterator[dict]:
+        return iter(self.rows)
+
+    @property
+    def made(self) -> tuple[dict, ...]:
+        """The rows of the tasks that were made (a level and a task file)."""
+        return tuple(row for row in self.rows if row.get("task"))
+
+    def task_paths(self) -> list[Path]:
+        """The task files of the tasks made, in the manifest's order."""
+        return [self.folder / row["task"] for row in self.made]
+
+    def tasks(self) -> Iterator[Task]:
+        """The tasks made, read from their task files (physc.api.tasks.load_task)."""
+        from physc.api.tasks import load_task
+
+        for path in self.task_paths():
+            yield load_task(path)
+
+
+def load_dataset(folder: str | os.PathLike) -> Dataset:
+    """The dataset in `folder` (FileError when it holds no manifest)."""
+    from physc.dataset.manifest import JSONL
+    from physc.files import read_json_lines
+
+    root = Path(folder)
+    path = root / JSONL
+    if not path.is_file():
+        raise FileError(f"{root} is not a dataset: it has no {JSONL} (make one with physc generate)")
+    rows = [row for row in read_json_lines(path) if isinstance(row, dict) and "scenario" in row]
+    return Dataset(root, tuple(rows))
+
+
+def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: Sequence[str] | None, needs: tuple[str, ...], **settings):
+    """The jobs of `files` (ScenarioError for files with errors, or a scenario not there;
+    physc.domains.base.MissingCapability for a domain that lacks a hook in `needs`)."""
+    from physc.domains import load_domain
+    from physc.domains.base import require
+    from physc.generation.job import jobs_for
+
+    if isinstance(files, (str, os.PathLike)):
+        files = [files]
+    jobs, problems = jobs_for([os.fspath(f) for f in files], tasks, seed, **settings)
+    if problems:
+        path, analysis, found = problems[0]
+        raise ScenarioError(tuple(found), analysis.source if analysis else None, path)
+    if scenarios:
+        missing = sorted(set(scenarios) - {job.scenario for job in jobs})
+        if missing:
+            raise ScenarioError((), None, ", ".join(map(os.fspath, files)), f"no scenario named {', '.join(missing)} in the files")
+        jobs = [job for job in jobs if job.scenario in scenarios]
+    for name in sorted({job.domain for job in jobs}):
+        require(load_domain(name), needs + (("replay",) if settings.get("verify_backend") else ()), "this run")
+    return jobs
+
+
+def _settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance) -> dict:
+    from physc.backends import DEFAULT_BACKEND
+
+    return dict(
+        world=world or "", backend=backend or DEFAULT_BACKEND, time_budget=time_budget, layouts=layouts,
+        min_robustness=min_robustness, verify_backend=verify_backend, acceptance=acceptance,
+    )
+
+
+def generate(
+    files: str | os.PathLike | Sequence[str | os.PathLike],
+    out: str | os.PathLike,
+    *,
+    tasks: int = 1,
+    seed: int = 0,
+    scenarios: Sequence[str] | None = None,
+    jobs: int = 1,
+    world: str | None = None,
+    backend: str | None = None,
+    time_budget: float = TIME_BUDGET,
+    layouts: int = LAYOUT_BUDGET,
+    min_robustness: int | None = MIN_ROBUSTNESS,
+    verify_backend: str | None = None,
+    acceptance: bool = True,
+    validate: bool = True,
+    png: bool = False,
+    accidental: bool = False,
+) -> Dataset:
+    """`physc generate FILES --tasks N --out OUT`: `tasks` tasks (seeds `seed` …) of every
+    scenario of `files` (or of `scenarios`), on `jobs` local processes, into the folder `out`.
+    The bytes written depend on the scenarios, seeds and settings only, never on `jobs`."""
+    from physc.dataset.build import build
+    from physc.execution import executor_for
+
+    from physc.domains.base import STAGE_NEEDS
+
+    needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if png else ())
+    made = _jobs(
+        files, tasks, seed, scenarios, needs, validate=validate, picture=png, accidental=accidental,
+        **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
+    )
+    with executor_for(jobs) as executor:
+        rows = build(made, Path(out), executor, command="physc.generate(…)")
+    return Dataset(Path(out), tuple(rows))
+
+
+@attrs.frozen
+class Evaluation:
+    """What `physc eval` measured: a record per scenario and seed, and the summary its report
+    (results.md, .json, .csv in `folder`) is made of."""
+
+    folder: Path
+    records: tuple[dict, ...] = attrs.field(repr=False)
+    summary: dict = attrs.field(repr=False)
+
+
+def evaluate(
+    files: str | os.PathLike | Sequence[str | os.PathLike],
+    out: str | os.PathLike,
+    *,
+    tasks: int = 30,
+    seed: int = 0,
+    scenarios: Sequence[str] | None = None,
+    jobs: int = 1,
+    world: str | None = None,
+    backend: str | None = None,
+    time_budget: float = TIME_BUDGET,
+    layouts: int = LAYOUT_BUDGET,
+    min_robustness: int | None = MIN_ROBUSTNESS,
+    verify_backend: str | None = None,
+    acceptance: bool = True,
+) -> Evaluation:
+    """`physc eval FILES --tasks N --out OUT`: generate and measure `tasks` tasks of every
+    scenario (stability, intended and accidental solvability, fidelity, cost), resuming the
+    records already in `out`, and write the report there."""
+    import time
+
+    from physc.evaluation.report import write
+    from physc.evaluation.run import run
+    from physc.execution import executor_for
+
+    from physc.domains.base import STAGE_NEEDS
+
+    made = _jobs(files, tasks, seed, scenarios, STAGE_NEEDS["task"] + ("replay", "stability"), validate=False, **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance))
+    started = time.perf_counter()
+    with executor_for(jobs) as executor:
+        records = run(made, Path(out), executor)
+    summary = write(records, Path(out), "physc.evaluate(…)", time.perf_counter() - started)
+    return Evaluation(Path(out), tuple(records), summary)

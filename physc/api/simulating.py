@@ -1,0 +1,103 @@
+"""Playing levels from Python: what `physc simulate`, `trace` and `verify` do.
+
+`simulate` plays a task's level (or any level of a domain) with an action and returns the
+trace (physc.simulation.trace.Trace): whether the goal was met (`solved`), the interactions
+recognised (`interactions`, each with `text()` in .phys syntax and `time`), the objects
+destroyed, and each body's path (`paths()`). `verify` replays a task's intended solution, in
+any engine, as `physc verify` does.
+"""
+
+from __future__ import annotations
+
+import os
+import random
+
+from physc.api.errors import FileError
+from physc.api.tasks import domain_of, scenario_of
+from physc.compiler.task import Task
+
+__all__ = ["read_level", "simulate", "verify"]
+
+
+def read_level(source: str | os.PathLike | bytes, domain: str = "angrybirds"):
+    """The level of a level file (a path, or its bytes) of `domain` (angrybirds: a Science
+    Birds XML file, as the game's own files are); FileError when it cannot be played."""
+    from physc.domains import load_domain
+    from physc.domains.base import LevelError
+
+    if isinstance(source, bytes):
+        data, name = source, "<level>"
+    else:
+        name = os.fspath(source)
+        try:
+            with open(name, "rb") as handle:
+                data = handle.read()
+        except OSError as error:
+            raise FileError(f"{name}: {error.strerror or error}") from None
+    try:
+        return load_domain(domain).read_level(data)
+    except LevelError as error:
+        where = f":{error.line}" if error.line else ""
+        raise FileError(f"{name}{where}: {error}") from None
+
+
+def simulate(
+    level,
+    action=None,
+    *,
+    domain: str | None = None,
+    world: str | None = None,
+    backend: str | None = None,
+    seconds: float | None = None,
+    noise: int | random.Random | None = None,
+):
+    """The trace of `level` played with `action`, to rest (`physc simulate`).
+
+    `level` is a Task (its level, played in the world and engine it was made in, judged
+    against its scenario's restrictions) or a domain's level (`read_level`; `domain` names
+    its domain, angrybirds by default). `action` is the domain's action (angrybirds:
+    `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
+    a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
+    `random.Random`, plays it under the domain's noise model (angrybirds: objects and
+    release angle jittered, as the evaluation's noisy replays are)."""
+    scenario = None
+    if isinstance(level, Task):
+        scenario = scenario_of(level)
+        played = domain_of(level, world, backend)
+        level = level.level
+    else:
+        from physc.domains import bound, load_domain
+
+        played = bound(load_domain(domain or "angrybirds"), world, backend)
+    if action is not None and isinstance(action, tuple(_solution_kinds(played))):
+        action = played.action_of(action)
+    if noise is not None:
+        rng = noise if isinstance(noise, random.Random) else random.Random(noise)
+        level, action = played.noisy(level, action, rng)
+    whole = {"whole": True} if "whole" in _parameters(played.play) else {}
+    return played.play(level, action, scenario, seconds or getattr(played, "seconds", None), **whole)
+
+
+def _solution_kinds(domain) -> list[type]:
+    from physc.domains.base import solution_classes
+
+    return list(solution_classes(domain).values())
+
+
+def _parameters(function) -> set[str]:
+    import inspect
+
+    return set(inspect.signature(function).parameters)
+
+
+def verify(task: Task, *, world: str | None = None, backend: str | None = None, replays: int | None = None):
+    """The task's intended solution replayed (`physc verify`): in the world and engine the
+    task was made in unless `world` or `backend` names others, once as recorded and `replays`
+    times under the domain's noise (None: the domain's own number, 6 in angrybirds). Returns
+    physc.generation.verify.Verification: `solved`, `realised`, `noisy_passed`, `trace`, `why`,
+    and `passes(n)`."""
+    from physc.generation.verify import noisy_replays, verify as replay
+
+    domain = domain_of(task, world, backend)
+    count = noisy_replays(domain) if replays is None else replays
+    return replay(domain, scenario_of(task), task.level, task.solution, domain.backend.name, noisy=count)
