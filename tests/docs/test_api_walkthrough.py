@@ -31,3 +31,16 @@ def test_the_walkthrough_runs(tmp_path, monkeypatch):
     assert "E0201" in shown
     assert (tmp_path / "out" / "ds" / "manifest.parquet").is_file()
     assert (tmp_path / "out" / "eval" / "results.md").is_file()
+
+
+def test_the_readmes_library_example_runs(tmp_path, monkeypatch):
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme[readme.index("## As a library"):readme.index("## The command line")]
+    (block,) = BLOCK.findall(section)
+    (tmp_path / "examples").symlink_to(EXAMPLES)
+    (tmp_path / "out").mkdir()  # the README's first command makes it
+    monkeypatch.chdir(tmp_path)
+    with contextlib.redirect_stdout(io.StringIO()), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        exec(compile(block, "README.md, As a library", "exec"), {})  # noqa: S102
+    assert (tmp_path / "out" / "f.json").is_file()
