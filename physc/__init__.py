@@ -26,7 +26,7 @@ __version__ = "0.1.0"
 # Each exported name → the module that defines it.
 _EXPORTS = {
     **dict.fromkeys(
-        ("check", "compile", "scenarios", "load_task", "save_task", "save_level", "level_text", "picture", "domain_of", "scenario_of",
+        ("check", "compile", "scenarios", "load_task", "save_task", "save_level", "level_text", "render", "domain_of", "scenario_of",
          "read_level", "simulate", "verify", "generate", "load_dataset", "evaluate", "Dataset", "Evaluation", "PhyscError",
          "ScenarioError", "NoTask", "FileError"),
         "physc.api",
@@ -46,7 +46,7 @@ __all__ = ["__version__", *sorted(_EXPORTS)]
 if TYPE_CHECKING:  # what type checkers and editors see; at run time the names are imported when first used
     from physc.api import (
         Dataset, Evaluation, FileError, NoTask, PhyscError, ScenarioError, check, compile, domain_of, evaluate, generate,
-        level_text, load_dataset, load_task, picture, read_level, save_level, save_task, scenario_of, scenarios, simulate, verify,
+        level_text, load_dataset, load_task, render, read_level, save_level, save_task, scenario_of, scenarios, simulate, verify,
     )
     from physc.compiler.task import Solution, Task
     from physc.diagnostics import Diagnostic

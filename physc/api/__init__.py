@@ -10,10 +10,10 @@ from physc.api.compiling import check, compile, scenarios
 from physc.api.datasets import Dataset, Evaluation, evaluate, generate, load_dataset
 from physc.api.errors import FileError, NoTask, PhyscError, ScenarioError
 from physc.api.simulating import read_level, simulate, verify
-from physc.api.tasks import domain_of, level_text, load_task, picture, save_level, save_task, scenario_of
+from physc.api.tasks import domain_of, level_text, load_task, render, save_level, save_task, scenario_of
 
 __all__ = [
     "Dataset", "Evaluation", "FileError", "NoTask", "PhyscError", "ScenarioError", "check", "compile", "domain_of", "evaluate",
-    "generate", "level_text", "load_dataset", "load_task", "picture", "read_level", "save_level", "save_task", "scenario_of",
+    "generate", "level_text", "load_dataset", "load_task", "render", "read_level", "save_level", "save_task", "scenario_of",
     "scenarios", "simulate", "verify",
 ]

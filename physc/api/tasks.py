@@ -1,4 +1,4 @@
-"""Tasks from Python: read and write task files and level files, draw a task, and find the
+"""Tasks from Python: read and write task files and level files, draw a task or a level, and find the
 domain, world and engine a task was made in.
 
 A task file is what `physc compile --task` and `physc generate` write: the task
@@ -15,7 +15,7 @@ import os
 from physc.api.errors import FileError
 from physc.compiler.task import Solution, Task
 
-__all__ = ["domain_of", "level_text", "load_task", "picture", "save_level", "save_task", "scenario_of"]
+__all__ = ["domain_of", "level_text", "load_task", "render", "save_level", "save_task", "scenario_of"]
 
 MAX_TASK_BYTES = 50_000_000
 FIELDS = ("domain", "scenario", "source", "level", "solution")
@@ -149,7 +149,21 @@ def save_level(task: Task, path: str | os.PathLike) -> None:
     write_atomic(path, level_text(task))
 
 
-def picture(task: Task, fmt: str = "png") -> bytes:
-    """The task drawn with the paths of its solution (`physc compile --png`): PNG or SVG bytes
-    (`IPython.display.Image(physc.picture(task))` shows it in a notebook)."""
-    return domain_of(task).picture(task, fmt)
+def render(task, action=None, *, fmt: str = "png", domain: str | None = None, world: str | None = None, backend: str | None = None) -> bytes:
+    """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
+    notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
+    those of another `action`; a domain's level (`read_level`) drawn alone or with the paths
+    `action` makes (`physc render`)."""
+    from physc.api.simulating import simulate
+
+    if isinstance(task, Task):
+        if action is None:
+            return domain_of(task, world, backend).picture(task, fmt)
+        played = domain_of(task, world, backend)
+        paths = simulate(task, action, world=world, backend=backend).paths()
+        return played.draw(task.level, f"{task.scenario} (seed {task.seed})", paths, fmt)
+    from physc.domains import bound, load_domain
+
+    played = bound(load_domain(domain or "angrybirds"), world, backend)
+    paths = {} if action is None else simulate(task, action, domain=played.name, world=world, backend=backend).paths()
+    return played.draw(task, "", paths, fmt)

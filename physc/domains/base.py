@@ -329,7 +329,7 @@ class Domain(abc.ABC):
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
 
     playing: Any = None
-    """How agents play the domain's tasks (a physc.envs.playing.Playing): what gives it a
+    """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
     Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
 
     measures: str = ""

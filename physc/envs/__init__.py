@@ -7,7 +7,7 @@ plugin. `gymnasium.make("physc.envs:physc/AngryBirds-v0", tasks=…)` imports it
 
 from __future__ import annotations
 
-from physc.envs.playing import Playing
+from physc.domains.playing import Playing
 from physc.envs.simulator import ActionSimulator, Simulation, SimulationStatus
 
 __all__ = ["ActionSimulator", "Playing", "Simulation", "SimulationStatus", "register_envs"]

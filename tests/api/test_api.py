@@ -28,6 +28,10 @@ def test_every_exported_name_resolves_and_import_is_cheap():
         capture_output=True, text=True, check=True,
     )
     assert fresh.stdout.split() == ["False", "False", "False"]
+    import pkgutil
+
+    submodules = {m.name for m in pkgutil.iter_modules(physc.__path__)}
+    assert not submodules & set(physc.__all__), "an exported name that a submodule shadows once imported"
     with pytest.raises(AttributeError, match="no attribute 'compiel'"):
         physc.compiel  # noqa: B018
 
@@ -86,6 +90,13 @@ def test_bad_files_raise_file_error(tmp_path):
         physc.read_level(tmp_path / "x.xml")
     with pytest.raises(physc.FileError, match="not a dataset"):
         physc.load_dataset(tmp_path)
+
+
+def test_render_draws_tasks_and_levels(task):
+    assert physc.render(task).startswith(b"\x89PNG")
+    assert physc.render(task, physc.Shot(angle=70), fmt="svg").lstrip().startswith(b"<?xml")
+    level = physc.read_level(physc.level_text(task).encode())
+    assert physc.render(level).startswith(b"\x89PNG")
 
 
 def test_simulate_and_verify(task):

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from physc.domains.angrybirds.catalogue import BY_PREFAB, extent
-from physc.envs.playing import Playing
+from physc.domains.playing import Playing
 
 KINDS = ("pig", "block", "platform", "tnt")
 MATERIALS = ("wood", "ice", "stone")

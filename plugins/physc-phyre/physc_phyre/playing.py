@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from physc.envs.playing import Playing
+from physc.domains.playing import Playing
 
 from physc_phyre import observation
 from physc_phyre.actions import from_unit

@@ -5,7 +5,7 @@ A domain that can be played sets `Domain.playing` to an instance of a subclass o
 which says only what differs between domains: its environment's id, its action modes and
 their spaces, how an agent's action becomes the domain's action (or is invalid), what an agent
 sees of a level (features, a picture) and what a play is worth. The loop (reset, step, the
-noise, the task sources) is physc's own (env.py, simulator.py).
+noise, the task sources) is physc's own (physc/envs: env.py, simulator.py).
 """
 
 from __future__ import annotations
