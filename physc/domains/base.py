@@ -50,7 +50,7 @@ CAPABILITIES = (
 )  # no default
 DEFAULTS = (
     "reach_targets", "reachable", "robustness_replays", "level_classes", "level_format", "level_suffix", "solution_class", "accidental", "measures",
-    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "max_level_bytes",
+    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "max_level_bytes", "playing",
 )  # working defaults (score_agent's: no agent is scored, MissingCapability)
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs

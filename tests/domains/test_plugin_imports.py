@@ -53,14 +53,16 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # issue 52; 1,700 with issue 54's furniture, PHYRE's own jars, ball goal and occlusion
     # test, and its acceptance per tier and template; 1,730 with its peg rows, PHYRE's 00012 and
     # 00013); PHYRE's own formats, pools, simulation cache, folds
-    # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), are
+    # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), and how
+    # agents play them (playing.py: PHYRE's action, features and picture, issue 55), are
     # counted apart.
     phyres_own = {
         "phyre_format.py", "observation.py", "folds.py", "benchmark.py", "agents.py", "pool.py", "simulation_cache.py", "cache.py",
+        "playing.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
     assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1730, counted
-    assert sum(n for name, n in counted.items() if name in phyres_own) <= 1000, counted
+    assert sum(n for name, n in counted.items() if name in phyres_own) <= 1100, counted  # 1,000; 1,100 with playing.py
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.
     assert not {"satisfy", "replay", "stability", "accidental", "play"} & set(vars(Phyre))

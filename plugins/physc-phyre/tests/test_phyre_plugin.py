@@ -274,7 +274,7 @@ def test_a_scene_may_move_at_the_start_but_not_solve_itself():
 def test_may_be_trivial_reaches_the_level_and_its_rule(tmp_path):
     """PHYRE's template 00024 keeps TRIVIAL tasks (its script excludes no flag): the scenario
     says `mayBeTrivial()`, its level keeps it, and its acceptance excludes nothing."""
-    from physc.commands.verify import _parts
+    from physc.api import load_task
 
     from physc_phyre import DOMAIN
 
@@ -282,7 +282,7 @@ def test_may_be_trivial_reaches_the_level_and_its_rule(tmp_path):
         "compile", EXAMPLES / "phyre" / "task00024.phys", "--seed", "0", "-q", "--no-acceptance", "-o", tmp_path / "t.json", "--task", tmp_path / "task.json",
     )
     assert status == 0, err
-    _, _, level, _, _ = _parts(json.loads((tmp_path / "task.json").read_text()), "task.json")
+    level = load_task(tmp_path / "task.json").level
     assert level.may_be_trivial and DOMAIN.acceptance_of(level).excluded == ()
 
 
