@@ -45,7 +45,7 @@ def simulate(
     level,
     action=None,
     *,
-    domain: str | None = None,
+    domain=None,
     world: str | None = None,
     backend: str | None = None,
     seconds: float | None = None,
@@ -55,7 +55,7 @@ def simulate(
 
     `level` is a Task (its level, played in the world and engine it was made in, judged
     against its scenario's restrictions) or a domain's level (`read_level`; `domain` names
-    its domain, angrybirds by default). `action` is the domain's action (angrybirds:
+    its domain, angrybirds by default, or is the domain itself, bound to a world and engine). `action` is the domain's action (angrybirds:
     `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
     a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
     `random.Random`, plays it under the domain's noise model (angrybirds: objects and
@@ -66,9 +66,7 @@ def simulate(
         played = domain_of(level, world, backend)
         level = level.level
     else:
-        from physc.domains import bound, load_domain
-
-        played = bound(load_domain(domain or "angrybirds"), world, backend)
+        played = bound_domain(domain, world, backend)
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
         action = played.action_of(action)
     if noise is not None:
@@ -76,6 +74,16 @@ def simulate(
         level, action = played.noisy(level, action, rng)
     whole = {"whole": True} if "whole" in _parameters(played.play) else {}
     return played.play(level, action, scenario, seconds or getattr(played, "seconds", None), **whole)
+
+
+def bound_domain(domain=None, world: str | None = None, backend: str | None = None):
+    """A domain in `world` with `backend`: `domain` a name (default angrybirds) or a Domain
+    (physc.domains.base.Domain) already bound, kept as it is where `world` and `backend` are None."""
+    from physc.domains import bound, load_domain
+
+    if domain is None or isinstance(domain, str):
+        return bound(load_domain(domain or "angrybirds"), world, backend)
+    return domain if world is None and backend is None else bound(domain, world, backend)
 
 
 def _solution_kinds(domain) -> list[type]:

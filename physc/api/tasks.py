@@ -149,21 +149,21 @@ def save_level(task: Task, path: str | os.PathLike) -> None:
     write_atomic(path, level_text(task))
 
 
-def render(task, action=None, *, fmt: str = "png", domain: str | None = None, world: str | None = None, backend: str | None = None) -> bytes:
+def render(
+    task, action=None, *, fmt: str = "png", title: str | None = None, domain=None, world: str | None = None, backend: str | None = None,
+) -> bytes:
     """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
     notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
     those of another `action`; a domain's level (`read_level`) drawn alone or with the paths
-    `action` makes (`physc render`)."""
-    from physc.api.simulating import simulate
+    `action` makes (`physc render`; `domain` a name, angrybirds by default, or a bound Domain)."""
+    from physc.api.simulating import bound_domain, simulate
 
     if isinstance(task, Task):
-        if action is None:
-            return domain_of(task, world, backend).picture(task, fmt)
         played = domain_of(task, world, backend)
-        paths = simulate(task, action, world=world, backend=backend).paths()
-        return played.draw(task.level, f"{task.scenario} (seed {task.seed})", paths, fmt)
-    from physc.domains import bound, load_domain
-
-    played = bound(load_domain(domain or "angrybirds"), world, backend)
-    paths = {} if action is None else simulate(task, action, domain=played.name, world=world, backend=backend).paths()
-    return played.draw(task, "", paths, fmt)
+        if action is None and title is None:
+            return played.picture(task, fmt)
+        paths = simulate(task, action if action is not None else task.solution, world=world, backend=backend).paths()
+        return played.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
+    played = bound_domain(domain, world, backend)
+    paths = {} if action is None else simulate(task, action, domain=played).paths()
+    return played.draw(task, title or "", paths, fmt)

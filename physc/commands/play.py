@@ -1,8 +1,8 @@
 """`physc simulate`, `physc trace`, `physc render`: playing Science Birds levels.
 
-Through the domain's interface (physc.domains.base.Domain: `read_level`, `play`, `draw`, and
-the Science Birds domain's `shot`), in the world and engine chosen (--world, --backend, or the
-task file's with --task).
+On the Python API's `physc.simulate` (physc.api.simulating) and the domain's interface
+(physc.domains.base.Domain: `read_level`, `draw`, and the Science Birds domain's `shot`), in
+the world and engine chosen (--world, --backend, or the task file's with --task).
 
 Each reads a level file (real files as they are: declared utf-16, actually
 ASCII), optionally fires one full-stretch shot, and reports what happened: the
@@ -72,6 +72,8 @@ def _fail(args, diagnostic: Diagnostic, source=None) -> int:
 
 
 def _play(args, domain):
+    from physc.api.simulating import simulate
+
     level, status = load_level(args, domain)
     if level is None:
         return None, None, status
@@ -81,7 +83,7 @@ def _play(args, domain):
         return None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
-            trace = domain.play(level, shot, seconds=args.seconds, whole=True)
+            trace = simulate(level, shot, domain=domain, seconds=args.seconds)
     except ValueError as error:  # a target out of reach of the launch
         raise UsageError(str(error)) from None
     return level, shot, trace

@@ -47,6 +47,7 @@ class TaskEnv(gymnasium.Env):
         self.observation_kind = observation
         self.render_mode = render_mode
         self.action_space = self.simulator.action_space
+        # Unbounded: even PHYRE's normalised features pass 1 (a bar longer than the scene).
         features = spaces.Box(-np.inf, np.inf, (playing.max_objects, len(playing.feature_names)), np.float32)
         picture = spaces.Box(0, 255, playing.picture_shape, np.uint8)
         self.observation_space = {"features": features, "picture": picture, "both": spaces.Dict(features=features, picture=picture)}[observation]

@@ -67,7 +67,7 @@ class ActionSimulator:
         gathered = sources.gather(tasks)
         name = domain or gathered[0].domain
         self.tasks: list[Task] = sources.of_domain(gathered, name)
-        self.task_ids: list[str] = [sources.task_id(t) for t in self.tasks]
+        self.task_ids: list[str] = sources.task_ids(self.tasks)
         self._domains = [domain_of(t, world, backend) for t in self.tasks]
         self.domain = self._domains[0]
         self.playing = self.domain.playing

@@ -15,6 +15,18 @@ def task_id(task: Task) -> str:
     return f"{task.scenario}/{task.seed}"
 
 
+def task_ids(tasks: list[Task]) -> list[str]:
+    """Each task's id, made unique: a scenario and seed met again (two datasets of one
+    scenario, made with other settings) is `SCENARIO/SEED~2`, `~3`, … in order."""
+    seen: dict[str, int] = {}
+    ids = []
+    for task in tasks:
+        base = task_id(task)
+        seen[base] = seen.get(base, 0) + 1
+        ids.append(base if seen[base] == 1 else f"{base}~{seen[base]}")
+    return ids
+
+
 def gather(source) -> list[Task]:
     """Every task of `source`, in order (FileError for a path that is neither a task file nor a
     dataset; ValueError for no task at all)."""

@@ -78,6 +78,8 @@ def test_the_simulator_answers_phyres_way():
         assert result.status is physc.SimulationStatus.SOLVED and result.status.is_solved() and result.reward == 1.0
     point = physc.ActionSimulator(TASKS, mode="point")
     assert point.simulate_action("F/0", {"target": (17.0, 7.0), "trajectory": 0}).status.is_invalid()
+    twice = physc.ActionSimulator([TASKS[0], TASKS[0]])
+    assert twice.task_ids == ["F/0", "F/0~2"]
     with pytest.raises(KeyError, match="no task 'G/0'"):
         sim.simulate_action("G/0", [10.0])
     with pytest.raises(ValueError, match="action mode"):
