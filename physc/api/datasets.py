@@ -88,6 +88,19 @@ def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: 
     return jobs
 
 
+def clashes(jobs) -> str | None:
+    """What stops the jobs from making one dataset, in words, or None: a dataset names its
+    folders after scenarios, so two files may not have a scenario of one name."""
+    files_of: dict[str, set] = {}
+    for job in jobs:
+        files_of.setdefault(job.scenario, set()).add(job.path)
+    both = sorted(name for name, paths in files_of.items() if len(paths) > 1)
+    if not both:
+        return None
+    where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in both)
+    return f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename"
+
+
 def _settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance) -> dict:
     from physc.backends import DEFAULT_BACKEND
 
@@ -115,10 +128,14 @@ def generate(
     validate: bool = True,
     png: bool = False,
     accidental: bool = False,
+    dask_workers: int | None = None,
+    scheduler: str | None = None,
 ) -> Dataset:
     """`physc generate FILES --tasks N --out OUT`: `tasks` tasks (seeds `seed` …) of every
-    scenario of `files` (or of `scenarios`), on `jobs` local processes, into the folder `out`.
-    The bytes written depend on the scenarios, seeds and settings only, never on `jobs`."""
+    scenario of `files` (or of `scenarios`), into the folder `out`: on `jobs` local processes,
+    or on a Dask cluster of `dask_workers` started here, or on the one at `scheduler` (an
+    address; `pip install -e '.[dask]'`). The bytes written depend on the scenarios, seeds and
+    settings only, never on where they were made."""
     from physc.dataset.build import build
     from physc.execution import executor_for
 
@@ -129,7 +146,10 @@ def generate(
         files, tasks, seed, scenarios, needs, validate=validate, picture=png, accidental=accidental,
         **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
     )
-    with executor_for(jobs) as executor:
+    problem = clashes(made)
+    if problem:
+        raise ScenarioError((), None, ", ".join(sorted({job.path for job in made})), problem)
+    with executor_for(jobs, scheduler, dask_workers) as executor:
         rows = build(made, Path(out), executor, command="physc.generate(…)")
     return Dataset(Path(out), tuple(rows))
 
@@ -159,10 +179,13 @@ def evaluate(
     min_robustness: int | None = MIN_ROBUSTNESS,
     verify_backend: str | None = None,
     acceptance: bool = True,
+    dask_workers: int | None = None,
+    scheduler: str | None = None,
 ) -> Evaluation:
     """`physc eval FILES --tasks N --out OUT`: generate and measure `tasks` tasks of every
     scenario (stability, intended and accidental solvability, fidelity, cost), resuming the
-    records already in `out`, and write the report there."""
+    records already in `out`, and write the report there; where the work runs as in
+    `generate`."""
     import time
 
     from physc.evaluation.report import write
@@ -173,7 +196,7 @@ def evaluate(
 
     made = _jobs(files, tasks, seed, scenarios, STAGE_NEEDS["task"] + ("replay", "stability"), validate=False, **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance))
     started = time.perf_counter()
-    with executor_for(jobs) as executor:
+    with executor_for(jobs, scheduler, dask_workers) as executor:
         records = run(made, Path(out), executor)
     summary = write(records, Path(out), "physc.evaluate(…)", time.perf_counter() - started)
     return Evaluation(Path(out), tuple(records), summary)

@@ -38,13 +38,11 @@ def cmd_generate(args) -> int:
     jobs, status = selected_jobs(args, jobs, problems)
     if status is not None:
         return status
-    files_of: dict[str, set] = {}
-    for job in jobs:
-        files_of.setdefault(job.scenario, set()).add(job.path)
-    clashes = sorted(name for name, paths in files_of.items() if len(paths) > 1)
-    if clashes:
-        where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in clashes)
-        raise UsageError(f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename")
+    from physc.api.datasets import clashes
+
+    problem = clashes(jobs)
+    if problem:
+        raise UsageError(problem)
     needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
     status = refused_domains(args, jobs, needs, "physc generate")
     if status is not None:

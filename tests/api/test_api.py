@@ -118,3 +118,12 @@ def test_datasets_generate_and_load(tmp_path):
     loaded = physc.load_dataset(tmp_path / "ds")
     assert len(loaded) == 1 and [t.seed for t in loaded.tasks()] == [1]
     assert (tmp_path / "ds" / "manifest.parquet").is_file()
+    on_dask = physc.generate(F, tmp_path / "dask", tasks=1, seed=1, dask_workers=1)
+    assert (tmp_path / "dask" / on_dask.rows[0]["task"]).read_bytes() == (tmp_path / "ds" / dataset.rows[0]["task"]).read_bytes()
+
+
+def test_one_dataset_cannot_hold_two_scenarios_of_one_name(tmp_path):
+    copy = tmp_path / "again.phys"
+    copy.write_text(F.read_text())
+    with pytest.raises(physc.ScenarioError, match="two files have a scenario named 'F'"):
+        physc.generate([F, copy], tmp_path / "ds")
