@@ -15,6 +15,13 @@ import abc
 import numpy as np
 
 
+def states_at(trace, step: int) -> dict[str, tuple[float, float, float] | None]:
+    """Each simulated body's (x, y, angle in radians) after step `step` of `trace`, in the
+    engine's units; None for a body gone by then (destroyed, or out of the level)."""
+    row = trace.states[min(step, trace.steps - 1)]
+    return {name: (None if np.isnan(row[i, 0]) else (float(row[i, 0]), float(row[i, 1]), float(row[i, 2]))) for i, name in enumerate(trace.names)}
+
+
 class Playing(abc.ABC):
     """A domain's rules of play for agents."""
 
@@ -67,6 +74,16 @@ class Playing(abc.ABC):
     @abc.abstractmethod
     def picture(self, domain, level) -> np.ndarray:
         """The level as an array of `picture_shape` (uint8)."""
+
+    @abc.abstractmethod
+    def frame_features(self, domain, level, action, trace, step: int) -> np.ndarray:
+        """The features of the level as `trace` (a play of the domain's `action`) has it after
+        step `step` (0: the first): its bodies where the simulation put them, the action
+        included where the domain shows it (PHYRE's balls), rows kept in the initial order."""
+
+    @abc.abstractmethod
+    def frame_picture(self, domain, level, action, trace, step: int) -> np.ndarray:
+        """The picture of the level as `trace` has it after step `step`."""
 
     @abc.abstractmethod
     def reward(self, trace) -> tuple[float, dict]:

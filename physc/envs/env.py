@@ -1,6 +1,7 @@
 """A Gymnasium environment over physc's tasks of one domain (physc/AngryBirds-v0,
 physc/PhyreLike-v0): an episode is one task; the agent acts until a valid action has been
-played to rest (PHYRE's rule: an invalid action is not played, and the episode goes on).
+played to rest (PHYRE's rule: an invalid action is not played, and the episode goes on), and
+the last observation is the level as it then lies.
 
     import gymnasium, physc.envs
     env = gymnasium.make("physc/AngryBirds-v0", tasks="out/f.json")
@@ -56,20 +57,26 @@ class TaskEnv(gymnasium.Env):
             if rows > playing.max_objects:
                 raise ValueError(f"the task {self.simulator.task_ids[index]} has {rows} objects, more than the {playing.max_objects} an observation holds")
         self.task_index = 0
+        self._last = None  # the last valid play of the episode
 
     @property
     def task_ids(self) -> list[str]:
         return self.simulator.task_ids
 
-    def _observation(self):
-        if self.observation_kind == "picture":
-            return self.simulator.picture(self.task_index)
-        rows = self.simulator.features(self.task_index)
-        padded = np.zeros(self.observation_space["features"].shape if self.observation_kind == "both" else self.observation_space.shape, np.float32)
-        padded[: len(rows)] = rows
+    def _observation(self, result=None):
+        """The task's level as the episode begins, or, after the valid play `result`, as it lies
+        when everything rests."""
+        features = picture = None
+        if self.observation_kind != "picture":
+            rows = self.simulator.features(self.task_index) if result is None else self.simulator.frame(result)
+            shape = self.observation_space["features"].shape if self.observation_kind == "both" else self.observation_space.shape
+            features = np.zeros(shape, np.float32)
+            features[: len(rows)] = rows
+        if self.observation_kind != "features":
+            picture = self.simulator.picture(self.task_index) if result is None else self.simulator.frame(result, picture=True)
         if self.observation_kind == "both":
-            return {"features": padded, "picture": self.simulator.picture(self.task_index)}
-        return padded
+            return {"features": features, "picture": picture}
+        return features if picture is None else picture
 
     def _info(self) -> dict:
         task = self.simulator.tasks[self.task_index]
@@ -82,15 +89,22 @@ class TaskEnv(gymnasium.Env):
             self.task_index = int(self.np_random.integers(len(self.simulator)))
         else:
             self.task_index = self.simulator._index(chosen)
+        self._last = None
         return self._observation(), self._info()
 
     def step(self, action):
         rng = random.Random(int(self.np_random.integers(2**63))) if self.noise else None
         result = self.simulator.simulate_action(self.task_index, action, noise=rng)
         info = {**self._info(), **result.info}
-        return self._observation(), float(result.reward), not result.status.is_invalid(), False, info
+        valid = not result.status.is_invalid()
+        if valid:
+            self._last = result
+        return self._observation(result if valid else None), float(result.reward), valid, False, info
 
     def render(self):
-        if self.render_mode == "rgb_array":
-            return self.simulator.picture(self.task_index)
-        return None
+        """The picture of the level as the last step left it (as the episode began, before one)."""
+        if self.render_mode != "rgb_array":
+            return None
+        if self._last is not None:
+            return self.simulator.frame(self._last, picture=True)
+        return self.simulator.picture(self.task_index)

@@ -47,12 +47,18 @@ class SimulationStatus(enum.IntEnum):
 class Simulation:
     """One play: its status, its reward (the domain's: angrybirds the share of pigs destroyed),
     what the domain tells of it (`info`: the interactions recognised, whether the task's
-    sequence was realised, …) and the trace itself (None for an invalid action)."""
+    sequence was realised, …) and the trace itself (None for an invalid action). With
+    `need_images` and `need_featurized_objects`, PHYRE's frames: `images` (frames, *picture)
+    and `featurized_objects` (frames, objects, features), every `stride` steps from the first
+    and the last."""
 
     status: SimulationStatus
     reward: float
     info: dict = attrs.field(eq=False)
     trace: object = attrs.field(default=None, eq=False, repr=False)
+    images: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
+    featurized_objects: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
+    played: tuple = attrs.field(default=(), eq=False, repr=False)  # (the domain, the level and the action as played: noisy ones under noise)
 
 
 class ActionSimulator:
@@ -113,9 +119,14 @@ class ActionSimulator:
             self.action_space.seed(seed)
         return self.action_space.sample()
 
-    def simulate_action(self, task: int | str, action, *, noise: int | random.Random | None = None) -> Simulation:
+    def simulate_action(
+        self, task: int | str, action, *, noise: int | random.Random | None = None, need_images: bool = False,
+        need_featurized_objects: bool = False, stride: int | None = None,
+    ) -> Simulation:
         """`action` played on the task (an index or an id), to rest; with `noise` (a seed or a
-        random.Random), under the domain's noise model."""
+        random.Random), under the domain's noise model. `need_images`, `need_featurized_objects`:
+        the frames of the play, every `stride` steps (default: a second of simulated time, as
+        PHYRE's 60 steps)."""
         from physc.simulation.fidelity import fidelity
 
         index = self._index(task)
@@ -133,7 +144,24 @@ class ActionSimulator:
             "valid": True, "solved": bool(trace.solved), **told,
             "interactions": [i.text() for i in trace.interactions], "realised": fidelity(scenario, trace).valid,
         }
-        return Simulation(SimulationStatus.SOLVED if trace.solved else SimulationStatus.NOT_SOLVED, reward, info, trace)
+        images = featurized = None
+        if need_images or need_featurized_objects:
+            every = stride or max(int(round(1.0 / trace.dt)), 1)
+            steps = sorted({*range(0, trace.steps, every), trace.steps - 1})
+            if need_images:
+                images = np.stack([self.playing.frame_picture(domain, level, played, trace, s) for s in steps])
+            if need_featurized_objects:
+                featurized = np.stack([self.playing.frame_features(domain, level, played, trace, s) for s in steps])
+        status = SimulationStatus.SOLVED if trace.solved else SimulationStatus.NOT_SOLVED
+        return Simulation(status, reward, info, trace, images, featurized, (domain, level, played))
+
+    def frame(self, result: Simulation, step: int = -1, picture: bool = False) -> np.ndarray:
+        """The features (or, with `picture`, the picture) of a valid play's level after step
+        `step` (-1: the last, when everything rests)."""
+        domain, level, played = result.played
+        trace = result.trace
+        make = self.playing.frame_picture if picture else self.playing.frame_features
+        return make(domain, level, played, trace, trace.steps - 1 if step < 0 else step)
 
 
 def _whole(domain) -> dict:

@@ -48,9 +48,13 @@ def test_the_solution_scores_one_and_realises_the_sequence():
     assert len(rows) == len(task.level.objects)
     pig = env.unwrapped.playing.feature_names.index("is_pig")
     assert rows[:, pig].sum() == 1
-    _, reward, terminated, truncated, info = env.step(np.array([task.solution.release_angle], np.float32))
+    after, reward, terminated, truncated, info = env.step(np.array([task.solution.release_angle], np.float32))
     assert (reward, terminated, truncated) == (1.0, True, False)
     assert info["solved"] and info["realised"] and info["pigs_destroyed"] == 1
+    # The last observation is the level at rest: the pig's row is gone, the falling block has fallen.
+    assert after[:, pig].sum() == 0 and len(after[after.any(axis=1)]) == len(rows) - 1
+    block = next(i for i, o in enumerate(task.level.objects) if o.name == "fBlock")
+    assert after[block, 1] < observation[block, 1] - 2
 
 
 def test_an_unreachable_point_is_not_played_and_the_episode_goes_on():
@@ -84,6 +88,19 @@ def test_the_simulator_answers_phyres_way():
         sim.simulate_action("G/0", [10.0])
     with pytest.raises(ValueError, match="action mode"):
         physc.ActionSimulator(TASKS, mode="drag")
+
+
+def test_the_simulator_gives_phyres_frames():
+    sim = physc.ActionSimulator(TASKS[0])
+    solution = [sim.tasks[0].solution.release_angle]
+    played = sim.simulate_action(0, solution, need_images=True, need_featurized_objects=True)
+    frames = len(played.images)
+    assert frames == played.trace.steps // 50 + 1  # one a simulated second (0.02 s steps), and the last
+    assert played.images.shape[1:] == sim.playing.picture_shape and played.images.dtype == np.uint8
+    assert played.featurized_objects.shape == (frames, len(sim.tasks[0].level.objects), len(sim.playing.feature_names))
+    assert np.allclose(played.featurized_objects[0], sim.features(0), atol=0.1)  # after the first step
+    assert not np.array_equal(played.images[0], played.images[-1])
+    assert len(sim.simulate_action(0, solution, need_featurized_objects=True, stride=10).featurized_objects) > frames
 
 
 def test_the_agents_are_evaluated():

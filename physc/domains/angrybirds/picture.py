@@ -43,21 +43,23 @@ def _outline(obj: LevelObject):
     return patches.Polygon([(obj.x + px * cos - py * sin, obj.y + px * sin + py * cos) for px, py in points])
 
 
-def draw_level(level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True):
+def draw_level(level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True, top: float | None = None):
     """A matplotlib figure of a level in `world` (its frame: bounds, ground, the bird's rest);
-    `paths` maps names to [(x, y), …], drawn as arrows."""
+    `paths` maps names to [(x, y), …], drawn as arrows. `bird`: drawn at rest (True), at a
+    point (x, y), or not at all (False); `top`: the picture's upper edge (by default above
+    the highest object), so that the frames of one play share their scale."""
     frame = world.frame
     left, right, ground = frame.left, frame.right, frame.ground_top
     figure, axes = plt.subplots(figsize=(12, 5.2), dpi=100)
     tops = [o.y + 1.0 for o in level.objects] + [6.0]
     axes.set_xlim(left - 0.5, right + 0.5)
-    axes.set_ylim(ground - 1.2, max(tops) + 0.5)
+    axes.set_ylim(ground - 1.2, top if top is not None else max(tops) + 0.5)
     axes.set_aspect("equal")
     axes.add_patch(patches.Rectangle((left, ground - 1.2), right - left, 1.2, color="#8fbf5a", zorder=0))
     sling_x, sling_y = level.slingshot
     axes.add_patch(patches.Rectangle((sling_x - 0.12, ground), 0.24, sling_y + 0.9 - ground, color="#6b4226", zorder=1))
-    if bird:
-        axes.add_patch(patches.Circle(world.launch.bird_rest, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
+    if bird is not False:
+        axes.add_patch(patches.Circle(world.launch.bird_rest if bird is True else bird, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
     for obj in level.objects:
         kind = by_prefab(obj.type).kind
         if kind == "platform":

@@ -87,17 +87,60 @@ class AngryBirdsPlaying(Playing):
         return np.array(rows, np.float32).reshape(len(rows), len(self.feature_names))
 
     def picture(self, domain, level) -> np.ndarray:
+        return self._rendered(domain, level, True)
+
+    @staticmethod
+    def _rendered(domain, level, bird, top: float | None = None) -> np.ndarray:
+        """picture.py's drawing of the level as an RGB array of PICTURE's shape."""
         import matplotlib.pyplot as plt
 
         from physc.domains.angrybirds.picture import draw_level
 
-        figure = draw_level(level, domain.world)
+        figure = draw_level(level, domain.world, bird=bird, top=top)
         try:
             figure.canvas.draw()
             image = np.asarray(figure.canvas.buffer_rgba())[..., :3].copy()
         finally:
             plt.close(figure)
         return image
+
+    @staticmethod
+    def _moved(level, trace, step: int):
+        """(the level's objects where the trace has them after `step`, the names gone by then,
+        the bird's point or False once it is gone)."""
+        import math
+
+        import attrs
+
+        from physc.domains.playing import states_at
+
+        states = states_at(trace, step)
+        moved, gone = [], set()
+        for obj in level.objects:
+            state = states.get(obj.name, ())
+            if state is None:
+                gone.add(obj.name)
+            moved.append(obj if not state else attrs.evolve(obj, x=state[0], y=state[1], rotation=math.degrees(state[2])))
+        bird = states.get("bird")
+        return attrs.evolve(level, objects=tuple(moved)), gone, (bird[0], bird[1]) if bird else False
+
+    def frame_features(self, domain, level, action, trace, step: int) -> np.ndarray:
+        """Every object's row, in the level's order; an object gone by then is a row of zeros."""
+        moved, gone, _ = self._moved(level, trace, step)
+        rows = self.features(domain, moved)
+        for index, obj in enumerate(moved.objects):
+            if obj.name in gone:
+                rows[index] = 0.0
+        return rows
+
+    def frame_picture(self, domain, level, action, trace, step: int) -> np.ndarray:
+        """The objects still there where they are, the bird where it flies, at the scale of the
+        level's own picture."""
+        import attrs
+
+        moved, gone, bird = self._moved(level, trace, step)
+        shown = attrs.evolve(moved, objects=tuple(o for o in moved.objects if o.name not in gone))
+        return self._rendered(domain, shown, bird, top=max([o.y + 1.0 for o in level.objects] + [6.0]) + 0.5)
 
     def reward(self, trace) -> tuple[float, dict]:
         pigs = list(trace.goal)

@@ -83,14 +83,14 @@ def _fill_circle(image: np.ndarray, cx: float, cy: float, radius: float, color: 
         y += 1
 
 
-def raster(task: dict, ball: tuple[float, float, float] | None = None) -> np.ndarray:
+def raster(task: dict, *balls: tuple[float, float, float]) -> np.ndarray:
     """The task's scene (task_file.py's structure) as PHYRE's picture of colour indices
-    (uint8, 256 × 256, row 0 at the bottom), with the agent's `ball` (x, y, radius in
-    pixels) drawn last, if given."""
+    (uint8, 256 × 256, row 0 at the bottom), with the agent's `balls` (x, y, radius in
+    pixels) drawn last."""
     scene = task["scene"]
     image = np.zeros((scene["height"], scene["width"]), dtype=np.uint8)
     bodies = list(scene["bodies"])
-    if ball is not None:
+    for ball in balls:
         bodies.append({"position": {"x": ball[0], "y": ball[1]}, "angle": 0.0, "color": RED, "shapes": [{"circle": {"radius": ball[2]}}]})
     for body in bodies:
         color = body.get("color", 0)
@@ -118,13 +118,13 @@ def jar_offset(diameter: float) -> float:
     return moment / area
 
 
-def features(task: dict, ball: tuple[float, float, float] | None = None) -> np.ndarray:
+def features(task: dict, *balls: tuple[float, float, float]) -> np.ndarray:
     """PHYRE's feature vectors (float32, one row of 14 per body with a shape type; the
-    agent's `ball` last, if given)."""
+    agent's `balls` last: x, y, radius in pixels, and the angle where a ball has turned)."""
     rows = []
     bodies = [b for b in task["scene"]["bodies"] if b.get("shapeType", 0)]
-    if ball is not None:
-        bodies.append({"position": {"x": ball[0], "y": ball[1]}, "angle": 0.0, "diameter": 2 * ball[2], "shapeType": 1, "color": RED})
+    for ball in balls:
+        bodies.append({"position": {"x": ball[0], "y": ball[1]}, "angle": ball[3] if len(ball) > 3 else 0.0, "diameter": 2 * ball[2], "shapeType": 1, "color": RED})
     for body in bodies:
         x, y, angle = body["position"]["x"], body["position"]["y"], body.get("angle", 0.0)
         if body["shapeType"] == 3:  # a jar: at its centre of mass

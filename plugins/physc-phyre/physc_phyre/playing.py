@@ -13,7 +13,7 @@ from physc.domains.playing import Playing
 from physc_phyre import observation
 from physc_phyre.actions import from_unit
 from physc_phyre.task_file import task_json
-from physc_phyre.world import SCENE
+from physc_phyre.world import PIXELS_PER_METRE, SCENE
 
 ACTION_MODES = {"BALL": "ball", "TWO_BALLS": "two_balls"}  # a level's tier → its action mode
 SIZES = {"ball": 3, "two_balls": 6}
@@ -79,6 +79,31 @@ class PhyrePlaying(Playing):
 
     def picture(self, domain, level) -> np.ndarray:
         return observation.raster(json.loads(task_json(level)))
+
+    @staticmethod
+    def _frame(level, action, trace, step: int) -> tuple[dict, list[tuple[float, ...]]]:
+        """(the task in PHYRE's structure with its bodies where the trace has them after `step`,
+        the agent's balls there: x, y, radius in pixels, angle)."""
+        import attrs
+        from physc.domains.playing import states_at
+
+        states = states_at(trace, step)
+        moved = tuple(
+            attrs.evolve(b, x=states[b.name][0] * PIXELS_PER_METRE, y=states[b.name][1] * PIXELS_PER_METRE, angle=states[b.name][2])
+            if states.get(b.name) else b
+            for b in level.bodies
+        )
+        radii = {name: ball.radius for name, ball in zip(level.players, action.balls)}
+        balls = [(s[0] * PIXELS_PER_METRE, s[1] * PIXELS_PER_METRE, radii[name], s[2]) for name in level.players if (s := states.get(name))]
+        return json.loads(task_json(attrs.evolve(level, bodies=moved))), balls
+
+    def frame_features(self, domain, level, action, trace, step: int) -> np.ndarray:
+        task, balls = self._frame(level, action, trace, step)
+        return observation.features(task, *balls).astype(np.float32)
+
+    def frame_picture(self, domain, level, action, trace, step: int) -> np.ndarray:
+        task, balls = self._frame(level, action, trace, step)
+        return observation.raster(task, *[ball[:3] for ball in balls])
 
     def reward(self, trace) -> tuple[float, dict]:
         return float(trace.solved), {}

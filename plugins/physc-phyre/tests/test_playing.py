@@ -57,6 +57,19 @@ def test_the_intended_action_solves_and_an_occluding_one_is_not_played(ledge):
     assert (reward, terminated, info["valid"]) == (0.0, False, False)
 
 
+def test_frames_as_phyre_gives_them(ledge):
+    sim = physc.ActionSimulator(ledge)
+    played = sim.simulate_action(0, ledge.solution.unit(), need_images=True, need_featurized_objects=True)
+    first, last = played.featurized_objects[0], played.featurized_objects[-1]
+    assert len(first) == len(sim.features(0)) + 1  # the scene's bodies, then the agent's ball (PHYRE's order)
+    assert first[-1][sim.playing.feature_names.index("color_red")] == 1.0
+    assert np.allclose(first[:-1], sim.features(0), atol=1e-3)
+    green = sim.playing.feature_names.index("color_green")
+    moved = [i for i, row in enumerate(first) if row[green] == 1.0]
+    assert not np.allclose(first[moved, :2], last[moved, :2])  # the green object went to the target
+    assert played.images.shape[1:] == (256, 256) and (played.images[0] == 1).any()  # the red ball is drawn
+
+
 def test_the_two_ball_tier_takes_six_numbers(two_balls, ledge):
     sim = physc.ActionSimulator(two_balls)
     assert sim.mode == "two_balls" and sim.action_space.shape == (6,)
