@@ -14,7 +14,8 @@ from collections import defaultdict
 
 
 def random_agent(env, observation, attempt: int):
-    """A uniform action of the environment's action space (seeded by `env.reset(seed=…)`)."""
+    """A uniform action of the environment's action space (its own generator:
+    `env.action_space.seed(…)`, which `evaluate_agent` seeds)."""
     return env.action_space.sample()
 
 
@@ -45,6 +46,7 @@ def evaluate_agent(env, agent, episodes_per_task: int = 1, seed: int = 0) -> dic
     share solved, the mean reward, the share realising the task's sequence, per scenario and
     over all, and the plays that ended without a valid action."""
     by_scenario = defaultdict(list)
+    env.action_space.seed(seed)  # the random agent's draws, so that an evaluation is the same each time
     for index, task_id in enumerate(env.unwrapped.task_ids):
         for episode in range(episodes_per_task):
             played = play_episode(env, agent, seed=seed + episode * 100_003 + index, options={"task": task_id})

@@ -109,6 +109,8 @@ def test_the_simulator_gives_phyres_frames():
 def test_the_agents_are_evaluated():
     env = gymnasium.make("physc/AngryBirds-v0", tasks=TASKS, noise=False)
     heuristic = evaluate_agent(env, heuristic_agent)
+    random = evaluate_agent(env, random_agent, episodes_per_task=2)
+    assert random == evaluate_agent(env, random_agent, episodes_per_task=2)  # the same evaluation each time
     random = evaluate_agent(env, random_agent)
     assert heuristic["all"]["plays"] == random["all"]["plays"] == 3
     assert set(heuristic["scenarios"]) == {"F", "S", "SF"}
