@@ -13,13 +13,13 @@ As a library (docs/api.md):
 
 Agents play the tasks through Gymnasium (`import physc.envs`; `physc/AngryBirds-v0`,
 `physc/PhyreLike-v0`) or PHYRE's way (`physc.ActionSimulator`). The names are imported when
-first used, so `import physc` stays cheap for the command line.
+first used, so `import physc` stays cheap for the command line; `__init__.pyi` states them for
+type checkers and editors.
 """
 
 from __future__ import annotations
 
 import importlib
-from typing import TYPE_CHECKING
 
 __version__ = "0.1.0"
 
@@ -42,18 +42,6 @@ _EXPORTS = {
 }
 
 __all__ = ["__version__", *sorted(_EXPORTS)]
-
-if TYPE_CHECKING:  # what type checkers and editors see; at run time the names are imported when first used
-    from physc.api import (
-        Dataset, Evaluation, FileError, NoTask, PhyscError, ScenarioError, check, compile, domain_of, evaluate, generate,
-        level_text, load_dataset, load_task, render, read_level, save_level, save_task, scenario_of, scenarios, simulate, verify,
-    )
-    from physc.compiler.task import Solution, Task
-    from physc.diagnostics import Diagnostic
-    from physc.domains.angrybirds.launch import Shot
-    from physc.envs.simulator import ActionSimulator, Simulation, SimulationStatus
-    from physc.simulation.trace import Trace
-
 
 def __getattr__(name: str):
     module = _EXPORTS.get(name)

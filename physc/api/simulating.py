@@ -1,4 +1,4 @@
-"""Playing levels from Python: what `physc simulate`, `trace` and `verify` do.
+"""Playing and drawing levels from Python: what `physc simulate`, `trace`, `render` and `verify` do.
 
 `simulate` plays a task's level (or any level of a domain) with an action and returns the
 trace (physc.simulation.trace.Trace): whether the goal was met (`solved`), the interactions
@@ -16,7 +16,7 @@ from physc.api.errors import FileError
 from physc.api.tasks import domain_of, scenario_of
 from physc.compiler.task import Task
 
-__all__ = ["read_level", "simulate", "verify"]
+__all__ = ["read_level", "render", "simulate", "verify"]
 
 
 def read_level(source: str | os.PathLike | bytes, domain: str = "angrybirds"):
@@ -109,3 +109,21 @@ def verify(task: Task, *, world: str | None = None, backend: str | None = None, 
     domain = domain_of(task, world, backend)
     count = noisy_replays(domain) if replays is None else replays
     return replay(domain, scenario_of(task), task.level, task.solution, domain.backend.name, noisy=count)
+
+
+def render(
+    task, action=None, *, fmt: str = "png", title: str | None = None, domain=None, world: str | None = None, backend: str | None = None,
+) -> bytes:
+    """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
+    notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
+    those of another `action`; a domain's level (`read_level`) drawn alone or with the paths
+    `action` makes (`physc render`; `domain` a name, angrybirds by default, or a bound Domain)."""
+    if isinstance(task, Task):
+        played = domain_of(task, world, backend)
+        if action is None and title is None:
+            return played.picture(task, fmt)
+        paths = simulate(task, action if action is not None else task.solution, world=world, backend=backend).paths()
+        return played.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
+    played = bound_domain(domain, world, backend)
+    paths = {} if action is None else simulate(task, action, domain=played).paths()
+    return played.draw(task, title or "", paths, fmt)

@@ -1,4 +1,4 @@
-"""Tasks from Python: read and write task files and level files, draw a task or a level, and find the
+"""Tasks from Python: read and write task files and level files, and find the
 domain, world and engine a task was made in.
 
 A task file is what `physc compile --task` and `physc generate` write: the task
@@ -15,7 +15,7 @@ import os
 from physc.api.errors import FileError
 from physc.compiler.task import Solution, Task
 
-__all__ = ["domain_of", "level_text", "load_task", "render", "save_level", "save_task", "scenario_of"]
+__all__ = ["domain_of", "level_text", "load_task", "save_level", "save_task", "scenario_of"]
 
 MAX_TASK_BYTES = 50_000_000
 FIELDS = ("domain", "scenario", "source", "level", "solution")
@@ -147,23 +147,3 @@ def save_level(task: Task, path: str | os.PathLike) -> None:
     from physc.files import write_atomic
 
     write_atomic(path, level_text(task))
-
-
-def render(
-    task, action=None, *, fmt: str = "png", title: str | None = None, domain=None, world: str | None = None, backend: str | None = None,
-) -> bytes:
-    """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
-    notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
-    those of another `action`; a domain's level (`read_level`) drawn alone or with the paths
-    `action` makes (`physc render`; `domain` a name, angrybirds by default, or a bound Domain)."""
-    from physc.api.simulating import bound_domain, simulate
-
-    if isinstance(task, Task):
-        played = domain_of(task, world, backend)
-        if action is None and title is None:
-            return played.picture(task, fmt)
-        paths = simulate(task, action if action is not None else task.solution, world=world, backend=backend).paths()
-        return played.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
-    played = bound_domain(domain, world, backend)
-    paths = {} if action is None else simulate(task, action, domain=played).paths()
-    return played.draw(task, title or "", paths, fmt)

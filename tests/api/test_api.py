@@ -127,3 +127,13 @@ def test_one_dataset_cannot_hold_two_scenarios_of_one_name(tmp_path):
     copy.write_text(F.read_text())
     with pytest.raises(physc.ScenarioError, match="two files have a scenario named 'F'"):
         physc.generate([F, copy], tmp_path / "ds")
+
+
+def test_the_stub_states_every_export():
+    """physc/__init__.pyi gives type checkers and editors the names __init__.py imports lazily."""
+    import ast
+    from pathlib import Path
+
+    stub = ast.parse((Path(physc.__file__).with_name("__init__.pyi")).read_text())
+    stated = {alias.asname or alias.name for node in stub.body if isinstance(node, ast.ImportFrom) for alias in node.names}
+    assert stated | {"__version__"} == set(physc.__all__)
