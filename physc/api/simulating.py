@@ -72,8 +72,17 @@ def simulate(
     if noise is not None:
         rng = noise if isinstance(noise, random.Random) else random.Random(noise)
         level, action = played.noisy(level, action, rng)
-    whole = {"whole": True} if "whole" in _parameters(played.play) else {}
-    return played.play(level, action, scenario, seconds or getattr(played, "seconds", None), **whole)
+    return play_to_rest(played, level, action, scenario, seconds)
+
+
+def play_to_rest(domain, level, action, scenario=None, seconds: float | None = None):
+    """`domain.play` of the level with the action, judged against `scenario`, until everything
+    rests where the domain can say so (angrybirds' `whole`), within `seconds` (default: the
+    domain's)."""
+    import inspect
+
+    whole = {"whole": True} if "whole" in inspect.signature(domain.play).parameters else {}
+    return domain.play(level, action, scenario, seconds or getattr(domain, "seconds", None), **whole)
 
 
 def bound_domain(domain=None, world: str | None = None, backend: str | None = None):
@@ -90,12 +99,6 @@ def _solution_kinds(domain) -> list[type]:
     from physc.domains.base import solution_classes
 
     return list(solution_classes(domain).values())
-
-
-def _parameters(function) -> set[str]:
-    import inspect
-
-    return set(inspect.signature(function).parameters)
 
 
 def verify(task: Task, *, world: str | None = None, backend: str | None = None, replays: int | None = None):

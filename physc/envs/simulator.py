@@ -101,7 +101,7 @@ class ActionSimulator:
         index = self._index(task)
         if index not in self._features:
             self._features[index] = self.playing.features(self._domains[index], self.tasks[index].level)
-        return self._features[index]
+        return self._features[index].copy()
 
     @property
     def initial_featurized_objects(self) -> list[np.ndarray]:
@@ -127,6 +127,7 @@ class ActionSimulator:
         random.Random), under the domain's noise model. `need_images`, `need_featurized_objects`:
         the frames of the play, every `stride` steps (default: a second of simulated time, as
         PHYRE's 60 steps)."""
+        from physc.api.simulating import play_to_rest
         from physc.simulation.fidelity import fidelity
 
         index = self._index(task)
@@ -138,7 +139,7 @@ class ActionSimulator:
             rng = noise if isinstance(noise, random.Random) else random.Random(noise)
             level, played = domain.noisy(level, played, rng)
         scenario = self._scenarios[index]
-        trace = domain.play(level, played, scenario, **_whole(domain))
+        trace = play_to_rest(domain, level, played, scenario)
         reward, told = self.playing.reward(trace)
         info = {
             "valid": True, "solved": bool(trace.solved), **told,
@@ -163,9 +164,3 @@ class ActionSimulator:
         make = self.playing.frame_picture if picture else self.playing.frame_features
         return make(domain, level, played, trace, trace.steps - 1 if step < 0 else step)
 
-
-def _whole(domain) -> dict:
-    """`play` to rest where the domain can (angrybirds' `whole`: until everything rests)."""
-    import inspect
-
-    return {"whole": True} if "whole" in inspect.signature(domain.play).parameters else {}
