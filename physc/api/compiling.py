@@ -81,6 +81,14 @@ def selected(source: str | os.PathLike, scenario: str | None):
     return ast_node, ir, analysis
 
 
+def check_min_robustness(value: int | None, domain, name: str = "min_robustness") -> None:
+    """A fallback's least number of noisy replays passed (`name`: how the caller calls it)
+    counts the domain's replays: from 1 to their number (ValueError otherwise)."""
+    replays = getattr(domain, "robustness_replays", None)
+    if value is not None and replays is not None and not 1 <= value <= replays:
+        raise ValueError(f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}")
+
+
 def pipeline(scenario_ast, ir, domain, seed: int = 0, **settings):
     """The generation pipeline (physc.generation.pipeline.Pipeline) of one checked scenario in
     `domain` (bound to its world and engine), with the scenario's block form as the task's
@@ -146,9 +154,7 @@ def compile(  # noqa: A001 - the library's verb is the command's
 
     scenario_ast, ir, _ = selected(source, scenario)
     domain = bound(load_domain(ir.domain), world, backend)
-    replays = getattr(domain, "robustness_replays", None)
-    if min_robustness is not None and replays is not None and not 1 <= min_robustness <= replays:
-        raise ValueError(f"min_robustness counts the domain's {replays} noisy replays: from 1 to {replays}, not {min_robustness}")
+    check_min_robustness(min_robustness, domain)
     require(domain, STAGE_NEEDS["task"] + (("replay",) if verify_backend else ()), "compile")
     run = pipeline(
         scenario_ast, ir, domain, seed, validate=validate, acceptance=acceptance, layout_budget=layouts, time_budget=time_budget,

@@ -68,6 +68,7 @@ def load_dataset(folder: str | os.PathLike) -> Dataset:
 def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: Sequence[str] | None, needs: tuple[str, ...], **settings):
     """The jobs of `files` (ScenarioError for files with errors, or a scenario not there;
     physc.domains.base.MissingCapability for a domain that lacks a hook in `needs`)."""
+    from physc.api.compiling import check_min_robustness
     from physc.domains import load_domain
     from physc.domains.base import require
     from physc.generation.job import jobs_for
@@ -84,7 +85,9 @@ def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: 
             raise ScenarioError((), None, ", ".join(map(os.fspath, files)), f"no scenario named {', '.join(missing)} in the files")
         jobs = [job for job in jobs if job.scenario in scenarios]
     for name in sorted({job.domain for job in jobs}):
-        require(load_domain(name), needs + (("replay",) if settings.get("verify_backend") else ()), "this run")
+        domain = load_domain(name)
+        require(domain, needs, "this run")
+        check_min_robustness(settings.get("min_robustness"), domain)
     return jobs
 
 
@@ -101,13 +104,31 @@ def clashes(jobs) -> str | None:
     return f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename"
 
 
-def _settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance) -> dict:
+def job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance) -> dict:
+    """The fields of a job (physc.generation.job.Job) that generation's options set, as
+    `physc generate` and `eval` and their functions here name them (None: the default)."""
     from physc.backends import DEFAULT_BACKEND
 
     return dict(
         world=world or "", backend=backend or DEFAULT_BACKEND, time_budget=time_budget, layouts=layouts,
         min_robustness=min_robustness, verify_backend=verify_backend, acceptance=acceptance,
     )
+
+
+def generation_needs(png: bool, verify_backend: str | None) -> tuple[str, ...]:
+    """What a domain must be able to do for a dataset of its tasks (with pictures, verified in
+    a second engine)."""
+    from physc.domains.base import STAGE_NEEDS
+
+    return STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if png else ()) + (("replay",) if verify_backend else ())
+
+
+def evaluation_needs() -> tuple[str, ...]:
+    """What a domain must be able to do for its tasks to be measured: generation, the replays
+    and the measurements."""
+    from physc.domains.base import STAGE_NEEDS
+
+    return STAGE_NEEDS["task"] + ("replay", "stability")
 
 
 def generate(
@@ -139,12 +160,9 @@ def generate(
     from physc.dataset.build import build
     from physc.execution import executor_for
 
-    from physc.domains.base import STAGE_NEEDS
-
-    needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if png else ())
     made = _jobs(
-        files, tasks, seed, scenarios, needs, validate=validate, picture=png, accidental=accidental,
-        **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
+        files, tasks, seed, scenarios, generation_needs(png, verify_backend), validate=validate, picture=png, accidental=accidental,
+        **job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
     )
     problem = clashes(made)
     if problem:
@@ -192,9 +210,10 @@ def evaluate(
     from physc.evaluation.run import run
     from physc.execution import executor_for
 
-    from physc.domains.base import STAGE_NEEDS
-
-    made = _jobs(files, tasks, seed, scenarios, STAGE_NEEDS["task"] + ("replay", "stability"), validate=False, **_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance))
+    made = _jobs(
+        files, tasks, seed, scenarios, evaluation_needs(), validate=False,
+        **job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
+    )
     started = time.perf_counter()
     with executor_for(jobs, scheduler, dask_workers) as executor:
         records = run(made, Path(out), executor)

@@ -80,13 +80,13 @@ def print_json(data) -> None:
 
 
 def check_min_robustness(value: int, domain) -> None:
-    """--min-robustness counts the domain's noisy replays: more than there are cannot be passed."""
-    replays = getattr(domain, "robustness_replays", None)
-    if value is not None and replays is not None and value > replays:
-        raise UsageError(
-            f"--min-robustness takes a whole number from 1 to {replays} (the noisy replays of domain "
-            f"'{domain.name}'), not {value}"
-        )
+    """--min-robustness counts the domain's noisy replays (physc.api.compiling.check_min_robustness)."""
+    from physc.api.compiling import check_min_robustness as check
+
+    try:
+        check(value, domain, "--min-robustness")
+    except ValueError as error:
+        raise UsageError(str(error)) from None
 
 
 def chosen(asked: Sequence[str], installed: Sequence[str], kind: str) -> list[str]:

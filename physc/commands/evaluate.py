@@ -68,7 +68,7 @@ def cmd_eval(args) -> int:
 
     if args.agent:
         return cmd_agent(args)
-    from physc.domains.base import STAGE_NEEDS
+    from physc.api.datasets import evaluation_needs
     from physc.evaluation.run import run
     from physc.generation.job import jobs_for
 
@@ -77,7 +77,7 @@ def cmd_eval(args) -> int:
     jobs, problems = jobs_for(args.files, args.tasks, args.seed, **generation_settings(args), validate=False)
     jobs, status = selected_jobs(args, jobs, problems)
     if status is None:  # generation needs the domain's capabilities, and so do its replays and measurements
-        status = refused_domains(args, jobs, STAGE_NEEDS["task"] + ("replay", "stability"), "physc eval")
+        status = refused_domains(args, jobs, evaluation_needs(), "physc eval")
     if status is not None:
         return status
     folder = Path(args.out)

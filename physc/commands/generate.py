@@ -25,10 +25,10 @@ def _described(row: dict) -> str:
 
 
 def cmd_generate(args) -> int:
+    from physc.api.datasets import clashes, generation_needs
     from physc.dataset.build import build
     from physc.dataset.job import NO_TASK
     from physc.generation.job import jobs_for
-    from physc.domains.base import STAGE_NEEDS
 
     check_batch(args)
     jobs, problems = jobs_for(
@@ -38,13 +38,10 @@ def cmd_generate(args) -> int:
     jobs, status = selected_jobs(args, jobs, problems)
     if status is not None:
         return status
-    from physc.api.datasets import clashes
-
     problem = clashes(jobs)
     if problem:
         raise UsageError(problem)
-    needs = STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if args.png else ()) + (("replay",) if args.verify_backend else ())
-    status = refused_domains(args, jobs, needs, "physc generate")
+    status = refused_domains(args, jobs, generation_needs(args.png, args.verify_backend), "physc generate")
     if status is not None:
         return status
     command = reproducing_command("generate", command_arguments("generate", [*args.files, "--tasks", str(args.tasks), "--out", args.out]))

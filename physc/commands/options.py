@@ -59,9 +59,10 @@ def add_generation(parser, validate: bool = True) -> None:
 
 def generation_settings(args) -> dict:
     """The fields of a job (physc.generation.job.Job) that `add_generation` and `add_target` set."""
-    return dict(
-        layouts=args.layouts, time_budget=args.time_budget, min_robustness=args.min_robustness, acceptance=not args.no_acceptance,
-        world=args.world or "", backend=args.backend, verify_backend=args.verify_backend,
+    from physc.api.datasets import job_settings
+
+    return job_settings(
+        args.world, args.backend, args.time_budget, args.layouts, args.min_robustness, args.verify_backend, not args.no_acceptance,
     )
 
 

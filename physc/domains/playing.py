@@ -22,6 +22,16 @@ def states_at(trace, step: int) -> dict[str, tuple[float, float, float] | None]:
     return {name: (None if np.isnan(row[i, 0]) else (float(row[i, 0]), float(row[i, 1]), float(row[i, 2]))) for i, name in enumerate(trace.names)}
 
 
+def seen_features(env, observation) -> np.ndarray:
+    """The objects' features an agent was shown (a heuristic's input): the observation itself,
+    its "features" when it holds both, or, for a picture alone, the task's features from the
+    environment's simulator."""
+    rows = observation["features"] if isinstance(observation, dict) else observation
+    if not isinstance(rows, np.ndarray) or rows.ndim != 2:
+        rows = env.simulator.features(env.task_index)
+    return rows
+
+
 class Playing(abc.ABC):
     """A domain's rules of play for agents."""
 

@@ -43,6 +43,11 @@ def _outline(obj: LevelObject):
     return patches.Polygon([(obj.x + px * cos - py * sin, obj.y + px * sin + py * cos) for px, py in points])
 
 
+def picture_top(level: Level) -> float:
+    """The upper edge of a level's picture: above its highest object, and never below 6.5."""
+    return max([o.y + 1.0 for o in level.objects] + [6.0]) + 0.5
+
+
 def draw_level(level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True, top: float | None = None):
     """A matplotlib figure of a level in `world` (its frame: bounds, ground, the bird's rest);
     `paths` maps names to [(x, y), …], drawn as arrows. `bird`: drawn at rest (True), at a
@@ -51,9 +56,8 @@ def draw_level(level: Level, world, title: str = "", paths=None, supports=frozen
     frame = world.frame
     left, right, ground = frame.left, frame.right, frame.ground_top
     figure, axes = plt.subplots(figsize=(12, 5.2), dpi=100)
-    tops = [o.y + 1.0 for o in level.objects] + [6.0]
     axes.set_xlim(left - 0.5, right + 0.5)
-    axes.set_ylim(ground - 1.2, top if top is not None else max(tops) + 0.5)
+    axes.set_ylim(ground - 1.2, top if top is not None else picture_top(level))
     axes.set_aspect("equal")
     axes.add_patch(patches.Rectangle((left, ground - 1.2), right - left, 1.2, color="#8fbf5a", zorder=0))
     sling_x, sling_y = level.slingshot

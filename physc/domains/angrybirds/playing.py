@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from physc.domains.angrybirds.catalogue import BY_PREFAB, extent
-from physc.domains.playing import Playing
+from physc.domains.playing import Playing, seen_features
 
 KINDS = ("pig", "block", "platform", "tnt")
 MATERIALS = ("wood", "ice", "stone")
@@ -25,9 +25,7 @@ def aim_at_pigs(env, observation, attempt: int):
     on the low trajectory and then the high one (an unreachable point is not played, so the next
     attempt tries the next). In the angle mode, the release angle of that shot."""
     playing = env.playing
-    rows = observation["features"] if isinstance(observation, dict) else observation
-    if not isinstance(rows, np.ndarray) or rows.ndim != 2:
-        rows = env.simulator.features(env.task_index)
+    rows = seen_features(env, observation)
     column = {name: index for index, name in enumerate(playing.feature_names)}
     pigs = sorted((float(r[column["x"]]), float(r[column["y"]])) for r in rows if r[column["is_pig"]] > 0.5)
     if not pigs:
@@ -138,9 +136,11 @@ class AngryBirdsPlaying(Playing):
         level's own picture."""
         import attrs
 
+        from physc.domains.angrybirds.picture import picture_top
+
         moved, gone, bird = self._moved(level, trace, step)
         shown = attrs.evolve(moved, objects=tuple(o for o in moved.objects if o.name not in gone))
-        return self._rendered(domain, shown, bird, top=max([o.y + 1.0 for o in level.objects] + [6.0]) + 0.5)
+        return self._rendered(domain, shown, bird, top=picture_top(level))
 
     def reward(self, trace) -> tuple[float, dict]:
         pigs = list(trace.goal)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from physc.domains.playing import Playing
+from physc.domains.playing import Playing, seen_features
 
 from physc_phyre import observation
 from physc_phyre.actions import from_unit
@@ -26,9 +26,7 @@ def drop_on_green(env, observation, attempt: int):
     """The heuristic agent: a middle-sized ball dropped on the green object, from just above
     it and, when that is invalid (over a body), from higher up at each next attempt; in the
     two-ball tier the second ball beside the first, further up."""
-    rows = observation["features"] if isinstance(observation, dict) else observation
-    if not isinstance(rows, np.ndarray) or rows.ndim != 2:
-        rows = env.simulator.features(env.task_index)
+    rows = seen_features(env, observation)
     names = {name: index for index, name in enumerate(PhyrePlaying.feature_names)}
     green = [r for r in rows if r[names["color_green"]] > 0.5]
     if not green:
