@@ -15,12 +15,14 @@ changed setting with that reading as its source (`physc worlds -v`).
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+import itertools
+from collections.abc import Callable, Iterator, Mapping
 
 import attrs
 
 from physc.backends.settings import EngineSettings
 from physc.simulation.recognise import Recogniser
+from physc.simulation.trace import Trace
 
 
 class WorldError(Exception):
@@ -40,6 +42,22 @@ class Incline:
     # target at its foot): its angle and length. None: as `descending`, and the domain's length.
     ramp: tuple[float, float] | None = attrs.field(default=None, metadata={"source": "the world's own ramps"})
     ramp_length: tuple[float, float] | None = attrs.field(default=None, metadata={"source": "the world's own ramps"})
+
+
+@attrs.frozen
+class OpenPoint:
+    """A point the target world's files leave open: one setting of the world (`setting`, a
+    dotted path such as "rules.platform_mass") and the values the files allow it (`readings`,
+    the world's own value first). A task counts only where it holds under each reading."""
+
+    setting: str
+    readings: tuple
+    question: str  # what is open, in words
+    source: str  # where the files leave it open
+    label: str = "{value}"  # one reading in words, for messages: "platform mass {value:g}"
+
+    def describe(self, value) -> str:
+        return self.label.format(value=value)
 
 
 @attrs.frozen
@@ -76,11 +94,39 @@ class World:
         changed = tuple(s.path for s in variant.settings() if ours.get(s.path, _MISSING) != s.value)
         return attrs.evolve(variant, changed=changed)
 
+    def open_points(self) -> tuple[OpenPoint, ...]:
+        """What the target world's files leave open (the default: nothing). Declared once, by
+        the domain's world; `physc worlds -v` lists them with their sources."""
+        return ()
+
+    def open_values(self) -> tuple:
+        """This world's value of each open point, in `open_points` order."""
+        return tuple(_get(self, point.setting) for point in self.open_points())
+
+    def read_as(self, values: tuple) -> World:
+        """This world with its open points set to `values` (in `open_points` order): itself when
+        they are its own, else a variant named for the readings that differ."""
+        points = self.open_points()
+        own = self.open_values()
+        if tuple(values) == own:
+            return self
+        world = self
+        for point, value in zip(points, values):
+            world = _set(world, point.setting, value)
+        changed = [point.describe(value) for point, value, mine in zip(points, values, own) if value != mine]
+        return attrs.evolve(
+            world, name=f"{self.name}, {', '.join(changed)}", parent=self.name, reading="a reading of what the world's files leave open",
+            changed=tuple(point.setting for point, value, mine in zip(points, values, own) if value != mine),
+        )
+
     def readings(self) -> tuple[World, ...]:
-        """This world under each reading of what the target world's files leave open, itself
-        first: a task counts only when its solution holds under every one (the generation's
-        check, physc.generation.layout_loop). A world whose files leave nothing open: itself."""
-        return (self,)
+        """This world under every combination of readings of its open points, itself first: a
+        task counts only when its solution holds under every one that can change its outcome
+        (`under_readings` runs just those). A world whose files leave nothing open: itself."""
+        points = self.open_points()
+        own = self.open_values()
+        combos = itertools.product(*(sorted(p.readings, key=lambda v, mine=mine: v != mine) for p, mine in zip(points, own)))
+        return tuple(self.read_as(values) for values in combos)
 
     def settings(self) -> list[Setting]:
         """Every setting, in declaration order, with its source; a variant's changed settings
@@ -94,6 +140,50 @@ class World:
 
 
 _MISSING = object()
+
+
+def under_readings(world: World, run: Callable[[World], Trace], settled: Callable[[Trace], float] | None = None) -> list[tuple[World, Trace]]:
+    """(reading, its trace) for every reading of `world`'s open points that can make `run`
+    (a play of one level and action in a given reading) go another way, `world` itself first.
+
+    A run records which open points decided something in it (`Trace.decisive`); a reading
+    that differs from it only in other points plays the same run. So, starting from the
+    world's own reading, each decisive point is read the other ways in turn, and so on from
+    each new run: every combination of readings plays the same run as one of those explored
+    (at most every combination; usually the world's own and one or two more). `settled`: the
+    time after which nothing a run's rules decide can change what the caller reads of it
+    (a decision after it does not count); None: the whole run."""
+    points = world.open_points()
+    start = world.open_values()
+    seen = {start: run(world)}
+    queue = [start]
+    while queue:
+        values = queue.pop(0)
+        trace = seen[values]
+        until = settled(trace) if settled is not None else float("inf")
+        decisive = {p for d in trace.depends if d.time <= until + 1e-9 for p in d.points}
+        for i, point in enumerate(points):
+            if point.setting not in decisive:
+                continue
+            for value in point.readings:
+                other = values[:i] + (value,) + values[i + 1 :]
+                if other not in seen:
+                    seen[other] = run(world.read_as(other))
+                    queue.append(other)
+    return [(world.read_as(values), trace) for values, trace in seen.items()]
+
+
+def _get(value, path: str):
+    for part in path.split("."):
+        value = getattr(value, part)
+    return value
+
+
+def _set(value, path: str, new):
+    head, _, rest = path.partition(".")
+    if not rest:
+        return attrs.evolve(value, **{head: new})
+    return attrs.evolve(value, **{head: _set(getattr(value, head), rest, new)})
 
 
 def _source(path: str, field_source: str, sources: Mapping[str, str]) -> str:

@@ -60,6 +60,18 @@ def colliders(shape: Circle | Polygon | Compound) -> tuple[int, ...]:
     return (0,) * len(parts(shape))
 
 
+def half_extents(shape: Circle | Polygon | Compound) -> tuple[float, float]:
+    """The half-width and half-height of a shape's box about the body's origin, in its own frame."""
+    w = h = 0.0
+    for part in parts(shape):
+        if isinstance(part, Circle):
+            w, h = max(w, part.radius), max(h, part.radius)
+        else:
+            w = max([w] + [abs(x) for x, _ in part.points])
+            h = max([h] + [abs(y) for _, y in part.points])
+    return w, h
+
+
 @attrs.frozen
 class BodySpec:
     name: str
@@ -75,6 +87,11 @@ class BodySpec:
     gravity_scale: float = 1.0  # relative to the world's gravity
     angular_damping: float = 0.0  # Box2D-style: ω ← ω / (1 + dt · damping) each step
     continuous: bool = False  # swept against moving bodies too (Box2D's bullet; Unity's Continuous detection)
+
+    @property
+    def outline(self) -> tuple[float, float, float, float, float]:
+        """(x, y, angle, half-width, half-height): the body's box where it starts (Trace.outlines)."""
+        return (self.x, self.y, self.angle, *half_extents(self.shape))
 
 
 @attrs.frozen

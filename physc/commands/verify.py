@@ -73,6 +73,8 @@ def cmd_verify(args) -> int:
                 "noisy_passed": result.noisy_passed,
                 "noisy_run": result.noisy_run,
                 "passes": result.passes(replays),
+                "readings": result.readings,
+                "failed_readings": list(result.failed),
                 "trace": result.trace,
                 "why": result.why,
             }
@@ -82,6 +84,8 @@ def cmd_verify(args) -> int:
         print(f"{safe(args.level)}: scenario {scenario.name}, solution {solution.aimed_at}: {verdict} {result.summary()}")
         if result.why:
             print(f"  why: {result.why}")
+        for name in result.failed:
+            print(f"  fails in the reading: {name}")
         print(f"  realised: {result.trace or '(nothing)'}")
     return EXIT_OK if result.passes(replays) else EXIT_INPUT
 

@@ -39,6 +39,9 @@ def cmd_worlds(args) -> int:
                 "domain": name, "world": world.name, "default": world.name == default, "description": world.description,
                 "derived_from": world.parent, "reading": world.reading or None, "changes": list(world.changed),
             }
+            entry["open_points"] = [
+                {"setting": p.setting, "readings": _json(p.readings), "question": p.question, "source": p.source} for p in world.open_points()
+            ]
             if args.verbose:
                 entry["settings"] = [{"setting": s.path, "value": _json(s.value), "source": s.source} for s in world.settings()]
             listing.append((world, entry))
@@ -52,8 +55,15 @@ def cmd_worlds(args) -> int:
         if world.parent:
             values = {s.path: s.value for s in settings}
             print(f"  derived from {world.parent}: " + ", ".join(f"{path} = {_value(values[path])}" for path in world.changed))
+        points = world.open_points()
+        if points:
+            print(f"  open in its files ({len(world.readings())} readings; a task must hold under each): " + "; ".join(
+                f"{p.setting} {' or '.join(_value(v) for v in p.readings)}" for p in points
+            ))
         if args.verbose:
             width = max(len(s.path) for s in settings)
             for s in settings:
                 print(f"  {s.path:<{width}}  {_value(s.value)}  [{s.source}]")
+            for p in points:
+                print(f"  open: {p.setting}: {p.question} [{p.source}]")
     return EXIT_OK

@@ -40,6 +40,7 @@ import random
 from collections.abc import Iterable
 
 from physc.domains.base import Domain, MissingCapability, _no_default
+from physc.simulation.margins import MarginReader, Margins
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 from physc.simulation.scene import Scene, play
@@ -70,6 +71,14 @@ class SimulatedDomain(Domain):
     def recogniser(self) -> Recogniser:
         """The recognition of interactions in the domain's world (thresholds in its units, its kinds)."""
         return self.world.recogniser
+
+    margin_reader = MarginReader
+    """How the domain reads each link's margin from a trace (physc.simulation.margins): the
+    generic reader, which a domain whose physics says more about a link extends."""
+
+    def margins(self, scenario, trace: Trace) -> Margins:
+        """How far each declared link and restriction of `scenario` was from failing in `trace`."""
+        return self.margin_reader(self.recogniser).read(scenario, trace)
 
     seconds: float = 10.0
     """A play's simulated time at most."""

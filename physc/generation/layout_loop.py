@@ -76,22 +76,26 @@ class LayoutLoop:
     def checked(self, result, accept: int | None):
         """`result`, if its solution passes what `physc verify` runs (the recorded solution
         and the domain's noisy replays, drawn as verify draws them) under every reading of
-        what the world's files leave open (`World.readings`), and in the second backend if
-        one is asked for; else the layout given up for that reason (the search goes on to
-        the next layout). `accept`: a fallback needs K of the noisy replays."""
+        what the world's files leave open that can change a replay (physc.worlds.under_readings),
+        and in the second backend if one is asked for; else the layout given up for that
+        reason (the search goes on to the next layout). `accept`: a fallback needs K of the
+        noisy replays."""
         parts = result.parts
         replays = noisy_replays(self.domain)
         needed = accept if accept is not None else replays
-        readings = self.domain.world.readings() if getattr(self.domain, "worlds", ()) else ()
-        places = [(self.domain.at(reading), reading.name, self.domain.backend.name) for reading in readings]
+        places = [(self.domain, None)]
         if self.verify_backend is not None:
-            places.append((self.domain, f"{self.verify_backend}", self.verify_backend))
+            places.append((self.domain, self.verify_backend))
         spent = 0
-        for domain, where, backend in places:
-            check = verify(domain, self.scenario, parts.level, parts.solution, backend, noisy=replays)
-            spent += 1 + check.noisy_run
+        for domain, other in places:
+            check = verify(domain, self.scenario, parts.level, parts.solution, other or domain.backend.name, noisy=replays)
+            spent += check.simulations
             if not check.passes(needed):
-                why = f"the solution fails in {where}" if where == self.verify_backend else f"the solution fails physc verify in the world '{where}'"
+                if other is not None:
+                    why = f"the solution fails in {other}"
+                else:
+                    where = check.failed[0] if check.failed else domain.world.name
+                    why = f"the solution fails physc verify in the world '{where}'"
                 return attrs.evolve(result, satisfied=False, parts=None, simulations=result.simulations + spent, given_up=why, nearest=0)
         return attrs.evolve(result, simulations=result.simulations + spent)
 

@@ -84,7 +84,7 @@ class Recogniser:
         """The interactions of a trace; `radius` gives the rolling radius of each round body."""
         found: list[Interaction] = []
         found += self._hits(trace)
-        intervals = _intervals(trace)
+        intervals = contact_intervals(trace)
         found += self._motion(trace, intervals, radius)
         found += self._falls(trace, intervals)
         found += self._bounces(trace, intervals)
@@ -154,7 +154,7 @@ class Recogniser:
             out.append(Interaction("hit", (actor, target), side(-vx, -vy), c.time))
         return out
 
-    def _on_surfaces(self, trace: Trace, intervals):
+    def on_surfaces(self, trace: Trace, intervals):
         """(mover, surface, the mover's state index, contact spans) for each dynamic body
         touching a static surface from above: the spans whose contact normal, at the contact's
         beginning, points up from the surface into the mover within MAX_TILT of the vertical.
@@ -179,27 +179,34 @@ class Recogniser:
         upward = contact.normal[1] if contact.a == surface else -contact.normal[1]
         return upward >= self.upward
 
+    def motion(self, trace: Trace, index: int, span, r: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(rows, rolling, sliding) of the body `index` over one contact span with a surface:
+        its state rows, and whether it rolls or slides in each (r: its rolling radius, None
+        for a body that cannot roll)."""
+        dt = trace.dt
+        begin, end = span
+        # State row k holds the time (k + 1) · dt.
+        rows = trace.states[int(round(begin / dt)) - 1 : int(round(min(end, trace.duration) / dt)) - 1, index]
+        rows = rows[~np.isnan(rows[:, 0])]
+        speed = np.hypot(rows[:, 3], rows[:, 4])
+        moving = speed >= self.moving
+        if r:
+            # The contact point hardly slips: the spin's sense matches the heading.
+            heading = np.sign(rows[:, 3]) * speed
+            rolling = moving & (np.abs(-rows[:, 5] * r - heading) <= self.roll_slip * speed)
+        else:
+            rolling = np.zeros(len(rows), dtype=bool)
+        sliding = moving & (np.abs(rows[:, 5]) <= self.slide_spin) & ~rolling
+        return rows, rolling, sliding
+
     def _motion(self, trace: Trace, intervals, radius) -> list[Interaction]:
         out = []
         dt = trace.dt
-        for mover, surface, index, spans in self._on_surfaces(trace, intervals):
+        for mover, surface, index, spans in self.on_surfaces(trace, intervals):
             for begin, end in spans:
-                # State row k holds the time (k + 1) · dt.
-                rows = trace.states[int(round(begin / dt)) - 1 : int(round(min(end, trace.duration) / dt)) - 1, index]
-                rows = rows[~np.isnan(rows[:, 0])]
+                rows, rolling, sliding = self.motion(trace, index, (begin, end), radius.get(mover))
                 if not len(rows):
                     continue
-                speed = np.hypot(rows[:, 3], rows[:, 4])
-                spin = np.abs(rows[:, 5])
-                moving = speed >= self.moving
-                r = radius.get(mover)
-                if r:
-                    # The contact point hardly slips: the spin's sense matches the heading.
-                    heading = np.sign(rows[:, 3]) * speed
-                    rolling = moving & (np.abs(-rows[:, 5] * r - heading) <= self.roll_slip * speed)
-                else:
-                    rolling = np.zeros(len(rows), dtype=bool)
-                sliding = moving & (spin <= self.slide_spin) & ~rolling
                 for name, frames in (("roll", rolling), ("slide", sliding)):
                     if frames.sum() * dt >= self.motion_time:
                         first = int(np.argmax(frames))
@@ -234,7 +241,7 @@ class Recogniser:
     def _bounces(self, trace: Trace, intervals) -> list[Interaction]:
         out = []
         dt = trace.dt
-        for mover, surface, index, spans in self._on_surfaces(trace, intervals):
+        for mover, surface, index, spans in self.on_surfaces(trace, intervals):
             pair = frozenset((mover, surface))
             for begin, end in spans:
                 if end - begin >= self.bounce_time or end >= trace.duration:
@@ -257,7 +264,7 @@ def side(dx: float, dy: float) -> str:
     return "above" if dy > 0 else "below"
 
 
-def _intervals(trace: Trace) -> dict[frozenset, list[list[float]]]:
+def contact_intervals(trace: Trace) -> dict[frozenset, list[list[float]]]:
     """Contact intervals per pair: [begin, end] (end = separation, destruction or the end)."""
     ends = {d.name: d.time for d in trace.destructions}
     open_: dict[frozenset, list[float]] = {}

@@ -60,6 +60,7 @@ def play(
     trace = Trace(
         scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
         recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded), goal_met=rules.goal_met(recorded),
+        outlines={body.name: body.outline for body in scene.bodies}, radii=dict(scene.radii),
     )
     if not recognise:
         return trace

@@ -21,7 +21,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, SeparationRecord, Trace
+from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, DestructionRecord, SeparationRecord, Trace
 
 
 @attrs.frozen
@@ -38,6 +38,7 @@ class Snapshot:
     damage: tuple[DamageRecord, ...]
     destructions: tuple[DestructionRecord, ...]
     touching: frozenset[frozenset[str]]
+    depends: tuple[DependenceRecord, ...] = ()
 
     @property
     def time(self) -> float:
@@ -63,7 +64,7 @@ class Snapshot:
             touching[pair] = 0 if parted else 1
         return cls(
             step, trace.dt, trace.names, trace.states[:step].copy(), contacts, separations, until(trace.damage),
-            until(trace.destructions), frozenset(p for p, t in touching.items() if t),
+            until(trace.destructions), frozenset(p for p, t in touching.items() if t), until(trace.depends),
         )
 
     @staticmethod

@@ -39,7 +39,7 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         target = declared.objects[1]
         struck = trace.states[max(int((since - STRIKE) / trace.dt), 0) :, trace.index(actor), 3:5]
         speed = float(np.nanmax(np.hypot(struck[:, 0], struck[:, 1]))) if len(struck) else speed
-        dealt = [d for d in trace.damage if d.target == target and d.by == actor and d.time >= since]
+        dealt = [d for d in trace.damage if d.target == target and d.by == actor and d.time >= since and d.amount > 0]
         if dealt:
             left = min(d.life for d in dealt)
             return (

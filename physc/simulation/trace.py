@@ -48,6 +48,24 @@ class DamageRecord:
     # that was to destroy it needed (physc.simulation.stopped). None where no rule says.
     attacker: str | None = None
     needed: float | None = None
+    # The least and the most damage any reading of what the world's files leave open would
+    # have dealt in the same contact (World.open_points; None where the rules say nothing of
+    # readings): the worst reading for a link that must destroy, and for one that must survive.
+    # A contact that deals nothing in the run's own reading but would in another is recorded
+    # with `amount` 0.
+    least: float | None = None
+    most: float | None = None
+
+
+@attrs.frozen
+class DependenceRecord:
+    """A decision of the rules at `time`, about `target`, that another reading of the world's
+    open points (`points`: their setting paths, physc.worlds.OpenPoint) would have made
+    otherwise: under such a reading the run may go another way (physc.worlds.under_readings)."""
+
+    time: float
+    target: str
+    points: tuple[str, ...]
 
 
 @attrs.frozen
@@ -99,6 +117,18 @@ class Trace:
     interactions: tuple[Interaction, ...] = ()
     violations: tuple[Violation, ...] = ()
     goal_met: float | None = None  # when the rules judged the goal met, where they time it (PHYRE: the touch held 3 s)
+    depends: tuple[DependenceRecord, ...] = ()  # the rules' decisions another reading of the world would have made otherwise
+    # Every body's box where it starts: name → (x, y, angle in radians, half-width, half-height)
+    # in its own frame; a static body stays there, a dynamic one moves as `states` say (margins
+    # read how far a landing or a clearance was from failing from it).
+    outlines: dict = attrs.field(factory=dict, eq=False, repr=False)
+    radii: dict = attrs.field(factory=dict, eq=False, repr=False)  # name → rolling radius of a round body (the recogniser's)
+
+    @property
+    def decisive(self) -> frozenset[str]:
+        """The open points of the world (setting paths) whose reading decided something in this
+        run: a reading that differs from this run's only in other points plays the same run."""
+        return frozenset(p for d in self.depends for p in d.points)
 
     @property
     def steps(self) -> int:

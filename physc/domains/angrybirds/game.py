@@ -16,6 +16,7 @@ import attrs
 
 from physc.backends import Backend, BodySpec, Circle, Polygon, colliders
 from physc.domains.angrybirds import prefabs
+from physc.domains.angrybirds.damage import Party, Strike, decisive, readings
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     PHYQ_CIRCLES,
@@ -27,7 +28,7 @@ from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import ScienceBirdsWorld
 from physc.simulation.recognise import violations
 from physc.simulation.run import RunRules, run
-from physc.simulation.trace import ContactRecord, DamageRecord, Trace
+from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, Trace
 
 BIRD = "bird"
 GROUND = "ground"
@@ -44,6 +45,12 @@ class Game(RunRules):
         self.backend = backend
         self.rules = world.rules
         self.model = world.bodies
+        # The game's open points that its damage rule reads (damage.py): the rules' fields, every
+        # combination of their readings, their settings' paths, the platform masses read.
+        points = [p for p in world.open_points() if p.setting.startswith("rules.")]
+        self._fields, self._combos = readings(points)
+        self._settings = tuple(f"rules.{f}" for f in self._fields)
+        self._platform_masses = next((p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,))
 
     def _material(self, obj: LevelObject) -> str:
         return obj.material if obj.material in self.model.materials else "wood"
@@ -92,7 +99,9 @@ class Game(RunRules):
         ground_top = self.world.frame.ground_top
         ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, ground_top - 0.5, static=True, friction=self.model.ground_friction)
         world.add(ground)
+        self.outlines = {GROUND: ground.outline}
         self.kinds = {GROUND: "ground"}
+        self._depends: list[DependenceRecord] = []  # where another reading of the open points would have dealt other damage
         self.life, self.defence, self.material = {}, {}, {}
         self.colliders: dict[str, int] = {}  # how many colliders each body has (a blast reaches each)
         self._objects = {obj.name: obj for obj in self.level.objects}
@@ -101,6 +110,7 @@ class Game(RunRules):
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
             world.add(spec)
+            self.outlines[obj.name] = spec.outline
             self.kinds[obj.name] = kind
             self.colliders[obj.name] = len(set(colliders(spec.shape)))
             self.life[obj.name] = life
@@ -117,6 +127,7 @@ class Game(RunRules):
             bounciness=model.bird_bounciness, angular_damping=model.bird_angular_drag, continuous=True,
         )
         world.add(bird)
+        self.outlines[BIRD] = bird.outline
         world.set_velocity(BIRD, *velocity)
         self.kinds[BIRD] = "bird"
 
@@ -159,7 +170,8 @@ class Game(RunRules):
         recorded = run(world, dynamic, self, seconds, dt, resume)
         return Trace(
             dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
-            recorded.damage, recorded.destructions, self._pigs, self._solved(recorded),
+            recorded.damage, recorded.destructions, self._pigs, self._solved(recorded), depends=tuple(self._depends),
+            outlines=dict(self.outlines), radii=self.radii(),
         )
 
     def _solved(self, recorded) -> bool:
@@ -183,6 +195,7 @@ class Game(RunRules):
         damage, whether the bird has struck, when it is next checked, when the last pig went."""
         for record in snapshot.damage:
             self.life[record.target] = record.life
+        self._depends = list(snapshot.depends)
         self.spent = {name for name, life in self.life.items() if life <= 0} - {d.name for d in snapshot.destructions}
         struck = next((c.time for c in snapshot.contacts if BIRD in (c.a, c.b)), None)
         if struck is not None:
@@ -309,55 +322,46 @@ class Game(RunRules):
 
     # ---- rules ----------------------------------------------------------------------------
     def _damage(self, world, contact: ContactRecord, out: list, time: float) -> None:
+        """The damage rule (damage.py) on both bodies of `contact`, in this world's reading; where
+        another reading of the game's open points would deal other damage, a DependenceRecord."""
         rules = self.rules
         speed = contact.speed
         if speed <= 0:
             return
         for target in (contact.a, contact.b):
-            if target not in self.life or self.life[target] <= 0 or target in self._dying:
-                continue
-            attacker = self._attacker(world, contact, target)
-            if attacker == BIRD and self.kinds.get(target) == "block":  # ABBlock's override
-                per_speed = world.mass(attacker) * rules.bird_multiplier.get(self.material.get(target, ""), 1.0) * rules.damage_factor
-            else:
-                per_speed = world.mass(attacker) * rules.damage_factor * rules.block_damage_share
-            amount = speed * per_speed - self.defence[target]
-            if amount <= 0:
+            if target not in self.life or self.life[target] <= 0 or target in self._dying or self.kinds.get(target) == "platform":
+                continue  # a platform has no ABGameObject: nothing of it is damaged
+            other = contact.b if target == contact.a else contact.a
+            rv = contact.relative_velocity if target == contact.a else (-contact.relative_velocity[0], -contact.relative_velocity[1])
+            strike = Strike(self._party(world, target), self._party(world, other), speed, rv, self.defence[target], self.material.get(target, ""))
+            amount, attacker, per_speed = strike.dealt(rules)
+            least = most = None
+            if self._fields and strike.most(rules, self._platform_masses) > 0:
+                amounts = {combo: strike.dealt(rules, **dict(zip(self._fields, combo)))[0] for combo in self._combos}
+                least, most = min(amounts.values()), max(amounts.values())
+                points = decisive(self._fields, amounts)
+                if points:
+                    self._depends.append(DependenceRecord(time, target, tuple(self._settings[i] for i in points)))
+            if amount <= 0 and not most:
                 continue
             # The strike that would have destroyed it: its life and defence over the damage a unit of speed deals.
-            needed = (self.life[target] + self.defence[target]) / per_speed
-            self._wound(target, amount)
-            other = contact.b if target == contact.a else contact.a
-            out.append(DamageRecord(time, target, amount, self.life[target], other, attacker, needed))
+            needed = (self.life[target] + self.defence[target]) / per_speed if per_speed > 0 else None
+            if amount > 0:
+                self._wound(target, amount)
+            out.append(DamageRecord(time, target, amount, self.life[target], other, attacker, needed, least, most))
 
-    def _attacker(self, world, contact: ContactRecord, target: str) -> str:
-        """The body whose mass sets `target`'s damage in `contact`: against a platform or the
-        ground (no Rigidbody2D to compare), the moving body; a bird striking a block (ABBlock's
-        override); else the world's reading (`Rules.attacker`, `Rules.relative_velocity`)."""
-        other = contact.b if target == contact.a else contact.a
-        if self.kinds.get(other) in ("platform", "ground"):
-            return target
-        if self.kinds.get(target) in ("platform", "ground"):
-            return other
-        if other == BIRD and self.kinds.get(target) == "block":
-            return BIRD
-        rv = contact.relative_velocity  # a's velocity less b's, before the step
-        if self.rules.attacker == "contact":  # one attacker for both, from the velocities before the step
-            push_a = contact.velocity_a[0] * rv[0] + contact.velocity_a[1] * rv[1]
-            push_b = -(contact.velocity_b[0] * rv[0] + contact.velocity_b[1] * rv[1])
-            return contact.a if push_a >= push_b else contact.b
-        # ABGameObject.OnCollisionEnter2D, run by `target` after the step: project both bodies'
-        # velocities now on the contact's relative velocity, as Unity reports it to `target`.
-        sign = 1.0 if (target == contact.a) == (self.rules.relative_velocity == "this-minus-other") else -1.0
-        _, _, _, tx, ty, _ = world.state(target)
-        _, _, _, ox, oy, _ = world.state(other)
-        project_this = sign * (tx * rv[0] + ty * rv[1])
-        project_other = sign * (ox * rv[0] + oy * rv[1])
-        return other if project_other > project_this else target
+    def _party(self, world, name: str) -> Party:
+        """`name` as the damage rule reads it: kind, mass and velocity after the step (a
+        platform or the ground: still, and massless here; the rule reads a platform's mass)."""
+        kind = self.kinds.get(name, "")
+        if kind in ("platform", "ground"):
+            return Party(name, kind, 0.0, (0.0, 0.0))
+        _, _, _, vx, vy, _ = world.state(name)
+        return Party(name, kind, world.mass(name), (vx, vy))
 
     @staticmethod
     def _last_attacker(damage: list, name: str) -> str | None:
-        return next((d.by for d in reversed(damage) if d.target == name), None)
+        return next((d.by for d in reversed(damage) if d.target == name and d.amount > 0), None)
 
     def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
         """ABTNT.Explode: every body within the radius but birds takes damage and an impulse

@@ -38,6 +38,21 @@ class Rules:
     # 2D physics computes it): "this-minus-other" (this object's velocity less the other's) or
     # "other-minus-this". A task must hold under both (ScienceBirdsWorld.readings).
     relative_velocity: str = _cited("other-minus-this", "open: Unity's Collision2D.relativeVelocity (not in the game's files)")
+    # The platform's mass as the attacker's in a block's or pig's OnCollisionEnter2D. Platform.prefab
+    # is a kinematic Rigidbody2D (`m_BodyType: 1`) with `m_Mass: 1` and no auto mass; what
+    # `Rigidbody2D.mass` returns for a kinematic body (the stored 1, or Box2D's 0) is not in the
+    # game's files. The platform never moves, so it attacks whenever the object's own velocity
+    # after the step projects below 0 on relativeVelocity. A task must hold under both.
+    platform_mass: float = _cited(1.0, "open: Platform.prefab Rigidbody2D m_BodyType 1 (kinematic), m_Mass 1")
+    # Near ties of the attacker choice (`projectCollision > projectThis`, in Unity's float32):
+    # projections closer than `tie_band` units/s are decided by rounding, which the files cannot
+    # say; "this" (the comparison as written: an exact tie is not `>`): the object attacks
+    # itself, "other": the other body attacks. A task must hold under both.
+    near_tie: str = _cited("this", "open: ABGameObject.OnCollisionEnter2D compares projectCollision > projectThis in float32")
+    # The band of a near tie: float32's resolution at the game's speeds (2⁻²³ of 16 units/s is
+    # 2·10⁻⁶) times the few roundings of a projection, with room for the solver's order of
+    # bodies (head-on pushes tie within 2·10⁻⁷ to 7·10⁻⁶ units/s, docs/angrybirds.md).
+    tie_band: float = _cited(1e-4, "physc: float32 resolution of the projections at the game's speeds")
     pig_defence: float = _cited(1.0, "the pigs' prefabs `_defense`")
     invulnerable_seconds: float = _cited(2.0, "ABConstants.LEVEL_IMMORTAL_TIME: damage discarded for the first 2 s")
     # ABBird.cs: from its first collision on, the bird is checked 3 s later and then every

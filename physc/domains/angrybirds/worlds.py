@@ -24,7 +24,7 @@ from physc.domains.angrybirds.frame import Frame
 from physc.domains.angrybirds.launch import Launch
 from physc.domains.angrybirds.rules import Bodies, Rules
 from physc.simulation.recognise import Recogniser
-from physc.worlds import Incline, World
+from physc.worlds import Incline, OpenPoint, World
 
 # Unity's 2D physics (Box2D) as Science Birds configures it.
 SCIENCE_BIRDS_ENGINE = EngineSettings(
@@ -44,6 +44,22 @@ SCIENCE_BIRDS_ENGINE = EngineSettings(
 )
 
 
+OPEN_POINTS = (
+    OpenPoint(
+        "rules.relative_velocity", ("other-minus-this", "this-minus-other"), "which way Collision2D.relativeVelocity points",
+        "Unity's Collision2D.relativeVelocity: not in the game's files, and Unity does not document its sign", "relativeVelocity {value}",
+    ),
+    OpenPoint(
+        "rules.platform_mass", (1.0, 0.0), "what Rigidbody2D.mass returns for the kinematic platform",
+        "Platform.prefab: Rigidbody2D m_BodyType 1 (kinematic), m_Mass 1, m_UseAutoMass 0", "platform mass {value:g}",
+    ),
+    OpenPoint(
+        "rules.near_tie", ("this", "other"), "which body attacks when the two projections tie within rules.tie_band",
+        "ABGameObject.OnCollisionEnter2D: projectCollision > projectThis, in float32", "near ties: {value} attacks",
+    ),
+)
+
+
 @attrs.frozen(kw_only=True)
 class ScienceBirdsWorld(World):
     """A Science Birds world: the generic settings, and the game's frame, launch, bodies and rules."""
@@ -55,16 +71,15 @@ class ScienceBirdsWorld(World):
     rest_speed: float = attrs.field(default=0.02, metadata={"source": "physc: below this (units/s, rad/s) a body counts as at rest"})
     falling_speed: float = attrs.field(default=0.5, metadata={"source": "physc: coming down faster (units/s), a body is still falling"})
 
-    def readings(self) -> tuple[ScienceBirdsWorld, ...]:
-        """Itself, and itself with `Collision2D.relativeVelocity` pointing the other way: the
-        game's files do not say which, and it decides which body's mass sets a damage."""
+    def open_points(self) -> tuple[OpenPoint, ...]:
+        """What the game's files leave open about its damage rule (docs/angrybirds.md, "Points
+        the game's files leave open"): the sign of `Collision2D.relativeVelocity`, the
+        kinematic platform's mass, and which body attacks in a near tie. Each decides, in
+        `ABGameObject.OnCollisionEnter2D`, whose mass sets a damage. physc's earlier model
+        (`attacker="contact"`) reads none of them."""
         if self.rules.attacker != "object":
-            return (self,)
-        other = {"other-minus-this": "this-minus-other", "this-minus-other": "other-minus-this"}[self.rules.relative_velocity]
-        return (self, self.derive(
-            f"{self.name}, relativeVelocity {other}", self.description, "the other reading of Collision2D.relativeVelocity",
-            rules=attrs.evolve(self.rules, relative_velocity=other),
-        ))
+            return ()
+        return OPEN_POINTS
 
     def reachable(self, x: float, y: float) -> bool:
         """Whether a full-stretch shot can pass through (x, y) in this world."""

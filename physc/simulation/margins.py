@@ -1,0 +1,422 @@
+"""Margins: how far each link of a simulated chain was from failing, in its own physics and units.
+
+A trace that realises a sequence says only that it did; a noisy replay fails where a link had
+little to spare. `MarginReader.read` gives every declared interaction the trace realises (and
+the first one it does not) and every restriction a `Margin`: positive, how much the link had
+to spare; negative, by how much it failed. Each is in the units of its own physics, with a
+`scale` that makes links of different kinds comparable (`share` = value / scale), so the
+weakest link of a chain is the one with the smallest share:
+
+* hit(a, b, d): the degrees a's approach (as the recogniser reads it, of the bodies' centres)
+  was from the next side of b, where the scenario narrows the sides (scale 45°), and its
+  speed along the contact normal beyond the recogniser's `hit_speed`; missed: how near a came
+  to b (units short of touching), or a contact from the wrong side or too slow;
+* roll(a, s, d), slide(a, s, d): the seconds a rolled (slid) on s beyond the recogniser's
+  `motion_time`, and the share of its speed it still had when it reached the next body it
+  acts on;
+* fall(a, b): the seconds and height of a's drop beyond the recogniser's `fall_time` and
+  `fall_height`, and how far its landing was from missing b (units of overlap, scale a's
+  half-width); missed without leaving its support: how far a's centre came to its edge (units
+  of overhang, negative);
+* bounce(a, s, d): the degrees a's departure was from the next direction, and the seconds
+  its touch was short of the recogniser's `bounce_time`;
+* destroy(a, b): the damage of the destroying blow under the worst reading of the world
+  (DamageRecord.least) beyond the life b had left, in damage (scale: that life);
+* touch(a, b): the seconds the touch lasted beyond the recogniser's `touch_time`;
+* cannotHit(a, b, D): the clearance a kept from b while its direct approach lasted (units), or
+  the degrees its hits on b were from a forbidden side;
+* every link's actor: the life it has left when it acts, under the worst reading of each blow
+  it took before (DamageRecord.most), where that is less than the link's own margin;
+* cannotFall(a): how far a's longest drop was from being recognised as a fall (share of
+  `fall_time` or `fall_height`, whichever it reached less of).
+
+The margins are read from the trace alone (poses, contacts, damage records, the bodies'
+outlines and radii) with the world's recognition thresholds, so every domain has them; a
+domain whose physics says more extends `MarginReader` (SimulatedDomain.margin_reader).
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+import numpy as np
+
+from physc.simulation.fidelity import Declared, matches
+from physc.simulation.recognise import Recogniser, approach, contact_intervals
+from physc.simulation.trace import Interaction, Trace
+
+SIDES = {"right": 0.0, "above": 90.0, "left": 180.0, "below": 270.0}  # the direction each side of a body faces
+ALL_SIDES = frozenset(SIDES)
+
+
+@attrs.frozen
+class Margin:
+    """How far one link was from failing: `value` in `unit`s (positive: held with that much to
+    spare), `scale` the value that counts as one whole margin, `what` the quantity in words."""
+
+    term: str  # the declared term or restriction, in .phys syntax
+    index: int | None  # its place in the declared sequence; None for a restriction
+    value: float
+    unit: str
+    scale: float
+    what: str
+    held: bool = True  # whether the link held in this trace
+
+    @property
+    def share(self) -> float:
+        return self.value / self.scale if self.scale else self.value
+
+    def text(self) -> str:
+        """"`fall(fBlock2, pig)`: −0.12 units of overhang (…)"."""
+        return f"`{self.term}`: {self.value:+.3g} {self.unit} ({self.what})"
+
+    def record(self) -> dict:
+        return {"term": self.term, "value": round(self.value, 4), "unit": self.unit, "share": round(self.share, 4), "what": self.what, "held": self.held}
+
+
+@attrs.frozen
+class Margins:
+    """The margins of one trace: one per declared link it reached, one per restriction."""
+
+    links: tuple[Margin, ...] = ()
+
+    @property
+    def weakest(self) -> Margin | None:
+        """The link with the least to spare: a failed one first, then the smallest share."""
+        return min(self.links, key=lambda m: (m.held, m.share), default=None)
+
+    @property
+    def lowest(self) -> float:
+        """The weakest link's share (−inf when a link failed to be reached at all)."""
+        weakest = self.weakest
+        return -math.inf if weakest is None else weakest.share
+
+    def record(self) -> list[dict]:
+        return [m.record() for m in self.links]
+
+
+def _angle(dx: float, dy: float) -> float:
+    return math.degrees(math.atan2(dy, dx)) % 360.0
+
+
+def _apart(a: float, b: float) -> float:
+    d = abs(a - b) % 360.0
+    return min(d, 360.0 - d)
+
+
+def side_margin(dx: float, dy: float, sides) -> float:
+    """Degrees the direction (dx, dy) lies inside the nearest of `sides`' 90° sectors (negative:
+    outside all of them)."""
+    angle = _angle(dx, dy)
+    return max(45.0 - _apart(angle, SIDES[s]) for s in sides)
+
+
+class MarginReader:
+    """The margins of a domain's traces (module docstring): generic, from the trace and the
+    world's recognition thresholds; a domain may extend a term's method."""
+
+    def __init__(self, recogniser: Recogniser):
+        self.recogniser = recogniser
+
+    # ---- the whole trace -----------------------------------------------------------------
+    def read(self, scenario: Declared, trace: Trace) -> Margins:
+        found: list[Interaction] = []
+        terms = scenario.interactions
+        for interaction in trace.interactions:
+            if len(found) < len(terms) and matches(terms[len(found)], interaction):
+                found.append(interaction)
+        self.intervals = contact_intervals(trace)
+        out = []
+        for k, declared in enumerate(terms):
+            if k > len(found):
+                break
+            since = found[k - 1].time if k else 0.0
+            method = getattr(self, declared.name, None)
+            margin = method(declared, trace, found[k] if k < len(found) else None, since, found, k) if method else None
+            if margin is not None and k < len(found):
+                lasting = self.survival(trace, declared.objects[0], found[k].time, declared.text, k)
+                if lasting is not None and lasting.share < margin.share:
+                    margin = lasting
+            if margin is not None:
+                out.append(attrs.evolve(margin, index=k, held=k < len(found) and margin.held))
+            elif k == len(found):
+                out.append(Margin(declared.text, k, -1.0, "of a link", 1.0, "not realised", False))
+        until = found[-1].time if len(found) == len(terms) and found else trace.duration
+        for restriction in getattr(scenario, "restrictions", ()):
+            method = {"cannotHit": self.cannot_hit, "cannotFall": self.cannot_fall}.get(restriction.name)
+            margin = method(restriction, trace, until, terms) if method else None
+            if margin is not None:
+                out.append(margin)
+        return Margins(tuple(out))
+
+    # ---- geometry ------------------------------------------------------------------------
+    def pose(self, trace: Trace, name: str, row: int) -> tuple[float, float, float, float, float] | None:
+        """(x, y, angle, half-width, half-height) of `name` at state row `row` (None: unknown or gone)."""
+        outline = trace.outlines.get(name)
+        if outline is None:
+            return None
+        if name not in trace.names:
+            return outline
+        state = trace.states[min(max(row, 0), trace.steps - 1), trace.index(name)]
+        if math.isnan(state[0]):
+            return None
+        return (float(state[0]), float(state[1]), float(state[2]), outline[3], outline[4])
+
+    @staticmethod
+    def extents(pose) -> tuple[float, float]:
+        """The half-extents along x and y of a pose's box turned by its angle."""
+        _, _, angle, w, h = pose
+        c, s = abs(math.cos(angle)), abs(math.sin(angle))
+        return w * c + h * s, w * s + h * c
+
+    def gap(self, trace: Trace, a: str, b: str, first: int, last: int) -> float | None:
+        """The least distance between the boxes of `a` and `b` over rows first..last (negative:
+        they overlap; None when neither can be placed)."""
+        best = None
+        for row in range(max(first, 0), min(last, trace.steps)):
+            pa, pb = self.pose(trace, a, row), self.pose(trace, b, row)
+            if pa is None or pb is None:
+                continue
+            (ax, ay), (bx, by) = self.extents(pa), self.extents(pb)
+            dx, dy = abs(pa[0] - pb[0]) - ax - bx, abs(pa[1] - pb[1]) - ay - by
+            gap = math.hypot(max(dx, 0.0), max(dy, 0.0)) if dx > 0 or dy > 0 else max(dx, dy)
+            best = gap if best is None else min(best, gap)
+        return best
+
+    def size(self, trace: Trace, name: str) -> float:
+        """`name`'s larger half-extent (a length scale for its clearances)."""
+        outline = trace.outlines.get(name)
+        return max(outline[3], outline[4]) if outline else 0.1
+
+    @staticmethod
+    def row(trace: Trace, time: float) -> int:
+        """The state row of `time` (row k holds the time (k + 1) · dt)."""
+        return min(max(int(round(time / trace.dt)) - 1, 0), trace.steps - 1)
+
+    def contacts(self, trace: Trace, a: str, b: str, since: float):
+        return [c for c in trace.contacts if {c.a, c.b} == {a, b} and c.time >= since - 1e-9]
+
+    def survival(self, trace: Trace, name: str, time: float, text: str, k: int) -> Margin | None:
+        """The life `name` has left at `time` under the worst reading of each blow before it
+        (DamageRecord.most): an actor that another reading would have broken first does not act."""
+        blows = [d for d in trace.damage if d.target == name and d.time <= time + 1e-9]
+        if not blows or all(d.most is None for d in blows):
+            return None
+        whole = blows[0].life + blows[0].amount
+        left = whole - sum(d.most if d.most is not None else d.amount for d in blows)
+        if not math.isfinite(whole):
+            return None
+        return Margin(text, k, left, "life", max(whole / 2, 1e-6), f"the life {name} has left under the worst reading (scale: half its life)")
+
+    # ---- the terms -------------------------------------------------------------------------
+    def hit(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
+        actor, target = declared.objects[0], declared.objects[1]
+        text = declared.text
+        sides = set(declared.directions or ()) & ALL_SIDES
+        contacts = self.contacts(trace, actor, target, since)
+        if found is not None:
+            contacts = [c for c in contacts if abs(c.time - found.time) < trace.dt / 2] or contacts
+        if not contacts:
+            gap = self.gap(trace, actor, target, self.row(trace, since), trace.steps)
+            if gap is None:
+                return Margin(text, k, -1.0, "of a link", 1.0, f"{actor} never came near {target}", False)
+            return Margin(text, k, -max(gap, 0.0), "units", self.size(trace, actor), f"the nearest {actor} came to {target}", False)
+        contact = contacts[0]
+        parts = []
+        speed = abs(contact.relative_velocity[0] * contact.normal[0] + contact.relative_velocity[1] * contact.normal[1])
+        parts.append(Margin(text, k, speed - self.recogniser.hit_speed, "units/s", self.recogniser.hit_speed, "approach speed beyond a hit's least"))
+        if sides and sides != ALL_SIDES:
+            vx, vy = approach(trace, contact, actor, target)
+            parts.append(Margin(text, k, side_margin(-vx, -vy, sides), "degrees", 45.0, "from striking another side"))
+        return min(parts, key=lambda m: m.share)
+
+    def _motion(self, declared, trace: Trace, found, since: float, matched, k: int, name: str) -> Margin | None:
+        mover, surface = declared.objects[0], declared.objects[1]
+        text, dt = declared.text, trace.dt
+        if mover not in trace.names:
+            return None
+        index = trace.index(mover)
+        spans = [span for span in self.intervals.get(frozenset((mover, surface)), ()) if span[1] >= since - 1e-9]
+        if found is not None:
+            spans = [span for span in spans if span[0] - dt <= found.time <= span[1] + dt] or spans
+        best = None
+        for span in spans:
+            rows, rolling, sliding = self.recogniser.motion(trace, index, span, trace.radii.get(mover))
+            frames = rolling if name == "roll" else sliding
+            seconds = float(frames.sum()) * dt
+            best = seconds if best is None else max(best, seconds)
+        need = self.recogniser.motion_time
+        if best is None:
+            return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
+        parts = [Margin(text, k, best - need, "s", need, f"seconds of {name}ing beyond the least recognised")]
+        after = next((i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None)
+        if found is not None and after is not None:
+            start = trace.states[self.row(trace, found.time), index]
+            arrive = trace.states[self.row(trace, matched[after].time) - 1, index]
+            v0, v1 = math.hypot(start[3], start[4]), math.hypot(arrive[3], arrive[4])
+            if v0 > 0 and not math.isnan(v1):
+                parts.append(Margin(text, k, v1, "units/s", max(v0, self.recogniser.moving), f"speed left when it reached {matched[after].objects[1] if len(matched[after].objects) > 1 else 'the next body'}"))
+        return min(parts, key=lambda m: m.share)
+
+    def roll(self, declared, trace, found, since, matched, k):
+        return self._motion(declared, trace, found, since, matched, k, "roll")
+
+    def slide(self, declared, trace, found, since, matched, k):
+        return self._motion(declared, trace, found, since, matched, k, "slide")
+
+    def spells(self, trace: Trace, name: str, since: float, until: float) -> list[tuple[int, int]]:
+        """(first row, row after the last) of each spell in which `name` touched nothing, begun in since..until."""
+        if name not in trace.names:
+            return []
+        index = trace.index(name)
+        touching = np.zeros(trace.steps, dtype=bool)
+        for pair, spans in self.intervals.items():
+            if name in pair:
+                for begin, end in spans:
+                    touching[max(int(round(begin / trace.dt)) - 1, 0) : min(int(math.ceil(end / trace.dt)) - 1, trace.steps)] = True
+        airborne = ~touching & ~np.isnan(trace.states[:, index, 0])
+        edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne, [False]]).astype(int)))
+        return [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2]) if since - 1e-9 <= (a + 1) * trace.dt <= until + 1e-9]
+
+    def _drop(self, trace: Trace, index: int, spell) -> tuple[float, float]:
+        start, stop = spell
+        return (stop - start) * trace.dt, float(trace.states[start, index, 1] - trace.states[stop - 1, index, 1])
+
+    def fall(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
+        faller, target = declared.objects[0], declared.objects[1]
+        text = declared.text
+        if faller not in trace.names:
+            return None
+        index = trace.index(faller)
+        half = self.size(trace, faller)
+        rec = self.recogniser
+        spells = self.spells(trace, faller, since, trace.duration)
+        if found is not None:
+            spells = [s for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt] or spells
+        parts = []
+        if not spells:  # it never left its support: how far its centre came to the edge
+            support = self.support_before(trace, faller, self.row(trace, since))
+            over = None if support is None else self.overhang(trace, faller, support, self.row(trace, since))
+            if over is None:
+                return Margin(text, k, -rec.fall_height, "units", rec.fall_height, f"{faller} never left what it rested on", False)
+            return Margin(text, k, min(over, 0.0), "units of overhang", half, f"{faller}'s centre past the edge of {support}", False)
+        if spells:
+            seconds, drop = max((self._drop(trace, index, s) for s in spells), key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height))
+            parts.append(Margin(text, k, seconds - rec.fall_time, "s", rec.fall_time, "seconds in the air beyond a fall's least"))
+            parts.append(Margin(text, k, drop - rec.fall_height, "units", rec.fall_height, "height dropped beyond a fall's least"))
+            landing = spells[0][1] if found is None else next((s[1] for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt), spells[0][1])
+            pa, pb = self.pose(trace, faller, landing), self.pose(trace, target, landing)
+            if pa is not None and pb is not None:
+                overlap = self.extents(pa)[0] + self.extents(pb)[0] - abs(pa[0] - pb[0])
+                parts.append(Margin(text, k, overlap, "units of overlap", half, f"its landing from missing {target}"))
+        if not parts:
+            return None
+        worst = min(parts, key=lambda m: m.share)
+        return attrs.evolve(worst, held=found is not None)
+
+    def support_before(self, trace: Trace, name: str, row: int) -> str | None:
+        """The surface or body `name` touched last before state row `row` (what it falls from)."""
+        time = (row + 1) * trace.dt
+        best, when = None, -1.0
+        for pair, spans in self.intervals.items():
+            if name not in pair:
+                continue
+            (other,) = pair - {name}
+            for begin, end in spans:
+                if begin <= time + 1e-9 and end <= time + trace.dt * 1.5 and end > when and end >= time - trace.dt * 1.5:
+                    best, when = other, end
+        return best
+
+    def overhang(self, trace: Trace, name: str, support: str, since: int) -> float | None:
+        """The furthest `name`'s centre came past the edge of `support` from row `since` on
+        (negative: short of it)."""
+        best = None
+        for row in range(since, trace.steps):
+            pa, ps = self.pose(trace, name, row), self.pose(trace, support, row)
+            if pa is None or ps is None:
+                continue
+            past = abs(pa[0] - ps[0]) - self.extents(ps)[0]
+            best = past if best is None else max(best, past)
+        return best
+
+    def bounce(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
+        mover, surface = declared.objects[0], declared.objects[1]
+        text, rec = declared.text, self.recogniser
+        if mover not in trace.names:
+            return None
+        index = trace.index(mover)
+        spans = [s for s in self.intervals.get(frozenset((mover, surface)), ()) if s[1] >= since - 1e-9]
+        if found is not None:
+            spans = [s for s in spans if abs(s[1] - found.time) < trace.dt / 2] or spans
+        if not spans:
+            gap = self.gap(trace, mover, surface, self.row(trace, since), trace.steps)
+            return Margin(text, k, -max(gap or 0.0, 0.0), "units", self.size(trace, mover), f"the nearest {mover} came to {surface}", False)
+        begin, end = spans[0]
+        parts = [Margin(text, k, rec.bounce_time - (end - begin), "s", rec.bounce_time, "seconds its touch was short of a bounce's most")]
+        sides = set(declared.directions or ()) & ALL_SIDES
+        after = int(round(end / trace.dt))
+        if sides and sides != ALL_SIDES and after < trace.steps and not math.isnan(trace.states[after, index, 3]):
+            vx, vy = trace.states[after, index, 3:5]
+            parts.append(Margin(text, k, side_margin(float(vx), float(vy), sides), "degrees", 45.0, "from leaving another way"))
+        return min(parts, key=lambda m: m.share)
+
+    def destroy(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
+        attacker, target = declared.objects[0], declared.objects[1]
+        text = declared.text
+        if found is not None:
+            blow = [d for d in trace.damage if d.target == target and abs(d.time - found.time) <= trace.dt * 1.5]
+            if not blow:
+                return None
+            before = blow[0].life + blow[0].amount
+            worst = sum(d.least if d.least is not None else d.amount for d in blow)
+            return Margin(text, k, worst - before, "damage", max(before, 1e-6), f"the blow under the worst reading beyond the {before:.3g} life {target} had left")
+        dealt = [d for d in trace.damage if d.target == target and d.by == attacker and d.time >= since - 1e-9]
+        if not dealt:
+            return Margin(text, k, -1.0, "of its life", 1.0, f"{attacker} dealt {target} no damage", False)
+        left = min(d.life for d in dealt)
+        before = dealt[0].life + dealt[0].amount
+        return Margin(text, k, -left, "damage", max(before, 1e-6), f"the life {target} had left", False)
+
+    def touch(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
+        need = self.recogniser.touch_time
+        if need is None or trace.goal_met is not None:
+            return None
+        a, b = declared.objects[0], declared.objects[1]
+        spans = self.intervals.get(frozenset((a, b)), ())
+        longest = max((min(end, trace.duration) - begin for begin, end in spans), default=0.0)
+        return Margin(declared.text, k, longest - need, "s", need, "seconds touching beyond the goal's", found is not None)
+
+    # ---- restrictions ------------------------------------------------------------------------
+    def cannot_hit(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
+        a, b = restriction.objects[0], restriction.objects[1]
+        text = restriction.text or f"cannotHit({a}, {b})"
+        redirected = min((i.time for i in trace.interactions if i.name == "bounce" and i.objects[0] == a and any(
+            t.name == "bounce" and tuple(t.objects) == i.objects for t in terms)), default=math.inf)
+        end = min(until, redirected)
+        broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
+        sides = set(restriction.directions or ALL_SIDES) & ALL_SIDES
+        hits = [c for c in self.contacts(trace, a, b, 0.0) if c.time <= end]
+        if hits and sides != ALL_SIDES:
+            allowed = ALL_SIDES - sides
+            worst = min(side_margin(*(-v for v in approach(trace, c, a, b)), allowed) for c in hits)
+            return Margin(text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0)
+        gap = self.gap(trace, a, b, 0, self.row(trace, end) + 1)
+        if gap is None:
+            return None
+        value = min(gap, 0.0) if broken else gap
+        return Margin(text, None, value, "units of clearance", self.size(trace, a), f"the clearance {a} kept from {b}", not broken)
+
+    def cannot_fall(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
+        a = restriction.objects[0]
+        text = restriction.text or f"cannotFall({a})"
+        if a not in trace.names:
+            return None
+        rec = self.recogniser
+        index = trace.index(a)
+        worst = 0.0
+        for spell in self.spells(trace, a, 0.0, until):
+            seconds, drop = self._drop(trace, index, spell)
+            worst = max(worst, min(seconds / rec.fall_time, drop / rec.fall_height))
+        broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
+        return Margin(text, None, 1.0 - worst, "of a fall", 1.0, "how far its longest drop was from a recognised fall", not broken)
