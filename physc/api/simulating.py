@@ -50,6 +50,7 @@ def simulate(
     backend: str | None = None,
     seconds: float | None = None,
     noise: int | random.Random | None = None,
+    scenario=None,
 ):
     """The trace of `level` played with `action`, to rest (`physc simulate`).
 
@@ -59,8 +60,8 @@ def simulate(
     `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
     a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
     `random.Random`, plays it under the domain's noise model (angrybirds: objects and
-    release angle jittered, as the evaluation's noisy replays are)."""
-    scenario = None
+    release angle jittered, as the evaluation's noisy replays are). `scenario`, a checked
+    scenario (physc.check's), judges a level's play against its restrictions (a Task's is its own)."""
     if isinstance(level, Task):
         scenario = scenario_of(level)
         played = domain_of(level, world, backend)

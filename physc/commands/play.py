@@ -71,19 +71,47 @@ def _fail(args, diagnostic: Diagnostic, source=None) -> int:
     return diagnostics.exit_status([diagnostic])
 
 
-def _play(args, domain):
+def _scenario(args):
+    """(the task file's scenario, its level with the scenario's names, that level's text), or
+    None without --task."""
+    if args.task is None:
+        return None
+    from physc.api.errors import FileError
+    from physc.api.tasks import task_parts
+    from physc.commands.verify import read_task
+
+    try:
+        _, scenario, level, text, _ = task_parts(read_task(args.task), args.task)
+    except FileError as error:
+        raise UsageError(str(error)) from None
+    return scenario, level, text
+
+
+def _play(args, domain, task=None):
+    """(level, shot, trace) of the level file played with the shot; with `task` (_scenario's)
+    and the task's own level file, the task's level, named as its scenario names its objects,
+    judged against the scenario."""
     from physc.api.simulating import simulate
+    from physc.commands.verify import _normalised
 
     level, status = load_level(args, domain)
     if level is None:
         return None, None, status
+    scenario = None
+    if task is not None:
+        scenario, named, text = task
+        data, _ = read_input(args.level, "the level", limit=domain.max_level_bytes + 1)
+        if data is not None and _normalised(data.decode("utf-8-sig", "replace")) == _normalised(text):
+            level = named
+        else:
+            scenario = None  # another level: its objects have other names
     shot = domain.shot(args.shot, args.angle)
     if shot is not None and not level.has_birds:
         help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
         return None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
-            trace = simulate(level, shot, domain=domain, seconds=args.seconds)
+            trace = simulate(level, shot, domain=domain, seconds=args.seconds, scenario=scenario)
     except ValueError as error:  # a target out of reach of the launch
         raise UsageError(str(error)) from None
     return level, shot, trace
@@ -122,17 +150,54 @@ def cmd_simulate(args) -> int:
 
 
 def cmd_trace(args) -> int:
-    level, shot, trace = _play(args, _domain(args))
+    from physc.simulation.margins import Recognised
+
+    domain = _domain(args)
+    task = _scenario(args)
+    level, shot, trace = _play(args, domain, task)
     if level is None:
         return trace
+    scenario = task[0] if task is not None and level is task[1] else None
+    margins = domain.margins(scenario or Recognised.of(trace), trace) if hasattr(domain, "margins") else None
+    by_time = {}
+    if margins is not None:
+        found = [i for i in trace.interactions]
+        declared = (scenario or Recognised.of(trace)).interactions
+        matched, k = {}, 0
+        from physc.simulation.fidelity import matches
+
+        for interaction in found:
+            if k < len(declared) and matches(declared[k], interaction):
+                matched[k] = interaction
+                k += 1
+        by_time = {id(matched[m.index]): m for m in margins.links if m.index is not None and m.index in matched}
+    restrictions = [m for m in margins.links if m.index is None] if margins is not None else []
+    weakest = margins.weakest if margins is not None else None
     if args.format == "json":
-        print_json([{"term": i.text(), "time": round(i.time, 4)} for i in trace.interactions])
+        print_json(
+            {
+                "level": args.level,
+                "shot": shot.text() if shot else None,
+                "solved": trace.solved,
+                "interactions": [
+                    {"term": i.text(), "time": round(i.time, 4), "margin": by_time[id(i)].record() if id(i) in by_time else None} for i in trace.interactions
+                ],
+                "restrictions": [m.record() for m in restrictions],
+                "weakest": None if weakest is None else weakest.record(),
+            }
+        )
         return EXIT_OK
     print(f"# {safe(args.level)}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
     lines = [("> " if index else "") + interaction.text() for index, interaction in enumerate(trace.interactions)]
     width = max((len(line) for line in lines), default=0)
     for line, interaction in zip(lines, trace.interactions):  # the times in one column, whatever the terms' lengths
-        print(f"{line:<{width}}  # t = {interaction.time:.2f} s")
+        margin = by_time.get(id(interaction))
+        note = f"; margin {margin.value:+.3g} {margin.unit} ({margin.what})" if margin is not None else ""
+        print(f"{line:<{width}}  # t = {interaction.time:.2f} s{note}")
+    for m in restrictions:
+        print(f"# {m.term}: {'kept' if m.held else 'broken'}, margin {m.value:+.3g} {m.unit} ({m.what})")
+    if weakest is not None:
+        print(f"# weakest link: {weakest.text()}" + ("" if scenario is not None else " (of what happened; --task judges the declared sequence)"))
     return EXIT_OK
 
 

@@ -55,6 +55,10 @@ class Task:
     # The layout rules' structure the task was laid out in (physc.compiler.layout_rules,
     # "Structures"): "flat", the paper's reading, or "ramp".
     structure: str = "flat"
+    # How far each link was from failing (physc.simulation.margins): the weakest link over
+    # the noisy replays the solution passed, every link as the solution plays, what raising
+    # them moved and the candidates it simulated. None in task files written before margins.
+    margins: dict | None = None
 
 
 def given_up_summary(given_up: dict) -> str:

@@ -26,7 +26,7 @@ does:
   instead of writing `scene` and `rules`.
 
 Everything else is physc's: the search that makes a placed layout a task
-(physc.generation.search.Search, which the layout loop runs for a domain that is
+(physc.generation.search, which the layout loop runs for a domain that is
 `searched`), the robustness replays,
 stability, the replays of `physc verify` and the evaluation's measurements
 (intended solvability, the random agent's accidental solvability and AUCCESS).

@@ -14,6 +14,8 @@ import json
 import statistics
 from pathlib import Path
 
+import numpy as np
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -97,6 +99,19 @@ def summarise(records: list[dict]) -> dict:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
+        seconds = sorted(r["generation_seconds"] for r in made if r.get("generation_seconds") is not None)
+        sims = sorted(r["simulations"] for r in made if r.get("simulations") is not None)
+        out["median_seconds"] = float(np.median(seconds)) if seconds else None
+        out["median_simulations"] = float(np.median(sims)) if sims else None
+        shares = [(r["weakest_share"], r["weakest_link"]) for r in made if r.get("weakest_share") is not None]
+        out["weakest"] = min(shares) if shares else None
+        out["raised"] = sum(1 for r in made if r.get("raised"))
+        reasons: dict[str, int] = {}
+        for r in rows:
+            if not r.get("generated") and r.get("reason"):
+                short = why_none(r["reason"])
+                reasons[short] = reasons.get(short, 0) + 1
+        out["why_none"] = sorted(reasons.items(), key=lambda item: -item[1])
         return out
 
     scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
@@ -155,6 +170,43 @@ def _effort_lines(summary: dict, counts: list, names: dict) -> list[str]:
     return lines
 
 
+def _scenario_effort(summary: dict) -> list[str]:
+    """Per scenario: what a task cost (median seconds and simulations), the weakest margin of
+    its tasks (the least share over the noisy replays each solution passed, and its link), and
+    why the seeds that gave none gave none."""
+    rows = summary["scenarios"]
+    if not any(row.get("median_seconds") is not None or row.get("why_none") for row in rows.values()):
+        return []
+    lines = ["", "## Per scenario: cost, margins, and why no task", ""]
+    lines.append("| scenario | generated | median s a task | median simulations a task | weakest margin (share, link) | margins raised | why no task (seeds) |")
+    lines.append("|---|---|---|---|---|---|---|")
+    for name, row in rows.items():
+        seconds = "–" if row.get("median_seconds") is None else f"{row['median_seconds']:.1f}"
+        sims = "–" if row.get("median_simulations") is None else f"{row['median_simulations']:,.0f}"
+        weakest = "–" if row.get("weakest") is None else f"{row['weakest'][0]:+.2f} `{row['weakest'][1]}`"
+        raised = f"{row.get('raised', 0)}"
+        why = "; ".join(f"{text} ({n})" for text, n in row.get("why_none", [])) or "–"
+        lines.append(f"| {name} | {_generated(row)} | {seconds} | {sims} | {weakest} | {raised} | {why} |")
+    return lines
+
+
+def why_none(reason: str) -> str:
+    """A record's reason for no task, short: the budget or constraint that ended it, and how far
+    the best simulation got."""
+    import re
+
+    head = reason.split(";")[0]
+    if "time budget" in head:
+        head = "time ran out"
+    elif "within the budget" in head:
+        head = "layouts ran out"
+    elif "in none did the simulated solution" in head:
+        head = "every layout tried"
+    best = re.search(r"realised (\d+) of the (\d+) interactions", reason)
+    fragile = "the solution was too fragile" in reason or "fails physc verify" in reason
+    return head + (f", best {best.group(1)} of {best.group(2)}" if best else "") + (", fragile" if fragile and best and best.group(1) == best.group(2) else "")
+
+
 def _whole(pair) -> str:
     return "–" if pair is None else f"{pair[0]:,.0f} ± {pair[1]:,.0f}"
 
@@ -191,6 +243,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     for name, row in summary["scenarios"].items():
         cells = [name, str(row["interactions"]), _generated(row)] + [fmt(row[m]) for m, _, _ in metrics(summary)]
         lines.append("| " + " | ".join(cells) + " |")
+    lines += _scenario_effort(summary)
     lines += [""] + _definitions(summary.get("domains", ["angrybirds"]))
     if summary.get("verify_backend"):
         lines += [

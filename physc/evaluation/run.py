@@ -66,6 +66,11 @@ def evaluate(job: Job) -> dict:
         given_up=task.given_up,
         structure=task.structure,
     )
+    weakest = (task.margins or {}).get("weakest")
+    if weakest is not None:  # the weakest link over the noisy replays the solution passed (physc.simulation.margins)
+        record.update(weakest_link=weakest["term"], weakest_share=weakest["share"], weakest_margin=f"{weakest['value']:+.3g} {weakest['unit']}")
+    if task.margins is not None:
+        record.update(raised=bool(task.margins.get("raised")), raise_candidates=task.margins.get("candidates", 0))
     if task.acceptance is not None:  # the domain's acceptance rule (PHYRE's flags)
         record.update(
             good_stable="GOOD_STABLE" in task.acceptance["flags"], trivial="TRIVIAL" in task.acceptance["flags"],

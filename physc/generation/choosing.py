@@ -27,6 +27,7 @@ import math
 import attrs
 
 from physc.generation import placing
+from physc.generation.problem import Problem
 from physc.generation.stages import prefix
 
 
@@ -67,21 +68,21 @@ def refitted(old, new, directions) -> object:
     return attrs.evolve(new, x=round(x, 5), y=round(old.y - old.height / 2 + new.height / 2, 5))
 
 
-def alternatives(search, layout, declared, stage, attempt):
+def alternatives(problem: Problem, layout, declared, stage, attempt):
     """(note, layout) with the stage's target given each other body it may take that the
     estimate ranks above the body it has, best first."""
     if declared.name in ("roll", "slide", "bounce", "destroy") or len(declared.objects) < 2:
         return
     actor, target = declared.objects[0], declared.objects[1]
     objects = {o.name: o for o in layout.objects}
-    if target not in stage.new or target not in objects or target in search.frame.fixed:
+    if target not in stage.new or target not in objects or target in problem.frame.fixed:
         return
-    act = next_act(search.interactions, target, stage.start + 1)
-    domain = search.domain
+    act = next_act(problem.interactions, target, stage.start + 1)
+    domain = problem.domain
     if act is None:
         return
     current = objects[target]
-    options = domain.bodies(current, search.scenario)
+    options = domain.bodies(current, problem.scenario)
     if not options:
         return
     actor_mass = domain.mass(objects[actor]) if actor in objects else None
@@ -97,7 +98,7 @@ def alternatives(search, layout, declared, stage, attempt):
             continue
         fitted = refitted(current, body, tuple(declared.directions))
         changed = attrs.evolve(layout, objects=tuple(fitted if o.name == target else o for o in layout.objects))
-        if not placing.consistent(prefix(changed, search.entry, stage.start), search.parameters, {target}, {target}):
+        if not placing.consistent(prefix(changed, problem.entry, stage.start), problem.parameters, {target}, {target}):
             continue
         material = f" {body.material}" if body.material else ""
         yield f"{target}: a{material} {body.concrete} ({act}: ×{estimate(body) / here if here else math.inf:.2f})", changed

@@ -110,6 +110,7 @@ class LayoutLoop:
         best = 0  # most interactions of the sequence realised, in order, in any simulation
         stopped = ""  # what the first simulation that got that far shows about the next interaction
         lost: dict[str, list] = {}  # the noisy replays' losses over the layouts: term → [count, why]
+        weakest = None  # of the chains realised but not robust, the strongest weakest link
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
         while True:
@@ -143,6 +144,8 @@ class LayoutLoop:
                 best, stopped = result.best, result.stopped
             for term, count, why in result.lost:
                 lost.setdefault(term, [0, why])[0] += count
+            if result.weakest is not None and (weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)):
+                weakest = result.weakest
             if result.satisfied:
                 failure, used = None, placed
                 break
@@ -171,7 +174,7 @@ class LayoutLoop:
                 failure, fallback = self._out_of_time(layouts), None
             seconds["satisfy"] += time.perf_counter() - clock
             if fallback is None:
-                raise self.explained(failure, nearest, given_up, best, stopped, lost)
+                raise self.explained(failure, nearest, given_up, best, stopped, lost, weakest)
             simulated, result, used = fallback
             simulations += simulated
         # The stages after satisfaction (distract, validate, accept), counted apart from it.
@@ -200,9 +203,12 @@ class LayoutLoop:
             budget=Exhausted.TIME,
         )
 
-    def explained(self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "", lost: dict | None = None) -> Infeasible:
+    def explained(
+        self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "", lost: dict | None = None, weakest=None,
+    ) -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
-        the most robust fragile solution found and what would accept it."""
+        which link noise broke and its best margin, the most robust fragile solution found
+        and what would accept it."""
         message = failure.message
         interactions = self.scenario.interactions
         if best:
@@ -215,6 +221,8 @@ class LayoutLoop:
             term, (count, why) = max(lost.items(), key=lambda item: item[1][0])
             total = sum(n for n, _ in lost.values())
             message += f"; of the {total} noisy replays that failed, {count} lost `{term}` first" + (f" ({why})" if why else "")
+        if weakest is not None and best >= len(interactions):
+            message += f"; the weakest link was `{weakest.term}`: best margin {weakest.value:+.3g} {weakest.unit} ({weakest.what})"
         if nearest:
             if nearest < self.min_robustness:
                 hint = f"--min-robustness {nearest} accepts such a one"

@@ -25,6 +25,7 @@ class Parts:
     obstacles: tuple[str, ...]
     distractors: tuple[str, ...]
     acceptance: dict | None = None  # what random actions showed (physc.generation.acceptance), if the domain has a rule
+    margins: dict | None = None  # the links' margins: the weakest over the noisy replays, each as played (search.margins_record)
 
 
 @attrs.frozen
@@ -40,3 +41,5 @@ class Outcome:
     # The noisy replays that failed, by the declared interaction they lost first: (term, count,
     # what the first such replay shows about it, physc.simulation.stopped), most often lost first.
     lost: tuple[tuple[str, int, str], ...] = ()
+    # Of the chains realised but not robust, the strongest weakest link (physc.simulation.margins).
+    weakest: object | None = None

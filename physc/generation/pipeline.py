@@ -203,6 +203,7 @@ class Pipeline:
             obstacles=parts.obstacles,
             distractors=parts.distractors,
             acceptance=parts.acceptance,
+            margins=parts.margins,
             layouts_tried=generated.layouts,
             conjunctions_tried=used.conjunctions_tried,
             simulations=generated.simulations,

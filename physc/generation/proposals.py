@@ -25,6 +25,7 @@ import attrs
 
 from physc.compiler.layout_rules import last_hit_at, last_hit_on
 from physc.generation import choosing, placing
+from physc.generation.problem import Problem
 from physc.generation.stages import prefix
 
 TURNS = (-8.0, 8.0, -15.0, 15.0)  # degrees a bounce surface is turned, tried in turn
@@ -33,43 +34,43 @@ EDGE_GAP = 0.02  # layout units a faller put at the edge of its support keeps fr
 SHORTEST = 0.64  # layout units a support cut to end at its faller keeps at least
 
 
-def offered(search, layout, failed, start: int):
+def offered(problem: Problem, layout, failed, start: int):
     """(description, layout) for the first interaction `failed` (the best failed attempt of a
     stage beginning at `start`) did not realise."""
     index = failed.fidelity.matched
-    interactions = search.interactions
+    interactions = problem.interactions
     if index >= len(interactions):
         return
     declared = interactions[index]
     objects = {o.name: o for o in layout.objects}
     if declared.name == "bounce":
-        yield from turned(search, layout, objects, declared.objects[1], start, mirror=False)
+        yield from turned(problem, layout, objects, declared.objects[1], start, mirror=False)
     elif declared.name == "fall":
-        yield from to_the_edge(search, layout, objects, declared.objects[0], index, start)
-        yield from bodies_for(search, layout, objects, declared.objects[0], "fall", start)
+        yield from to_the_edge(problem, layout, objects, declared.objects[0], index, start)
+        yield from bodies_for(problem, layout, objects, declared.objects[0], "fall", start)
     elif declared.name in ("roll", "slide"):
-        yield from closer(search, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
-        yield from bodies_for(search, layout, objects, declared.objects[0], declared.name, start)
-        yield from next_to(search, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
+        yield from closer(problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
+        yield from bodies_for(problem, layout, objects, declared.objects[0], declared.name, start)
+        yield from next_to(problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
     elif declared.name == "destroy":
-        yield from bodies_for(search, layout, objects, declared.objects[0], "destroy", start)
+        yield from bodies_for(problem, layout, objects, declared.objects[0], "destroy", start)
     elif declared.name == "hit" and index == 0:
-        yield from exposed(search, layout, objects, declared, start)
+        yield from exposed(problem, layout, objects, declared, start)
     elif declared.name == "hit" and index > 0 and interactions[index - 1].name == "bounce":
         bounce = interactions[index - 1]  # it bounced, but away from what it must hit
         if bounce.objects[0] == declared.objects[0]:
-            yield from turned(search, layout, objects, bounce.objects[1], start, mirror=True)
+            yield from turned(problem, layout, objects, bounce.objects[1], start, mirror=True)
 
 
-def _kept(search, layout, start: int, moved, resting=frozenset()):
-    return placing.consistent(prefix(layout, search.entry, start), search.parameters, moved, resting)
+def _kept(problem: Problem, layout, start: int, moved, resting=frozenset()):
+    return placing.consistent(prefix(layout, problem.entry, start), problem.parameters, moved, resting)
 
 
 def _with(layout, changed):
     return attrs.evolve(layout, objects=tuple(changed.get(o.name, o) for o in layout.objects))
 
 
-def turned(search, layout, objects, name: str, start: int, mirror: bool):
+def turned(problem: Problem, layout, objects, name: str, start: int, mirror: bool):
     """The bounce surface `name` turned a little either way (and, with `mirror`, tilted the
     other way: a bounce off its underside then goes the other way)."""
     surface = objects.get(name)
@@ -80,18 +81,18 @@ def turned(search, layout, objects, name: str, start: int, mirror: bool):
         if not TILT[0] <= abs(angle) <= TILT[1]:
             continue
         candidate = _with(layout, {name: attrs.evolve(surface, rotation=round(angle, 3))})
-        if _kept(search, candidate, start, {name}):
+        if _kept(problem, candidate, start, {name}):
             yield f"bounce: {name} turned to {angle:.1f}°", candidate
 
 
-def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
+def to_the_edge(problem: Problem, layout, objects, faller: str, index: int, start: int):
     """`faller` at the edge of its support on the side its last hit pushes it to, then the
     support cut to end just beyond it there."""
-    hit_at = last_hit_at(search.interactions[:index], faller)
-    support = search.frame.support_of.get(faller)
+    hit_at = last_hit_at(problem.interactions[:index], faller)
+    support = problem.frame.support_of.get(faller)
     if hit_at is None or faller not in objects or support not in objects or objects[support].concrete in placing.GROUND:
         return
-    pushed = search.pushed_by(hit_at)
+    pushed = problem.pushed_by(hit_at)
     if pushed is None:
         return
     block, ledge = objects[faller], objects[support]
@@ -100,14 +101,14 @@ def to_the_edge(search, layout, objects, faller: str, index: int, start: int):
     x = right - block.width / 2 - EDGE_GAP if sign > 0 else left + block.width / 2 + EDGE_GAP
     if abs(x - block.x) >= 0.05:
         candidate = _with(layout, {faller: attrs.evolve(block, x=round(x, 5))})
-        if _kept(search, candidate, start, {faller}, {faller}):
+        if _kept(problem, candidate, start, {faller}, {faller}):
             yield f"fall({faller}): at the {pushed} edge of {support}", candidate
-    cut = ledge_ends_at(search, layout, objects, faller, support, pushed, start)
+    cut = ledge_ends_at(problem, layout, objects, faller, support, pushed, start)
     if cut is not None:
         yield f"fall({faller}): {support} ends at {faller}", cut
 
 
-def ledge_ends_at(search, layout, objects, faller: str, support: str, pushed: str, start: int):
+def ledge_ends_at(problem: Problem, layout, objects, faller: str, support: str, pushed: str, start: int):
     """`layout` with `faller`'s `support` ending just beyond it on the side it is `pushed` to
     (the platform shorter at that end only; what else rests on it must still), or None: a
     smaller push then takes it over the edge."""
@@ -121,30 +122,30 @@ def ledge_ends_at(search, layout, objects, faller: str, support: str, pushed: st
         return None
     cut = attrs.evolve(ledge, x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
     candidate = _with(layout, {support: cut})
-    return candidate if _kept(search, candidate, start, {support, faller}, {faller}) else None
+    return candidate if _kept(problem, candidate, start, {support, faller}, {faller}) else None
 
 
-def bodies_for(search, layout, objects, name: str, act: str, start: int):
+def bodies_for(problem: Problem, layout, objects, name: str, act: str, start: int):
     """`name` as each other body it may take that does `act` better, by the estimate of
     physc.generation.choosing, best first."""
     current = objects.get(name)
     if current is None:
         return
-    hit = last_hit_on(search.interactions, name)
+    hit = last_hit_on(problem.interactions, name)
     actor = objects.get(hit.objects[0]) if hit is not None else None
-    domain = search.domain
+    domain = problem.domain
     actor_mass = domain.mass(actor) if actor is not None else None
 
     def estimate(body) -> float:
         return choosing.worth(act, domain.mass(body), domain.friction(body), actor_mass)
 
     here = estimate(current)
-    for body in sorted(domain.bodies(current, search.scenario), key=estimate, reverse=True):
+    for body in sorted(domain.bodies(current, problem.scenario), key=estimate, reverse=True):
         if estimate(body) <= here * (1 + 1e-6):
             break
         fitted = choosing.refitted(current, body, ())
         candidate = _with(layout, {name: fitted})
-        if _kept(search, candidate, start, {name}, {name}):
+        if _kept(problem, candidate, start, {name}, {name}):
             material = f" {body.material}" if body.material else ""
             yield f"{act}({name}): a{material} {body.concrete}", candidate
 
@@ -169,10 +170,10 @@ def beyond(layout, cut: float, sign: float) -> set[str] | None:
     return names
 
 
-def closer(search, layout, objects, mover: str, surface: str, heading: str, start: int):
+def closer(problem: Problem, layout, objects, mover: str, surface: str, heading: str, start: int):
     """`surface`, which `mover` must roll or slide onto from the support it rests on, and the
     world beyond it, brought back to the end of that support: level with it, or a step down."""
-    support = search.frame.support_of.get(mover)
+    support = problem.frame.support_of.get(mover)
     if heading not in ("left", "right") or support in (None, surface) or surface not in objects or support not in objects:
         return
     sign = 1.0 if heading == "right" else -1.0
@@ -190,31 +191,31 @@ def closer(search, layout, objects, mover: str, surface: str, heading: str, star
         dy = (s_top - drop) - t_top
         moved = {n: attrs.evolve(objects[n], x=round(objects[n].x + dx, 5), y=round(objects[n].y + dy, 5)) for n in names}
         candidate = _with(layout, moved)
-        if _kept(search, candidate, start, set(names)):
+        if _kept(problem, candidate, start, set(names)):
             step = f", {drop:g} lower" if drop else ", level"
             yield f"{mover} onto {surface}: {surface} and the world beyond brought to the end of {support}{step}", candidate
 
 
-def next_to(search, layout, objects, mover: str, surface: str, heading: str, start: int):
+def next_to(problem: Problem, layout, objects, mover: str, surface: str, heading: str, start: int):
     """`mover` along its support to just before the start of `surface`."""
     if mover not in objects or surface not in objects or heading not in ("left", "right"):
         return
     block = objects[mover]
     left, _, right, _ = placing.box(objects[surface])
-    gap = search.parameters.clearance + 0.02
+    gap = problem.parameters.clearance + 0.02
     x = left - block.width / 2 - gap if heading == "right" else right + block.width / 2 + gap
     if abs(x - block.x) < 0.05:
         return
     candidate = _with(layout, {mover: attrs.evolve(block, x=round(x, 5))})
-    if _kept(search, candidate, start, {mover}, {mover}):
+    if _kept(problem, candidate, start, {mover}, {mover}):
         yield f"{mover} next to {surface}", candidate
 
 
-def exposed(search, layout, objects, declared, start: int):
+def exposed(problem: Problem, layout, objects, declared, start: int):
     """The first hit did not happen from an allowed side: the target's own support reaches
     out beyond it on that side and shields it, so it gets shorter."""
     target = declared.objects[1]
-    support = search.frame.own_support.get(target)
+    support = problem.frame.own_support.get(target)
     if target not in objects or support not in objects or objects[support].rotation:
         return
     left, _, right, _ = placing.box(objects[target])
@@ -230,6 +231,6 @@ def exposed(search, layout, objects, declared, start: int):
             continue
         cut = attrs.evolve(objects[support], x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
         candidate = _with(layout, {support: cut})
-        if _kept(search, candidate, start, {target, support}, {target}):
+        if _kept(problem, candidate, start, {target, support}, {target}):
             yield f"{declared.text}: {support} no longer shields {target}", candidate
 

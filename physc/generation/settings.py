@@ -68,8 +68,36 @@ class SearchSettings:
     """Local changes on top of one another."""
     candidates: int = 3
     """Working actions put through the noisy replays at most, per layout."""
-    centring_steps: int = 8
-    """Nudges tried each way around a fragile action (the domain's `nudged`)."""
+    stage_replays: int = 3
+    """Noisy replays of a stage's scene that judge a variant's strength (physc.generation.chain)."""
+    weak_kept: int = 3
+    """Weak variants of a stage (a noisy replay lost a link) met before the strongest of them is
+    built on, when no strong one came first (physc.generation.chain)."""
+    raise_stages: int = 4
+    """Stages per layout whose failed or weak links the search raises (physc.generation.chain)."""
+    raise_stage_evaluations: int = 24
+    """Candidates a stage's raising judges at most, each played once and in `stage_replays`
+    noisy replays."""
+    raise_candidates: int = 1
+    """Working actions per layout whose margins the strengthening raises (the first ones)."""
+    raise_evaluations: int = 36
+    """Candidates (layouts and actions) the strengthening simulates at most per action, each
+    played once and in the domain's noisy replays."""
+    raise_enough: float = 0.25
+    """The least margin (as a share of each link's scale, physc.simulation.margins) that every
+    link must keep in every noisy replay for the strengthening to stop before its budget."""
+    raise_population: int = 6
+    """Candidates per generation of CMA-ES."""
+    raise_sigma: float = 0.35
+    """CMA-ES's first step, as a share of each coordinate's reach."""
+    raise_reach: float = 15.0
+    """How far the strengthening may move an object or a surface's end either way, in the
+    layout's clearances (angrybirds: 0.4 units; PHYRE-like: 8 pixels)."""
+    raise_turn: float = 5.0
+    """Degrees the strengthening may turn an inclined surface either way."""
+    raise_steps: int = 60
+    """Steps along the domain's `nudged` line the strengthening may move the action either way
+    (angrybirds: 1° of release angle)."""
     obstacles: int = 6
     """Obstacles tried per forbidden hit."""
     shortcuts: int = 3

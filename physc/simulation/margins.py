@@ -96,6 +96,28 @@ class Margins:
         return [m.record() for m in self.links]
 
 
+@attrs.frozen
+class _Term:
+    name: str
+    objects: tuple[str, ...]
+    directions: tuple[str, ...]
+    text: str
+
+
+@attrs.frozen
+class Recognised:
+    """A trace's own recognised interactions as a declared sequence (physc.simulation.fidelity's
+    `Declared`), so that a play with no scenario still has margins: how near each thing that
+    happened came to not happening, or to happening another way."""
+
+    interactions: tuple[_Term, ...]
+    restrictions: tuple = ()
+
+    @classmethod
+    def of(cls, trace: Trace) -> Recognised:
+        return cls(tuple(_Term(i.name, i.objects, (i.direction,) if i.direction else (), i.text()) for i in trace.interactions))
+
+
 def _angle(dx: float, dy: float) -> float:
     return math.degrees(math.atan2(dy, dx)) % 360.0
 
@@ -251,6 +273,8 @@ class MarginReader:
             return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
         parts = [Margin(text, k, best - need, "s", need, f"seconds of {name}ing beyond the least recognised")]
         after = next((i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None)
+        if after is not None and matched[after].name != "hit":
+            after = None  # only a meeting has a speed to arrive at
         if found is not None and after is not None:
             start = trace.states[self.row(trace, found.time), index]
             arrive = trace.states[self.row(trace, matched[after].time) - 1, index]

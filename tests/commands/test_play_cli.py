@@ -23,7 +23,17 @@ def test_trace_prints_phys_syntax():
     run = run_physc("trace", ONE_PIG, "--shot", "0,-3.27")
     lines = run.stdout.splitlines()
     assert lines[1].startswith("hit(bird, pigSmall1, left)") and lines[2].startswith("> destroy(bird, pigSmall1)")
-    assert len({line.index("# t = ") for line in lines[1:]}) == 1  # the times in one column
+    assert len({line.index("# t = ") for line in lines[1:] if not line.startswith("#")}) == 1  # the times in one column
+
+
+def test_trace_gives_each_link_its_margin_and_names_the_weakest():
+    data = json.loads(run_physc("trace", ONE_PIG, "--shot", "0,-3.27", "--format", "json").stdout)
+    hit, destroy = data["interactions"][:2]
+    assert hit["term"] == "hit(bird, pigSmall1, left)" and hit["margin"]["unit"] == "degrees" and hit["margin"]["held"]
+    assert destroy["margin"]["unit"] == "damage" and destroy["margin"]["value"] > 0  # the bird's blow, under the worst reading
+    assert data["weakest"]["share"] == min(i["margin"]["share"] for i in data["interactions"] if i["margin"])
+    text = run_physc("trace", ONE_PIG, "--shot", "0,-3.27").stdout
+    assert "margin +" in text.splitlines()[1] and "# weakest link: `" in text
 
 
 def test_render(tmp_path):

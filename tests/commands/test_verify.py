@@ -31,6 +31,9 @@ def test_a_tasks_solution_passes_in_either_engine(task, backend):
     assert "hit(bird, pig, left) > destroy(bird, pig)" in run.stdout
     data = json.loads(run_physc("verify", level, "--task", task_file, "--backend", backend, "--replays", "2", "--json").stdout)
     assert data["passes"] and data["solved"] and data["realised"] and (data["noisy_passed"], data["noisy_run"]) == (2, 2)
+    # Every reading of the game that can change a replay was played (the pig's destroying strike
+    # depends on relativeVelocity's sign), and none failed.
+    assert data["readings"] >= 2 and data["failed_readings"] == []
 
 
 def test_a_solution_that_misses_fails_with_the_reason_and_exit_1(task, tmp_path):

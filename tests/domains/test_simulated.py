@@ -145,14 +145,17 @@ def test_the_next_target_goes_with_its_support_onto_the_actors_path():
     from physc.domains import load_domain
     from physc.generation.attempt import Attempt
     from physc.generation.placing import consistent
-    from physc.generation.search import Search
+    from physc.generation.problem import Problem
+    from physc.generation.variants import on_path
 
-    search = Search(load_domain("phyre"), scenario, layout, None, 0)
-    search.parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
-    search.scale = 1.0
+    class Unscaled(type(load_domain("phyre"))):
+        layout_parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
+        trace_scale = 1.0
+
+    search = Problem.of(Unscaled(), scenario, layout, 0)
     stage = search.plan[1]
     assert stage.start == 1 and set(stage.new) == {"green", "support_green"}
-    proposals = list(search.on_path(layout, scenario.interactions[1], stage, Attempt("", None, trace, fidelity)))
+    proposals = list(on_path(search, layout, scenario.interactions[1], stage, Attempt("", None, trace, fidelity)))
     assert proposals
     description, moved = proposals[0]
     assert description.startswith("hit(rObj, green, above): green on its path")

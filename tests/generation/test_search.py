@@ -16,11 +16,11 @@ from physc.domains import load_domain
 from physc.dsl.frontend import analyze
 from physc.generation import choosing, guards
 from physc.generation.pipeline import Pipeline
-from physc.generation.search import Node, Search
+from physc.generation.chain import Node
 from physc.generation.settings import SearchSettings
 from physc.generation.stages import Stage, prefix, stages
 
-from middle_end import search
+from middle_end import search, searching
 
 ROOT = Path(__file__).resolve().parents[2]
 PAPER = ROOT / "examples" / "paper"
@@ -78,8 +78,8 @@ def test_the_next_target_goes_on_its_actors_simulated_path():
 def test_the_search_backtracks_and_keeps_its_budget():
     s = search("SF", seed=1, variants=3)
     outcome = s.run()
-    assert s.variants_tried <= 3
-    assert outcome.simulations == s.evaluator.simulations
+    assert s.ledger.variants_tried <= 3
+    assert outcome.simulations == s.ledger.evaluator.simulations
 
 
 @pytest.mark.parametrize(
@@ -103,7 +103,7 @@ def test_a_new_object_is_offered_the_bodies_its_next_act_favours():
     assert (declared.name, act) == ("hit", "fall")  # pushed off, it falls onto the pig (and destroys it)
     current = {o.name: o for o in s.placed.objects}
     worth = lambda body: choosing.worth(act, s.domain.mass(body), s.domain.friction(body), s.domain.mass(current[actor]))  # noqa: E731
-    offered = list(choosing.alternatives(s, s.placed, declared, stage, attempt))
+    offered = list(choosing.alternatives(s.problem, s.placed, declared, stage, attempt))
     assert offered
     for note, layout in offered:
         body = next(o for o in layout.objects if o.name == target)
@@ -112,20 +112,20 @@ def test_a_new_object_is_offered_the_bodies_its_next_act_favours():
         assert abs((body.y - body.height / 2) - (current[target].y - current[target].height / 2)) < 1e-4
 
 
-def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight():
+def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight(monkeypatch):
     restriction = None
     for seed in range(10):  # the first layout whose pig a direct shot reaches
         s = search("R", seed=seed)
         restriction = next(r for r in s.scenario.restrictions if r.name == "cannotHit")
-        offending = s.offending(s.placed, restriction)
+        offending = guards.offending(s.problem, s.ledger, s.placed, restriction)
         if offending is not None:
             break
     assert offending is not None, "a shot at the pig breaks cannotHit"
     # Any action will do as "the solution" the obstacle must leave working: here, one whose
     # play is valid is not needed, so the check is against a shot that misses everything.
     solution = offending
-    s.simulate = _valid_for(s, solution.action)
-    blocked = s.block(s.placed, offending, "bird", solution, (0.9, 1.3, 1.8, 2.4, 3.0), lambda a: guards.breaks(a, restriction), 0)
+    monkeypatch.setattr(guards, "simulate", _valid_for(s, solution.action))
+    blocked = guards.block(s.problem, s.ledger, s.placed, offending, "bird", solution, (0.9, 1.3, 1.8, 2.4, 3.0), lambda a: guards.breaks(a, restriction), 0)
     assert blocked is not None
     layout, note = blocked
     obstacle = layout.objects[-1]
@@ -134,12 +134,12 @@ def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight():
 
 
 def _valid_for(s, action):
-    """`s.simulate`, with the play of `action` counted as realising the sequence (the test's
-    stand-in for a solution)."""
-    real = s.simulate
+    """The search's `simulate`, with the play of `action` counted as realising the sequence
+    (the test's stand-in for a solution)."""
+    from physc.generation.problem import simulate as real
 
-    def simulate(layout, played, seconds=None):
-        attempt = real(layout, played, seconds)
+    def simulate(problem, ledger, layout, played, seconds=None, resume=None):
+        attempt = real(problem, ledger, layout, played, seconds, resume)
         if played == action and not guards.breaks(attempt, next(r for r in s.scenario.restrictions if r.name == "cannotHit")):
             return attrs.evolve(attempt, fidelity=attrs.evolve(attempt.fidelity, matched=attempt.fidelity.total, violations=(), solved=True))
         return attempt
@@ -182,13 +182,13 @@ def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own
     domain = load_domain("angrybirds")
     for seed in range(10):
         layout = Pipeline(domain, scenario, seed).placed.layout
-        s = Search(domain, scenario, layout, random.Random(seed), 6)
+        s = searching(domain, scenario, layout, seed, 6)
         objects = {o.name: o for o in layout.objects}
         _, _, end, top = placing.box(objects[s.frame.support_of["sBlock"]])
         near, _, _, next_top = placing.box(objects["hSurface"])
         if near - end > 0.2:
             break
-    offered = list(proposals.closer(s, layout, objects, "sBlock", "hSurface", "right", 0))
+    offered = list(proposals.closer(s.problem, layout, objects, "sBlock", "hSurface", "right", 0))
     assert offered, "a gap of more than 0.2 units before hSurface is closed"
     for description, changed in offered:
         moved = {o.name: o for o in changed.objects}
@@ -205,7 +205,7 @@ def test_a_bounce_surface_is_turned_within_its_tilt():
 
     s = search("B", seed=0)
     objects = {o.name: o for o in s.placed.objects}
-    offered = list(proposals.turned(s, s.placed, objects, "iSurface", 0, mirror=True))
+    offered = list(proposals.turned(s.problem, s.placed, objects, "iSurface", 0, mirror=True))
     assert offered
     for description, changed in offered:
         angle = next(o for o in changed.objects if o.name == "iSurface").rotation

@@ -111,23 +111,23 @@ def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
     realises a stage, which the next stage builds on, is a play from the start."""
     from middle_end import search
 
-    from physc.generation.search import Search
+    from physc.generation import chain
 
-    resumed, simulate, realised = set(), Search.simulate, Search.realised
+    resumed, simulate, realised = set(), chain.simulate, chain.realised
 
-    def simulated(self, layout, action, seconds=None, resume=None):
-        attempt = simulate(self, layout, action, seconds, resume)
+    def simulated(problem, ledger, layout, action, seconds=None, resume=None):
+        attempt = simulate(problem, ledger, layout, action, seconds, resume)
         if resume is not None:
             resumed.add(id(attempt.trace))
         return attempt
 
-    def checked(self, *args, **kwargs):
-        good = realised(self, *args, **kwargs) or ()
+    def checked(*args, **kwargs):
+        good = realised(*args, **kwargs) or ()
         assert not [a for a in good if id(a.trace) in resumed]
         return good or None
 
-    monkeypatch.setattr(Search, "simulate", simulated)
-    monkeypatch.setattr(Search, "realised", checked)
+    monkeypatch.setattr(chain, "simulate", simulated)
+    monkeypatch.setattr(chain, "realised", checked)
     outcome = search("F", seed=2).run()
     assert outcome.satisfied
     assert resumed, "the second stage went on from a snapshot"
@@ -136,10 +136,10 @@ def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
 def test_with_snapshots_off_every_play_runs_from_the_start(monkeypatch):
     from middle_end import search
 
-    from physc.generation.search import Search
+    from physc.generation import chain
 
-    cuts, simulate = [], Search.simulate
-    monkeypatch.setattr(Search, "simulate", lambda self, *a, **k: cuts.append(a[3] if len(a) > 3 else k.get("resume")) or simulate(self, *a, **k))
+    cuts, simulate = [], chain.simulate
+    monkeypatch.setattr(chain, "simulate", lambda *a, **k: cuts.append(a[5] if len(a) > 5 else k.get("resume")) or simulate(*a, **k))
     assert search("F", seed=2, snapshots=False).run().satisfied
     assert cuts and not any(cuts)
 

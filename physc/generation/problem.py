@@ -1,0 +1,123 @@
+"""The state of one search, as two values: what it reads (`Problem`) and what it writes (`Ledger`).
+
+The search of one placed layout (physc.generation.search) is a few steps in turn: the chain
+built stage by stage (chain.py), its margins raised (strengthen.py), guards, distractors,
+validation and acceptance. Each step is a function of the `Problem`, a frozen value of
+everything fixed for the layout (the bound domain, the scenario, the layout as placed, the
+search's settings, which objects enter at which stage), and of the `Ledger`, the one record
+every step writes to as it goes (the simulations run and kept, how far the chain got, what
+noise broke and how near a fragile solution came). No step keeps state of its own.
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.compiler.layout_rules import pushes
+from physc.generation import placing
+from physc.generation.attempt import Attempt
+from physc.generation.evaluator import Evaluator
+from physc.generation.settings import SETTINGS, SearchSettings
+from physc.generation.stages import Stage, introduced, stages
+from physc.simulation.fidelity import fidelity
+from physc.simulation.margins import Margin
+from physc.simulation.snapshot import Snapshot
+
+KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
+
+
+@attrs.frozen
+class Problem:
+    """What one search reads and never changes."""
+
+    domain: object  # the bound SimulatedDomain (its world and engine)
+    scenario: object  # the checked scenario (physc.dsl.scenario.ScenarioIR)
+    placed: object  # the layout as placed (a ConcreteLayout); the steps make new ones
+    settings: SearchSettings
+    frame: placing.Frame  # what rests on what, what never moves onto a path
+    entry: dict  # object → the interaction at which it enters the scene
+    plan: tuple[Stage, ...]
+    players: frozenset[str]  # the player's objects (the bird)
+    accept: int  # noisy replays a solution must pass (fewer: a fallback's)
+    validate: bool = True
+    acceptance: bool = True  # whether the domain's acceptance rule judges the task
+
+    @classmethod
+    def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
+        entry = introduced(layout, scenario.interactions)
+        return cls(
+            domain, scenario, layout, domain.search_settings or SETTINGS, placing.Frame.of(layout, scenario, domain.layout_parameters),
+            entry, tuple(stages(scenario.interactions, entry)),
+            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance,
+        )
+
+    @property
+    def interactions(self):
+        return self.scenario.interactions
+
+    @property
+    def parameters(self):
+        """The layout's QSR distances and placement area (the domain's)."""
+        return self.domain.layout_parameters
+
+    @property
+    def scale(self) -> float:
+        """Layout lengths per length of the simulation."""
+        return self.domain.trace_scale
+
+    def level_of(self, layout):
+        return self.domain.level_from_layout(layout, self.scenario)
+
+    def pushed_by(self, k: int) -> str | None:
+        """The way ("left" or "right") the hit `interactions[k]` pushes its target, if known
+        (physc.compiler.layout_rules.pushes, with the domain's heading of the player's object)."""
+        pushed = pushes(self.interactions, k, self.players, getattr(self.domain.layout_rules, "player_heading", None))
+        return pushed if pushed in ("left", "right") else None
+
+    def heading_after(self, name: str, index: int) -> str | None:
+        """The way `name` next rolls or slides, from interaction `index` on."""
+        term = next((t for t in self.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name), None)
+        return None if term is None else term.directions[0]
+
+
+@attrs.define
+class Ledger:
+    """What one search writes as it goes."""
+
+    evaluator: Evaluator = attrs.field(factory=lambda: Evaluator(KEPT_SIMULATIONS))
+    best: int = 0  # most interactions realised in order by one play
+    furthest: Attempt | None = None  # the play that came furthest
+    nearest: int = 0  # most noisy replays passed by a working action given up as fragile
+    tried: int = 0  # working actions put through the noisy replays
+    lost: dict = attrs.field(factory=dict)  # declared term → (failed noisy replays that lost it first, what the first shows)
+    variants_tried: int = 0
+    screened: list = attrs.field(factory=list)  # labels of the first stage's actions that came nearest
+    failed: dict = attrs.field(factory=dict)  # stage → the best attempt of a variant that failed there
+    failed_layout: dict = attrs.field(factory=dict)  # stage → the layout it failed in
+    weakest: Margin | None = None  # the strongest weakest link of a chain realised but not robust (exit 3 names it)
+    raised: int = 0  # candidates the raising of margins judged (raising.py)
+    stages_raised: int = 0  # stages whose margins were raised (physc.generation.chain)
+
+    @property
+    def simulations(self) -> int:
+        return self.evaluator.simulations
+
+
+def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | None = None, resume: Snapshot | None = None) -> Attempt:
+    """`action` played in `layout`'s level for `seconds` (default: the domain's), from the
+    snapshot `resume` if given, judged against the scenario; run once while among the last
+    KEPT_SIMULATIONS asked for. The ledger notes how far it got."""
+    key = (seconds, layout.objects, action, resume is not None and resume.step)
+    options = {} if resume is None else {"resume": resume}
+    trace = ledger.evaluator.kept(key, lambda: problem.domain.play(problem.level_of(layout), action, problem.scenario, seconds, **options))
+    attempt = Attempt("", action, trace, fidelity(problem.scenario, trace))
+    ledger.best = max(ledger.best, attempt.fidelity.matched)
+    if ledger.furthest is None or attempt.fidelity.score > ledger.furthest.fidelity.score:
+        ledger.furthest = attempt
+    return attempt
+
+
+def play(problem: Problem, ledger: Ledger, level, action, label: str = "") -> Attempt:
+    """`action` played in `level` (uncached: a noisy replay), judged against the scenario."""
+    trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario))
+    return Attempt(label, action, trace, fidelity(problem.scenario, trace))
