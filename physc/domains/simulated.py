@@ -76,9 +76,10 @@ class SimulatedDomain(Domain):
     """How the domain reads each link's margin from a trace (physc.simulation.margins): the
     generic reader, which a domain whose physics says more about a link extends."""
 
-    def margins(self, scenario, trace: Trace) -> Margins:
-        """How far each declared link and restriction of `scenario` was from failing in `trace`."""
-        return self.margin_reader(self.recogniser).read(scenario, trace)
+    def margins(self, scenario, trace: Trace, through: int | None = None) -> Margins:
+        """How far each declared link and restriction of `scenario` was from failing in `trace`
+        (with `through`: of the first `through` links, and the restrictions until the last of them)."""
+        return self.margin_reader(self.recogniser).read(scenario, trace, through)
 
     seconds: float = 10.0
     """A play's simulated time at most."""

@@ -27,7 +27,7 @@ from physc.generation.attempt import Attempt, reaches
 from physc.generation.problem import Ledger, Problem, play, simulate
 from physc.generation.snapshots import snapshot
 from physc.generation.stages import Stage, prefix
-from physc.simulation.margins import Margins
+from physc.simulation.margins import Margin, Margins
 
 
 @attrs.frozen
@@ -111,31 +111,30 @@ def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: Stage, la
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
     raise the stage's strength; the first strong candidate, else the strongest that realises
     the stage, as a node; None when none realises it."""
-    from physc.generation.coordinates import Coordinates
+    from physc.generation.coordinates import Coordinates, weak_parts
     from physc.generation.raising import Candidate, climb
 
-    margins = problem.domain.margins(problem.scenario, attempt.trace)
-    links = [m for m in margins.links if m.index is not None and m.index < stage.end]
-    weakest = min(links, key=lambda m: (m.held, m.share), default=None)
-    k = attempt.fidelity.matched if weakest is None else weakest.index
+    margins = problem.domain.margins(problem.scenario, attempt.trace, stage.end)
+    weakest = margins.weakest
     interactions = problem.interactions
-    near = [interactions[j] for j in (k, k + 1) if j < len(interactions)]
-    names = {name for term in near for name in term.objects}
-    pairs = [tuple(term.objects[:2]) for term in near if term.name in ("hit", "fall", "touch") and len(term.objects) > 1]
-    space = Coordinates.of(problem, layout, attempt.action, names, pairs)
+    k = min(attempt.fidelity.matched, len(interactions) - 1) if weakest is None or weakest.index is None else weakest.index
+    if weakest is None:
+        weakest = Margin(interactions[k].text, k, -1.0, "", 1.0, "", False)
+    space = Coordinates.of(problem, layout, attempt.action, *weak_parts(problem, weakest))
 
     def judge(candidate, action, notes) -> Candidate:
         scene = prefix(candidate, problem.entry, stage.start)
         played = attrs.evolve(simulate(problem, ledger, scene, action), label=attempt.label)
         if not passes(problem, played, stage, candidate):
-            return Candidate(candidate, action, notes, score(problem.domain.margins(problem.scenario, played.trace), stage.end, played.fidelity.matched) - 1.0, False, False)
+            return Candidate(candidate, action, notes, score(problem.domain.margins(problem.scenario, played.trace, stage.end), stage.end, played.fidelity.matched) - 1.0, False, False)
         strength = stage_strength(problem, ledger, candidate, stage, played)
         return Candidate(candidate, action, notes, strength, strength >= 0, True, played)
 
-    found = climb(problem, ledger, space, judge, f"{stage.index}/{attempt.label}", problem.settings.raise_stage_evaluations)
+    settings = problem.settings
+    found = climb(problem, ledger, space, judge, f"{stage.index}/{attempt.label}", settings.raise_stage_evaluations, settings.raise_stage_sigma)
     if found is None:
         return None
-    step = f"{interactions[min(k, len(interactions) - 1)].text}: margins raised: {found.notes or 'as placed'}"
+    step = f"{weakest.term}: margins raised: {found.notes or 'as placed'}"
     return Node(found.layout, (found.found,), stage.index, parent.steps + (step,), min(parent.strength, found.value))
 
 
@@ -144,7 +143,7 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: Stage, attem
     in the stage's scene of `layout`, as played and in `stage_replays` noisy replays."""
     domain = problem.domain
     end = stage.end
-    strength = score(domain.margins(problem.scenario, attempt.trace), end, attempt.fidelity.matched)
+    strength = score(domain.margins(problem.scenario, attempt.trace, end), end, attempt.fidelity.matched)
     replays = problem.settings.stage_replays if domain.robustness_replays else 0
     if not replays or strength < 0:
         return strength
@@ -154,7 +153,7 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: Stage, attem
         noise = random.Random(f"stage/{stage.index}/{attempt.label}/{r}")
         noisy_level, action = domain.noisy(level, attempt.action, noise)
         played = play(problem, ledger, noisy_level, action)
-        strength = min(strength, score(domain.margins(problem.scenario, played.trace), end, played.fidelity.matched))
+        strength = min(strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched))
         if strength < 0:
             break
     return strength
@@ -193,7 +192,7 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Stag
             ledger.failed_layout[stage.index] = layout
         if not parent.attempts and not ledger.screened:
             ledger.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: problem.settings.screen]]
-    margin = {id(a): min(score(domain.margins(problem.scenario, a.trace), stage.end, a.fidelity.matched), 1.0) for a in good}
+    margin = {id(a): min(score(domain.margins(problem.scenario, a.trace, stage.end), stage.end, a.fidelity.matched), 1.0) for a in good}
     good.sort(key=lambda a: (a.fidelity.score[:3], margin[id(a)], promise(problem, a, stage.end)), reverse=True)
     return tuple(good[: problem.settings.beam]) or None
 

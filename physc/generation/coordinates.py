@@ -60,6 +60,26 @@ class Coordinate:
         return f"{self.name} {self.kind} {value:+.3f}{unit}"
 
 
+def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]]]:
+    """What a weak link depends on: the objects of the link and of the one after it, and the
+    pairs a hit or a fall among them meets; for a restriction, its objects and the surfaces the
+    first of them rolls or slides on (a body that must not fall stays on what it moves along)."""
+    interactions = problem.interactions
+    names: set[str] = set()
+    pairs: list[tuple[str, str]] = []
+    if margin.index is not None:
+        for term in interactions[margin.index : margin.index + 2]:
+            names |= set(term.objects)
+            if term.name in ("hit", "fall", "touch") and len(term.objects) > 1 and tuple(term.objects[:2]) not in pairs:
+                pairs.append(tuple(term.objects[:2]))
+        return names, pairs
+    restriction = next((r for r in problem.scenario.restrictions if r.text == margin.term), None)
+    if restriction is not None:
+        names |= set(restriction.objects)
+        names |= {t.objects[1] for t in interactions if t.name in ("roll", "slide") and t.objects[0] == restriction.objects[0]}
+    return names, pairs
+
+
 def structures(layout) -> dict[str, frozenset[str]]:
     """Each object's structure: what is joined to it or rests on it, transitively."""
     links: dict[str, set[str]] = {o.name: {o.name} for o in layout.objects}

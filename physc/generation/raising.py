@@ -51,12 +51,13 @@ def climb(
     judge: Callable[[object, object, str], Candidate | None],
     label: str,
     evaluations: int,
+    sigma: float,
     accept: Callable[[Candidate], object | None] = lambda candidate: candidate,
 ):
-    """CMA-ES over `space` from its origin: each point's layout and action judged (`judge`:
-    None for one that cannot be played). The first good candidate that `accept` takes is the
-    result; when none is within `evaluations` candidates, `accept` of the best passing one;
-    else None."""
+    """CMA-ES over `space` from its origin, its first step `sigma` (a share of each coordinate's
+    reach): each point's layout and action judged (`judge`: None for one that cannot be
+    played). The first good candidate that `accept` takes is the result; when none is within
+    `evaluations` candidates, `accept` of the best passing one; else None."""
     import cma
 
     if not space.axes or evaluations <= 0:
@@ -75,7 +76,7 @@ def climb(
         # fails in a one-coordinate search when the step reaches it).
         "maxstd_boundrange": np.inf,
     }
-    strategy = cma.CMAEvolutionStrategy(np.zeros(len(space.axes)), settings.raise_sigma, options)
+    strategy = cma.CMAEvolutionStrategy(np.zeros(len(space.axes)), sigma, options)
     best: Candidate | None = None
     evaluated = 0
     while not strategy.stop() and evaluated < evaluations:

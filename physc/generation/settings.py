@@ -88,8 +88,12 @@ class SearchSettings:
     link must keep in every noisy replay for the strengthening to stop before its budget."""
     raise_population: int = 6
     """Candidates per generation of CMA-ES."""
-    raise_sigma: float = 0.35
-    """CMA-ES's first step, as a share of each coordinate's reach."""
+    raise_sigma: float = 0.1
+    """CMA-ES's first step raising a whole chain's margins, as a share of each coordinate's
+    reach: a realised chain is a narrow region, and a step of a tenth (angrybirds: 0.15 units,
+    0.3° of release angle) keeps most candidates in it."""
+    raise_stage_sigma: float = 0.35
+    """CMA-ES's first step raising a stage, whose link may not happen at all yet: wider."""
     raise_reach: float = 15.0
     """How far the strengthening may move an object or a surface's end either way, in the
     layout's clearances (angrybirds: 0.4 units; PHYRE-like: 8 pixels)."""

@@ -24,7 +24,7 @@ import numpy as np
 
 from physc.generation.attempt import Attempt
 from physc.generation.chain import Node, score
-from physc.generation.coordinates import Coordinates
+from physc.generation.coordinates import Coordinates, weak_parts
 from physc.generation.problem import Ledger, Problem, play, simulate
 from physc.generation.raising import Candidate, climb
 from physc.generation.settings import NOISE_STREAMS
@@ -163,22 +163,16 @@ def note_weakest(ledger: Ledger, measured: Replays) -> None:
 
 
 def weak_objects(problem: Problem, measured: Replays) -> tuple[set[str], list[tuple[str, str]]]:
-    """The objects of the links the replays found weakest (the most often weakest two) and of
-    the link after each, and the pairs a hit or a fall among them meets: what the raising moves."""
-    counts = Counter(m.weakest.term for m in measured.margins if m.weakest is not None)
-    terms = {t.text: (k, t) for k, t in enumerate(problem.interactions)}
-    restrictions = {r.text: r for r in problem.scenario.restrictions}
+    """What the links the replays found weakest (the most often weakest two) depend on
+    (coordinates.weak_parts): what the raising moves."""
+    weakest = [m.weakest for m in measured.margins if m.weakest is not None]
+    counts = Counter(m.term for m in weakest)
     names: set[str] = set()
     pairs: list[tuple[str, str]] = []
     for term, _ in counts.most_common(2):
-        if term in terms:
-            k, _ = terms[term]
-            for near in problem.interactions[k : k + 2]:
-                names |= set(near.objects)
-                if near.name in ("hit", "fall", "touch") and len(near.objects) > 1 and tuple(near.objects[:2]) not in pairs:
-                    pairs.append(tuple(near.objects[:2]))
-        elif term in restrictions:
-            names |= set(restrictions[term].objects)
+        more, meets = weak_parts(problem, next(m for m in weakest if m.term == term))
+        names |= more
+        pairs += [pair for pair in meets if pair not in pairs]
     return names, pairs
 
 
@@ -206,4 +200,4 @@ def raised(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Re
         better, measured = candidate.found
         return confirmed(problem, ledger, candidate.layout, better, measured, candidate.notes)
 
-    return climb(problem, ledger, space, judge, attempt.label, settings.raise_evaluations, accept)
+    return climb(problem, ledger, space, judge, attempt.label, settings.raise_evaluations, settings.raise_sigma, accept)

@@ -142,9 +142,12 @@ class MarginReader:
         self.recogniser = recogniser
 
     # ---- the whole trace -----------------------------------------------------------------
-    def read(self, scenario: Declared, trace: Trace) -> Margins:
+    def read(self, scenario: Declared, trace: Trace, through: int | None = None) -> Margins:
+        """The margins of the declared links and restrictions in `trace`; with `through`, of the
+        first `through` links only, and of the restrictions until the last of them (a stage of
+        a chain: what its scene does after its last link is not the chain's)."""
         found: list[Interaction] = []
-        terms = scenario.interactions
+        terms = tuple(scenario.interactions)[:through]
         for interaction in trace.interactions:
             if len(found) < len(terms) and matches(terms[len(found)], interaction):
                 found.append(interaction)
@@ -165,6 +168,7 @@ class MarginReader:
             elif k == len(found):
                 out.append(Margin(declared.text, k, -1.0, "of a link", 1.0, "not realised", False))
         until = found[-1].time if len(found) == len(terms) and found else trace.duration
+        terms = tuple(scenario.interactions)
         for restriction in getattr(scenario, "restrictions", ()):
             method = {"cannotHit": self.cannot_hit, "cannotFall": self.cannot_fall}.get(restriction.name)
             margin = method(restriction, trace, until, terms) if method else None
