@@ -40,10 +40,10 @@ from __future__ import annotations
 import math
 
 import attrs
-import numpy as np
 
 from physc.simulation.fidelity import Declared, matches
-from physc.simulation.recognise import Recogniser, approach, contact_intervals
+from physc.simulation.recognise import Recogniser, approach
+from physc.simulation.where import Where
 from physc.simulation.trace import Interaction, Trace
 
 SIDES = {"right": 0.0, "above": 90.0, "left": 180.0, "below": 270.0}  # the direction each side of a body faces
@@ -151,7 +151,7 @@ class MarginReader:
         for interaction in trace.interactions:
             if len(found) < len(terms) and matches(terms[len(found)], interaction):
                 found.append(interaction)
-        self.intervals = contact_intervals(trace)
+        self.where = Where(trace)
         out = []
         for k, declared in enumerate(terms):
             if k > len(found):
@@ -176,53 +176,6 @@ class MarginReader:
                 out.append(margin)
         return Margins(tuple(out))
 
-    # ---- geometry ------------------------------------------------------------------------
-    def pose(self, trace: Trace, name: str, row: int) -> tuple[float, float, float, float, float] | None:
-        """(x, y, angle, half-width, half-height) of `name` at state row `row` (None: unknown or gone)."""
-        outline = trace.outlines.get(name)
-        if outline is None:
-            return None
-        if name not in trace.names:
-            return outline
-        state = trace.states[min(max(row, 0), trace.steps - 1), trace.index(name)]
-        if math.isnan(state[0]):
-            return None
-        return (float(state[0]), float(state[1]), float(state[2]), outline[3], outline[4])
-
-    @staticmethod
-    def extents(pose) -> tuple[float, float]:
-        """The half-extents along x and y of a pose's box turned by its angle."""
-        _, _, angle, w, h = pose
-        c, s = abs(math.cos(angle)), abs(math.sin(angle))
-        return w * c + h * s, w * s + h * c
-
-    def gap(self, trace: Trace, a: str, b: str, first: int, last: int) -> float | None:
-        """The least distance between the boxes of `a` and `b` over rows first..last (negative:
-        they overlap; None when neither can be placed)."""
-        best = None
-        for row in range(max(first, 0), min(last, trace.steps)):
-            pa, pb = self.pose(trace, a, row), self.pose(trace, b, row)
-            if pa is None or pb is None:
-                continue
-            (ax, ay), (bx, by) = self.extents(pa), self.extents(pb)
-            dx, dy = abs(pa[0] - pb[0]) - ax - bx, abs(pa[1] - pb[1]) - ay - by
-            gap = math.hypot(max(dx, 0.0), max(dy, 0.0)) if dx > 0 or dy > 0 else max(dx, dy)
-            best = gap if best is None else min(best, gap)
-        return best
-
-    def size(self, trace: Trace, name: str) -> float:
-        """`name`'s larger half-extent (a length scale for its clearances)."""
-        outline = trace.outlines.get(name)
-        return max(outline[3], outline[4]) if outline else 0.1
-
-    @staticmethod
-    def row(trace: Trace, time: float) -> int:
-        """The state row of `time` (row k holds the time (k + 1) · dt)."""
-        return min(max(int(round(time / trace.dt)) - 1, 0), trace.steps - 1)
-
-    def contacts(self, trace: Trace, a: str, b: str, since: float):
-        return [c for c in trace.contacts if {c.a, c.b} == {a, b} and c.time >= since - 1e-9]
-
     def survival(self, trace: Trace, name: str, time: float, text: str, k: int) -> Margin | None:
         """The life `name` has left at `time` under the worst reading of each blow before it
         (DamageRecord.most): an actor that another reading would have broken first does not act."""
@@ -240,14 +193,14 @@ class MarginReader:
         actor, target = declared.objects[0], declared.objects[1]
         text = declared.text
         sides = set(declared.directions or ()) & ALL_SIDES
-        contacts = self.contacts(trace, actor, target, since)
+        contacts = self.where.contacts(actor, target, since)
         if found is not None:
             contacts = [c for c in contacts if abs(c.time - found.time) < trace.dt / 2] or contacts
         if not contacts:
-            gap = self.gap(trace, actor, target, self.row(trace, since), trace.steps)
+            gap = self.where.gap(actor, target, self.where.row(since), trace.steps)
             if gap is None:
                 return Margin(text, k, -1.0, "of a link", 1.0, f"{actor} never came near {target}", False)
-            return Margin(text, k, -max(gap, 0.0), "units", self.size(trace, actor), f"the nearest {actor} came to {target}", False)
+            return Margin(text, k, -max(gap, 0.0), "units", self.where.size(actor), f"the nearest {actor} came to {target}", False)
         contact = contacts[0]
         parts = []
         speed = abs(contact.relative_velocity[0] * contact.normal[0] + contact.relative_velocity[1] * contact.normal[1])
@@ -263,7 +216,7 @@ class MarginReader:
         if mover not in trace.names:
             return None
         index = trace.index(mover)
-        spans = [span for span in self.intervals.get(frozenset((mover, surface)), ()) if span[1] >= since - 1e-9]
+        spans = [span for span in self.where.intervals.get(frozenset((mover, surface)), ()) if span[1] >= since - 1e-9]
         if found is not None:
             spans = [span for span in spans if span[0] - dt <= found.time <= span[1] + dt] or spans
         best = None
@@ -280,8 +233,8 @@ class MarginReader:
         if after is not None and matched[after].name != "hit":
             after = None  # only a meeting has a speed to arrive at
         if found is not None and after is not None:
-            start = trace.states[self.row(trace, found.time), index]
-            arrive = trace.states[self.row(trace, matched[after].time) - 1, index]
+            start = trace.states[self.where.row(found.time), index]
+            arrive = trace.states[self.where.row(matched[after].time) - 1, index]
             v0, v1 = math.hypot(start[3], start[4]), math.hypot(arrive[3], arrive[4])
             if v0 > 0 and not math.isnan(v1):
                 parts.append(Margin(text, k, v1, "units/s", max(v0, self.recogniser.moving), f"speed left when it reached {matched[after].objects[1] if len(matched[after].objects) > 1 else 'the next body'}"))
@@ -293,80 +246,37 @@ class MarginReader:
     def slide(self, declared, trace, found, since, matched, k):
         return self._motion(declared, trace, found, since, matched, k, "slide")
 
-    def spells(self, trace: Trace, name: str, since: float, until: float) -> list[tuple[int, int]]:
-        """(first row, row after the last) of each spell in which `name` touched nothing, begun in since..until."""
-        if name not in trace.names:
-            return []
-        index = trace.index(name)
-        touching = np.zeros(trace.steps, dtype=bool)
-        for pair, spans in self.intervals.items():
-            if name in pair:
-                for begin, end in spans:
-                    touching[max(int(round(begin / trace.dt)) - 1, 0) : min(int(math.ceil(end / trace.dt)) - 1, trace.steps)] = True
-        airborne = ~touching & ~np.isnan(trace.states[:, index, 0])
-        edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne, [False]]).astype(int)))
-        return [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2]) if since - 1e-9 <= (a + 1) * trace.dt <= until + 1e-9]
-
-    def _drop(self, trace: Trace, index: int, spell) -> tuple[float, float]:
-        start, stop = spell
-        return (stop - start) * trace.dt, float(trace.states[start, index, 1] - trace.states[stop - 1, index, 1])
-
     def fall(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
         faller, target = declared.objects[0], declared.objects[1]
         text = declared.text
         if faller not in trace.names:
             return None
         index = trace.index(faller)
-        half = self.size(trace, faller)
+        half = self.where.size(faller)
         rec = self.recogniser
-        spells = self.spells(trace, faller, since, trace.duration)
+        spells = self.where.spells(faller, since, trace.duration)
         if found is not None:
             spells = [s for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt] or spells
         parts = []
         if not spells:  # it never left its support: how far its centre came to the edge
-            support = self.support_before(trace, faller, self.row(trace, since))
-            over = None if support is None else self.overhang(trace, faller, support, self.row(trace, since))
+            support = self.where.support_before(faller, self.where.row(since))
+            over = None if support is None else self.where.overhang(faller, support, self.where.row(since))
             if over is None:
                 return Margin(text, k, -rec.fall_height, "units", rec.fall_height, f"{faller} never left what it rested on", False)
             return Margin(text, k, min(over, 0.0), "units of overhang", half, f"{faller}'s centre past the edge of {support}", False)
         if spells:
-            seconds, drop = max((self._drop(trace, index, s) for s in spells), key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height))
+            seconds, drop = max((self.where.drop(index, s) for s in spells), key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height))
             parts.append(Margin(text, k, seconds - rec.fall_time, "s", rec.fall_time, "seconds in the air beyond a fall's least"))
             parts.append(Margin(text, k, drop - rec.fall_height, "units", rec.fall_height, "height dropped beyond a fall's least"))
             landing = spells[0][1] if found is None else next((s[1] for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt), spells[0][1])
-            pa, pb = self.pose(trace, faller, landing), self.pose(trace, target, landing)
+            pa, pb = self.where.pose(faller, landing), self.where.pose(target, landing)
             if pa is not None and pb is not None:
-                overlap = self.extents(pa)[0] + self.extents(pb)[0] - abs(pa[0] - pb[0])
+                overlap = self.where.extents(pa)[0] + self.where.extents(pb)[0] - abs(pa[0] - pb[0])
                 parts.append(Margin(text, k, overlap, "units of overlap", half, f"its landing from missing {target}"))
         if not parts:
             return None
         worst = min(parts, key=lambda m: m.share)
         return attrs.evolve(worst, held=found is not None)
-
-    def support_before(self, trace: Trace, name: str, row: int) -> str | None:
-        """The surface or body `name` touched last before state row `row` (what it falls from)."""
-        time = (row + 1) * trace.dt
-        best, when = None, -1.0
-        for pair, spans in self.intervals.items():
-            if name not in pair:
-                continue
-            (other,) = pair - {name}
-            for begin, end in spans:
-                if begin <= time + 1e-9 and end <= time + trace.dt * 1.5 and end > when and end >= time - trace.dt * 1.5:
-                    best, when = other, end
-        return best
-
-    def overhang(self, trace: Trace, name: str, support: str, since: int) -> float | None:
-        """The furthest `name`'s centre came past the edge of `support` from row `since` on
-        (negative: short of it)."""
-        best = None
-        for row in range(since, trace.steps):
-            pa, ps = self.pose(trace, name, row), self.pose(trace, support, row)
-            if pa is None or ps is None:
-                continue
-            past = abs(pa[0] - ps[0]) - self.extents(ps)[0]
-            best = past if best is None else max(best, past)
-        return best
 
     def bounce(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
         mover, surface = declared.objects[0], declared.objects[1]
@@ -374,12 +284,12 @@ class MarginReader:
         if mover not in trace.names:
             return None
         index = trace.index(mover)
-        spans = [s for s in self.intervals.get(frozenset((mover, surface)), ()) if s[1] >= since - 1e-9]
+        spans = [s for s in self.where.intervals.get(frozenset((mover, surface)), ()) if s[1] >= since - 1e-9]
         if found is not None:
             spans = [s for s in spans if abs(s[1] - found.time) < trace.dt / 2] or spans
         if not spans:
-            gap = self.gap(trace, mover, surface, self.row(trace, since), trace.steps)
-            return Margin(text, k, -max(gap or 0.0, 0.0), "units", self.size(trace, mover), f"the nearest {mover} came to {surface}", False)
+            gap = self.where.gap(mover, surface, self.where.row(since), trace.steps)
+            return Margin(text, k, -max(gap or 0.0, 0.0), "units", self.where.size(mover), f"the nearest {mover} came to {surface}", False)
         begin, end = spans[0]
         parts = [Margin(text, k, rec.bounce_time - (end - begin), "s", rec.bounce_time, "seconds its touch was short of a bounce's most")]
         sides = set(declared.directions or ()) & ALL_SIDES
@@ -411,7 +321,7 @@ class MarginReader:
         if need is None or trace.goal_met is not None:
             return None
         a, b = declared.objects[0], declared.objects[1]
-        spans = self.intervals.get(frozenset((a, b)), ())
+        spans = self.where.intervals.get(frozenset((a, b)), ())
         longest = max((min(end, trace.duration) - begin for begin, end in spans), default=0.0)
         return Margin(declared.text, k, longest - need, "s", need, "seconds touching beyond the goal's", found is not None)
 
@@ -424,16 +334,16 @@ class MarginReader:
         end = min(until, redirected)
         broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
         sides = set(restriction.directions or ALL_SIDES) & ALL_SIDES
-        hits = [c for c in self.contacts(trace, a, b, 0.0) if c.time <= end]
+        hits = [c for c in self.where.contacts(a, b, 0.0) if c.time <= end]
         if hits and sides != ALL_SIDES:
             allowed = ALL_SIDES - sides
             worst = min(side_margin(*(-v for v in approach(trace, c, a, b)), allowed) for c in hits)
             return Margin(text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0)
-        gap = self.gap(trace, a, b, 0, self.row(trace, end) + 1)
+        gap = self.where.gap(a, b, 0, self.where.row(end) + 1)
         if gap is None:
             return None
         value = min(gap, 0.0) if broken else gap
-        return Margin(text, None, value, "units of clearance", self.size(trace, a), f"the clearance {a} kept from {b}", not broken)
+        return Margin(text, None, value, "units of clearance", self.where.size(a), f"the clearance {a} kept from {b}", not broken)
 
     def cannot_fall(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
         a = restriction.objects[0]
@@ -443,8 +353,8 @@ class MarginReader:
         rec = self.recogniser
         index = trace.index(a)
         worst = 0.0
-        for spell in self.spells(trace, a, 0.0, until):
-            seconds, drop = self._drop(trace, index, spell)
+        for spell in self.where.spells(a, 0.0, until):
+            seconds, drop = self.where.drop(index, spell)
             worst = max(worst, min(seconds / rec.fall_time, drop / rec.fall_height))
         broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
         return Margin(text, None, 1.0 - worst, "of a fall", 1.0, "how far its longest drop was from a recognised fall", not broken)
