@@ -13,7 +13,8 @@ does:
 * `rules(level)`: the run's rules (physc.simulation.run.RunRules: when the goal is met,
   when the run is over), and `recogniser`, `seconds`, `stable_limit`;
 * for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
-  `nudged(action, step)` (centring a fragile action), `random_action(level, rng)` and
+  `nudged(action, step)` (the action moved along a line, a coordinate the raising of a
+  weak chain moves), `random_action(level, rng)` and
   `valid(level, action)`;
 * `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
   and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
@@ -127,9 +128,9 @@ class SimulatedDomain(Domain):
         return level, action
 
     def nudged(self, action, step: int):
-        """`action` moved `step` steps along the line the search centres a fragile action on
-        (physc.generation.search: the middle of the run of working ones); None: no such line
-        (the default)."""
+        """`action` moved `step` whole steps along a line (one of the coordinates the search
+        moves to raise a weak chain's margins, physc.generation.coordinates); None: no such
+        line, or no such action there (the default: no line)."""
         return None
 
     def random_action(self, level, rng: random.Random):

@@ -129,6 +129,20 @@ def test_launch_model():
     assert PHYQ.gravity == pytest.approx(9.81 * 0.48)
 
 
+@pytest.mark.parametrize("turn", [-2.34, -0.05, 0.05, 0.68])
+def test_a_shot_turned_to_another_angle_names_itself_by_a_point_it_aims_at_again(turn):
+    """The raising of margins turns a shot along its release angle (domain.nudged): the turned
+    shot, recorded as a target point and a trajectory, must aim at that angle again, on the low
+    branch or the high one, whichever passes the point at that angle."""
+    # (0.59, 3.92) low and (-9.58, 5.63) high lie near the top of their flights: turned by a
+    # few degrees, the flight passes above the same x on the other branch.
+    for target, trajectory in (((2.0, 0.0), "low"), ((2.0, 0.0), "high"), ((0.59, 3.92), "low"), ((-9.58, 5.63), "high")):
+        shot = Shot(target=target, trajectory=trajectory)
+        angle = shot.release_angle(PHYQ) + turn
+        turned = shot.at_angle(angle, PHYQ)
+        assert turned is not None and turned.release_angle(PHYQ) == pytest.approx(angle, abs=1e-3)  # the point rounded to 6 decimals
+
+
 def test_the_bird_is_launched_from_the_dragged_to_point_in_the_world():
     game = Game(Level(objects=()), PHYQ, BOX2D)
     world = game.build()

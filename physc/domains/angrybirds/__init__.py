@@ -23,7 +23,7 @@ from physc.domains.simulated import SimulatedDomain
 
 REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
 PLAY_SECONDS = 9.0  # a play's simulated time at most while generating
-CENTRING_STEP = 0.05  # degrees of release angle between the shots tried around a fragile solution
+NUDGE_STEP = 0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
 OBSTACLE_LENGTH = 1.4  # an obstacle platform's length
 
 
@@ -121,7 +121,7 @@ class AngryBirds(SimulatedDomain):
         return noisy, Shot(angle=action.release_angle(self.world) + rng.gauss(0.0, ANGLE_SIGMA))
 
     def nudged(self, action, step: int):
-        return action.at_angle(action.release_angle(self.world) + step * CENTRING_STEP, self.world)
+        return action.at_angle(action.release_angle(self.world) + step * NUDGE_STEP, self.world)
 
     def solution(self, label: str, action):
         from physc.compiler.task import Solution

@@ -96,16 +96,24 @@ class Shot:
             raise Unreachable(f"({x:g}, {y:g}) is out of reach of a full-stretch shot")
         return angle
 
-    def at_angle(self, angle: float, world) -> Shot:
+    def at_angle(self, angle: float, world) -> Shot | None:
         """The shot released at `angle` instead, named like this one: by the point of its
-        flight above the same x as this shot's target, on the same trajectory."""
+        flight above the same x as this shot's target, on the trajectory (low or high) whose aim
+        at that point is this angle again (a shot turned far enough passes the point on the
+        other branch); None when no point names it (the flight never gets there)."""
         x = self.target[0]
         origin = world.launch.point(angle)
         speed, gravity = world.launch.speed, world.gravity
         dx = x - origin[0]
         theta = math.radians(angle)
         y = origin[1] + dx * math.tan(theta) - gravity * dx * dx / (2 * speed**2 * math.cos(theta) ** 2)
-        return Shot(target=(x, round(y, 6)), trajectory=self.trajectory)
+        target = (x, round(y, 6))
+        other = "high" if self.trajectory == "low" else "low"
+        for trajectory in (self.trajectory, other):
+            aimed = world.launch.aim(*target, trajectory, gravity)
+            if aimed is not None and abs(aimed - angle) < 1e-3:
+                return Shot(target=target, trajectory=trajectory)
+        return None
 
     def origin(self, world) -> tuple[float, float]:
         """Where the bird's centre starts this shot (the game's dragged-to point)."""
