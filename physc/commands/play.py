@@ -243,7 +243,7 @@ def add_commands(commands, common) -> None:
     add_format(simulate, "what happened")
     simulate.set_defaults(run=cmd_simulate)
 
-    trace = commands.add_parser("trace", parents=[common], help="the interactions a shot causes, in .phys syntax")
+    trace = commands.add_parser("trace", parents=[common], help="the interactions a shot causes, in .phys syntax, each with its margin (how far it was from failing)")
     level_arguments(trace)
     add_format(trace, "the interactions")
     trace.set_defaults(run=cmd_trace)

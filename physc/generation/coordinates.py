@@ -136,7 +136,7 @@ class Coordinates:
             if placed.concrete in (getattr(rules, "flat", None), getattr(rules, "inclined", None)):
                 for sign in (1.0, -1.0):
                     far = placing.box(placed)[2] if sign > 0 else placing.box(placed)[0]
-                    beyond = _beyond(layout, far, sign, fixed)
+                    beyond = placing.beyond(layout, far, sign, fixed)
                     if beyond is not None:
                         axes.append(Coordinate("length", name, frozenset(beyond), reach, sign, name))
                         break
@@ -154,7 +154,7 @@ class Coordinates:
             sign = 1.0 if objects[b].x >= objects[a].x else -1.0
             near = placing.box(objects[a])[2] if sign > 0 else placing.box(objects[a])[0]
             start = placing.box(objects[b])[0] if sign > 0 else placing.box(objects[b])[2]
-            beyond = _beyond(layout, (near + start) / 2, sign, fixed)
+            beyond = placing.beyond(layout, (near + start) / 2, sign, fixed)
             if beyond and b in beyond and a not in beyond:
                 axes.append(Coordinate("gap", f"{a}→{b}", frozenset(beyond), reach, sign))
         unique = {}
@@ -267,21 +267,3 @@ class Coordinates:
         if action is None or not problem.domain.valid(problem.level_of(layout), action):
             return None
         return layout, action, ", ".join(notes)
-
-
-def _beyond(layout, cut: float, sign: float, fixed) -> set[str] | None:
-    """The objects wholly beyond `cut` along the heading `sign` (None when one straddles it or a
-    fixed one, the player's object aside, lies beyond)."""
-    names = set()
-    for o in layout.objects:
-        if o.concrete in placing.GROUND or o.role == "player":
-            continue
-        left, _, right, _ = placing.box(o)
-        near, far = (left, right) if sign > 0 else (-right, -left)
-        if near >= sign * cut - 1e-9:
-            if o.name in fixed:
-                return None
-            names.add(o.name)
-        elif far > sign * cut + 1e-9:
-            return None
-    return names

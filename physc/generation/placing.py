@@ -196,3 +196,22 @@ def clear(trace, row: int, changed, actor: str, sizes: dict, scale: float, margi
     """Whether the bodies of the prefix pass clear of the `changed` objects before `row` (the
     moment the actor is to meet them); the actor's own centre only has to stay out."""
     return approach(trace, changed, sizes, scale, margin, row, actor) is None
+
+
+def beyond(layout, cut: float, sign: float, fixed=frozenset()) -> set[str] | None:
+    """The objects wholly beyond `cut` along the heading `sign` (the ground and the player's
+    object aside): what moves with a surface brought closer or stretched. None if another
+    object straddles the cut, or one of `fixed` lies beyond it."""
+    names = set()
+    for o in layout.objects:
+        if o.concrete in GROUND or o.role == "player":
+            continue
+        left, _, right, _ = box(o)
+        near, far = (left, right) if sign > 0 else (-right, -left)
+        if near >= sign * cut - 1e-9:
+            if o.name in fixed:
+                return None
+            names.add(o.name)
+        elif far > sign * cut + 1e-9:
+            return None
+    return names

@@ -154,22 +154,6 @@ STEPS_DOWN = (0.0, 0.15)  # layout units the next surface's top is tried below t
 SEAM = 0.02  # layout units left between a surface brought closer and the end of the one before
 
 
-def beyond(layout, cut: float, sign: float) -> set[str] | None:
-    """The objects wholly beyond `cut` along the heading `sign` (the ground and the player's
-    object aside); None if another object straddles the cut."""
-    names = set()
-    for o in layout.objects:
-        if o.concrete in placing.GROUND or o.role == "player":
-            continue
-        left, _, right, _ = placing.box(o)
-        near, far = (left, right) if sign > 0 else (-right, -left)
-        if near >= sign * cut - 1e-9:
-            names.add(o.name)
-        elif far > sign * cut + 1e-9:
-            return None
-    return names
-
-
 def closer(problem: Problem, layout, objects, mover: str, surface: str, heading: str, start: int):
     """`surface`, which `mover` must roll or slide onto from the support it rests on, and the
     world beyond it, brought back to the end of that support: level with it, or a step down."""
@@ -183,7 +167,7 @@ def closer(problem: Problem, layout, objects, mover: str, surface: str, heading:
     gap = sign * (near - end)
     if gap < SEAM + 0.05 and t_top <= s_top + 1e-6:
         return
-    names = beyond(layout, end + sign * 1e-6, sign)
+    names = placing.beyond(layout, end + sign * 1e-6, sign)
     if not names or surface not in names:
         return
     dx = -sign * (gap - SEAM)
