@@ -61,16 +61,19 @@ class Coordinate:
 
 
 def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]]]:
-    """What a weak link depends on: the objects of the link and of the one after it, and the
-    pairs a hit or a fall among them meets; for a restriction, its objects and the surfaces the
-    first of them rolls or slides on (a body that must not fall stays on what it moves along)."""
+    """What a weak link depends on: the objects of the link, of the one after it and of the hit
+    that set its actor moving (what strikes it sets its speed), and the pairs a hit, a fall, a touch
+    or a destroy among them meets (the gap between them); for a restriction, its objects and the surfaces the first of them rolls
+    or slides on (a body that must not fall stays on what it moves along)."""
     interactions = problem.interactions
     names: set[str] = set()
     pairs: list[tuple[str, str]] = []
     if margin.index is not None:
-        for term in interactions[margin.index : margin.index + 2]:
+        actor = interactions[margin.index].objects[0] if interactions[margin.index].objects else None
+        pushed = [j for j in range(margin.index) if interactions[j].name == "hit" and interactions[j].objects[1:2] == (actor,)]
+        for term in [interactions[j] for j in pushed[-1:]] + list(interactions[margin.index : margin.index + 2]):
             names |= set(term.objects)
-            if term.name in ("hit", "fall", "touch") and len(term.objects) > 1 and tuple(term.objects[:2]) not in pairs:
+            if term.name in ("hit", "fall", "touch", "destroy") and len(term.objects) > 1 and tuple(term.objects[:2]) not in pairs:
                 pairs.append(tuple(term.objects[:2]))
         return names, pairs
     restriction = next((r for r in problem.scenario.restrictions if r.text == margin.term), None)

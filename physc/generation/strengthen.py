@@ -134,7 +134,8 @@ def strengthen(problem: Problem, ledger: Ledger, node: Node) -> Strong | None:
             strong = confirmed(problem, ledger, node.layout, attempt, first)
             if strong is not None:
                 return strong
-        ledger.nearest = max(ledger.nearest, first.passed)
+        if first.passed < problem.accept:  # else confirmed() noted the fewer of the two streams
+            ledger.nearest = max(ledger.nearest, first.passed)
         note_weakest(ledger, first)
         if ledger.tried >= settings.candidates:
             return None
