@@ -50,6 +50,11 @@ def check() -> None:
             raise OutOfTime(seconds)
 
 
+def remaining() -> float | None:
+    """Seconds left before the innermost deadline (None: no deadline)."""
+    return _deadlines[-1][0] - time.monotonic() if _deadlines else None
+
+
 class Deadline:
     """A time budget started once, when it is made: each `deadline(it)` block ends when it
     does, however late the block begins."""

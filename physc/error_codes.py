@@ -57,6 +57,7 @@ _CODES = [
     ErrorCode("E0304", "error", "an object declared twice"),
     ErrorCode("E0305", "error", "a direction word used as an object name"),
     ErrorCode("W0301", "warning", "a declared object that no term uses"),
+    ErrorCode("W0302", "warning", "more of the player's objects than compile places"),
     ErrorCode("E0401", "error", "the first interaction is not performed by the player's object"),
     ErrorCode("E0402", "error", "an object acts before anything set it in motion"),
     ErrorCode("E0403", "error", "destroy(a, b) without an earlier hit(a, b, ...)"),
@@ -81,6 +82,7 @@ _CODES = [
     ErrorCode("E0801", "error", "the layout constraints of a scenario cannot hold together", exit_status=3),
     ErrorCode("E0802", "error", "the search budget ran out before a layout was found", exit_status=3),
     ErrorCode("E0803", "error", "a scenario larger than the layout search takes", exit_status=3),
+    ErrorCode("E0804", "error", "a scenario that compile cannot generate in this version", exit_status=3),
 ]
 
 CODES: dict[str, ErrorCode] = {entry.code: entry for entry in _CODES}

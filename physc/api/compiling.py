@@ -23,9 +23,11 @@ __all__ = ["check", "compile", "scenarios"]
 BUDGET_HELP = {
     Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
     Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
-    Exhausted.TIME: "the time ran out: allow more with --time-budget, or try another --seed",
+    Exhausted.TIME: "the time ran out before every layout allowed was tried: more time may help (--time-budget), or another --seed",
+    Exhausted.ALLOWED: "every layout the scenario's constraints allow was tried: more time or layouts cannot help; another --seed draws other shapes, or change the scenario (or the world, where one is named above)",
     Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
     Exhausted.SIZE: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
+    Exhausted.VERSION: "physc check warns of it (W0302); the earlier stages (--emit layout-graph, qsr) still work",
 }
 
 
@@ -101,7 +103,7 @@ def pipeline(scenario_ast, ir, domain, seed: int = 0, **settings):
 
 
 def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
-    """An Infeasible answer as a diagnostic that points back at the scenario's source (E0801–E0803)."""
+    """An Infeasible answer as a diagnostic that points back at the scenario's source (E0801–E0804)."""
     notes = []
     for edge in error.conflicts:
         for why in edge.provenance:
@@ -109,7 +111,8 @@ def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
                 notes.append(Label(why.span, f"{edge.text()} comes from {why.rule} `{why.text}`"))
             else:
                 notes.append(Label(scenario_ast.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
-    code = "E0803" if error.budget is Exhausted.SIZE else "E0802" if error.budget else "E0801"
+    codes = {Exhausted.SIZE: "E0803", Exhausted.VERSION: "E0804"}
+    code = codes.get(error.budget, "E0802" if error.budget else "E0801")
     tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
     if error.conflicts:
         help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"

@@ -56,7 +56,8 @@ def simulate(
 
     `level` is a Task (its level, played in the world and engine it was made in, judged
     against its scenario's restrictions) or a domain's level (`read_level`; `domain` names
-    its domain, angrybirds by default, or is the domain itself, bound to a world and engine). `action` is the domain's action (angrybirds:
+    its domain, angrybirds by default, or is the domain itself, bound to a world and engine;
+    named, it plays in the world the level names, if it names one, unless `world` says otherwise). `action` is the domain's action (angrybirds:
     `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
     a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
     `random.Random`, plays it under the domain's noise model (angrybirds: objects and
@@ -68,6 +69,8 @@ def simulate(
         level = level.level
     else:
         played = bound_domain(domain, world, backend)
+        if world is None and (domain is None or isinstance(domain, str)) and played.level_world(level):
+            played = played.at(played.level_world(level))  # the world the level names
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
         action = played.action_of(action)
     if noise is not None:

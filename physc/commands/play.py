@@ -23,21 +23,48 @@ from physc.files import check_output, read_input, write_atomic
 LEVEL_DOMAIN = "angrybirds"  # the domain whose level files these commands play
 
 
-def _domain(args):
+def _domain(args, level=None):
     """The Science Birds domain in the world and engine the level is played in: --world and
-    --backend where given, else the task file's (--task), else the defaults."""
+    --backend where given, else the task file's (--task), else the world the level names
+    (`level`, read already), else the defaults."""
     from physc.commands.options import replaying
     from physc.domains import load_domain
 
     domain = load_domain(LEVEL_DOMAIN)
+    named = None if level is None else domain.level_world(level)
+    if named and not args.world:
+        from physc.worlds import WorldError
+
+        try:
+            domain.at(named)
+        except WorldError as error:
+            raise UsageError(f'{safe(args.level)}: <Level world="{safe(named)}">: {error}') from None
     if args.task is None:
-        return domain.at(args.world, args.backend)
+        return _noted(domain.at(args.world or named, args.backend), named, args)
     from physc.commands.verify import read_task
 
     recorded = read_task(args.task)
     if recorded.get("domain") != LEVEL_DOMAIN:
         raise UsageError(f"{args.task} is a task of the domain '{recorded.get('domain')}', not of {LEVEL_DOMAIN}'s levels")
-    return replaying(domain, recorded, args, args.command)
+    return _noted(replaying(domain, recorded, args, args.command), named, args)
+
+
+def _noted(bound, named: str | None, args):
+    """`bound`, after a note on stderr when the level names another world than the one it is
+    played in (its solution, if it has one, was found there)."""
+    import sys
+
+    if named and named != bound.world.name:
+        print(f"physc {args.command}: note: the level was made for the world '{named}'; playing it in '{bound.world.name}'", file=sys.stderr)
+    return bound
+
+
+def _level(args):
+    """(the level file read with the Science Birds domain, the exit status): reading does
+    not depend on the world, which the level itself may name."""
+    from physc.domains import load_domain
+
+    return load_level(args, load_domain(LEVEL_DOMAIN))
 
 
 def load_level(args, domain):
@@ -87,16 +114,17 @@ def _scenario(args):
     return scenario, level, text
 
 
-def _play(args, domain, task=None):
-    """(level, shot, trace) of the level file played with the shot; with `task` (_scenario's)
-    and the task's own level file, the task's level, named as its scenario names its objects,
-    judged against the scenario."""
+def _play(args, task=None):
+    """(domain, level, shot, trace) of the level file played with the shot, in the world
+    _domain picks; with `task` (_scenario's) and the task's own level file, the task's
+    level, named as its scenario names its objects, judged against the scenario."""
     from physc.api.simulating import simulate
     from physc.commands.verify import _normalised
 
-    level, status = load_level(args, domain)
+    level, status = _level(args)
     if level is None:
-        return None, None, status
+        return None, None, None, status
+    domain = _domain(args, level)
     scenario = None
     if task is not None:
         scenario, named, text = task
@@ -108,18 +136,17 @@ def _play(args, domain, task=None):
     shot = domain.shot(args.shot, args.angle)
     if shot is not None and not level.has_birds:
         help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
-        return None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
+        return None, None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
             trace = simulate(level, shot, domain=domain, seconds=args.seconds, scenario=scenario)
     except ValueError as error:  # a target out of reach of the launch
         raise UsageError(str(error)) from None
-    return level, shot, trace
+    return domain, level, shot, trace
 
 
 def cmd_simulate(args) -> int:
-    domain = _domain(args)
-    level, shot, trace = _play(args, domain)
+    domain, level, shot, trace = _play(args)
     if level is None:
         return trace
     pigs = list(trace.goal)
@@ -152,9 +179,8 @@ def cmd_simulate(args) -> int:
 def cmd_trace(args) -> int:
     from physc.simulation.margins import Recognised
 
-    domain = _domain(args)
     task = _scenario(args)
-    level, shot, trace = _play(args, domain, task)
+    domain, level, shot, trace = _play(args, task)
     if level is None:
         return trace
     scenario = task[0] if task is not None and level is task[1] else None
@@ -205,14 +231,13 @@ def cmd_render(args) -> int:
     if not args.output.lower().endswith((".png", ".svg")):
         raise UsageError("-o must name a .png or .svg file")
     check_output(args.output)
-    domain = _domain(args)
     if args.shot is None and args.angle is None:
-        level, status = load_level(args, domain)
+        level, status = _level(args)
         if level is None:
             return status
-        paths = {}
+        domain, paths = _domain(args, level), {}
     else:
-        level, _, trace = _play(args, domain)
+        domain, level, _, trace = _play(args)
         if level is None:
             return trace
         paths = trace.paths()

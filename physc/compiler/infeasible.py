@@ -17,7 +17,9 @@ class Exhausted(enum.Enum):
     LAYOUTS = "--layouts"  # placed layouts that simulation may try
     TIME = "--time-budget"  # seconds for the whole generation
     PLACEMENTS = "placement"  # consistent conjunctions placement may try (no option)
+    ALLOWED = "allowed"  # every layout the scenario's constraints allow (for this seed's shapes) was tried
     SIZE = "size"  # the scenario is larger than the layout search takes (E0803)
+    VERSION = "version"  # the scenario needs what this version of compile does not generate (E0804)
 
 
 class Infeasible(Exception):

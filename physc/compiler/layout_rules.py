@@ -173,6 +173,8 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         why = _interaction_provenance(term)
         if term.name == "hit":
             actor, target = term.objects
+            if b.is_ground(target):
+                continue  # the ground spans the scene: whatever comes down meets it
             b.edge(LIES_ON_PATH, target, actor, (), why)
             b.edge(IN_DIRECTION, target, actor, opposite(term.directions), why)
         elif term.name in ("roll", "slide"):
@@ -192,6 +194,8 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
             else:
                 b.edge(LOCATED_FAR, term.objects[0], term.objects[1], term.directions, why)
         elif term.name == "bounce":
+            if b.is_ground(term.objects[1]):
+                continue  # the ground spans the scene: nothing is beside it
             b.edge(IN_DIRECTION, term.objects[0], term.objects[1], term.directions, why)
     for term in scenario.restrictions:
         if term.name == "cannotHit":

@@ -20,6 +20,11 @@ class Solution:
     target: tuple[float, float]
     trajectory: str  # "low" | "high"
     release_angle: float  # degrees
+    # The shot as Phy-Q's agent framework sends it, `env.step([dx, dy, tap_time])` (whole
+    # pixels from the slingshot's reference point), and the release angle the game launches
+    # that at (physc.domains.angrybirds.agent_action); None in task files from before them.
+    agent_action: tuple[int, int, int] | None = None
+    agent_angle: float | None = None
 
 
 @attrs.frozen

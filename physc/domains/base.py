@@ -50,7 +50,7 @@ CAPABILITIES = (
 )  # no default
 DEFAULTS = (
     "reach_targets", "reachable", "robustness_replays", "level_classes", "level_format", "level_suffix", "solution_class", "accidental", "measures",
-    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "max_level_bytes", "playing",
+    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "level_world", "max_level_bytes", "playing",
 )  # working defaults (score_agent's: no agent is scored, MissingCapability)
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
@@ -287,6 +287,11 @@ class Domain(abc.ABC):
         """The level of a level file's bytes (`physc simulate`, `trace`, `render`); LevelError
         (a diagnostic's code, message, line and column) for a file that cannot be played."""
         raise MissingCapability(self.name, ("read_level",), "reading a level file")
+
+    def level_world(self, level) -> str | None:
+        """The world a level file names (`physc simulate`, `trace`, `render` and `verify` play
+        it there unless told otherwise); None: it names none (the default)."""
+        return None
 
     def level_text(self, data: bytes) -> str:
         """A level file's text as `read_level` reads it, so that a LevelError's line and column

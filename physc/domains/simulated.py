@@ -150,6 +150,16 @@ class SimulatedDomain(Domain):
         """The action a task's recorded solution takes (the inverse of `solution`)."""
         return solution
 
+    def played_as(self, level, solution):
+        """`solution` with what the target world's players send to make it, if that is not the
+        action itself (angrybirds: the drag Phy-Q's agent framework sends); the default: as it is."""
+        return solution
+
+    def sent_action(self, solution):
+        """The action `played_as` recorded, as the world plays it (`physc verify` replays it
+        beside the solution); None: the solution's own action is what players send (default)."""
+        return None
+
     def with_solution(self, level, solution):
         """The generated task's level with its solution, if the domain's level keeps it (the
         default: the level as it is)."""

@@ -42,6 +42,9 @@ class ObjectTerm:
     concrete: tuple[str, ...]
     abbreviation: str | None = None
     noun: str = ""  # how a message names it: "a rollable object"
+    # Other object terms whose parameters it fits too, without being one of their concretes
+    # (angrybirds: the level's ground fits where a surface does, but a surface is never drawn as it).
+    fits_as: tuple[str, ...] = ()
 
     @property
     def spellings(self) -> tuple[str, ...]:
@@ -108,6 +111,7 @@ class Vocabulary:
     terms: tuple[TermSignature, ...]
     direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
     player: str = ""  # object term of what the player sets in motion
+    players: int | None = None  # how many objects of the player's term compile places (None: any); check warns beyond (W0302)
     goal: str = ""  # object term of the goal objects: each must meet the goal (an interaction `completes` it)
     goal_unmet: str = "never meets the goal"  # what E0404 says of a goal object no interaction completes
     goal_rule: str = ""  # when a task is solved, for messages ("a task is solved when every pig is destroyed")
@@ -154,7 +158,8 @@ class Vocabulary:
         return all(self._concrete[c].static for c in concrete)
 
     def fits(self, concrete: tuple[str, ...], term_name: str) -> bool:
-        allowed = self._by_spelling[term_name].concrete
+        term = self._by_spelling[term_name]
+        allowed = term.concrete + tuple(c for t in self.object_terms if term.name in t.fits_as for c in t.concrete)
         return all(c in allowed for c in concrete)
 
 

@@ -262,6 +262,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
                         help="remove the declaration, or use the object; it is ignored",
                     )
                 )
+        self.check_players()
         if any(d.is_error for d in self.diagnostics):
             return None
         return ScenarioIR(
@@ -282,6 +283,25 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             path=self.path,
         )
 
+    def check_players(self) -> None:
+        """W0302: more objects of the player's term than compile places (the vocabulary's
+        `players`): the language allows them, this version of compile does not generate them."""
+        most = getattr(self.vocabulary, "players", None)
+        player = getattr(self.vocabulary, "player", "")
+        if most is None or not player:
+            return
+        used = [o for o in self.objects.values() if o.used and o.term == player]
+        if len(used) > most:
+            extra = used[most]
+            self.diagnostics.append(
+                Diagnostic(
+                    "W0302",
+                    f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} (the player's, for one action) and gives no task for this scenario",
+                    extra.span,
+                    help=f"this version generates a chain of one action, one {player}'s (docs/language.md, \"Static checks\"): make the chain one {player}'s, or keep the scenario for a later version",
+                )
+            )
+
     @staticmethod
     def _term_ir(resolved: _Resolved, directions: tuple[str, ...]) -> TermIR:
         return TermIR(
@@ -292,3 +312,11 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             text=format_term(resolved.node),
             span=resolved.node.span,
         )
+
+
+def ordinal(n: int) -> str:
+    return {1: "first", 2: "second", 3: "third"}.get(n, f"{n}th")
+
+
+def count(n: int) -> str:
+    return {1: "one", 2: "two", 3: "three"}.get(n, str(n))

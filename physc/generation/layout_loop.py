@@ -11,6 +11,7 @@ fallbacks (`--min-robustness`). Nothing here depends on a domain.
 
 from __future__ import annotations
 
+import contextlib
 import time
 from collections.abc import Callable, Iterator
 
@@ -19,7 +20,7 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
-from physc.generation import search
+from physc.generation import elsewhere, search
 from physc.generation.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
@@ -111,70 +112,80 @@ class LayoutLoop:
         stopped = ""  # what the first simulation that got that far shows about the next interaction
         lost: dict[str, list] = {}  # the noisy replays' losses over the layouts: term → [count, why]
         weakest = None  # of the chains realised but not robust, the strongest weakest link
+        furthest = None  # the play that came furthest: (score, level, action), replayed elsewhere on failure
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
-        while True:
-            try:
-                placed = next(placements)
-            except Infeasible as error:
-                if not layouts:
-                    raise
-                failure = Infeasible(
-                    "satisfy",
-                    f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
-                    tried=error.tried,
-                    budget=error.budget,
-                )
-                break
-            except budget.OutOfTime:
-                failure = self._out_of_time(layouts)
-                break
-            layouts += 1
-            seconds["layout"] += time.perf_counter() - clock
-            clock = time.perf_counter()
-            try:
-                result = self.satisfy(placed.layout)
-            except budget.OutOfTime:
-                failure = self._out_of_time(layouts)
-                break
-            finally:
+        kept = elsewhere.reserve(self.domain, self.time_budget)
+        left = budget.remaining()
+        inner = budget.deadline(left - kept) if kept and left is not None and left > kept else contextlib.nullcontext()
+        fallback = None
+        with inner:  # the search stops early enough to leave the reserve
+            while True:
+                try:
+                    placed = next(placements)
+                except Infeasible as error:
+                    if not layouts:
+                        raise
+                    failure = Infeasible(
+                        "satisfy",
+                        f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
+                        tried=error.tried,
+                        budget=error.budget or Exhausted.ALLOWED,
+                    )
+                    break
+                except budget.OutOfTime:
+                    failure = self._out_of_time(layouts)
+                    break
+                layouts += 1
+                seconds["layout"] += time.perf_counter() - clock
+                clock = time.perf_counter()
+                try:
+                    result = self.satisfy(placed.layout)
+                except budget.OutOfTime:
+                    failure = self._out_of_time(layouts)
+                    break
+                finally:
+                    seconds["satisfy"] += time.perf_counter() - clock
+                simulations += result.simulations
+                if result.best > best or (result.best == best and not stopped):
+                    best, stopped = result.best, result.stopped
+                for term, count, why in result.lost:
+                    lost.setdefault(term, [0, why])[0] += count
+                if result.weakest is not None and (weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)):
+                    weakest = result.weakest
+                if result.furthest is not None and (furthest is None or result.furthest[0] > furthest[0]):
+                    furthest = result.furthest
+                if result.satisfied:
+                    failure, used = None, placed
+                    break
+                nearest = max(nearest, result.nearest)
+                why = given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
+                why["layouts"] += 1
+                why["simulations"] += result.simulations
+                if result.nearest >= self.min_robustness:
+                    fragile.append((-result.nearest, layouts, placed))
+                if self.progress is not None:
+                    self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
+                if layouts >= self.layout_budget:
+                    failure = Infeasible(
+                        "satisfy",
+                        f"no layout realised the sequence in simulation within the budget ({layouts} layouts)",
+                        tried=placed.layout.conjunctions_tried,
+                        budget=Exhausted.LAYOUTS,
+                    )
+                    break
+                clock = time.perf_counter()
+            if failure is not None:
+                clock = time.perf_counter()
+                try:
+                    fallback = None if failure.budget is Exhausted.TIME else self.fallback(fragile)
+                except budget.OutOfTime:
+                    failure, fallback = self._out_of_time(layouts), None
                 seconds["satisfy"] += time.perf_counter() - clock
-            simulations += result.simulations
-            if result.best > best or (result.best == best and not stopped):
-                best, stopped = result.best, result.stopped
-            for term, count, why in result.lost:
-                lost.setdefault(term, [0, why])[0] += count
-            if result.weakest is not None and (weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)):
-                weakest = result.weakest
-            if result.satisfied:
-                failure, used = None, placed
-                break
-            nearest = max(nearest, result.nearest)
-            why = given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
-            why["layouts"] += 1
-            why["simulations"] += result.simulations
-            if result.nearest >= self.min_robustness:
-                fragile.append((-result.nearest, layouts, placed))
-            if self.progress is not None:
-                self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
-            if layouts >= self.layout_budget:
-                failure = Infeasible(
-                    "satisfy",
-                    f"no layout realised the sequence in simulation within the budget ({layouts} layouts)",
-                    tried=placed.layout.conjunctions_tried,
-                    budget=Exhausted.LAYOUTS,
-                )
-                break
-            clock = time.perf_counter()
+        if failure is not None and fallback is None:
+            other = elsewhere.elsewhere(self.domain, self.scenario, furthest, best, weakest)
+            raise self.explained(failure, nearest, given_up, best, stopped, lost, weakest, other)
         if failure is not None:
-            clock = time.perf_counter()
-            try:
-                fallback = None if failure.budget is Exhausted.TIME else self.fallback(fragile)
-            except budget.OutOfTime:
-                failure, fallback = self._out_of_time(layouts), None
-            seconds["satisfy"] += time.perf_counter() - clock
-            if fallback is None:
-                raise self.explained(failure, nearest, given_up, best, stopped, lost, weakest)
             simulated, result, used = fallback
             simulations += simulated
         # The stages after satisfaction (distract, validate, accept), counted apart from it.
@@ -205,6 +216,7 @@ class LayoutLoop:
 
     def explained(
         self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "", lost: dict | None = None, weakest=None,
+        other=None,
     ) -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
         which link noise broke and its best margin, the most robust fragile solution found
@@ -231,4 +243,6 @@ class LayoutLoop:
             else:
                 hint = "tried again as a fallback, it failed"
             message += f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} noisy replays ({hint})"
+        if other is not None:
+            message += f"; {other.text()}"
         return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)

@@ -126,6 +126,7 @@ class Pipeline:
         conjunctions; with several, a layout of each in turn, so that simulation decides which
         structure carries the chain (a structure whose placements run out drops out; the
         paper's reading's failure is reported when all have)."""
+        self.check_players()
         if len(self.structures) == 1:
             yield from self._placements("flat", self.layout_graph, self.qsr)
             return
@@ -139,6 +140,19 @@ class Pipeline:
                     failures.append(error)
                     streams.remove(stream)
         raise failures[0]
+
+    def check_players(self) -> None:
+        """Infeasible (E0804) for more of the player's objects than the domain places (its
+        vocabulary's `players`; physc check warns of it, W0302)."""
+        vocabulary = self.domain.vocabulary
+        most = getattr(vocabulary, "players", None)
+        players = [o.name for o in self.scenario.objects if o.term == vocabulary.player]
+        if most is not None and len(players) > most:
+            raise Infeasible(
+                "place",
+                f"it has {len(players)} {vocabulary.player}s ({', '.join(players)}); this version of physc places {most}, for one action",
+                budget=Exhausted.VERSION,
+            )
 
     def _placements(self, structure: str, graph: LayoutGraph, dnf: QsrDnf | None):
         """The placed layouts of one structure's layout graph."""

@@ -87,6 +87,7 @@ class Ledger:
     evaluator: Evaluator = attrs.field(factory=lambda: Evaluator(KEPT_SIMULATIONS))
     best: int = 0  # most interactions realised in order by one play
     furthest: Attempt | None = None  # the play that came furthest
+    furthest_layout: object | None = None  # the layout it was played in
     nearest: int = 0  # most noisy replays passed by a working action given up as fragile
     tried: int = 0  # working actions put through the noisy replays
     lost: dict = attrs.field(factory=dict)  # declared term → (failed noisy replays that lost it first, what the first shows)
@@ -113,7 +114,7 @@ def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | 
     attempt = Attempt("", action, trace, fidelity(problem.scenario, trace))
     ledger.best = max(ledger.best, attempt.fidelity.matched)
     if ledger.furthest is None or attempt.fidelity.score > ledger.furthest.fidelity.score:
-        ledger.furthest = attempt
+        ledger.furthest, ledger.furthest_layout = attempt, layout
     return attempt
 
 

@@ -89,7 +89,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     if judged is not None and not judged.accepted:
         why = {"unstable": reasons.UNSTABLE_SOLUTION, "trivial": reasons.TRIVIAL, "solvable": reasons.SOLVABLE, "undecided": reasons.UNDECIDED}
         return given_up(problem, ledger, why.get(judged.reason, reasons.NOT_GOOD))
-    solution = domain.solution(attempt.label, attempt.action)
+    solution = domain.played_as(level, domain.solution(attempt.label, attempt.action))
     steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ())
     parts = Parts(
         level=domain.with_solution(level, solution),
@@ -129,7 +129,9 @@ def stopped(problem: Problem, ledger: Ledger) -> str:
 
 
 def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
+    furthest = ledger.furthest
     return Outcome(
         False, ledger.simulations, nearest=ledger.nearest, given_up=why, best=ledger.best, stopped=stopped(problem, ledger),
         lost=lost_links(ledger), weakest=ledger.weakest,
+        furthest=None if furthest is None else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action),
     )

@@ -4,7 +4,8 @@ A task counts where it is played: its solution must solve the level and realise 
 sequence as recorded and under the domain's noise, under every reading of what the world's
 files leave open (physc.worlds.OpenPoint; Science Birds: the sign of relativeVelocity, the
 kinematic platform's mass, near ties of the attacker), and, when asked, in an engine with
-another contact solver. `verify` replays the solution once as recorded and `noisy` times
+another contact solver. `verify` replays the solution once as recorded (and once as the
+target world's players send it, where the domain says how: `sent_action`) and `noisy` times
 under the domain's noise, each replay in every reading that can change it
 (physc.worlds.under_readings: the readings its own run shows to decide something), and says
 which readings failed. `physc verify`, `physc compile --verify-backend`, the generation's
@@ -99,9 +100,10 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
 
     after = []  # the noise generator's state after a replay's draws (the same in every reading)
 
-    def played(rng_state=None) -> list:
+    def played(rng_state=None, sent=None) -> list:
         """(reading, trace, fidelity) of one replay in every reading that can change it, each
-        reading drawing the same noise (from `rng_state`)."""
+        reading drawing the same noise (from `rng_state`); `sent`: the solution played as the
+        target world's players send it instead (exact)."""
         nonlocal simulations, most
 
         def run(reading):
@@ -109,6 +111,8 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
             if rng_state is not None:
                 rng = random.Random()
                 rng.setstate(rng_state)
+            if sent is not None:
+                return there.at(reading).play(level, sent, scenario)
             trace = there.at(reading).replay(level, solution, scenario, rng)
             if rng is not None:
                 after.append(rng.getstate())
@@ -124,6 +128,9 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
         return out
 
     exact = played()
+    sent = getattr(there, "sent_action", lambda _: None)(solution)
+    if sent is not None:  # the action as players send it (Phy-Q's agents: whole pixels) must hold too
+        exact += played(sent=sent)
     _, trace, check = exact[0]
     solved = all(t.solved for _, t, _ in exact)
     realised = all(c.valid for _, _, c in exact)

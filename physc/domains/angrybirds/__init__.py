@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import random
 
+import attrs
+
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
@@ -73,11 +75,16 @@ class AngryBirds(SimulatedDomain):
         return self.world.reachable(x, y)
 
     # ---- the search's hooks ------------------------------------------------------------
-    @staticmethod
-    def level_from_layout(layout, scenario=None) -> Level:
+    def level_from_layout(self, layout, scenario=None) -> Level:
+        """The placed layout as a level that names this world and the physc that made it."""
+        from physc import __version__
         from physc.domains.angrybirds.to_level import level_from_layout
 
-        return level_from_layout(layout)
+        return attrs.evolve(level_from_layout(layout), world=self.world.name, generator=f"physc {__version__}")
+
+    @staticmethod
+    def level_world(level) -> str | None:
+        return level.world
 
     resumable = True  # `play` passes a snapshot on to the game's run
 
@@ -127,6 +134,20 @@ class AngryBirds(SimulatedDomain):
         from physc.compiler.task import Solution
 
         return Solution(label, action.target, action.trajectory, round(action.release_angle(self.world), 5))
+
+    def played_as(self, level, solution):
+        """The solution with the shot Phy-Q's agents send for it: the whole-pixel drag from the
+        slingshot whose launch is nearest its release angle (agent_action.py), and that launch's angle."""
+        from physc.domains.angrybirds.agent_action import agent_action
+
+        action, angle = agent_action(solution.release_angle, level.slingshot, level.camera.y, level.camera.max_width)
+        return attrs.evolve(solution, agent_action=tuple(action), agent_angle=round(angle, 5))
+
+    @staticmethod
+    def sent_action(solution):
+        from physc.domains.angrybirds.launch import Shot
+
+        return None if solution.agent_angle is None else Shot(angle=solution.agent_angle)
 
     @staticmethod
     def action_of(solution):
@@ -192,6 +213,13 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.picture import draw_level, save
 
         return save(draw_level(level, self.world, title, paths), fmt)
+
+    @staticmethod
+    def benchmark_files(tasks) -> dict[str, bytes]:
+        """The tasks as a level set Phy-Q's game loads, with the shots its agents send (phyq_levels.py)."""
+        from physc.domains.angrybirds.phyq_levels import benchmark_files
+
+        return benchmark_files(tasks)
 
     @staticmethod
     def emit_level(level) -> str:

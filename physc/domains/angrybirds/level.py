@@ -5,6 +5,11 @@ stays `None` (so `material=""` and no material at all are told apart), and
 numbers are floats. Import → emit → import gives an equal model. The one
 reading that is not literal is the game's own: a <TNT> or <Platform> is its
 prefab whatever its `type` says, so `<TNT type="">` has the type TNT here.
+
+A level physc writes also names the world it was made for and the physc that made it, as
+attributes of <Level> (`world="rolling" generator="physc 0.1.0"`): the game's loader reads
+<Level> by attribute name (only `width`, LevelLoader.cs `LoadXmlLevel`) and passes over any
+other, so the file still loads as it is (docs/angrybirds.md, "A level names its world").
 """
 
 from __future__ import annotations
@@ -49,6 +54,8 @@ class Level:
     birds: tuple[str, ...] = ("BirdRed",)
     slingshot: tuple[float, float] = (-12.0, -2.5)
     objects: tuple[LevelObject, ...] = ()
+    world: str | None = None  # the world it was made for (physc worlds); None: a level that names none
+    generator: str | None = None  # what wrote it ("physc 0.1.0"); None: not said
 
     @property
     def has_birds(self) -> bool:

@@ -168,6 +168,8 @@ def parse_level(text: str) -> Level:
         birds=birds,
         slingshot=slingshot,
         objects=tuple(objects),
+        world=root.get("world"),
+        generator=root.get("generator"),
     )
 
 

@@ -23,6 +23,7 @@ CONCRETE_OBJECTS = (
     ConcreteObject("triangleHole", description="a triangular block with a hole (TriangleHole)"),
     ConcreteObject("flatPlatform", static=True, description="a horizontal platform (Platform)"),
     ConcreteObject("inclinedPlatform", static=True, description="a rotated platform (Platform)"),
+    ConcreteObject("ground", static=True, description="the level's ground, under everything (every level has it; it is not written)"),
 )
 
 OBJECT_TERMS = (
@@ -39,6 +40,8 @@ OBJECT_TERMS = (
     ObjectTerm("horizontalSurface", ("flatPlatform",), "hSurface", noun="a horizontal surface"),
     ObjectTerm("inclinedSurface", ("inclinedPlatform",), "iSurface", noun="an inclined surface"),
     ObjectTerm("surface", ("flatPlatform", "inclinedPlatform"), noun="a surface"),
+    # The level's own ground, as traces name it: a scenario may name it too (`bounce(bird, ground, right)`).
+    ObjectTerm("ground", ("ground",), noun="the ground", fits_as=("horizontalSurface", "surface")),
 )
 
 
@@ -64,6 +67,7 @@ VOCABULARY = Vocabulary(
     terms=TERMS,
     direction_aliases={"any": SIDES},
     player="bird",
+    players=1,  # one bird, one shot: several are language version 2's (docs/language.md)
     goal="pig",
     goal_unmet="is never destroyed",
     goal_rule="a task is solved when every pig is destroyed",

@@ -1,0 +1,174 @@
+"""A dataset's tasks as a level set Phy-Q's game loads and its agents replay (`physc generate`).
+
+`physc generate` writes, beside physc's own files, `phyq/`:
+
+* `Levels/<scenario>_<seed>_<n>.xml`: the levels as they are (each names its world in an
+  attribute the game's loader passes over), numbered n = 1, 2, … in the dataset's order; the
+  agent framework sorts a folder's levels by that last number (Utils/Config.py);
+* `config.xml`: the game's level list (StreamingAssets/config.xml's form), the levels in that
+  order, where `PrepareTestConfig.py` puts them (`9001_Data/StreamingAssets/Levels/physc/Levels/`),
+  the last listed twice as Phy-Q's own script does (its note: the game does not load the last);
+* `shots.csv`: per level its number (`load_level(n)`), file, scenario, seed, world, the release
+  angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])`, with the
+  angle the game launches that at and the slingshot reference point it was computed from;
+* `replay_shots.py`: a script for `sciencebirdsagents/` that loads each level, sends its shot
+  and writes whether the level was solved (it carries agent_action.py's functions, to compute
+  the shot again if the game's reference point differs from the one expected);
+* `README.md`: how to install the levels in the game and replay the shots.
+"""
+
+from __future__ import annotations
+
+import csv
+import inspect
+import io
+import json
+
+from physc.domains.angrybirds import agent_action
+from physc.domains.angrybirds.level_xml import parse_level
+
+GAME_FOLDER = "9001_Data/StreamingAssets/Levels/physc/Levels"  # where the game reads them, relative to its folder
+COLUMNS = ("level", "file", "scenario", "seed", "world", "release_angle", "dx", "dy", "tap_time", "agent_angle", "reference_x", "reference_y")
+
+
+def level_file(row: dict, number: int) -> str:
+    return f"{row['scenario']}_{row['seed']}_{number}.xml"
+
+
+def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
+    """{path: bytes} of the `phyq/` folder for the dataset's (manifest row, level text) pairs."""
+    files: dict[str, bytes] = {}
+    shots = []
+    worlds = set()
+    for number, (row, text) in enumerate(tasks, start=1):
+        name = level_file(row, number)
+        files[f"phyq/Levels/{name}"] = text.encode("utf-8")
+        level = parse_level(text)
+        solution = row.get("solution") or {}
+        angle = solution.get("release_angle")
+        reference = agent_action.reference_point(level.slingshot, level.camera.y, level.camera.max_width)
+        action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
+        world = level.world or row.get("world") or "phyq"
+        worlds.add(world)
+        shots.append(
+            {
+                "level": number, "file": name, "scenario": row["scenario"], "seed": row["seed"], "world": world,
+                "release_angle": angle, "dx": action[0], "dy": action[1], "tap_time": action[2],
+                "agent_angle": round(launched, 5), "reference_x": reference[0], "reference_y": reference[1],
+            }
+        )
+    table = io.StringIO()
+    writer = csv.DictWriter(table, COLUMNS, lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(shots)
+    files["phyq/shots.csv"] = table.getvalue().encode("utf-8")
+    files["phyq/config.xml"] = config([s["file"] for s in shots]).encode("utf-8")
+    files["phyq/replay_shots.py"] = replay_script().encode("utf-8")
+    files["phyq/README.md"] = readme(len(shots), sorted(worlds)).encode("utf-8")
+    return files
+
+
+def config(names: list[str]) -> str:
+    """The game's config.xml listing the levels in order (the last twice, as Phy-Q's scripts do)."""
+    lines = [
+        '<?xml version="1.0" encoding="utf-16"?>',
+        "<evaluation>",
+        '  <novelty_detection_measurement step="1" measure_in_training="True" measure_in_testing="True" />',
+        "  <trials>",
+        '    <trial id="0" number_of_executions="1" checkpoint_time_limit="200" checkpoint_interaction_limit="200" notify_novelty="False">',
+        '      <game_level_set mode="training" time_limit="6000" total_interaction_limit="6000" attempt_limit_per_level="1" allow_level_selection="False">',
+    ]
+    for name in names + names[-1:]:
+        lines.append(f'        <game_levels level_path="{GAME_FOLDER}/{name}" />')
+    lines += ["      </game_level_set>", "    </trial>", "  </trials>", "</evaluation>", ""]
+    return "\n".join(lines)
+
+
+REPLAY_MAIN = '''
+
+def main():
+    """Replay every shot of shots.csv in the running game; write replayed.csv."""
+    import argparse
+    import csv
+    import os
+    import sys
+
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--shots", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "shots.csv"))
+    parser.add_argument("--out", default="replayed.csv")
+    parser.add_argument("--game-version", default="Linux")
+    args = parser.parse_args()
+    sys.path.insert(0, os.getcwd())  # run from sciencebirdsagents/
+    from SBEnvironment.SBEnvironmentWrapper import SBEnvironmentWrapper
+    from SBAgent import SBAgent
+
+    with open(args.shots, newline="") as handle:
+        shots = list(csv.DictReader(handle))
+    env = SBEnvironmentWrapper(reward_type="passing", speed=50, game_version=args.game_version)
+    agent = SBAgent(env=env)
+    env.make(agent=agent, start_level=1, state_representation_type="symbolic")
+    with open(args.out, "w", newline="") as handle:
+        out = csv.writer(handle)
+        out.writerow(["level", "file", "dx", "dy", "reference_x", "reference_y", "solved"])
+        for shot in shots:
+            env.current_level = int(shot["level"])
+            env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
+            action = [int(shot["dx"]), int(shot["dy"]), int(shot["tap_time"])]
+            expected = (int(shot["reference_x"]), int(shot["reference_y"]))
+            live = (env.sling_center.X, env.sling_center.Y)
+            if live != expected:  # another screen or camera than expected: aim from the game's own reference point
+                level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
+                action = aimed_again(float(shot["release_angle"]), level_text, live)
+            _, _, _, info = env.step(action)
+            out.writerow([shot["level"], shot["file"], action[0], action[1], live[0], live[1], bool(info[0])])
+
+
+def aimed_again(angle, level_text, reference):
+    """The action for `angle` from the game's reference point `reference`."""
+    import re
+
+    sling = re.search(r'<Slingshot x="([^"]+)" y="([^"]+)"', level_text)
+    camera = re.search(r'<Camera x="[^"]+" y="([^"]+)" minWidth="[^"]+" maxWidth="([^"]+)"', level_text)
+    slingshot = (float(sling.group(1)), float(sling.group(2))) if sling else (-12.0, -2.5)
+    camera_y, max_width = (float(camera.group(1)), float(camera.group(2))) if camera else (-1.0, 35.0)
+    return agent_action(angle, slingshot, camera_y, max_width, reference=reference)[0]
+
+
+if __name__ == "__main__":
+    main()
+'''
+
+
+def replay_script() -> str:
+    """replay_shots.py: agent_action.py's functions as they are, and a main for sciencebirdsagents/."""
+    header = '"""Replay physc\'s shots in Phy-Q\'s game with its agent framework (written by physc generate).\n\nRun from phy-q/benchmark\'s sciencebirdsagents/ with the game\'s config.xml listing these levels\n(README.md beside this file): python path/to/replay_shots.py --out replayed.csv\n"""\n\n'
+    body = inspect.getsource(agent_action).split('"""', 2)[2].lstrip("\n")
+    return header + body.rstrip("\n") + "\n" + REPLAY_MAIN
+
+
+def readme(count: int, worlds: list[str]) -> str:
+    rolling = [w for w in worlds if w != "phyq"]
+    build = (
+        f"These levels were made for the world(s) {', '.join(rolling)}: play them in a game built with "
+        "physc's patches/rolling (its README), not the stock Phy-Q game, which plays them otherwise.\n\n"
+        if rolling
+        else "These levels were made for `phyq`, Phy-Q's game as it ships.\n\n"
+    )
+    return (
+        "# physc's tasks for Phy-Q's game\n\n"
+        f"{count} levels, in the order of the dataset (level n is `load_level(n)`), made by physc generate.\n\n"
+        + build
+        + "To play them in the game (phy-q/benchmark, `sciencebirdsgames/Linux/`):\n\n"
+        "```sh\n"
+        f"mkdir -p sciencebirdsgames/Linux/{GAME_FOLDER}\n"
+        f"cp phyq/Levels/*.xml sciencebirdsgames/Linux/{GAME_FOLDER}/\n"
+        "cp phyq/config.xml sciencebirdsgames/Linux/config.xml   # keep a copy of the game's own first\n"
+        "cd sciencebirdsagents && python ../phyq/replay_shots.py --out replayed.csv\n"
+        "```\n\n"
+        "`shots.csv` holds each level's intended solution as physc's release angle and as the action Phy-Q's\n"
+        "agents send, `env.step([dx, dy, tap_time])`: whole pixels from the slingshot's reference point on\n"
+        "the game's 840 × 480 window, zoomed out fully (what `env.reset()` leaves), and the angle the game\n"
+        "launches it at (`agent_angle`, within 0.1° of the release angle; `physc verify` replays both).\n"
+        "`replay_shots.py` sends them, aiming again from the game's own reference point if it differs\n"
+        "from `reference_x`, `reference_y` (another window size).\n"
+    )

@@ -1,0 +1,113 @@
+"""A release angle as Phy-Q's agents send it, and a level set the game loads (agent_action.py, phyq_levels.py)."""
+
+import ast
+import csv
+import io
+import json
+import math
+
+import pytest
+
+from physc.domains.angrybirds import agent_action as aa
+from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.level_xml import parse_level
+from physc.domains.angrybirds.phyq_levels import benchmark_files
+from physc.domains.angrybirds.worlds import PHYQ
+from tests.conftest import EXAMPLES, run_physc
+
+SLINGSHOT, CAMERA_Y, MAX_WIDTH = (-12.0, -2.5), -1.0, 35.0  # every Phy-Q level's
+
+
+def game_launch(pixel):
+    """The game's launch of an agent's release point (TapShoot → DragBird → LaunchBird): the
+    point read into the world, the bird dragged there from its rest point within the drag
+    radius, launched away from it at 10 units/s a unit of stretch."""
+    released = aa.to_world(pixel, CAMERA_Y, MAX_WIDTH)
+    rest = aa.rest_point(SLINGSHOT)
+    pull = (rest[0] - released[0], rest[1] - released[1])
+    length = math.hypot(*pull)
+    if length > aa.DRAG_RADIUS:
+        released = (rest[0] - pull[0] / length * aa.DRAG_RADIUS, rest[1] - pull[1] / length * aa.DRAG_RADIUS)
+        pull = (rest[0] - released[0], rest[1] - released[1])
+    speed = min(length, aa.DRAG_RADIUS) / aa.DRAG_RADIUS * PHYQ.launch.speed
+    direction = math.atan2(pull[1], pull[0])
+    return released, (speed * math.cos(direction), speed * math.sin(direction))
+
+
+@pytest.mark.parametrize("angle", [-20.0, 0.0, 12.5, 33.3, 45.0, 55.9004, 70.0, 84.0])
+def test_the_drag_launches_what_physc_simulates(angle):
+    # angle → the agent's drag (exact pixels) → the game's launch: the start and velocity of
+    # physc's full-stretch shot at that angle (the collider's offset aside), within 0.01°.
+    ref = aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    dx, dy = aa.drag(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH, 100.0)
+    released, velocity = game_launch((ref[0] + dx, ref[1] - dy))
+    start, physc_velocity = Shot(angle=angle).start(PHYQ)
+    offset = PHYQ.launch.collider_offset
+    assert released[0] + offset[0] == pytest.approx(start[0], abs=1e-9) and released[1] + offset[1] == pytest.approx(start[1], abs=1e-9)
+    launched = math.degrees(math.atan2(velocity[1], velocity[0]))
+    assert abs(launched - angle) < 0.01
+    assert math.hypot(*velocity) == pytest.approx(math.hypot(*physc_velocity))
+
+
+@pytest.mark.parametrize("angle", [x * 2.5 for x in range(-8, 33)])
+def test_the_whole_pixel_action_is_at_full_stretch_on_screen_and_names_its_launch(angle):
+    action, launched = aa.agent_action(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    ref = aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    pixel = (ref[0] + action[0], ref[1] - action[1])
+    assert all(isinstance(v, int) for v in action) and action[2] == 0
+    assert 0 <= pixel[0] < aa.SCREEN[0] and 0 <= pixel[1] < aa.SCREEN[1]
+    _, velocity = game_launch(pixel)
+    assert math.hypot(*velocity) == pytest.approx(PHYQ.launch.speed)  # full stretch
+    assert math.degrees(math.atan2(velocity[1], velocity[0])) == pytest.approx(launched, abs=1e-9)
+    assert abs(launched - angle) < 0.1  # under the evaluation's angle noise (σ 0.1°), which a task survives
+
+
+def test_the_reference_point_is_the_frameworks():
+    # The ground truth's slingshot box at 24 pixels a unit: x 120–137, top 251; X + 0.45·17, Y + 0.35·17.
+    assert aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH) == (127, 256)
+    assert aa.to_screen(aa.rest_point(SLINGSHOT), CAMERA_Y, MAX_WIDTH) == pytest.approx((128.4, 256.8))
+
+
+def test_a_task_records_and_verifies_its_agent_action(tmp_path):
+    level, task = tmp_path / "sf.xml", tmp_path / "sf.json"
+    assert run_physc("compile", EXAMPLES / "paper" / "01_SF.phys", "-o", level, "--task", task, "-q").status == 0
+    solution = json.loads(task.read_text())["solution"]
+    action, angle = aa.agent_action(solution["release_angle"], SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert solution["agent_action"] == action and solution["agent_angle"] == pytest.approx(angle, abs=1e-5)
+    run = run_physc("verify", level, "--task", task)
+    assert run.status == 0 and f"env.step({action})" in run.stdout
+
+
+def test_a_dataset_holds_a_level_set_the_game_loads(tmp_path):
+    level = (EXAMPLES.parent / "tests" / "data" / "sciencebirds" / "phyq-templates").glob("*.xml")
+    text = next(iter(sorted(level))).read_text(encoding="utf-8-sig")
+    rows = [({"scenario": "SF", "seed": seed, "solution": {"release_angle": 40.0 + seed}}, text) for seed in (3, 4)]
+    files = benchmark_files(rows)
+    assert files["phyq/Levels/SF_3_1.xml"] == text.encode("utf-8") and "phyq/Levels/SF_4_2.xml" in files
+    shots = list(csv.DictReader(io.StringIO(files["phyq/shots.csv"].decode())))
+    assert [s["level"] for s in shots] == ["1", "2"] and shots[1]["release_angle"] == "44.0"
+    assert abs(float(shots[0]["agent_angle"]) - 43.0) < 0.1
+    config = files["phyq/config.xml"].decode()
+    listed = [line for line in config.splitlines() if "game_levels " in line]
+    assert len(listed) == 3 and listed[-1] == listed[-2] and "SF_4_2.xml" in listed[-1]  # the last twice, as Phy-Q's scripts do
+    script = files["phyq/replay_shots.py"].decode()
+    tree = ast.parse(script)
+    assert {"agent_action", "launch_angle", "main"} <= {node.name for node in tree.body if isinstance(node, ast.FunctionDef)}
+    assert "import physc" not in script  # it runs in the agents' own Python
+    assert parse_level(text).world is None
+
+
+def test_a_level_names_its_world_and_the_level_commands_play_it_there(tmp_path):
+    level = tmp_path / "sf.xml"
+    assert run_physc("compile", EXAMPLES / "paper" / "01_SF.phys", "--world", "rolling", "-o", level, "-q").status == 0
+    text = level.read_text()
+    assert '<Level width="2" world="rolling" generator="physc ' in text
+    assert parse_level(text).world == "rolling"
+    played = run_physc("simulate", level, "--angle", "40", "--format", "json")
+    assert played.status == 0 and json.loads(played.stdout)["world"] == "rolling" and not played.stderr
+    other = run_physc("simulate", level, "--angle", "40", "--world", "phyq", "--format", "json")
+    assert json.loads(other.stdout)["world"] == "phyq" and "made for the world 'rolling'" in other.stderr
+    bad = tmp_path / "bad.xml"
+    bad.write_text(text.replace('world="rolling"', 'world="rollng"'))
+    run = run_physc("trace", bad, "--angle", "40")
+    assert run.status == 2 and "did you mean 'rolling'" in run.stderr
