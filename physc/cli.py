@@ -16,7 +16,6 @@ from typing import Sequence
 
 from physc import __version__, budget
 from physc.commands import arguments
-from physc.commands.check import cmd_check
 from physc.commands.common import (
     EXIT_INTERNAL,
     EXIT_STATUSES,
@@ -27,23 +26,36 @@ from physc.commands.common import (
     UsageError,
     add_format,
 )
-from physc.commands.compile import cmd_compile
 from physc.commands.completion import add_command as add_completion_command
-from physc.commands.backends import cmd_backends
-from physc.commands.domains import cmd_domains
 from physc.commands.evaluate import add_command as add_eval_command
 from physc.commands.verify import add_command as add_verify_command
-from physc.commands.fmt import cmd_fmt
 from physc.commands.generate import add_command as add_generate_command
 from physc.commands.lsp import add_command as add_lsp_command
 from physc.commands.play import add_commands as add_play_commands
 from physc.commands.options import add_generation, add_target
-from physc.commands.worlds import cmd_worlds
 from physc.compiler.stages import STAGES
 from physc.diagnostics import safe
-from physc.execution import ExecutorError
-from physc.files import OutputError
-from physc.worlds import WorldError
+
+
+def command(module: str, name: str):
+    """The command `name` of `module`, imported when it runs: building the parser loads no
+    command's work (the compiler, the engines, pictures), so `physc -V` answers at once."""
+
+    def run(args):
+        import importlib
+
+        return getattr(importlib.import_module(module), name)(args)
+
+    return run
+
+
+def usage_errors() -> tuple[type[Exception], ...]:
+    """The errors a command reports as a usage error (exit 2), imported once one is raised."""
+    from physc.execution import ExecutorError
+    from physc.files import OutputError
+    from physc.worlds import WorldError
+
+    return (UsageError, OutputError, ExecutorError, WorldError)
 
 
 # ---- the parser -----------------------------------------------------------------------
@@ -67,7 +79,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("files", nargs="+", metavar="FILE", help="files to check ('-' reads standard input)")
     add_format(check, "the diagnostics")
     check.add_argument("-q", "--quiet", action="store_true", help="no summary line")
-    check.set_defaults(run=cmd_check)
+    check.set_defaults(run=command("physc.commands.check", "cmd_check"))
 
     fmt = commands.add_parser("fmt", parents=[common], help="print files in the canonical block form")
     fmt.add_argument("files", nargs="+", metavar="FILE", help="files to format ('-' reads standard input)")
@@ -75,7 +87,7 @@ def build_parser() -> argparse.ArgumentParser:
     mode.add_argument("--check", action="store_true", help="exit 1 if a file is not canonical; change nothing")
     mode.add_argument("--write", action="store_true", help="rewrite the files in place")
     add_format(fmt, "each file's canonical form")
-    fmt.set_defaults(run=cmd_fmt)
+    fmt.set_defaults(run=command("physc.commands.fmt", "cmd_fmt"))
 
     stage_names = ", ".join(s.name for s in STAGES)
     compile_ = commands.add_parser("compile", parents=[common], help="generate a task from a scenario (or print a stage with --emit)")
@@ -98,7 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="the printed stage's format: by default its own (a level: the domain's level file; the other stages: json); dot (Graphviz) for graph stages",
     )
     compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")
-    compile_.set_defaults(run=cmd_compile)
+    compile_.set_defaults(run=command("physc.commands.compile", "cmd_compile"))
 
     add_play_commands(commands, common)
     add_generate_command(commands, common)
@@ -113,18 +125,18 @@ def build_parser() -> argparse.ArgumentParser:
     backends.add_argument("name", nargs="*", help="only these backends")
     backends.add_argument("-v", "--verbose", action="store_true", help="say, setting by setting, what each engine does with a world's engine settings")
     add_format(backends, "the engines")
-    backends.set_defaults(run=cmd_backends)
+    backends.set_defaults(run=command("physc.commands.backends", "cmd_backends"))
 
     worlds = commands.add_parser("worlds", parents=[common], help="list each domain's worlds; -v: every setting and where it comes from")
     worlds.add_argument("name", nargs="*", help="only these domains")
     worlds.add_argument("-v", "--verbose", action="store_true", help="every setting of each world, with the file it is read from (a variant's changes: its reading)")
     add_format(worlds, "the worlds")
-    worlds.set_defaults(run=cmd_worlds)
+    worlds.set_defaults(run=command("physc.commands.worlds", "cmd_worlds"))
 
     domains = commands.add_parser("domains", parents=[common], help="list installed domains and their vocabulary")
     domains.add_argument("name", nargs="*", help="only these domains")
     add_format(domains, "the domains")
-    domains.set_defaults(run=cmd_domains)
+    domains.set_defaults(run=command("physc.commands.domains", "cmd_domains"))
     return parser
 
 
@@ -135,10 +147,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help(sys.stderr)
         return EXIT_USAGE
     try:
-        return args.run(args)
-    except (UsageError, OutputError, ExecutorError, WorldError) as error:
-        print(f"physc {args.command}: error: {safe(str(error))}", file=sys.stderr)
-        return EXIT_USAGE
+        try:
+            return args.run(args)
+        except Exception as error:
+            if isinstance(error, usage_errors()):
+                print(f"physc {args.command}: error: {safe(str(error))}", file=sys.stderr)
+                return EXIT_USAGE
+            raise
     except KeyboardInterrupt:
         budget.stopped()
         print("physc: interrupted", file=sys.stderr)

@@ -12,14 +12,17 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Sequence
-from importlib.metadata import EntryPoint, entry_points
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import attrs
-import numpy as np
 
 from physc.backends.settings import BOX2D_DEFAULTS, EngineSettings
 from physc.suggest import did_you_mean
+
+if TYPE_CHECKING:  # numpy and the entry points load with the engines, not with the command line
+    from importlib.metadata import EntryPoint
+
+    import numpy as np
 
 ENTRY_POINT_GROUP = "physc.backends"
 DEFAULT_BACKEND = "box2d"  # the engine of both target worlds (README, "The reference engine")
@@ -250,6 +253,8 @@ class BackendError(Exception):
 
 
 def installed_backends() -> dict[str, EntryPoint]:
+    from importlib.metadata import entry_points
+
     return dict(sorted((ep.name, ep) for ep in entry_points(group=ENTRY_POINT_GROUP)))
 
 

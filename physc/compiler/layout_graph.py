@@ -10,10 +10,14 @@ or as Graphviz DOT with `--format dot`.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import attrs
-import networkx as nx
 
 from physc.diagnostics import Span
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 # Layout terms (the paper's table "Layout grammar").
 IN_DIRECTION = "inDirection"
@@ -78,6 +82,8 @@ class LayoutGraph:
         return next(n for n in self.nodes if n.name == name)
 
     def to_networkx(self) -> nx.MultiDiGraph:
+        import networkx as nx  # only where a graph is drawn or searched: the command line starts without it
+
         graph = nx.MultiDiGraph(scenario=self.scenario)
         for node in self.nodes:
             graph.add_node(node.name, node=node)

@@ -50,6 +50,9 @@ SIDES = {"right": 0.0, "above": 90.0, "left": 180.0, "below": 270.0}  # the dire
 ALL_SIDES = frozenset(SIDES)
 
 
+GERUND = {"roll": "rolling", "slide": "sliding"}  # a motion's name in a margin's words
+
+
 @attrs.frozen
 class Margin:
     """How far one link was from failing: `value` in `unit`s (positive: held with that much to
@@ -228,7 +231,7 @@ class MarginReader:
         need = self.recogniser.motion_time
         if best is None:
             return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
-        parts = [Margin(text, k, best - need, "s", need, f"seconds of {name}ing beyond the least recognised")]
+        parts = [Margin(text, k, best - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised")]
         after = next((i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None)
         if after is not None and matched[after].name != "hit":
             after = None  # only a meeting has a speed to arrive at

@@ -20,8 +20,8 @@ from __future__ import annotations
 import functools
 import re
 from importlib import resources
+from typing import TYPE_CHECKING
 
-import jinja2
 import numpy as np
 from lxml import etree
 
@@ -38,6 +38,9 @@ from physc.domains.angrybirds.level_checks import (
     deep_overlaps,
 )
 from physc.suggest import did_you_mean
+
+if TYPE_CHECKING:
+    import jinja2
 
 __all__ = ["LevelError", "decode", "emit_level", "parse_level", "read_level"]
 
@@ -190,6 +193,8 @@ def number(value: float) -> str:
 
 @functools.cache
 def _template() -> jinja2.Template:
+    import jinja2  # only to write a level: reading one (physc simulate) starts without it
+
     source = resources.files("physc.domains.angrybirds").joinpath("templates/level.xml.j2").read_text(encoding="utf-8")
     environment = jinja2.Environment(autoescape=True, keep_trailing_newline=True, undefined=jinja2.StrictUndefined)
     return environment.from_string(source)
