@@ -2,10 +2,13 @@
 
 A scenario that gives no task in one world may give one in another (Science Birds: the paper's
 roll chains need circles that roll, which Phy-Q's game does not ship and `rolling` has). Exit 3
-should say so only when it is measured: the play that came furthest (its layout and action) is
-replayed in each other world the domain has, and a world is named when it realises more of the
-declared sequence there, or the whole of it with a stronger weakest link. The replays take a
-slice of the time budget kept for them (`reserve`), so that the budget stays a promise.
+should say so only when it is measured: the plays that came furthest (of the PLAYS best layouts)
+are replayed in each other world the domain has, and a world is named when it realises more of the
+declared sequence there, or the whole of it with a stronger weakest link: the play's own action
+first, then the domain's candidate actions for that level (a shot lands elsewhere in another
+world's physics), then the chain built there by the search's stages from the layout as placed
+(the layout was built for this world's physics: later objects stand where its actor went). The replays take a slice of the time budget kept for them (`reserve`), and
+stop when it is spent, so that the budget stays a promise.
 """
 
 from __future__ import annotations
@@ -16,7 +19,8 @@ from physc import budget
 from physc.simulation.fidelity import fidelity
 
 RESERVE_SHARE = 0.1  # of the time budget, kept for the replays elsewhere
-RESERVE_MOST = 3.0  # seconds at most
+RESERVE_MOST = 5.0  # seconds at most
+PLAYS = 3  # the furthest plays replayed, each of another layout
 
 
 @attrs.frozen
@@ -25,11 +29,13 @@ class Elsewhere:
     matched: int
     total: int
     weakest: object | None  # physc.simulation.margins.Margin of the replay there
+    built: bool = False  # whether the chain was built there by the search's stages (else: a play replayed)
 
     def text(self) -> str:
         link = f"; weakest link {self.weakest.text()}" if self.weakest is not None else ""
+        how = "built again there by the search's stages from one of the best layouts" if self.built else "the best layout, replayed"
         return (
-            f"the best layout, replayed in the world '{self.world}', realises {self.matched} of the {self.total} interactions{link}: "
+            f"in the world '{self.world}', {how}, realises {self.matched} of the {self.total} interactions{link}: "
             f"--world {self.world} may carry this scenario (physc worlds describes it)"
         )
 
@@ -39,27 +45,66 @@ def reserve(domain, time_budget: float) -> float:
     return min(RESERVE_MOST, RESERVE_SHARE * time_budget) if len(domain.worlds) > 1 else 0.0
 
 
-def elsewhere(domain, scenario, furthest, best: int, weakest) -> Elsewhere | None:
-    """The first other world of `domain` where the play `furthest` ((score, level, action))
-    gets further than `best` interactions here, or realises the whole sequence with every
-    link held where here its weakest link (`weakest`) failed; None when none does or time is out."""
-    if furthest is None:
-        return None
-    _, level, action = furthest
+def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int = 1) -> Elsewhere | None:
+    """The first other world of `domain` where a play of `furthest` ((score, level, action,
+    the layout as placed), the furthest first) gets further than `best` interactions here, or
+    realises the whole sequence with every link held where here its weakest link (`weakest`)
+    failed; None when none does or the time is out. Each layout is tried in turn: its play and
+    the domain's candidate actions replayed there, then the chain built there stage by stage
+    from the layout as placed (physc.generation.chain: later objects placed where that world's
+    physics sends their actor)."""
     total = len(scenario.interactions)
     here = -1.0 if weakest is None else weakest.share
     for world in domain.worlds:
         if world.name == domain.world.name:
             continue
+        there = domain.at(world.name)
         try:
-            there = domain.at(world.name)
-            trace = there.play(level, action, scenario)
+            for _, level, action, placed in furthest:
+                for tried in [action] + [a for a in _candidates(there, level, scenario) if a != action]:
+                    found = _judged(there, scenario, there.play(level, tried, scenario), best, total, here)
+                    if found is not None:
+                        return found
+                built = _built(there, scenario, placed, accept)
+                if built is not None:
+                    found = _judged(there, scenario, built, best, total, here, built=True)
+                    if found is not None:
+                        return found
         except budget.OutOfTime:
             return None
-        check = fidelity(scenario, trace)
-        margins = there.margins(scenario, trace) if hasattr(there, "margins") else None
-        link = None if margins is None else margins.weakest
-        whole = check.valid and (link is None or (link.held and link.share > max(here, 0.0)))
-        if check.matched > best or (best >= total and whole):
-            return Elsewhere(world.name, check.matched, total, link)
     return None
+
+
+def _judged(there, scenario, trace, best: int, total: int, here: float, built: bool = False) -> Elsewhere | None:
+    """The world `there` named by `trace` if it gets further than `best`, or realises the
+    whole sequence with a weakest link stronger than `here` (and held)."""
+    check = fidelity(scenario, trace)
+    margins = there.margins(scenario, trace) if hasattr(there, "margins") else None
+    link = None if margins is None else margins.weakest
+    whole = check.valid and (link is None or (link.held and link.share > max(here, 0.0)))
+    if check.matched > best or (best >= total and whole):
+        return Elsewhere(there.world.name, check.matched, total, link, built)
+    return None
+
+
+def _built(there, scenario, placed, accept: int):
+    """The trace of the chain the search builds in the world `there` from the layout as
+    placed: the whole sequence's best attempt, else the furthest play it made; None for a
+    domain the search cannot run in."""
+    from physc.generation.chain import Node, chain
+    from physc.generation.problem import Ledger, Problem
+
+    if placed is None or not hasattr(there, "search_hooks"):
+        return None
+    problem = Problem.of(there, scenario, placed, accept)
+    ledger = Ledger()
+    node = chain(problem, ledger, Node(problem.placed, (), -1), 0)
+    if node is not None and node.attempts:
+        return node.attempts[0].trace
+    return None if ledger.furthest is None else ledger.furthest.trace
+
+
+def _candidates(domain, level, scenario) -> list:
+    """The domain's candidate actions for the level (the search's first stage), as actions."""
+    found = domain.actions(level, scenario) or []
+    return [item[1] if isinstance(item, tuple) else item for item in found]

@@ -112,7 +112,7 @@ class LayoutLoop:
         stopped = ""  # what the first simulation that got that far shows about the next interaction
         lost: dict[str, list] = {}  # the noisy replays' losses over the layouts: term → [count, why]
         weakest = None  # of the chains realised but not robust, the strongest weakest link
-        furthest = None  # the play that came furthest: (score, level, action), replayed elsewhere on failure
+        furthest: list = []  # the plays that came furthest, one a layout: (score, level, action, placed), replayed elsewhere on failure
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
         kept = elsewhere.reserve(self.domain, self.time_budget)
@@ -153,8 +153,8 @@ class LayoutLoop:
                     lost.setdefault(term, [0, why])[0] += count
                 if result.weakest is not None and (weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)):
                     weakest = result.weakest
-                if result.furthest is not None and (furthest is None or result.furthest[0] > furthest[0]):
-                    furthest = result.furthest
+                if result.furthest is not None:
+                    furthest = sorted(furthest + [result.furthest], key=lambda play: play[0], reverse=True)[: elsewhere.PLAYS]
                 if result.satisfied:
                     failure, used = None, placed
                     break
@@ -183,7 +183,7 @@ class LayoutLoop:
                     failure, fallback = self._out_of_time(layouts), None
                 seconds["satisfy"] += time.perf_counter() - clock
         if failure is not None and fallback is None:
-            other = elsewhere.elsewhere(self.domain, self.scenario, furthest, best, weakest)
+            other = elsewhere.elsewhere(self.domain, self.scenario, furthest, best, weakest, self.min_robustness)
             raise self.explained(failure, nearest, given_up, best, stopped, lost, weakest, other)
         if failure is not None:
             simulated, result, used = fallback

@@ -43,6 +43,6 @@ class Outcome:
     lost: tuple[tuple[str, int, str], ...] = ()
     # Of the chains realised but not robust, the strongest weakest link (physc.simulation.margins).
     weakest: object | None = None
-    # The play that came furthest: (its fidelity score, its level, its action), replayed in the
-    # domain's other worlds when no task is found (physc.generation.elsewhere).
+    # The play that came furthest: (its fidelity score, its level, its action, the layout as
+    # placed), replayed in the domain's other worlds when no task is found (physc.generation.elsewhere).
     furthest: tuple | None = None

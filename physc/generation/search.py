@@ -133,5 +133,5 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
     return Outcome(
         False, ledger.simulations, nearest=ledger.nearest, given_up=why, best=ledger.best, stopped=stopped(problem, ledger),
         lost=lost_links(ledger), weakest=ledger.weakest,
-        furthest=None if furthest is None else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action),
+        furthest=None if furthest is None else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action, problem.placed),
     )

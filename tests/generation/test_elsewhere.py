@@ -30,6 +30,9 @@ class Domain:
     def play(self, level, action, scenario):
         return SimpleNamespace(matched=self.matched[self.world.name])
 
+    def actions(self, level, scenario):
+        return []
+
     def margins(self, scenario, trace):
         return SimpleNamespace(weakest=self.weakest.get(self.world.name))
 
@@ -41,15 +44,15 @@ def fake_fidelity(scenario, trace):
 
 def test_a_world_that_gets_further_is_named(monkeypatch):
     monkeypatch.setattr(elsewhere, "fidelity", fake_fidelity)
-    found = elsewhere.elsewhere(Domain(), R, (0.5, "level", "shot"), best=2, weakest=None)
+    found = elsewhere.elsewhere(Domain(), R, [(0.5, "level", "shot", None)], best=2, weakest=None)
     assert found is not None and found.world == "there" and found.matched == 4
-    assert "--world there" in found.text() and "realises 4 of the 4 interactions" in found.text()
+    assert "--world there" in found.text() and "in the world 'there', the best layout, replayed, realises 4 of the 4 interactions" in found.text()
 
 
 def test_a_world_no_better_is_not_named(monkeypatch):
     monkeypatch.setattr(elsewhere, "fidelity", fake_fidelity)
-    assert elsewhere.elsewhere(Domain(matched={"here": 4, "there": 3}), R, (1.0, "level", "shot"), best=4, weakest=None) is None
-    assert elsewhere.elsewhere(Domain(), R, None, best=0, weakest=None) is None
+    assert elsewhere.elsewhere(Domain(matched={"here": 4, "there": 3}), R, [(1.0, "level", "shot", None)], best=4, weakest=None) is None
+    assert elsewhere.elsewhere(Domain(), R, [], best=0, weakest=None) is None
 
 
 def test_a_whole_chain_counts_elsewhere_only_with_a_stronger_weakest_link(monkeypatch):
@@ -58,8 +61,8 @@ def test_a_whole_chain_counts_elsewhere_only_with_a_stronger_weakest_link(monkey
     held = Margin("destroy(rBlock, pig)", 3, 0.3, "damage", 1.0, "the blow")
     failing = Margin("destroy(rBlock, pig)", 3, -0.1, "damage", 1.0, "the blow", held=False)
     both = {"here": 4, "there": 4}
-    assert elsewhere.elsewhere(Domain(matched=both, weakest={"there": held}), R, (1.0, 1, 2), best=4, weakest=weak).world == "there"
-    assert elsewhere.elsewhere(Domain(matched=both, weakest={"there": failing}), R, (1.0, 1, 2), best=4, weakest=weak) is None
+    assert elsewhere.elsewhere(Domain(matched=both, weakest={"there": held}), R, [(1.0, 1, 2, None)], best=4, weakest=weak).world == "there"
+    assert elsewhere.elsewhere(Domain(matched=both, weakest={"there": failing}), R, [(1.0, 1, 2, None)], best=4, weakest=weak) is None
 
 
 def test_the_reserve_is_kept_only_where_there_is_another_world():
