@@ -105,6 +105,5 @@ def _built(there, scenario, placed, accept: int):
 
 
 def _candidates(domain, level, scenario) -> list:
-    """The domain's candidate actions for the level (the search's first stage), as actions."""
-    found = domain.actions(level, scenario) or []
-    return [item[1] if isinstance(item, tuple) else item for item in found]
+    """The domain's candidate actions for the level (the search's first stage), without their labels."""
+    return [action for _, action in domain.actions(level, scenario)]

@@ -111,3 +111,10 @@ def test_a_level_names_its_world_and_the_level_commands_play_it_there(tmp_path):
     bad.write_text(text.replace('world="rolling"', 'world="rollng"'))
     run = run_physc("trace", bad, "--angle", "40")
     assert run.status == 2 and "did you mean 'rolling'" in run.stderr
+
+
+def test_the_level_set_carries_the_shot_the_task_recorded():
+    text = next(iter(sorted((EXAMPLES.parent / "tests" / "data" / "sciencebirds" / "phyq-templates").glob("*.xml")))).read_text(encoding="utf-8-sig")
+    recorded = {"release_angle": 43.0, "agent_action": [-100, -93, 0], "agent_angle": 42.98}
+    shots = list(csv.DictReader(io.StringIO(benchmark_files([({"scenario": "SF", "seed": 0, "solution": recorded}, text)])["phyq/shots.csv"].decode())))
+    assert (shots[0]["dx"], shots[0]["dy"], shots[0]["agent_angle"]) == ("-100", "-93", "42.98")  # what physc verify replayed

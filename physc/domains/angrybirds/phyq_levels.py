@@ -9,8 +9,9 @@
   order, where `PrepareTestConfig.py` puts them (`9001_Data/StreamingAssets/Levels/physc/Levels/`),
   the last listed twice as Phy-Q's own script does (its note: the game does not load the last);
 * `shots.csv`: per level its number (`load_level(n)`), file, scenario, seed, world, the release
-  angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])`, with the
-  angle the game launches that at and the slingshot reference point it was computed from;
+  angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])` (the task's
+  own record, which `physc verify` replayed), with the angle the game launches that at and the
+  slingshot reference point it was computed from;
 * `replay_shots.py`: a script for `sciencebirdsagents/` that loads each level, sends its shot
   and writes whether the level was solved (it carries agent_action.py's functions, to compute
   the shot again if the game's reference point differs from the one expected);
@@ -47,7 +48,9 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         solution = row.get("solution") or {}
         angle = solution.get("release_angle")
         reference = agent_action.reference_point(level.slingshot, level.camera.y, level.camera.max_width)
-        action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
+        action, launched = solution.get("agent_action"), solution.get("agent_angle")
+        if action is None or launched is None:  # a task made before solutions recorded it
+            action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
         world = level.world or row.get("world") or "phyq"
         worlds.add(world)
         shots.append(
