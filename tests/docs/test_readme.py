@@ -2,7 +2,7 @@
 
 import re
 
-from tests.conftest import ROOT
+from conftest import ROOT
 
 MOST_WORDS = 60
 

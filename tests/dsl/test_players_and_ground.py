@@ -1,6 +1,6 @@
 """What compile cannot do is said by check (W0302, E0804); the level's ground can be named."""
 
-from tests.conftest import run_physc
+from conftest import run_physc
 
 TWO_BIRDS = """scenario TB {
     interactions {

@@ -6,7 +6,7 @@ from physc.api.compiling import BUDGET_HELP
 from physc.compiler.infeasible import Exhausted
 from physc.generation import elsewhere
 from physc.simulation.margins import Margin
-from tests.middle_end import paper_scenarios
+from middle_end import paper_scenarios
 
 R = paper_scenarios()["R"]
 

@@ -4,7 +4,7 @@ from types import SimpleNamespace
 
 from physc.generation.coordinates import weak_parts
 from physc.simulation.margins import Margin
-from tests.middle_end import paper_scenarios
+from middle_end import paper_scenarios
 
 
 def problem(name):
