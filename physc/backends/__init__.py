@@ -143,6 +143,19 @@ class World(Protocol):
     def begun(self) -> list[ContactEvent]: ...
     def ended(self) -> list[tuple[str, str]]: ...
     def touching(self, name: str) -> set[str]: ...
+    def touches(self, a: str, b: str) -> bool:
+        """Whether `a` and `b` touch now (`b in touching(a)`, without a copy: rules ask it every step)."""
+        ...
+    def moving(self, names: Sequence[str], speed: float) -> bool:
+        """Whether any of the bodies `names` still in the world moves faster than `speed` by
+        |vx| + |vy| + |ω| (a sleeping body does not move): what rules that end a run once all
+        is still ask every step instead of reading every state."""
+        ...
+    def listen(self, details: bool) -> None:
+        """Whether the contacts begun and ended are reported (`begun`, `ended`) with their
+        details; False: only who touches whom is kept (an outcome playout whose rules hear no
+        contacts, physc.simulation.run.play_out)."""
+        ...
 
 
 def _count(table: dict, key, change: int) -> int:
@@ -166,6 +179,10 @@ class ContactLog:
         self._touching: dict[str, set[str]] = {}
         self._part_contacts: dict[tuple[str, str], int] = {}  # a pair of bodies → their parts in contact
         self._collider_contacts: dict[tuple, int] = {}  # a pair of (body, collider) → their parts in contact
+        self._details = True  # whether begun and ended contacts are reported (`listen`)
+
+    def listen(self, details: bool) -> None:
+        self._details = details
 
     def _counted(self, a: str, b: str, change: int) -> int:
         """The parts of `a` and `b` in contact after `change` (+1 a pair of parts began
@@ -180,7 +197,10 @@ class ContactLog:
         the two bodies did not either."""
         bodies = self._counted(a, b, 1)
         if self._counted_colliders(a, a_collider, b, b_collider, 1) == 1:
-            self._began(event(bodies == 1))
+            if self._details:
+                self._began(event(bodies == 1))
+            elif bodies == 1:
+                self._touch(a, b)
 
     def _part_ended(self, a: str, a_collider: int, b: str, b_collider: int) -> None:
         """A part of `a`'s collider `a_collider` parted from a part of `b`'s `b_collider`."""
@@ -193,12 +213,17 @@ class ContactLog:
         return _count(self._collider_contacts, key, change)
 
     def _began(self, event: ContactEvent) -> None:
-        self._begun.append(event)
-        self._touching.setdefault(event.a, set()).add(event.b)
-        self._touching.setdefault(event.b, set()).add(event.a)
+        if self._details:
+            self._begun.append(event)
+        self._touch(event.a, event.b)
+
+    def _touch(self, a: str, b: str) -> None:
+        self._touching.setdefault(a, set()).add(b)
+        self._touching.setdefault(b, set()).add(a)
 
     def _parted(self, a: str, b: str) -> None:
-        self._ended.append((a, b))
+        if self._details:
+            self._ended.append((a, b))
         if a in self._touching:
             self._touching[a].discard(b)
         if b in self._touching:
@@ -228,6 +253,14 @@ class ContactLog:
 
     def touching(self, name: str) -> set[str]:
         return set(self._touching.get(name, ()))
+
+    def touches(self, a: str, b: str) -> bool:
+        return b in self._touching.get(a, ())
+
+    def moving(self, names: Sequence[str], speed: float) -> bool:
+        """From the bodies' states (`states`, which a world subclassing this has); a world whose
+        engine says which bodies sleep reads only the others."""
+        return any(abs(r[3]) + abs(r[4]) + abs(r[5]) > speed for r in self.states(list(names)).tolist())
 
 
 @attrs.frozen

@@ -44,9 +44,9 @@ from physc.domains.base import Domain, MissingCapability, _no_default
 from physc.simulation.margins import MarginReader, Margins
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-from physc.simulation.scene import Scene, play
+from physc.simulation.scene import Scene, outcome, play
 from physc.simulation.stability import stable
-from physc.simulation.trace import Trace
+from physc.simulation.trace import Playout, Trace
 
 # What a simulated domain must write for generation (checked before `satisfy` runs).
 HOOKS = ("level_from_layout", "scene", "actions")
@@ -252,6 +252,15 @@ class SimulatedDomain(Domain):
             resume,
         )
 
+    def playout(self, level, action, seconds: float | None = None, whole: bool = False, to_end: bool = True) -> Playout:
+        """`level` played with `action` to its outcome alone (physc.simulation.run.play_out):
+        solved, when, what was destroyed and where the bodies end, as `play` would say, without
+        recording or recognising what no verdict reads. What acceptance, the random agent, the
+        simulation cache and the agents' environments ask. `whole`: as the target world plays
+        it to the end (a domain whose `play` stops sooner for the search reads it; angrybirds).
+        Without `to_end`, it stops once the outcome is settled (a verdict that reads nothing else)."""
+        return outcome(self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, to_end)
+
     @property
     def resumable(self) -> bool:
         """Whether `play` goes on from a snapshot (its `resume`): the generic play does; a
@@ -297,7 +306,7 @@ class SimulatedDomain(Domain):
                 break
             if action is None or not self.valid(level, action):
                 continue
-            outcomes.append(self.play(level, action, recognise=False).solved)
+            outcomes.append(self.playout(level, action, to_end=False).solved)
             if until_solved and outcomes[-1]:
                 break
         return outcomes

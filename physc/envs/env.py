@@ -30,13 +30,16 @@ class TaskEnv(gymnasium.Env):
     `domain`. `action`: the domain's action mode (its first by default). `observation`:
     "features" (the objects as a padded array, `Playing.feature_names`), "picture", or "both"
     (a dict). `noise`: play under the domain's noise model (default: the domain's
-    `Playing.noise`), drawn from the environment's seeded generator. `reset(options={"task":
-    i or id})` picks a task; otherwise each reset draws one uniformly."""
+    `Playing.noise`), drawn from the environment's seeded generator. `interactions`: whether a
+    step's `info` says which interactions the play realised and whether the task's sequence
+    was (`realised`); False plays each action as an outcome playout, sooner, with the same
+    reward and observation. `reset(options={"task": i or id})` picks a task; otherwise each
+    reset draws one uniformly."""
 
     metadata = {"render_modes": ["rgb_array"]}
 
     def __init__(self, domain: str, tasks, *, action: str | None = None, observation: str = "features", noise: bool | None = None,
-                 world: str | None = None, backend: str | None = None, render_mode: str | None = None):
+                 world: str | None = None, backend: str | None = None, render_mode: str | None = None, interactions: bool = True):
         if observation not in OBSERVATIONS:
             raise ValueError(f"observation is one of {', '.join(OBSERVATIONS)}, not {observation!r}")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
@@ -47,6 +50,7 @@ class TaskEnv(gymnasium.Env):
         self.noise = playing.noise if noise is None else noise
         self.observation_kind = observation
         self.render_mode = render_mode
+        self.interactions = interactions
         self.action_space = self.simulator.action_space
         # Unbounded: even PHYRE's normalised features pass 1 (a bar longer than the scene).
         features = spaces.Box(-np.inf, np.inf, (playing.max_objects, len(playing.feature_names)), np.float32)
@@ -94,7 +98,7 @@ class TaskEnv(gymnasium.Env):
 
     def step(self, action):
         rng = random.Random(int(self.np_random.integers(2**63))) if self.noise else None
-        result = self.simulator.simulate_action(self.task_index, action, noise=rng)
+        result = self.simulator.simulate_action(self.task_index, action, noise=rng, need_interactions=self.interactions)
         info = {**self._info(), **result.info}
         valid = not result.status.is_invalid()
         if valid:

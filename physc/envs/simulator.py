@@ -6,6 +6,7 @@ task and says what happened.
     action = sim.sample()                              # from sim.action_space
     result = sim.simulate_action(0, action)            # task 0 of sim.task_ids
     result.status.is_solved(), result.reward, result.info["interactions"]
+    sim.simulate_action(0, action, need_interactions=False)   # the outcome alone, sooner
 
 As in PHYRE, an invalid action (angrybirds: a point out of the bird's reach; PHYRE: a ball
 outside the scene or over a body) is not played: its status is INVALID_INPUT.
@@ -47,7 +48,8 @@ class SimulationStatus(enum.IntEnum):
 class Simulation:
     """One play: its status, its reward (the domain's: angrybirds the share of pigs destroyed),
     what the domain tells of it (`info`: the interactions recognised, whether the task's
-    sequence was realised, …) and the trace itself (None for an invalid action). With
+    sequence was realised, …) and the trace itself (None for an invalid action; a Playout,
+    physc.simulation.trace, when the play was an outcome playout). With
     `need_images` and `need_featurized_objects`, PHYRE's frames: `images` (frames, *picture)
     and `featurized_objects` (frames, objects, features), every `stride` steps from the first
     and the last."""
@@ -121,12 +123,14 @@ class ActionSimulator:
 
     def simulate_action(
         self, task: int | str, action, *, noise: int | random.Random | None = None, need_images: bool = False,
-        need_featurized_objects: bool = False, stride: int | None = None,
+        need_featurized_objects: bool = False, stride: int | None = None, need_interactions: bool = True,
     ) -> Simulation:
         """`action` played on the task (an index or an id), to rest; with `noise` (a seed or a
         random.Random), under the domain's noise model. `need_images`, `need_featurized_objects`:
         the frames of the play, every `stride` steps (default: a second of simulated time, as
-        PHYRE's 60 steps)."""
+        PHYRE's 60 steps). `need_interactions` False: played as an outcome playout (the same
+        status, reward and last frame, sooner), and `info` leaves out the recognised
+        `interactions` and whether the sequence was `realised`."""
         from physc.api.simulating import play_to_rest
         from physc.simulation.fidelity import fidelity
 
@@ -139,12 +143,14 @@ class ActionSimulator:
             rng = noise if isinstance(noise, random.Random) else random.Random(noise)
             level, played = domain.noisy(level, played, rng)
         scenario = self._scenarios[index]
-        trace = play_to_rest(domain, level, played, scenario)
+        if need_interactions or need_images or need_featurized_objects:
+            trace = play_to_rest(domain, level, played, scenario)
+        else:
+            trace = domain.playout(level, played, whole=True)
         reward, told = self.playing.reward(trace)
-        info = {
-            "valid": True, "solved": bool(trace.solved), **told,
-            "interactions": [i.text() for i in trace.interactions], "realised": fidelity(scenario, trace).valid,
-        }
+        info = {"valid": True, "solved": bool(trace.solved), **told}
+        if need_interactions:
+            info.update(interactions=[i.text() for i in trace.interactions], realised=fidelity(scenario, trace).valid)
         images = featurized = None
         if need_images or need_featurized_objects:
             every = stride or max(int(round(1.0 / trace.dt)), 1)
@@ -159,8 +165,12 @@ class ActionSimulator:
     def frame(self, result: Simulation, step: int = -1, picture: bool = False) -> np.ndarray:
         """The features (or, with `picture`, the picture) of a valid play's level after step
         `step` (-1: the last, when everything rests)."""
+        from physc.api.simulating import play_to_rest
+
         domain, level, played = result.played
         trace = result.trace
+        if getattr(trace, "final", None) is not None and 0 <= step < trace.steps - 1:  # an outcome playout: the whole play, again
+            trace = play_to_rest(domain, level, played)
         make = self.playing.frame_picture if picture else self.playing.frame_features
         return make(domain, level, played, trace, trace.steps - 1 if step < 0 else step)
 

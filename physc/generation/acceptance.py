@@ -346,7 +346,7 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
         return None
 
     def solves(candidate) -> bool:
-        return evaluator.run(lambda: domain.play(level, candidate, recognise=False)).solved
+        return evaluator.run(lambda: domain.playout(level, candidate, to_end=False)).solved
 
     return judge(
         rule, action, lambda r, chunk: domain.action_pool(level, r.tier, chunk, r.chunk), lambda a: domain.valid(level, a), solves, domain.neighbours,

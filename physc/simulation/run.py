@@ -39,6 +39,11 @@ class RunRules:
     """The hooks of a run; the defaults are a world where nothing is damaged, nothing
     leaves and the run lasts its whole time."""
 
+    reads_states = True
+    """Whether `removals_due` and `finished` read `values` (every dynamic body's state, each
+    step). Rules that ask the world what they need instead (World.moving, World.touches) say
+    False, and an outcome playout (`play_out`) then reads no state until the run ends."""
+
     def on_start(self, world) -> None:
         """The run is about to begin in `world`."""
 
@@ -69,6 +74,12 @@ class RunRules:
         """Whether the run is over at `time`, before its end."""
         return False
 
+    def settled(self, time: float, end: float) -> bool:
+        """Whether the outcome (`solved`, `goal_met`) can no longer change between `time` and
+        the run's `end`: an outcome playout that need not play to the end stops here (the
+        default: it plays until `finished`)."""
+        return False
+
     def solved(self, recording: Recording) -> bool:
         """Whether the run met the domain's goal (read once, after the run)."""
         return False
@@ -87,13 +98,20 @@ class RunRules:
 @attrs.frozen
 class Recording:
     """What a run recorded: the states (steps, bodies, 6: x y angle vx vy ω; NaN once
-    gone) of the dynamic bodies in `names` order, and the events in time order."""
+    gone) of the dynamic bodies in `names` order, and the events in time order. An outcome
+    playout's (`play_out`) holds the last step's states alone, and no contacts."""
 
     states: np.ndarray
     contacts: tuple[ContactRecord, ...]
     separations: tuple[SeparationRecord, ...]
     damage: tuple[DamageRecord, ...]
     destructions: tuple[DestructionRecord, ...]
+    played: int | None = None  # steps run, where `states` does not hold them all
+
+    @property
+    def steps(self) -> int:
+        """The steps the run lasted."""
+        return self.played if self.played is not None else len(self.states)
 
 
 def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None) -> Recording:
@@ -144,31 +162,95 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
             row[index[name]] = np.nan
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
-            # In `dynamic` order: the order of removals must not depend on string hashing,
-            # and a removal (a blast) changes the state of what is read after it.
-            row[:] = np.nan
-            for name in [n for n in dynamic if n in alive]:
-                state = world.state(name)
-                gone = rules.gone(name, state, time, damage)
-                if gone:
-                    rules.on_removed(world, name, gone[0], alive, damage, time)
-                    alive.discard(name)
-                    touched = sorted(world.touching(name))
-                    stay = rules.lingers(world, name, gone[0])
-                    if stay > 0:  # its contacts end for the record now, and begin no more
-                        parting.extend((name, other) for other in touched)
-                        lingering[name] = time + stay
-                        unrecorded.add(name)
-                    else:
-                        world.remove(name)
-                    destructions.append(DestructionRecord(time, name, gone[0], gone[1], time + stay if stay > 0 else None))
-                else:
-                    row[index[name]] = state
-            values = row.tolist()
+            values = _removals(world, dynamic, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
         if rules.finished(values, alive, time):
             states = states[: step + 1]
             break
     return Recording(states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions))
+
+
+def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, to_end: bool = True) -> Recording:
+    """`run` to the outcome, recording only what the rules' verdict reads: the same steps, the
+    same hooks in the same order, so the same outcome, damage and destructions, bit for bit
+    (the engine's state does not depend on what is read from it). It keeps no states but the
+    last step's, no contacts and no separations; contacts are made into records only for
+    rules that hear them (`on_contact`), and states are read each step only for rules that
+    read them (`RunRules.reads_states`). Without `to_end` it stops once the rules say the
+    outcome is `settled` (the last states are then those of that step, not the run's end).
+    Whole traces stay for `run`."""
+    steps = int(round(seconds / dt))
+    damage, destructions = [], []
+    alive = set(dynamic)
+    lingering: dict[str, float] = {}
+    index = {name: i for i, name in enumerate(dynamic)}
+    hears = type(rules).on_contact is not RunRules.on_contact
+    removes = type(rules).removals_due is not RunRules.removals_due
+    reads = rules.reads_states
+    step_world, finished, check = world.step, rules.finished, budget.check
+    settled = None if to_end or type(rules).settled is RunRules.settled else rules.settled
+    end = steps * dt
+    row = np.full((len(dynamic), 6), np.nan)
+    values = None
+    world.listen(hears)
+    rules.on_start(world)
+    step = -1
+    for step in range(steps):
+        check()
+        step_world(dt)
+        time = (step + 1) * dt
+        if hears:
+            world.ended()  # (drained: only the rules read contacts here)
+            for event in world.begun():
+                record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
+                rules.on_contact(world, record, damage, time)
+        if lingering:
+            for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
+                world.remove(name)
+                del lingering[name]
+        if reads:
+            world.states(dynamic, out=row)
+            for name in lingering:
+                row[index[name]] = np.nan
+            values = row.tolist()
+        if removes and rules.removals_due(values, alive, time):
+            if not reads:
+                world.states(dynamic, out=row)
+            values = _removals(world, dynamic, rules, row, time, alive, damage, destructions, lingering)
+        if finished(values, alive, time) or (settled is not None and settled(time, end)):
+            break
+    world.states(dynamic, out=row)
+    for name in lingering:
+        row[index[name]] = np.nan
+    return Recording(row[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+
+
+def _removals(world, dynamic, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict, recording=None) -> list:
+    """The bodies the rules say leave now taken out (or left to linger), in `dynamic` order: the
+    order of removals must not depend on string hashing, and a removal (a blast) changes the
+    state of what is read after it. `row` is rewritten (NaN for the bodies gone); the new
+    values. `recording`: (the bodies no longer recorded, the contacts to end for the record),
+    which a lingering body joins."""
+    row[:] = np.nan
+    index = {name: i for i, name in enumerate(dynamic)}
+    for name in [n for n in dynamic if n in alive]:
+        state = world.state(name)
+        gone = rules.gone(name, state, time, damage)
+        if gone:
+            rules.on_removed(world, name, gone[0], alive, damage, time)
+            alive.discard(name)
+            touched = sorted(world.touching(name))
+            stay = rules.lingers(world, name, gone[0])
+            if stay > 0:  # its contacts end for the record now, and begin no more
+                if recording is not None:
+                    recording[1].extend((name, other) for other in touched)
+                    recording[0].add(name)
+                lingering[name] = time + stay
+            else:
+                world.remove(name)
+            destructions.append(DestructionRecord(time, name, gone[0], gone[1], time + stay if stay > 0 else None))
+        else:
+            row[index[name]] = state
+    return row.tolist()
 
 
 def _continued(world, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]) -> int:

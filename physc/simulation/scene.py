@@ -17,8 +17,8 @@ import attrs
 from physc.backends import Backend, BodySpec
 from physc.backends.settings import EngineSettings
 from physc.simulation.recognise import Recogniser, violations
-from physc.simulation.run import RunRules, run
-from physc.simulation.trace import Trace
+from physc.simulation.run import RunRules, play_out, run
+from physc.simulation.trace import Playout, Trace
 
 
 @attrs.frozen
@@ -42,6 +42,28 @@ class Scene:
         return tuple(b.name for b in self.bodies if not b.static)
 
 
+def built(scene: Scene, backend: Backend):
+    """`scene` as a world of `backend`, the action's velocities given."""
+    world = backend.create_world(scene.gravity, scene.engine)
+    for body in scene.bodies:
+        world.add(body)
+    for name, velocity in scene.velocities.items():
+        world.set_velocity(name, *velocity)
+    return world
+
+
+def outcome(scene: Scene, backend: Backend, rules: RunRules, seconds: float, to_end: bool = True) -> Playout:
+    """`scene` played to its outcome under `rules` (physc.simulation.run.play_out): what
+    `play` would say of the goal, the damage and the destructions, and where the bodies end
+    (without `to_end`: where they are once the outcome is settled)."""
+    dynamic = scene.dynamic
+    recorded = play_out(built(scene, backend), dynamic, rules, seconds, scene.dt, to_end)
+    return Playout(
+        scene.dt, dynamic, recorded.states[-1], recorded.steps, recorded.damage, recorded.destructions, scene.goal,
+        rules.solved(recorded), rules.goal_met(recorded),
+    )
+
+
 def play(
     scene: Scene, backend: Backend, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
     resume=None,
@@ -50,13 +72,8 @@ def play(
     snapshot `resume`, if given); with `recognise`, the interactions recognised and the
     restrictions (`redirects`: the declared bounces, see physc.simulation.recognise.violations)
     checked."""
-    world = backend.create_world(scene.gravity, scene.engine)
-    for body in scene.bodies:
-        world.add(body)
-    for name, velocity in scene.velocities.items():
-        world.set_velocity(name, *velocity)
     dynamic = scene.dynamic
-    recorded = run(world, dynamic, rules, seconds, scene.dt, resume)
+    recorded = run(built(scene, backend), dynamic, rules, seconds, scene.dt, resume)
     trace = Trace(
         scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
         recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded), goal_met=rules.goal_met(recorded),

@@ -159,3 +159,34 @@ class Trace:
     def sequence(self) -> str:
         """The recognised interactions in `.phys` syntax: `hit(bird, pig, left) > destroy(bird, pig)`."""
         return " > ".join(i.text() for i in self.interactions)
+
+
+@attrs.frozen
+class Playout:
+    """What an outcome playout tells of a run (physc.simulation.run.play_out): whether the
+    domain's goal was met and when, how many steps the run lasted, the damage and
+    destructions, and the dynamic bodies' states (x y angle vx vy ω; NaN once gone) at its
+    end. The same as the full run's Trace in all of these, bit for bit; it has no states
+    over time, no contacts and no recognised interactions, which nobody reading an outcome
+    reads (a solved verdict, a reward, the level as the run leaves it)."""
+
+    dt: float
+    names: tuple[str, ...]
+    final: np.ndarray = attrs.field(eq=False, repr=False)
+    steps: int
+    damage: tuple[DamageRecord, ...] = ()
+    destructions: tuple[DestructionRecord, ...] = ()
+    goal: tuple[str, ...] = ()
+    solved: bool = False
+    goal_met: float | None = None
+
+    @property
+    def duration(self) -> float:
+        return self.steps * self.dt
+
+    @property
+    def destroyed(self) -> set[str]:
+        return {d.name for d in self.destructions}
+
+    def index(self, name: str) -> int:
+        return self.names.index(name)

@@ -52,7 +52,8 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # balls held in jars and objects dropped at the start; 1,330 with its world as one value,
     # issue 52; 1,700 with issue 54's furniture, PHYRE's own jars, ball goal and occlusion
     # test, and its acceptance per tier and template; 1,730 with its peg rows, PHYRE's 00012 and
-    # 00013); PHYRE's own formats, pools, simulation cache, folds
+    # 00013; 1,760 with issue 63's outcome playouts: rules that ask the world and settle early,
+    # balls judged in doubles away from the limit, the level's bodies made once); PHYRE's own formats, pools, simulation cache, folds
     # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), and how
     # agents play them (playing.py: PHYRE's action, features and picture, issue 55), are
     # counted apart.
@@ -61,7 +62,7 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
         "playing.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
-    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1730, counted
+    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1760, counted
     assert sum(n for name, n in counted.items() if name in phyres_own) <= 1100, counted  # 1,000; 1,100 with playing.py
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.

@@ -27,6 +27,7 @@ The world is deterministic: same bodies, same steps, same result.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 
@@ -44,6 +45,8 @@ _velocity = Box2D._Box2D.b2Body___GetLinearVelocity
 _angle = Box2D._Box2D.b2Body___GetAngle
 _spin = Box2D._Box2D.b2Body___GetAngularVelocity
 _awake = Box2D._Box2D.b2Body___IsAwake
+_x = Box2D._Box2D.b2Vec2_x_get
+_y = Box2D._Box2D.b2Vec2_y_get
 
 # Each setting, the Box2D constant it must equal (pybox2d exposes them), and how it is honoured.
 COMPILED = {
@@ -108,23 +111,18 @@ class Box2DWorld(ContactLog):
         self._read_bodies: list = []  # and the version they were looked up at
         self._read_version = -1
         self._table = np.empty((0, 6))
+        self._moving_for: Sequence[str] | None = None  # the same for `moving`: the names asked,
+        self._moving_bodies: list = []  # their bodies in the world,
+        self._moving_version = -1  # and the version they were looked up at
 
     # ---- building --------------------------------------------------------------
     def add(self, spec: BodySpec) -> None:
         if spec.name in self.bodies:
             raise BackendError(f"a body named '{spec.name}' is already in the world")
-        kind = Box2D.b2_staticBody if spec.static else Box2D.b2_dynamicBody
-        body = self.world.CreateBody(
-            type=kind, position=(spec.x, spec.y), angle=spec.angle, angularDamping=spec.angular_damping,
-            gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
-        )
-        shapes = [(shape, collider) for part, collider in zip(parts(spec.shape), colliders(spec.shape)) for shape in _box2d_shapes(part)]
-        area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
-        density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
-        for shape, collider in shapes:
-            body.CreateFixture(
-                shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider,
-            )
+        body_def, fixtures = _definitions(spec)
+        body = self.world.CreateBody(body_def)
+        for fixture in fixtures:
+            body.CreateFixture(fixture)
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self._version += 1
@@ -148,8 +146,20 @@ class Box2DWorld(ContactLog):
 
     def state(self, name: str):
         body = self.bodies[name]
-        (x, y), (vx, vy) = body.position, body.linearVelocity
-        return (x, y, body.angle, vx, vy, body.angularVelocity)
+        p, v = _position(body), _velocity(body)
+        return (_x(p), _y(p), _angle(body), _x(v), _y(v), _spin(body))
+
+    def moving(self, names: Sequence[str], speed: float) -> bool:
+        """Read from the awake bodies alone: Box2D zeroes a body's velocity as it falls asleep."""
+        if self._moving_for is not names or self._moving_version != self._version:
+            self._moving_for, self._moving_version = names, self._version  # the bodies of `names`, looked up again after an add or a remove
+            self._moving_bodies = [self.bodies[name] for name in names if name in self.bodies]
+        for body in self._moving_bodies:
+            if _awake(body):
+                v = _velocity(body)
+                if abs(_x(v)) + abs(_y(v)) + abs(_spin(body)) > speed:
+                    return True
+        return False
 
     def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
         if self._read_for is not names or self._read_version != self._version:
@@ -169,7 +179,7 @@ class Box2DWorld(ContactLog):
             else:
                 asleep.add(name)
             p, v = _position(body), _velocity(body)
-            table[row] = (p.x, p.y, _angle(body), v.x, v.y, _spin(body))
+            table[row] = (_x(p), _y(p), _angle(body), _x(v), _y(v), _spin(body))
         if out is None:
             return table.copy()
         out[:] = table
@@ -223,6 +233,37 @@ class Box2DWorld(ContactLog):
         self._part_ended(fixture_a.body.userData, fixture_a.userData, fixture_b.body.userData, fixture_b.userData)
 
 
+@functools.lru_cache(maxsize=4096)
+def _definitions(spec: BodySpec) -> tuple:
+    """Box2D's definitions of a body and of its fixtures, made once per body (a search plays
+    the same level's bodies thousands of times, with only the action's body new each time);
+    Box2D copies a definition, and clones its shape, into each world it builds."""
+    kind = Box2D.b2_staticBody if spec.static else Box2D.b2_dynamicBody
+    body = Box2D.b2BodyDef(
+        type=kind, position=(spec.x, spec.y), angle=spec.angle, angularDamping=spec.angular_damping,
+        gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
+    )
+    shapes = [(shape, collider) for part, collider in zip(parts(spec.shape), colliders(spec.shape)) for shape in _box2d_shapes(part)]
+    area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
+    density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
+    fixtures = tuple(
+        Box2D.b2FixtureDef(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider)
+        for shape, collider in shapes
+    )
+    return body, _Fixtures(fixtures, tuple(shape for shape, _ in shapes))
+
+
+class _Fixtures(tuple):
+    """A body's fixture definitions, holding their shapes (a definition points at its shape
+    without keeping it alive)."""
+
+    def __new__(cls, fixtures: tuple, shapes: tuple):
+        made = super().__new__(cls, fixtures)
+        made.shapes = shapes
+        return made
+
+
+@functools.lru_cache(maxsize=4096)
 def _box2d_shapes(part) -> list:
     if isinstance(part, Circle):
         return [Box2D.b2CircleShape(radius=part.radius)]

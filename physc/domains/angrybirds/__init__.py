@@ -108,6 +108,14 @@ class AngryBirds(SimulatedDomain):
             return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0, resume=resume)
         return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3, resume=resume)
 
+    def playout(self, level, action, seconds=None, whole: bool = False, to_end: bool = True):
+        """The shot's outcome alone (physc.simulation.run.play_out), as `play` with `recognise`
+        False (or `whole`) would run it (the game's rules settle nothing before they finish, so
+        `to_end` changes nothing)."""
+        game = self.game(level)
+        settle = {} if whole else {"settle_after_solved": 0.0}
+        return game.simulate(action, seconds or self.seconds, record=False, **settle)
+
     def actions(self, level, scenario) -> list:
         """The paper's candidate shots: at the points of interest of the first hit's target."""
         first = scenario.interactions[0]

@@ -27,8 +27,8 @@ from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import ScienceBirdsWorld
 from physc.simulation.recognise import violations
-from physc.simulation.run import RunRules, run
-from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, Trace
+from physc.simulation.run import RunRules, play_out, run
+from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, Playout, Trace
 
 BIRD = "bird"
 GROUND = "ground"
@@ -140,7 +140,8 @@ class Game(RunRules):
         invulnerable: float | None = None,
         settle_after_solved: float | None = None,
         resume=None,
-    ) -> Trace:
+        record: bool = True,
+    ) -> Trace | Playout:
         """Run the level for `seconds`, with a shot at t = 0 or none.
 
         Damage counts from the shot on (the player shoots after the level's first
@@ -167,6 +168,11 @@ class Game(RunRules):
         self._bird_check_at = rules.bird_lifetime  # the next time the bird may be removed (ABBird.cs)
         self._bird_struck = False  # whether the bird has collided yet
         dt = self.world.engine.dt
+        if not record:
+            if resume is not None:
+                raise ValueError("an outcome playout starts from the beginning (no snapshot)")
+            recorded = play_out(world, dynamic, self, seconds, dt)
+            return Playout(dt, tuple(dynamic), recorded.states[-1], recorded.steps, recorded.damage, recorded.destructions, self._pigs, self._solved(recorded))
         recorded = run(world, dynamic, self, seconds, dt, resume)
         return Trace(
             dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,

@@ -10,6 +10,7 @@ generic search, robustness replays, stability and evaluation do the rest.
 
 from __future__ import annotations
 
+import functools
 import random
 
 import attrs
@@ -111,14 +112,8 @@ class Phyre(SimulatedDomain):
         return level_from_layout(layout, scenario)
 
     def scene(self, level: PhyreLevel, action: BallAction | TwoBallAction | None) -> Scene:
-        specs = world.walls(level.floor)
-        kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
-        radii = {}
-        for body in level.bodies:
-            specs.append(world.body_spec(body.name, world.outline(body.shape, body.size), body.x, body.y, body.angle, body.dynamic))
-            kinds[body.name] = "object" if body.dynamic else "surface"
-            if body.shape == "ball":
-                radii[body.name] = body.size / world.PIXELS_PER_METRE
+        specs, kinds, radii = _level_scene(level)
+        specs, kinds, radii = list(specs), dict(kinds), dict(radii)
         balls = action.balls if action is not None else ()
         if len(balls) > len(level.players):  # (fewer: the ball tier's actions on a two-ball task, as PHYRE judges it)
             raise ValueError(f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}")
@@ -203,6 +198,21 @@ class Phyre(SimulatedDomain):
         trace = self.play(task.level, task.solution, recognise=False)
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return picture(task.level, title, task.solution, trace.paths(threshold=0.5), fmt)
+
+
+@functools.lru_cache(maxsize=64)
+def _level_scene(level: PhyreLevel) -> tuple[tuple, dict, dict]:
+    """(bodies, kinds, rolling radii) of the level without the agent's balls: the same for
+    every action played on it (acceptance plays thousands)."""
+    specs = world.walls(level.floor)
+    kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
+    radii = {}
+    for body in level.bodies:
+        specs.append(world.body_spec(body.name, world.outline(body.shape, body.size), body.x, body.y, body.angle, body.dynamic))
+        kinds[body.name] = "object" if body.dynamic else "surface"
+        if body.shape == "ball":
+            radii[body.name] = body.size / world.PIXELS_PER_METRE
+    return tuple(specs), kinds, radii
 
 
 DOMAIN = Phyre()

@@ -67,7 +67,7 @@ def status(domain, level, action: np.ndarray) -> int:
     placed = from_unit(action)
     if placed is None or not all(placeable(level, ball) for ball in placed.balls):
         return INVALID
-    return SOLVED if domain.play(level, placed, recognise=False).solved else NOT_SOLVED
+    return SOLVED if domain.playout(level, placed, to_end=False).solved else NOT_SOLVED
 
 
 @functools.lru_cache(maxsize=8)
