@@ -41,7 +41,6 @@ import random
 from collections.abc import Iterable
 
 from physc.domains.base import Domain, MissingCapability, _no_default
-from physc.simulation.margins import MarginReader, Margins
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 from physc.simulation.scene import Scene, outcome, play
@@ -73,11 +72,15 @@ class SimulatedDomain(Domain):
         """The recognition of interactions in the domain's world (thresholds in its units, its kinds)."""
         return self.world.recogniser
 
-    margin_reader = MarginReader
-    """How the domain reads each link's margin from a trace (physc.simulation.margins): the
-    generic reader, which a domain whose physics says more about a link extends."""
+    @property
+    def margin_reader(self):
+        """How the domain reads each link's margin from a trace (physc.simulation.margins): the
+        generic reader, which a domain whose physics says more about a link extends."""
+        from physc.simulation.margins import MarginReader
 
-    def margins(self, scenario, trace: Trace, through: int | None = None) -> Margins:
+        return MarginReader
+
+    def margins(self, scenario, trace: Trace, through: int | None = None):
         """How far each declared link and restriction of `scenario` was from failing in `trace`
         (with `through`: of the first `through` links, and the restrictions until the last of them)."""
         return self.margin_reader(self.recogniser).read(scenario, trace, through)

@@ -13,10 +13,7 @@ import random
 
 import attrs
 
-from physc.compiler.dimension_graphs import LayoutParameters
-from physc.compiler.layout_rules import LayoutRules
 from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
-from physc.domains.angrybirds.concretize import concretize
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
@@ -35,7 +32,13 @@ class AngryBirds(SimulatedDomain):
     vocabulary = VOCABULARY
     worlds = WORLDS
     default_world = PHYQ.name
-    layout_rules = LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform")
+    @property
+    def layout_rules(self):
+        """The layout graph's rules in Science Birds (the compiler loads when a scenario is compiled)."""
+        from physc.compiler.layout_rules import LayoutRules
+
+        return LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform")
+
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     level_classes = (Level, Camera, LevelObject)
     level_suffix = "xml"  # Science Birds level files
@@ -53,8 +56,10 @@ class AngryBirds(SimulatedDomain):
         return PLAYING
 
     @property
-    def layout_parameters(self) -> LayoutParameters:
+    def layout_parameters(self):
         """The QSRs' distances, and the world's placement area."""
+        from physc.compiler.dimension_graphs import LayoutParameters
+
         area = self.world.frame.placement
         return LayoutParameters(clearance=0.1, far=1.5, left=area.left, right=area.right, bottom=area.bottom, top=area.top)
 
@@ -63,6 +68,8 @@ class AngryBirds(SimulatedDomain):
     blocker_thickness = PLATFORM_THICKNESS
 
     def concretize(self, graph, scenario, rng):
+        from physc.domains.angrybirds.concretize import concretize
+
         return concretize(graph, scenario, rng, self.world)
 
     @staticmethod
