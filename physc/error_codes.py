@@ -56,6 +56,7 @@ _CODES = [
     ErrorCode("E0303", "error", "a concrete object that the declared term does not allow"),
     ErrorCode("E0304", "error", "an object declared twice"),
     ErrorCode("E0305", "error", "a direction word used as an object name"),
+    ErrorCode("E0306", "error", "a material that the declared object cannot be made of"),
     ErrorCode("W0301", "warning", "a declared object that no term uses"),
     ErrorCode("W0302", "warning", "more of the player's objects than compile places"),
     ErrorCode("E0401", "error", "the first interaction is not performed by the player's object"),

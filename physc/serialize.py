@@ -14,7 +14,8 @@ from physc.diagnostics import Span
 def to_data(value: Any) -> Any:
     """Plain data (dicts, lists, strings, numbers) for an IR value.
 
-    attrs instances become objects whose first key `node` names their class;
+    attrs instances become objects whose first key `node` names their class (a field marked
+    `omit_default` is left out while it holds its default);
     spans become "line:column-end_line:end_column" strings; frozensets are
     sorted, so the same value always dumps to the same bytes.
     """
@@ -23,8 +24,11 @@ def to_data(value: Any) -> Any:
     if attrs.has(type(value)):
         data = {"node": type(value).__name__}
         for field in attrs.fields(type(value)):
-            if field.metadata.get("dump", True):
-                data[field.name] = to_data(getattr(value, field.name))
+            if not field.metadata.get("dump", True):
+                continue
+            if field.metadata.get("omit_default") and getattr(value, field.name) == field.default:
+                continue  # a field a later version added: left out where unused, so earlier files dump the same
+            data[field.name] = to_data(getattr(value, field.name))
         extra = getattr(value, "__extra_dump__", None)
         if extra is not None:
             data.update(to_data(extra()))

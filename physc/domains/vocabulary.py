@@ -27,11 +27,13 @@ from physc.dsl.vocabularies import DIRECTION, INTERACTION, OBJECT, RESTRICTION
 
 @attrs.frozen
 class ConcreteObject:
-    """A game object that an object term may become (`circle`, `flatPlatform`)."""
+    """A game object that an object term may become (`circle`, `flatPlatform`), and the
+    materials it may be made of (none: a body with no material, a pig or a platform)."""
 
     name: str
     static: bool = False
     description: str = ""
+    materials: tuple[str, ...] = ()
 
 
 @attrs.frozen
@@ -45,6 +47,15 @@ class ObjectTerm:
     # Other object terms whose parameters it fits too, without being one of their concretes
     # (angrybirds: the level's ground fits where a surface does, but a surface is never drawn as it).
     fits_as: tuple[str, ...] = ()
+    # Concrete objects a declaration may pin besides those it becomes when left open (language
+    # version 2: the game's other bodies): a version-1 scenario, which pins none of them, is
+    # laid out from `concrete` alone, as before.
+    pinnable: tuple[str, ...] = ()
+
+    @property
+    def allowed(self) -> tuple[str, ...]:
+        """Every concrete object a declaration of this term may pin."""
+        return self.concrete + self.pinnable
 
     @property
     def spellings(self) -> tuple[str, ...]:
@@ -154,12 +165,19 @@ class Vocabulary:
     def spellings(self) -> tuple[str, ...]:
         return tuple(self._by_spelling)
 
+    def materials(self, concrete: tuple[str, ...]) -> tuple[str, ...]:
+        """The materials every one of `concrete` may be made of, in the vocabulary's order."""
+        found = [set(self._concrete[c].materials) for c in concrete if c in self._concrete]
+        common = set.intersection(*found) if found else set()
+        order = [m for c in self.concrete_objects for m in c.materials]
+        return tuple(dict.fromkeys(m for m in order if m in common))
+
     def is_static(self, concrete: tuple[str, ...]) -> bool:
         return all(self._concrete[c].static for c in concrete)
 
     def fits(self, concrete: tuple[str, ...], term_name: str) -> bool:
         term = self._by_spelling[term_name]
-        allowed = term.concrete + tuple(c for t in self.object_terms if term.name in t.fits_as for c in t.concrete)
+        allowed = term.allowed + tuple(c for t in self.object_terms if term.name in t.fits_as for c in t.concrete)
         return all(c in allowed for c in concrete)
 
 

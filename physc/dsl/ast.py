@@ -53,12 +53,14 @@ class Term:
 
 @attrs.frozen
 class Declaration:
-    """`rBlock: rollableBlock = circle | circleSmall` in an `objects` section."""
+    """`rBlock: rollableBlock = circle | circleSmall` in an `objects` section; in version 2
+    also the materials it may be made of, `fBlock: fallableBlock(stone | ice) = rectFat`."""
 
     name: Name
     term: Name
     concrete: tuple[Name, ...] = ()
     span: Span | None = _span
+    materials: tuple[Name, ...] = attrs.field(default=(), metadata={"omit_default": True})
 
 
 @attrs.frozen

@@ -270,7 +270,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             title=self.scenario.title.value if self.scenario.title else None,
             domain=self.domain,
             objects=tuple(
-                ObjectIR(o.name, o.term, o.concrete, o.static, o.declared, o.span)
+                ObjectIR(o.name, o.term, o.concrete, o.static, o.declared, o.span, o.materials)
                 for o in self.objects.values()
                 if o.used
             ),

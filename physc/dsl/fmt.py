@@ -36,6 +36,8 @@ def format_term(term: ast.Term) -> str:
 
 def format_declaration(declaration: ast.Declaration) -> str:
     text = f"{declaration.name.text}: {declaration.term.text}"
+    if declaration.materials:
+        text += "(" + " | ".join(name.text for name in declaration.materials) + ")"
     if declaration.concrete:
         text += " = " + " | ".join(name.text for name in declaration.concrete)
     return text

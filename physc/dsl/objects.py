@@ -33,6 +33,7 @@ class KnownObject:
     span: Span
     used: bool = False
     declaration: Span | None = None  # the whole declaration, for a quick fix that rewrites it
+    materials: tuple[str, ...] = ()  # the materials declared (version 2; none: any it may be made of)
 
 
 @attrs.frozen
@@ -80,28 +81,55 @@ class ObjectChecks:
         concrete = term.concrete
         if declaration.concrete:
             chosen = []
+            allowed = term.allowed
             for item in declaration.concrete:
-                if item.text in term.concrete:
+                if item.text in allowed:
                     chosen.append(item.text)
                     continue
                 known = vocabulary.concrete(item.text) is not None
-                asked, fixes = suggestion(item, term.concrete) if not known else (None, replacements(item, term.concrete))
+                asked, fixes = suggestion(item, allowed) if not known else (None, replacements(item, allowed))
                 self.error(
                     "E0303",
                     f"'{term.name}' cannot be '{item.text}'"
                     if known
                     else f"unknown concrete object '{item.text}'",
                     item.span,
-                    help=asked or f"'{term.name}' may be: {' | '.join(term.concrete)}",
+                    help=asked or f"'{term.name}' may be: {' | '.join(allowed)}",
                     fixes=fixes,
                 )
             if len(chosen) < len(declaration.concrete):
                 return
-            concrete = tuple(c for c in term.concrete if c in chosen)
+            concrete = tuple(c for c in allowed if c in chosen)
+        materials = self.declared_materials(declaration, term, concrete)
+        if materials is None:
+            return
         self.objects[name.text] = KnownObject(
-            name.text, term.name, concrete, vocabulary.is_static(concrete), True, name.span, declaration=declaration.span
+            name.text, term.name, concrete, vocabulary.is_static(concrete), True, name.span, declaration=declaration.span, materials=materials
         )
         self.unknown.discard(name.text)
+
+    def declared_materials(self, declaration: ast.Declaration, term, concrete: tuple[str, ...]) -> tuple[str, ...] | None:
+        """The materials a declaration names (version 2), in the vocabulary's order; None after
+        E0306 for one that every concrete object it may become cannot be made of."""
+        if not declaration.materials:
+            return ()
+        possible = self.vocabulary.materials(concrete)
+        good = True
+        for item in declaration.materials:
+            if item.text in possible:
+                continue
+            good = False
+            if not possible:
+                self.error("E0306", f"'{declaration.name.text}' ({' | '.join(concrete)}) is made of no material", item.span,
+                           help="only blocks have a material: remove the parenthesis")
+                continue
+            asked, fixes = suggestion(item, possible)
+            self.error("E0306", f"'{declaration.name.text}' cannot be made of '{item.text}'", item.span,
+                       help=asked or f"its materials: {' | '.join(possible)}", fixes=fixes)
+        if not good:
+            return None
+        named = {m.text for m in declaration.materials}
+        return tuple(m for m in possible if m in named)
 
     def resolve_object(self, name: ast.Name) -> KnownObject | None:
         found = self.objects.get(name.text)

@@ -161,9 +161,17 @@ class _Builder(Transformer):
 
     # ---- sections ----------------------------------------------------------
     def declaration(self, children):
-        names = [self._name(t) for t in children if t.type == "NAME"]
-        end = children[-1] if children[-1].type != "COMMA" else children[-2]
-        return ast.Declaration(names[0], names[1], tuple(names[2:]), self._span(children[0], end))
+        materials, closing = next((c for c in children if isinstance(c, tuple)), ((), None))
+        tokens = [c for c in children if not isinstance(c, tuple)]
+        names = [self._name(t) for t in tokens if t.type == "NAME"]
+        end = tokens[-1] if tokens[-1].type != "COMMA" else tokens[-2]
+        if len(names) == 2 and closing is not None:
+            end = closing  # `name: term(materials)`: it ends at the closing parenthesis
+        return ast.Declaration(names[0], names[1], tuple(names[2:]), self._span(children[0], end), materials)
+
+    def materials(self, children):
+        """(the materials, the closing parenthesis) of a declaration (version 2)."""
+        return tuple(self._name(t) for t in children if t.type == "NAME"), children[-1]
 
     # A section is (kind, value, keyword span, closing span).
     def domain_section(self, children):

@@ -21,6 +21,9 @@ class ObjectIR:
     static: bool
     declared: bool  # declared in `objects { }` (else typed by its spelling)
     span: Span | None = attrs.field(eq=False, default=None)
+    # The materials it may be made of, as declared (language version 2); none: any its concrete
+    # objects may be made of. Left out of dumps while none, as version 1 has none.
+    materials: tuple[str, ...] = attrs.field(default=(), metadata={"omit_default": True})
 
 
 @attrs.frozen

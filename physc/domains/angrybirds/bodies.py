@@ -10,9 +10,11 @@ from physc.domains.angrybirds.catalogue import shape
 
 
 def bodies(placed, scenario) -> list:
-    """Every block or pig `placed`'s scenario object allows (concrete object × material), as
-    placed objects of its name and place."""
-    allowed = next((o.concrete for o in scenario.objects if o.name == placed.name), ())
+    """Every block or pig `placed`'s scenario object allows (concrete object × material: the
+    materials it names, if it names any), as placed objects of its name and place."""
+    found = next((o for o in scenario.objects if o.name == placed.name), None)
+    allowed = found.concrete if found is not None else ()
+    named = getattr(found, "materials", ())
     out = []
     for concrete in allowed:
         catalogue = shape(concrete)
@@ -20,7 +22,7 @@ def bodies(placed, scenario) -> list:
             out.append(attrs.evolve(placed, concrete=concrete, material=None, width=catalogue.width, height=catalogue.height))
         if catalogue.kind != "block":
             continue
-        for material in catalogue.materials:
+        for material in [m for m in catalogue.materials if not named or m in named]:
             out.append(attrs.evolve(placed, concrete=concrete, material=material, width=catalogue.width, height=catalogue.height))
     return out
 

@@ -46,6 +46,7 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
         if edge.term == ON_LOCATION:
             carried.setdefault(edge.b, []).append(edge.a)
     concrete = choose_concrete(scenario, graph, rng)
+    declared = {o.name: o.materials for o in scenario.objects if o.materials}  # version 2: the materials a scenario names
     bodies = {}
     # Objects first: a platform's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: shape(concrete[n.name]).kind == "platform"):
@@ -57,7 +58,7 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
             continue
         catalogue = shape(chosen)
         if catalogue.kind != "platform":
-            material = rng.choice(catalogue.materials) if catalogue.materials else None
+            material = rng.choice(declared.get(name) or catalogue.materials) if catalogue.materials else None
             fixed = world.launch.bird_rest if catalogue.kind == "bird" else None
             bodies[name] = Body(name, node.role, chosen, Geometry(catalogue.width, catalogue.height), material, fixed)
             continue
@@ -79,6 +80,10 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
         high = max(high, low + 1.0)
         bodies[name] = Body(name, node.role, chosen, Geometry(_length(rng, (low, high)), PLATFORM_THICKNESS))
     materials = {name: body.material for name, body in bodies.items()}
+    drawn = dict(materials)
     light_chain_materials(scenario, materials)
+    for name, allowed in declared.items():  # a preference never overrides what the scenario says
+        if name in materials and materials[name] not in allowed:
+            materials[name] = drawn[name]
     bodies = {name: attrs.evolve(body, material=materials[name]) for name, body in bodies.items()}
     return {node.name: bodies[node.name] for node in graph.nodes}

@@ -13,30 +13,45 @@ from physc.domains.vocabulary import (
     paper_terms,
 )
 
+MATERIALS = ("wood", "stone", "ice")  # a block's (catalogue.MATERIALS)
+
 CONCRETE_OBJECTS = (
     ConcreteObject("redBird", description="the red bird (Science Birds BirdRed)"),
     ConcreteObject("pigSmall", description="a small pig (BasicSmall)"),
     ConcreteObject("pigMedium", description="a medium pig (BasicMedium)"),
-    ConcreteObject("circleSmall", description="a small circular block (CircleSmall)"),
-    ConcreteObject("circle", description="a circular block (Circle)"),
-    ConcreteObject("squareHole", description="a square block with a hole (SquareHole)"),
-    ConcreteObject("triangleHole", description="a triangular block with a hole (TriangleHole)"),
+    ConcreteObject("circleSmall", description="a small circular block (CircleSmall)", materials=MATERIALS),
+    ConcreteObject("circle", description="a circular block (Circle)", materials=MATERIALS),
+    ConcreteObject("squareHole", description="a square block with a hole (SquareHole)", materials=MATERIALS),
+    ConcreteObject("triangleHole", description="a triangular block with a hole (TriangleHole)", materials=MATERIALS),
+    # Version 2: the game's other bodies, which a declaration may pin (`fBlock: fallableBlock = rectFat`).
+    ConcreteObject("pigBig", description="a big pig (BasicBig)"),
+    ConcreteObject("rectFat", description="a fat rectangle, 0.76 × 0.38 (RectFat)", materials=MATERIALS),
+    ConcreteObject("rectBig", description="a long thin rectangle, 1.89 × 0.18 (RectBig)", materials=MATERIALS),
+    ConcreteObject("rectMedium", description="a thin rectangle, 1.55 × 0.18 (RectMedium)", materials=MATERIALS),
+    ConcreteObject("rectSmall", description="a short thin rectangle, 0.76 × 0.18 (RectSmall)", materials=MATERIALS),
+    ConcreteObject("rectTiny", description="a tiny rectangle, 0.38 × 0.18 (RectTiny)", materials=MATERIALS),
+    ConcreteObject("squareSmall", description="a small square, 0.38 (SquareSmall)", materials=MATERIALS),
+    ConcreteObject("squareTiny", description="a tiny square, 0.18 (SquareTiny)", materials=MATERIALS),
+    ConcreteObject("triangle", description="a right triangle, 0.75 (Triangle)", materials=MATERIALS),
     ConcreteObject("flatPlatform", static=True, description="a horizontal platform (Platform)"),
     ConcreteObject("inclinedPlatform", static=True, description="a rotated platform (Platform)"),
     ConcreteObject("ground", static=True, description="the level's ground, under everything (every level has it; it is not written)"),
 )
 
+SQUARED = ("rectFat", "rectBig", "rectMedium", "rectSmall", "rectTiny", "squareSmall", "squareTiny")  # flat-bottomed: they fall and slide
+
 OBJECT_TERMS = (
     ObjectTerm("bird", ("redBird",), noun="a bird"),
-    ObjectTerm("pig", ("pigSmall", "pigMedium"), noun="a pig"),
+    ObjectTerm("pig", ("pigSmall", "pigMedium"), noun="a pig", pinnable=("pigBig",)),
     ObjectTerm("rollableBlock", ("circleSmall", "circle"), "rBlock", noun="a rollable object"),
     ObjectTerm(
         "fallableBlock",
         ("circleSmall", "circle", "squareHole", "triangleHole"),
         "fBlock",
         noun="a fallable object",
+        pinnable=SQUARED + ("triangle",),
     ),
-    ObjectTerm("slidableBlock", ("squareHole", "triangleHole"), "sBlock", noun="a slidable object"),
+    ObjectTerm("slidableBlock", ("squareHole", "triangleHole"), "sBlock", noun="a slidable object", pinnable=SQUARED),
     ObjectTerm("horizontalSurface", ("flatPlatform",), "hSurface", noun="a horizontal surface"),
     ObjectTerm("inclinedSurface", ("inclinedPlatform",), "iSurface", noun="an inclined surface"),
     ObjectTerm("surface", ("flatPlatform", "inclinedPlatform"), noun="a surface"),
