@@ -22,7 +22,8 @@ terms = st.builds(
     ast.Term, name_nodes, st.lists(arguments, max_size=4).map(tuple)
 )
 declarations = st.builds(
-    ast.Declaration, name_nodes, name_nodes, st.lists(name_nodes, max_size=3).map(tuple)
+    ast.Declaration, name_nodes, name_nodes, st.lists(name_nodes, max_size=3).map(tuple),
+    materials=st.lists(name_nodes, max_size=2).map(tuple),  # version 2: `name: term(stone | ice)`
 )
 
 
@@ -99,6 +100,8 @@ def written(draw, file: ast.File) -> str:
             decls = []
             for d in s.objects:
                 text = f"{d.name.text}: {d.term.text}"
+                if d.materials:
+                    text += "(" + " | ".join(m.text for m in d.materials) + ")"
                 if d.concrete:
                     text += " = " + " | ".join(c.text for c in d.concrete)
                 decls.append(text + draw(st.sampled_from(["", ","])))

@@ -28,6 +28,7 @@ def test_textmate_term_lists_equal_the_vocabulary():
     assert word_list("object-terms") == [s for t in VOCABULARY.object_terms for s in t.spellings]
     assert word_list("concrete-objects") == [c.name for c in VOCABULARY.concrete_objects]
     assert word_list("directions") == list(VOCABULARY.directions)
+    assert word_list("materials") == list(dict.fromkeys(m for c in VOCABULARY.concrete_objects for m in c.materials))
 
 
 def test_textmate_keywords_are_the_language_keywords():

@@ -1,0 +1,65 @@
+"""Language version 2, a body's shape and material: the game's other bodies pinned by a
+declaration, and the materials it may be made of; version-1 scenarios keep their meaning."""
+
+from __future__ import annotations
+
+import random
+
+from physc.domains.angrybirds import DOMAIN
+from physc.domains.words import INSTALLED
+from physc.dsl.fmt import format_file
+from physc.dsl.frontend import analyze_text, scenario_in
+from physc.dsl.parser import parse_text
+from physc.serialize import dumps
+
+V2 = """scenario RectFall {
+    objects {
+        fBlock: fallableBlock(stone | ice) = rectFat
+        pig: pig = pigBig
+    }
+    interactions {
+        hit(bird, fBlock, left) > fall(fBlock, pig) > hit(fBlock, pig, above) > destroy(fBlock, pig)
+    }
+}
+"""
+
+
+def codes(text: str) -> list[str]:
+    return [d.code for d in analyze_text("x.phys", text, INSTALLED).diagnostics]
+
+
+def test_a_declaration_pins_another_body_of_the_game_and_names_its_materials():
+    scenario = scenario_in("x.phys", V2, "RectFall", INSTALLED)
+    block = next(o for o in scenario.objects if o.name == "fBlock")
+    assert (block.concrete, block.materials) == (("rectFat",), ("stone", "ice"))
+    assert next(o for o in scenario.objects if o.name == "pig").concrete == ("pigBig",)
+    assert '"materials"' in dumps(scenario)
+
+
+def test_the_formatter_prints_the_materials_and_reads_them_back():
+    formatted = format_file(parse_text(V2).file, V2)
+    assert "fBlock: fallableBlock(stone | ice) = rectFat" in formatted
+    assert parse_text(formatted).file.scenarios[0].objects == parse_text(V2).file.scenarios[0].objects
+
+
+def test_a_material_the_body_cannot_be_made_of_is_e0306():
+    assert codes(V2.replace("(stone | ice)", "(glass)")) == ["E0306"]
+    assert codes(V2.replace("pig: pig = pigBig", "pig: pig(stone) = pigBig")) == ["E0306"]
+
+
+def test_a_body_left_open_never_becomes_one_only_a_declaration_may_pin():
+    text = V2.replace("fBlock: fallableBlock(stone | ice) = rectFat\n", "").replace("pig: pig = pigBig\n", "")
+    scenario = scenario_in("x.phys", text, "RectFall", INSTALLED)
+    assert next(o for o in scenario.objects if o.name == "fBlock").concrete == ("circleSmall", "circle", "squareHole", "triangleHole")
+    assert '"materials"' not in dumps(scenario)  # a version-1 scenario dumps as before
+    assert codes(V2.replace("= rectFat", "= circle").replace("fallableBlock", "rollableBlock")) == []
+    assert codes(V2.replace("fallableBlock(stone | ice) = rectFat", "rollableBlock = rectFat")) == ["E0303"]
+
+
+def test_the_declared_materials_are_the_ones_laid_out():
+    scenario = scenario_in("x.phys", V2, "RectFall", INSTALLED)
+    graph = DOMAIN.layout_rules.infer(scenario)
+    for seed in range(20):
+        bodies = DOMAIN.concretize(graph, scenario, random.Random(seed))
+        assert bodies["fBlock"].concrete == "rectFat" and bodies["fBlock"].material in ("stone", "ice")
+        assert bodies["pig"].concrete == "pigBig"
