@@ -170,7 +170,7 @@ class Pipeline:
                     raise Infeasible(
                         Place.name,
                         f"{consistent} consistent conjunctions were found, but no placement kept the objects "
-                        "apart and the bird's targets in reach",
+                        "apart and the player's first targets in reach",
                         tried=graphs.conjunctions_tried,
                         budget=Exhausted.PLACEMENTS,
                     )
@@ -179,7 +179,7 @@ class Pipeline:
                 raise Infeasible(
                     Place.name,
                     f"{consistent} conjunctions were consistent, but none could be placed "
-                    "(objects overlap, or the bird cannot reach its target)",
+                    "(objects overlap, or the player cannot reach its first target)",
                     tried=error.tried,
                 ) from None
             raise

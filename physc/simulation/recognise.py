@@ -56,8 +56,8 @@ ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4, 
 @attrs.frozen
 class Recogniser:
     """The recognition of one domain: its thresholds (in its units: lengths, seconds) and
-    which kinds of body are surfaces, background and thrown. Each domain makes its own
-    (Science Birds': physc.domains.angrybirds.game.RECOGNISER)."""
+    which kinds of body are surfaces, background and thrown. Each domain's world has its own
+    (`World.recogniser`; Science Birds': physc.domains.angrybirds.worlds)."""
 
     hit_speed: float  # a contact is a hit from this approach speed along its normal
     rehit: float  # chatter of one pair within this many seconds is one hit
