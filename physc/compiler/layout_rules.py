@@ -280,6 +280,17 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         if path_of(actor) and sideways and target in paths and paths[target][0] != path_of(actor)[-1]:
             paths[actor].append(paths[target][0])
 
+    # A blast's targets (version 2: destroy(a, b) after explode(a)) rest beside what explodes,
+    # on its support: within its reach.
+    exploded: set[str] = set()
+    for term in scenario.interactions:
+        if term.name == "explode":
+            exploded.add(term.objects[0])
+        elif term.name == "destroy" and term.objects[0] in exploded and term.objects[1] in dynamic and term.objects[1] not in support:
+            source, target = term.objects
+            if source in support:
+                b.edge(ON_LOCATION, target, support[source], ("left", "centre", "right"), Provenance("support", f"{target} lies within the blast of {source}: {term.text}", term.span))
+                support[target] = support[source]
     # Dynamic objects that nothing hits (they never move) still need a support.
     for name in dynamic:
         if name not in support:

@@ -92,6 +92,7 @@ class TermSignature:
     parameters: tuple[Parameter, ...]
     description: str = ""
     requires: str | None = None  # an earlier interaction with the same objects is required
+    enabled_by: str | None = None  # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
     narrows: str | None = None  # restriction: narrows the directions of this interaction
     forbids: str | None = None  # restriction: forbids this interaction of its first object
 

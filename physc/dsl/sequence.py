@@ -76,12 +76,14 @@ class SequenceChecks:
                         motion_help(vocabulary, obj, latest(movers, calm) or latest(movers, bool)),
                         resolved.node,
                     )
-            if complete and signature.requires and (signature.requires, resolved.objects) not in seen:
+            enabled = signature.enabled_by and (signature.enabled_by, resolved.objects[:1]) in seen
+            if complete and signature.requires and (signature.requires, resolved.objects) not in seen and not enabled:
                 pair = ", ".join(resolved.objects)
                 added = f"{signature.requires}({pair}, any)"
+                other = f" or '{signature.enabled_by}({resolved.objects[0]})'" if signature.enabled_by else ""
                 self.advise(
                     "E0403",
-                    f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'",
+                    f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'{other}",
                     resolved.node.span,
                     Advice(f"add `{added}` before it", before=added),
                     resolved.node,

@@ -26,6 +26,8 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
 * bounce(a, s, d): a moving object touches a surface s for less than bounce_time
   and leaves it; d is where its velocity points as it leaves.
 * destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
+* explode(a): a body of an explosive kind (Science Birds' TNT) is destroyed by damage: its
+  blast is the world's rules' (the blows it deals are destroy(a, …)).
 * touch(a, b): the trace's goal bodies a and b (`Trace.goal`) touch without a break for
   at least touch_time (PHYRE's goal: 3 s), recognised when the time is up; only in a
   domain that sets touch_time. Where the domain's rules time their goal (`Trace.goal_met`),
@@ -50,7 +52,7 @@ import numpy as np
 from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
 
 MAX_TILT = 60.0  # degrees from the vertical: a surface steeper than this is a wall
-ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "destroy": 4, "touch": 5}
+ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "explode": 4, "destroy": 5, "touch": 6}
 
 
 @attrs.frozen
@@ -74,6 +76,7 @@ class Recogniser:
     thrown: tuple[str, ...] = ()  # kinds whose flight is not a fall
     max_tilt: float = MAX_TILT
     touch_time: float | None = None  # seconds two goal bodies must touch for touch(a, b); None: never recognised
+    explosive: tuple[str, ...] = ()  # kinds whose destruction is explode(a)
 
     @property
     def upward(self) -> float:
@@ -92,6 +95,11 @@ class Recogniser:
             Interaction("destroy", (d.by, d.name), None, d.time)
             for d in trace.destructions
             if d.cause == "damage" and d.by is not None
+        ]
+        found += [
+            Interaction("explode", (d.name,), None, d.time)
+            for d in trace.destructions
+            if d.cause == "damage" and trace.kinds.get(d.name) in self.explosive
         ]
         found += self._touches(trace, intervals)
         ordered = sorted(found, key=lambda i: (round(i.time, 6), ORDER[i.name]))

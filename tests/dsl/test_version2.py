@@ -63,3 +63,40 @@ def test_the_declared_materials_are_the_ones_laid_out():
         bodies = DOMAIN.concretize(graph, scenario, random.Random(seed))
         assert bodies["fBlock"].concrete == "rectFat" and bodies["fBlock"].material in ("stone", "ice")
         assert bodies["pig"].concrete == "pigBig"
+
+
+BLAST = """scenario Blast {
+    interactions {
+        hit(bird, tnt, left) > explode(tnt) > destroy(tnt, pig)
+    }
+    restrictions {
+        cannotHit(bird, pig, any)
+    }
+}
+"""
+
+
+def test_a_tnt_box_explodes_and_its_blast_destroys_the_pig():
+    assert codes(BLAST) == []
+    without = BLAST.replace(" > explode(tnt)", "")
+    found = analyze_text("x.phys", without, INSTALLED).diagnostics
+    assert [d.code for d in found] == ["E0403"] and "or 'explode(tnt)'" in found[0].message
+
+
+def test_the_blast_s_target_is_laid_out_beside_the_tnt():
+    scenario = scenario_in("x.phys", BLAST, "Blast", INSTALLED)
+    graph = DOMAIN.layout_rules.infer(scenario)
+    supports = {e.a: e.b for e in graph.edges if e.term == "onLocation"}
+    assert supports["pig"] == supports["tnt"]
+
+
+def test_a_tnt_box_destroyed_by_a_blow_is_recognised_as_explode():
+    import numpy as np
+
+    from physc.domains.angrybirds.worlds import PHYQ
+    from physc.simulation.trace import DestructionRecord, Trace
+
+    destructions = (DestructionRecord(1.0, "tnt", "damage", "bird"), DestructionRecord(1.0, "pig", "damage", "tnt"))
+    trace = Trace(0.02, ("tnt", "pig"), {"tnt": "tnt", "pig": "pig"}, np.zeros((60, 2, 6)), destructions=destructions)
+    found = [i.text() for i in PHYQ.recogniser.recognise(trace, {})]
+    assert found == ["explode(tnt)", "destroy(bird, tnt)", "destroy(tnt, pig)"]

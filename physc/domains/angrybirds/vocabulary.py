@@ -33,6 +33,7 @@ CONCRETE_OBJECTS = (
     ConcreteObject("squareSmall", description="a small square, 0.38 (SquareSmall)", materials=MATERIALS),
     ConcreteObject("squareTiny", description="a tiny square, 0.18 (SquareTiny)", materials=MATERIALS),
     ConcreteObject("triangle", description="a right triangle, 0.75 (Triangle)", materials=MATERIALS),
+    ConcreteObject("tnt", description="a TNT box (TNT): any blow destroys it, and its blast damages and pushes what lies within 2.5 units"),
     ConcreteObject("flatPlatform", static=True, description="a horizontal platform (Platform)"),
     ConcreteObject("inclinedPlatform", static=True, description="a rotated platform (Platform)"),
     ConcreteObject("ground", static=True, description="the level's ground, under everything (every level has it; it is not written)"),
@@ -55,6 +56,7 @@ OBJECT_TERMS = (
     ObjectTerm("horizontalSurface", ("flatPlatform",), "hSurface", noun="a horizontal surface"),
     ObjectTerm("inclinedSurface", ("inclinedPlatform",), "iSurface", noun="an inclined surface"),
     ObjectTerm("surface", ("flatPlatform", "inclinedPlatform"), noun="a surface"),
+    ObjectTerm("tnt", ("tnt",), noun="a TNT box"),  # version 2
     # The level's own ground, as traces name it: a scenario may name it too (`bounce(bird, ground, right)`).
     ObjectTerm("ground", ("ground",), noun="the ground", fits_as=("horizontalSurface", "surface")),
 )
@@ -68,11 +70,18 @@ TERMS = (
     PAPER["slide"],
     PAPER["bounce"],
     TermSignature(
+        "explode",
+        INTERACTION,
+        (Parameter("a", OBJECT, fits="tnt", acts=True),),
+        "a TNT box a is destroyed by a blow, and its blast damages and pushes what lies near it (version 2)",
+    ),
+    TermSignature(
         "destroy",
         INTERACTION,
         (Parameter("a", OBJECT, dynamic=True, acts=True), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
-        "a destroys b in the collision",
+        "a destroys b in the collision (or, after explode(a), in a's blast)",
         requires="hit",
+        enabled_by="explode",
     ),
 ) + RESTRICTIONS
 

@@ -94,7 +94,7 @@ PHYQ = ScienceBirdsWorld(
     recogniser=Recogniser(
         hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.2,
         fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
-        surfaces=("platform", "ground"), background=("ground",), thrown=("bird",),
+        surfaces=("platform", "ground"), background=("ground",), thrown=("bird",), explosive=("tnt",),
     ),
     incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0), ramp=(12.7, 26.8), ramp_length=(5.4, 7.1)),
     sources={
