@@ -25,6 +25,7 @@ DOMAIN = "domain"
 DECLARATION = "declaration"  # the name of a new object
 OBJECT_TERM = "object-term"  # after `name:`
 CONCRETE = "concrete"  # after `name: term =` or `|`
+MATERIAL = "material"  # after `name: term(` or `|` inside it (language version 2)
 TERM = "term"  # an interaction or a restriction
 ARGUMENT = "argument"
 OTHER = "other"
@@ -146,6 +147,12 @@ class _Walk:
             place.section = None
             ended = self.depth == 0 and (self.form == "block" or self.paper_section >= 2)
             self.expect(TOP if ended else BODY if self.form == "block" and self.depth == 1 else OTHER)
+        elif kind == "LPAR" and place.section == "objects" and place.role == DECLARATION and place.object_term:
+            self.expect(MATERIAL, object_term=place.object_term)
+        elif kind in _ALTERNATIVE and place.role == MATERIAL:
+            self.expect(MATERIAL, object_term=place.object_term)
+        elif kind == "RPAR" and place.role == MATERIAL:
+            self.expect(DECLARATION, object_term=place.object_term)
         elif kind == "LPAR" and place.role == OTHER and place.term:
             self.expect(ARGUMENT, term=place.term)
         elif kind == "RPAR" and place.role == ARGUMENT:
@@ -191,6 +198,8 @@ class _Walk:
             self.expect(BODY)
         elif role == SCENARIO_NAME:
             self.expect(OTHER)
+        elif role == MATERIAL:
+            self.expect(MATERIAL, object_term=place.object_term)
         elif role == CONCRETE:
             if self.declaring:
                 place.narrowed.setdefault(self.declaring, []).append(token.text)

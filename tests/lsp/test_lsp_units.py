@@ -90,10 +90,20 @@ def test_completion_offers_what_fits_the_parameter():
     rolling = labels("scenario S { interactions { hit(bird, fBlock, left) > roll(§ } }")
     assert "rBlock" in rolling and "fBlock" not in rolling  # roll's object is rollable
     assert labels("scenario S { restrictions { § } }") == ["cannotHit", "cannotFall"]
-    assert labels("scenario S { objects { p: pig = § } }") == ["pigSmall", "pigMedium"]
+    assert labels("scenario S { objects { p: pig = § } }") == ["pigSmall", "pigMedium", "pigBig"]  # pigBig: pinned only (version 2)
     assert labels("scenario S { domain nowhere\n interactions { hit(§ } }") == []  # unknown domain: nothing
     assert labels("scenario S { interactions { nothing(§ } }") == []
     assert labels("scenario S { interactions { hit(a, b, c, d, § } }") == []
+
+
+def test_completion_of_version_2_declarations():
+    assert labels("scenario S { objects { f: fallableBlock(§ } }") == ["wood", "stone", "ice"]
+    assert labels("scenario S { objects { f: fallableBlock(stone | § } }") == ["wood", "stone", "ice"]
+    pinned = labels("scenario S { objects { f: fallableBlock(stone) = § } }")
+    assert "rectFat" in pinned and "circle" in pinned and "pigBig" not in pinned
+    exploding = labels("scenario S { interactions { hit(bird, tnt, left) > explode(§ } }")
+    assert "tnt" in exploding and "pig" not in exploding  # explode's object is a TNT box
+    assert "explode" in labels("scenario S { interactions { § } }")
 
 
 def test_completion_in_the_phyre_domain():
