@@ -37,7 +37,8 @@ def _describe_domain(domain) -> str:
     lines = [f"{domain.name}: {domain.description}", "  object terms:"]
     for term in vocabulary.object_terms:
         label = term.name + (f" ({term.abbreviation})" if term.abbreviation else "")
-        lines.append(f"    {label:<34} {' | '.join(term.concrete)}")
+        pinned = f"  (pinned only: {' | '.join(term.pinnable)})" if term.pinnable else ""
+        lines.append(f"    {label:<34} {' | '.join(term.concrete)}{pinned}")
     for kind in ("interaction", "restriction"):
         lines.append(f"  {kind} terms:")
         for term in vocabulary.terms:
@@ -45,6 +46,9 @@ def _describe_domain(domain) -> str:
                 lines.append(f"    {term.usage():<58} {term.description}")
     statics = [c.name for c in vocabulary.concrete_objects if c.static]
     lines.append(f"  static objects: {', '.join(statics)}")
+    materials = list(dict.fromkeys(m for c in vocabulary.concrete_objects for m in c.materials))
+    if materials:
+        lines.append(f"  materials: {', '.join(materials)} (a declaration may name them: `name: term({' | '.join(materials[:2])})`)")
     aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
     lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))
     rule = f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""
