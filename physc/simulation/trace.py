@@ -102,8 +102,26 @@ class Violation:
         return f"{self.restriction} violated at t = {self.interaction.time:.2f} s by {self.interaction.text()}"
 
 
+class Run:
+    """What a whole trace and an outcome playout both tell of a run: how long it lasted, what
+    was destroyed, where a body's column is (each has `steps`, `dt`, `names`, `destructions`)."""
+
+    __slots__ = ()
+
+    @property
+    def duration(self) -> float:
+        return self.steps * self.dt
+
+    @property
+    def destroyed(self) -> set[str]:
+        return {d.name for d in self.destructions}
+
+    def index(self, name: str) -> int:
+        return self.names.index(name)
+
+
 @attrs.frozen
-class Trace:
+class Trace(Run):
     dt: float
     names: tuple[str, ...]  # the dynamic bodies, in the order of the state arrays
     kinds: dict = attrs.field(eq=False)  # name → kind (bird, pig, block, platform, tnt)
@@ -134,16 +152,6 @@ class Trace:
     def steps(self) -> int:
         return self.states.shape[0]
 
-    @property
-    def duration(self) -> float:
-        return self.steps * self.dt
-
-    @property
-    def destroyed(self) -> set[str]:
-        return {d.name for d in self.destructions}
-
-    def index(self, name: str) -> int:
-        return self.names.index(name)
 
     def paths(self, threshold: float = 0.1, every: float = 0.1) -> dict[str, list[tuple[float, float]]]:
         """Sampled paths (every `every` seconds) of the bodies that moved more than `threshold`."""
@@ -162,7 +170,7 @@ class Trace:
 
 
 @attrs.frozen
-class Playout:
+class Playout(Run):
     """What an outcome playout tells of a run (physc.simulation.run.play_out): whether the
     domain's goal was met and when, how many steps the run lasted, the damage and
     destructions, and the dynamic bodies' states (x y angle vx vy ω; NaN once gone) at its
@@ -180,13 +188,3 @@ class Playout:
     solved: bool = False
     goal_met: float | None = None
 
-    @property
-    def duration(self) -> float:
-        return self.steps * self.dt
-
-    @property
-    def destroyed(self) -> set[str]:
-        return {d.name for d in self.destructions}
-
-    def index(self, name: str) -> int:
-        return self.names.index(name)
