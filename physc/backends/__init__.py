@@ -116,7 +116,10 @@ class ContactEvent:
     first: bool = True
 
 
-class World(Protocol):
+class EngineWorld(Protocol):
+    """An engine's world: the bodies of one play in one engine (not the target world,
+    physc.worlds.World, whose settings it is built with)."""
+
     names: list[str]
 
     def add(self, spec: BodySpec) -> None: ...
@@ -265,7 +268,7 @@ class ContactLog:
 
 @attrs.frozen
 class Backend:
-    """A physics backend: its name, one line for people, and the World class it builds
+    """A physics backend: its name, one line for people, and the EngineWorld class it builds
     (`world(gravity, settings)`, settings: physc.backends.settings.EngineSettings). A plugin
     registers one under `physc.backends`. `honours` says, setting by setting, what its engine
     does with the target world's engine settings (`physc backends` prints it); `package` is
@@ -277,7 +280,7 @@ class Backend:
     package: str = ""
     honours: dict[str, str] = attrs.field(factory=dict)
 
-    def create_world(self, gravity: float, settings: EngineSettings | None = None) -> World:
+    def create_world(self, gravity: float, settings: EngineSettings | None = None) -> EngineWorld:
         return self.world(gravity, settings or BOX2D_DEFAULTS)
 
 
