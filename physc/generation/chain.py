@@ -26,7 +26,7 @@ from physc import budget
 from physc.generation.attempt import Attempt, reaches
 from physc.generation.problem import Ledger, Problem, play, simulate
 from physc.generation.snapshots import snapshot
-from physc.generation.stages import Stage, prefix
+from physc.generation.stages import ChainStage, prefix
 from physc.simulation.margins import Margin, Margins
 
 
@@ -106,7 +106,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     return None
 
 
-def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: Stage, layout, attempt: Attempt) -> Node | None:
+def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: ChainStage, layout, attempt: Attempt) -> Node | None:
     """The stage's failed or weak link raised (raising.py): the coordinates of the link the
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
     raise the stage's strength; the first strong candidate, else the strongest that realises
@@ -138,7 +138,7 @@ def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: Stage, la
     return Node(found.layout, (found.found,), stage.index, parent.steps + (step,), min(parent.strength, found.value))
 
 
-def stage_strength(problem: Problem, ledger: Ledger, layout, stage: Stage, attempt: Attempt) -> float:
+def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, attempt: Attempt) -> float:
     """The least margin (`score`) that `attempt`'s action leaves the links up to the stage's end
     in the stage's scene of `layout`, as played and in `stage_replays` noisy replays."""
     domain = problem.domain
@@ -159,7 +159,7 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: Stage, attem
     return strength
 
 
-def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Stage, lead: int = 0) -> tuple | None:
+def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: ChainStage, lead: int = 0) -> tuple | None:
     """The attempts, best first, that realise every interaction up to the stage's end in the
     stage's scene of `layout`: the parent's actions (the lead's first), or at the first stage
     every candidate action (those that came nearest before, first). Among those that realise
@@ -197,7 +197,7 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Stag
     return tuple(good[: problem.settings.beam]) or None
 
 
-def passes(problem: Problem, attempt: Attempt, stage: Stage, layout) -> bool:
+def passes(problem: Problem, attempt: Attempt, stage: ChainStage, layout) -> bool:
     """Whether `attempt` realises the stage and sets up the next."""
     return reaches(attempt, stage.end, len(problem.interactions)) and sets_up(problem, attempt, stage.end, layout)
 

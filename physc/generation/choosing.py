@@ -75,7 +75,7 @@ def alternatives(problem: Problem, layout, declared, stage, attempt):
         return
     actor, target = declared.objects[0], declared.objects[1]
     objects = {o.name: o for o in layout.objects}
-    if target not in stage.new or target not in objects or target in problem.frame.fixed:
+    if target not in stage.new or target not in objects or target in problem.supports.fixed:
         return
     act = next_act(problem.interactions, target, stage.start + 1)
     domain = problem.domain

@@ -118,7 +118,7 @@ class Coordinates:
         reach = settings.raise_reach * problem.parameters.clearance
         rules = problem.domain.layout_rules
         objects = {o.name: o for o in layout.objects}
-        frame = problem.frame
+        supports = problem.supports
         # What never moves: the player's object, the ground and obstacles; a support moves only
         # with what it holds.
         fixed = set(problem.players) | {o.name for o in layout.objects if o.concrete in placing.GROUND or o.role == "obstacle"}
@@ -126,14 +126,14 @@ class Coordinates:
         axes = []
         if problem.domain.nudged(action, 1) is not None:
             axes.append(Coordinate("action", "", frozenset(), float(settings.raise_steps)))
-        for name in sorted(n for n in names if n in objects and n not in fixed and n not in frame.fixed):
-            support = frame.support_of.get(name)
+        for name in sorted(n for n in names if n in objects and n not in fixed and n not in supports.fixed):
+            support = supports.support_of.get(name)
             if support in objects and objects[support].concrete not in placing.GROUND:
                 axes.append(Coordinate("along", name, frozenset((name,)), reach))
             group = groups[name]
             if not group & fixed:
                 axes.append(Coordinate("x", name, group, reach))
-                if not group & frame.on_ground:
+                if not group & supports.on_ground:
                     axes.append(Coordinate("y", name, group, reach))
             placed = objects[name]
             if placed.concrete in (getattr(rules, "flat", None), getattr(rules, "inclined", None)):
@@ -143,7 +143,7 @@ class Coordinates:
                     if beyond is not None:
                         axes.append(Coordinate("length", name, frozenset(beyond), reach, sign, name))
                         break
-                if placed.concrete == getattr(rules, "inclined", None) and not any(b == name for b in frame.support_of.values()):
+                if placed.concrete == getattr(rules, "inclined", None) and not any(b == name for b in supports.support_of.values()):
                     axes.append(Coordinate("slope", name, frozenset((name,)), settings.raise_turn))
             options = problem.domain.bodies(placed, problem.scenario)
             kinds = {(o.concrete, o.material): o for o in options}

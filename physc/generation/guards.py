@@ -114,7 +114,7 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
     for obj in layout.objects:
         if left <= 0:
             break
-        if obj.name == first or obj.name in problem.frame.fixed:
+        if obj.name == first or obj.name in problem.supports.fixed:
             continue
         for label, action in problem.domain.actions_at(problem.level_of(layout), obj.name):
             attempt = attrs.evolve(simulate(problem, ledger, layout, action), label=label)

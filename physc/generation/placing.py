@@ -65,7 +65,7 @@ def consistent(layout, parameters, moved, resting=frozenset()) -> bool:
 
 
 @attrs.frozen
-class Frame:
+class Supports:
     """What the search reads of the placed layout once: what rests on what, which objects
     have a support of their own, which rest on the ground (or on the bottom of the placement
     area, in a domain without supports), and which the search never
@@ -78,7 +78,7 @@ class Frame:
     fixed: frozenset
 
     @classmethod
-    def of(cls, layout, scenario, parameters) -> Frame:
+    def of(cls, layout, scenario, parameters) -> Supports:
         support_of = supports(layout)
         carried: dict[str, int] = {}
         for s in support_of.values():
@@ -106,10 +106,10 @@ class Frame:
         return name in self.on_ground or (name in self.support_of and name not in self.own_support)
 
 
-def shifted(layout, members: set[str], dx: float, dy: float, frame: Frame):
+def shifted(layout, members: set[str], dx: float, dy: float, supports: Supports):
     """`layout` with `members` moved together by (dx, dy) (only sideways if one rests on the
     ground); None if that moves nothing."""
-    if members & frame.on_ground:
+    if members & supports.on_ground:
         dy = 0.0
     if abs(dx) < 1e-6 and abs(dy) < 1e-6:
         return None

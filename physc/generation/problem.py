@@ -18,7 +18,7 @@ from physc.generation import placing
 from physc.generation.attempt import Attempt
 from physc.generation.evaluator import Evaluator
 from physc.generation.settings import SETTINGS, SearchSettings
-from physc.generation.stages import Stage, introduced, stages
+from physc.generation.stages import ChainStage, introduced, stages
 from physc.simulation.fidelity import fidelity
 from physc.simulation.margins import Margin
 from physc.simulation.snapshot import Snapshot
@@ -34,9 +34,9 @@ class Problem:
     scenario: object  # the checked scenario (physc.dsl.scenario.ScenarioIR)
     placed: object  # the layout as placed (a ConcreteLayout); the steps make new ones
     settings: SearchSettings
-    frame: placing.Frame  # what rests on what, what never moves onto a path
+    supports: placing.Supports  # what rests on what, what never moves onto a path
     entry: dict  # object → the interaction at which it enters the scene
-    plan: tuple[Stage, ...]
+    plan: tuple[ChainStage, ...]
     players: frozenset[str]  # the player's objects (the bird)
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
     validate: bool = True
@@ -46,7 +46,7 @@ class Problem:
     def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
         entry = introduced(layout, scenario.interactions)
         return cls(
-            domain, scenario, layout, domain.search_settings or SETTINGS, placing.Frame.of(layout, scenario, domain.layout_parameters),
+            domain, scenario, layout, domain.search_settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
             entry, tuple(stages(scenario.interactions, entry)),
             frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance,
         )

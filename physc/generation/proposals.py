@@ -89,7 +89,7 @@ def to_the_edge(problem: Problem, layout, objects, faller: str, index: int, star
     """`faller` at the edge of its support on the side its last hit pushes it to, then the
     support cut to end just beyond it there."""
     hit_at = last_hit_at(problem.interactions[:index], faller)
-    support = problem.frame.support_of.get(faller)
+    support = problem.supports.support_of.get(faller)
     if hit_at is None or faller not in objects or support not in objects or objects[support].concrete in placing.GROUND:
         return
     pushed = problem.pushed_by(hit_at)
@@ -157,7 +157,7 @@ SEAM = 0.02  # layout units left between a surface brought closer and the end of
 def closer(problem: Problem, layout, objects, mover: str, surface: str, heading: str, start: int):
     """`surface`, which `mover` must roll or slide onto from the support it rests on, and the
     world beyond it, brought back to the end of that support: level with it, or a step down."""
-    support = problem.frame.support_of.get(mover)
+    support = problem.supports.support_of.get(mover)
     if heading not in ("left", "right") or support in (None, surface) or surface not in objects or support not in objects:
         return
     sign = 1.0 if heading == "right" else -1.0
@@ -199,7 +199,7 @@ def exposed(problem: Problem, layout, objects, declared, start: int):
     """The first hit did not happen from an allowed side: the target's own support reaches
     out beyond it on that side and shields it, so it gets shorter."""
     target = declared.objects[1]
-    support = problem.frame.own_support.get(target)
+    support = problem.supports.own_support.get(target)
     if target not in objects or support not in objects or objects[support].rotation:
         return
     left, _, right, _ = placing.box(objects[target])

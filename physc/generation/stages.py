@@ -25,7 +25,7 @@ ALWAYS = ("player", "ground")  # roles and concretes present from the start
 
 
 @attrs.frozen
-class Stage:
+class ChainStage:
     """Interactions `start` .. `end` - 1 of the sequence, realised by the scene that has
     the objects brought in at `start` (`new`) and before."""
 
@@ -62,7 +62,7 @@ def introduced(layout, interactions: Sequence) -> dict[str, int]:
     return entry
 
 
-def stages(interactions: Sequence, entry: Mapping[str, int]) -> list[Stage]:
+def stages(interactions: Sequence, entry: Mapping[str, int]) -> list[ChainStage]:
     """The stages of `interactions` whose objects enter at the interaction `entry` says
     (objects brought in by no interaction: at len(interactions), a last stage that
     realises nothing new but must keep the rest)."""
@@ -74,7 +74,7 @@ def stages(interactions: Sequence, entry: Mapping[str, int]) -> list[Stage]:
     for i, start in enumerate(starts):
         end = starts[i + 1] if i + 1 < len(starts) and starts[i + 1] < total else total
         new = tuple(sorted(n for n, k in entry.items() if k == start))
-        out.append(Stage(i, start, max(end, start), new))
+        out.append(ChainStage(i, start, max(end, start), new))
     return out
 
 

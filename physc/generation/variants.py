@@ -18,12 +18,12 @@ import itertools
 from physc.generation import choosing, placing, proposals
 from physc.generation.attempt import Attempt
 from physc.generation.problem import Ledger, Problem
-from physc.generation.stages import Stage, prefix
+from physc.generation.stages import ChainStage, prefix
 
 ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is not met on the path (what it moves on, or what it already met)
 
 
-def variants(problem: Problem, ledger: Ledger, parent, stage: Stage):
+def variants(problem: Problem, ledger: Ledger, parent, stage: ChainStage):
     """(description, layout, lead): the new objects on the path with the bodies the meeting
     favours, the layout as placed (with those bodies), then the local changes."""
     seen = set()
@@ -43,7 +43,7 @@ def variants(problem: Problem, ledger: Ledger, parent, stage: Stage):
     yield from repaired(problem, ledger, parent, stage, seen)
 
 
-def repaired(problem: Problem, ledger: Ledger, parent, stage: Stage, seen: set, depth: int = 0):
+def repaired(problem: Problem, ledger: Ledger, parent, stage: ChainStage, seen: set, depth: int = 0):
     """Local changes (proposals.py, then the domain's own) for the first interaction the
     stage's best failed attempt missed; a change that comes nearer, but not all the way, is
     changed in turn (up to `repair_depth` on top of one another)."""
@@ -65,7 +65,7 @@ def repaired(problem: Problem, ledger: Ledger, parent, stage: Stage, seen: set, 
             return
 
 
-def with_bodies(problem: Problem, layout, parent, stage: Stage, lead: int):
+def with_bodies(problem: Problem, layout, parent, stage: ChainStage, lead: int):
     """`layout` as it is, then with other bodies for the stage's new object that the meeting's
     physics favours (choosing.py)."""
     yield "", layout
@@ -77,16 +77,16 @@ def with_bodies(problem: Problem, layout, parent, stage: Stage, lead: int):
         yield note, changed
 
 
-def on_path(problem: Problem, layout, declared, stage: Stage, attempt: Attempt):
+def on_path(problem: Problem, layout, declared, stage: ChainStage, attempt: Attempt):
     """Layouts with the stage's first new object where `attempt`'s actor meets it: under where
     it comes down, for a fall; touching it from a declared side, for a hit or any other meeting
     of two objects (PHYRE's and other domains' `touch`)."""
     actor, target = (tuple(declared.objects) + (None,))[:2]
-    frame = problem.frame
+    supports = problem.supports
     if declared.name in ALONG or target not in stage.new or actor not in attempt.trace.names:
         return
     objects = {o.name: o for o in layout.objects}
-    if target not in objects or target in frame.fixed:
+    if target not in objects or target in supports.fixed:
         return  # a surface is placed by the layout, with the shelf it belongs to
     trace = attempt.trace
     interactions = problem.interactions
@@ -97,11 +97,11 @@ def on_path(problem: Problem, layout, declared, stage: Stage, attempt: Attempt):
         since += settings.settle
     first = int(since / trace.dt)
     rows = trace.states[first:, trace.index(actor), :]
-    members = frame.movers(target, problem.entry)
+    members = supports.movers(target, problem.entry)
     sizes = {o.name: (o.width, o.height) for o in layout.objects}
     actor_size = sizes.get(actor, (0.0, 0.0))
     if declared.name != "fall":
-        sideways = frame.sideways_only(target)
+        sideways = supports.sideways_only(target)
         places = list(placing.hit_places(actor_size, objects[target], rows, declared.directions, sideways, problem.scale, settings))
         if sideways and "above" in declared.directions:
             places = list(placing.landings(actor_size, objects[target], rows, problem.scale)) + places
@@ -110,12 +110,12 @@ def on_path(problem: Problem, layout, declared, stage: Stage, attempt: Attempt):
         behind = None if heading is None else (1.0 if heading == "left" else -1.0)
         places = list(placing.landings(actor_size, objects[target], rows, problem.scale, behind))
     pushed = None
-    if declared.name == "hit" and target in frame.support_of:
+    if declared.name == "hit" and target in supports.support_of:
         acts_next = next((t for t in interactions[k + 1 :] if t.objects and t.objects[0] == target), None)
         if acts_next is not None and acts_next.name == "fall":
             pushed = problem.pushed_by(k)
     for step, x, y in places:
-        moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, frame)
+        moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, supports)
         if moved is None:
             continue
         changed = [o for o in moved.objects if o.name in members]
@@ -126,7 +126,7 @@ def on_path(problem: Problem, layout, declared, stage: Stage, attempt: Attempt):
         where = next(o for o in changed if o.name == target)
         description = f"{declared.text}: {target} on its path, at ({where.x:.2f}, {where.y:.2f})"
         if pushed is not None:  # it falls next: its ledge ending at it first, so that the push takes it over
-            support = frame.support_of[target]
+            support = supports.support_of[target]
             edged = proposals.ledge_ends_at(problem, moved, {o.name: o for o in moved.objects}, target, support, pushed, stage.start)
             if edged is not None:
                 yield f"{description}, {support} ending at it", edged

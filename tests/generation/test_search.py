@@ -18,7 +18,7 @@ from physc.generation import choosing, guards
 from physc.generation.pipeline import Pipeline
 from physc.generation.chain import Node
 from physc.generation.settings import SearchSettings
-from physc.generation.stages import Stage, prefix, stages
+from physc.generation.stages import ChainStage, prefix, stages
 
 from middle_end import search, searching
 
@@ -35,13 +35,13 @@ class Term:
 def test_stages_begin_where_objects_enter():
     terms = [Term("hit", ("bird", "a")), Term("roll", ("a", "s")), Term("hit", ("a", "b")), Term("destroy", ("a", "b"))]
     plan = stages(terms, {"a": 0, "s": 0, "b": 2})
-    assert plan == [Stage(0, 0, 2, ("a", "s")), Stage(1, 2, 4, ("b",))]
+    assert plan == [ChainStage(0, 0, 2, ("a", "s")), ChainStage(1, 2, 4, ("b",))]
 
 
 def test_objects_no_interaction_names_enter_in_a_last_stage():
     terms = [Term("hit", ("bird", "a")), Term("destroy", ("bird", "a"))]
     plan = stages(terms, {"a": 0, "extra": 2})
-    assert plan == [Stage(0, 0, 2, ("a",)), Stage(1, 2, 2, ("extra",))]
+    assert plan == [ChainStage(0, 0, 2, ("a",)), ChainStage(1, 2, 2, ("extra",))]
 
 
 def test_a_shelf_enters_with_the_first_ball_on_it():
@@ -184,7 +184,7 @@ def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own
         layout = Pipeline(domain, scenario, seed).placed.layout
         s = searching(domain, scenario, layout, seed, 6)
         objects = {o.name: o for o in layout.objects}
-        _, _, end, top = placing.box(objects[s.frame.support_of["sBlock"]])
+        _, _, end, top = placing.box(objects[s.supports.support_of["sBlock"]])
         near, _, _, next_top = placing.box(objects["hSurface"])
         if near - end > 0.2:
             break
