@@ -28,7 +28,7 @@ from __future__ import annotations
 import time
 
 from physc.domains.base import require
-from physc.generation import guards, settings as reasons
+from physc.generation import guards, settings
 from physc.generation.acceptance import verdict
 from physc.generation.chain import Node, chain
 from physc.generation.outcome import Outcome, Parts
@@ -51,27 +51,27 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     """The steps of the module docstring, in turn, for one placed layout."""
     domain = problem.domain
     if not domain.actions(problem.level_of(problem.placed), problem.scenario):
-        return given_up(problem, ledger, reasons.NO_ACTION)
+        return given_up(problem, ledger, settings.NO_ACTION)
     found = chain(problem, ledger, Node(problem.placed, (), -1), 0)
     if found is None:
-        return given_up(problem, ledger, reasons.NOT_REALISED)
+        return given_up(problem, ledger, settings.NOT_REALISED)
     strong = strengthen(problem, ledger, found)
     if strong is None:
-        return given_up(problem, ledger, reasons.FRAGILE if ledger.tried else reasons.NOT_REALISED)
+        return given_up(problem, ledger, settings.FRAGILE if ledger.tried else settings.NOT_REALISED)
     layout, attempt, passed = strong.layout, strong.attempt, strong.passed
     obstructed = guards.obstruct(problem, ledger, layout, attempt)
     if obstructed is None:
-        return given_up(problem, ledger, reasons.NOT_OBSTRUCTED)
+        return given_up(problem, ledger, settings.NOT_OBSTRUCTED)
     layout, obstacles = obstructed
     if obstacles:
-        again = min(replays(problem, ledger, attempt, layout, stream).passed for stream in reasons.NOISE_STREAMS)
+        again = min(replays(problem, ledger, attempt, layout, stream).passed for stream in settings.NOISE_STREAMS)
         if again < problem.accept:
             ledger.nearest = max(ledger.nearest, again)
-            return given_up(problem, ledger, reasons.OBSTRUCTED_FRAGILE)
+            return given_up(problem, ledger, settings.OBSTRUCTED_FRAGILE)
         passed = min(passed, again)
     layout, shortcuts = guards.guard(problem, ledger, layout, attempt, len(obstacles))
     if not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
-        return given_up(problem, ledger, reasons.UNSTABLE)
+        return given_up(problem, ledger, settings.UNSTABLE)
     distracting = time.perf_counter()
     layout, distractors = guards.distract(problem, ledger, rng, layout, attempt)
     validating = time.perf_counter()
@@ -79,16 +79,16 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     if problem.validate:
         final = play(problem, ledger, problem.level_of(layout), attempt.action)
         if not final.fidelity.valid:
-            return given_up(problem, ledger, reasons.NOT_VALIDATED)
+            return given_up(problem, ledger, settings.NOT_VALIDATED)
         validated, trace = True, final.trace
     level = problem.level_of(layout)
     if not domain.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
-        return given_up(problem, ledger, reasons.INVALID_ACTION)
+        return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
     judged = verdict(domain, level, attempt.label, attempt.action, ledger.evaluator) if problem.acceptance else None
     if judged is not None and not judged.accepted:
-        why = {"unstable": reasons.UNSTABLE_SOLUTION, "trivial": reasons.TRIVIAL, "solvable": reasons.SOLVABLE, "undecided": reasons.UNDECIDED}
-        return given_up(problem, ledger, why.get(judged.reason, reasons.NOT_GOOD))
+        why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
+        return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))
     solution = domain.played_as(level, domain.solution(attempt.label, attempt.action))
     steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ())
     parts = Parts(

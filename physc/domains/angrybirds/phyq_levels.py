@@ -23,7 +23,6 @@ from __future__ import annotations
 import csv
 import inspect
 import io
-import json
 
 from physc.domains.angrybirds import agent_action
 from physc.domains.angrybirds.level_xml import parse_level

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from physc_phyre import simulation_cache as sc
+from physc_phyre import simulation_cache
 
 DEFAULT_ACTIONS = 1_000  # enough for PHYRE's random agent (100 valid attempts a task); README
 MAX_ACTIONS = 100_000  # PHYRE's own cache (DEFAULT_NUM_ACTIONS); any smaller one is its prefix
@@ -72,29 +72,29 @@ def tasks_of(dataset: Path) -> dict[str, list[tuple[str, str]]]:
         raise UsageError(f"{table} lists no tasks")
     tiers: dict[str, list[tuple[str, str]]] = {}
     for row in sorted(rows, key=lambda r: r["task_id"]):
-        if row["tier"] not in sc.TIERS:
+        if row["tier"] not in simulation_cache.TIERS:
             raise UsageError(f"{table}: task {row['task_id']} is of the tier {row['tier']!r}, which PHYRE's cache does not hold")
         path = str(dataset / row["task"])
         try:
-            sc.task_level(path)
+            simulation_cache.task_level(path)
         except ValueError as error:
             raise UsageError(str(error)) from None
-        tiers.setdefault(sc.TIERS[row["tier"]], []).append((row["task_id"], path))
+        tiers.setdefault(simulation_cache.TIERS[row["tier"]], []).append((row["task_id"], path))
     return tiers
 
 
-def chunks(tasks: list[tuple[str, str]], actions: np.ndarray) -> list[sc.Chunk]:
-    return [sc.Chunk(task_id, path, start, actions[start : start + CHUNK]) for task_id, path in tasks for start in range(0, len(actions), CHUNK)]
+def chunks(tasks: list[tuple[str, str]], actions: np.ndarray) -> list[simulation_cache.Chunk]:
+    return [simulation_cache.Chunk(task_id, path, start, actions[start : start + CHUNK]) for task_id, path in tasks for start in range(0, len(actions), CHUNK)]
 
 
 def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, executor, say) -> list[Path]:
     """Simulate `count` actions on the tasks of each tier (tasks_of) and write each tier's
     cache; the files written."""
-    import physc.budget as budget
+    from physc.budget import interruptible
     from physc.commands.common import plural
     from physc.files import ensure_folder, write_atomic
 
-    pools = {tier: sc.pool(tier, count) for tier in tiers}
+    pools = {tier: simulation_cache.pool(tier, count) for tier in tiers}
     jobs = [chunk for tier, tasks in tiers.items() for chunk in chunks(tasks, pools[tier])]
     statuses = {task_id: np.zeros(count, np.int8) for tasks in tiers.values() for task_id, _ in tasks}
     waiting = {task_id: -(-count // CHUNK) for task_id in statuses}
@@ -110,18 +110,18 @@ def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, ex
             done += 1
             say(f"{done}/{total} tasks, {time.monotonic() - started:.0f} s: {task_id}")
 
-    with budget.interruptible():  # Ctrl-C stops the run between simulations, not inside one
-        executor.map(sc.simulate, jobs, keep)
+    with interruptible():  # Ctrl-C stops the run between simulations, not inside one
+        executor.map(simulation_cache.simulate, jobs, keep)
     written = []
     for tier, tasks in tiers.items():
-        folder = ensure_folder(sc.cache_folder(dataset / "phyre" / "cache", count, tier))
-        write_atomic(folder / sc.FILE_NAME, sc.cache_bytes(pools[tier], {t: statuses[t] for t, _ in tasks}))
-        written.append(folder / sc.FILE_NAME)
+        folder = ensure_folder(simulation_cache.cache_folder(dataset / "phyre" / "cache", count, tier))
+        write_atomic(folder / simulation_cache.FILE_NAME, simulation_cache.cache_bytes(pools[tier], {t: statuses[t] for t, _ in tasks}))
+        written.append(folder / simulation_cache.FILE_NAME)
     return written
 
 
 def main(argv: list[str] | None = None) -> int:
-    import physc.budget as budget
+    from physc.budget import stopped
     from physc.commands.common import EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_USAGE, UsageError
     from physc.commands.running import executor_from
     from physc.diagnostics import safe
@@ -145,7 +145,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{PROG}: error: {safe(str(error))}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
-        budget.stopped()
+        stopped()
         print(f"{PROG}: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
     except Exception as error:  # a bug: said in one line, never a bare traceback
