@@ -17,6 +17,15 @@ from physc.dsl.fixes import Advice, goal_help, latest, motion_help, start_help
 class SequenceChecks:
     """Causality, goals and restrictions; mixed into the scenario checker, whose state they read."""
 
+    def could_enable(self, signature, actor: str) -> bool:
+        """Whether `actor` may take the interaction that also enables `signature` (destroy after
+        explode: only a TNT box explodes), so that a message may offer it."""
+        enabling = self.vocabulary.term(signature.enabled_by) if signature.enabled_by else None
+        if enabling is None or not enabling.object_parameters or actor not in self.objects:
+            return False
+        fits = enabling.object_parameters[0].fits
+        return not fits or self.vocabulary.fits(self.objects[actor].concrete, fits)
+
     def check_causality(self, interactions: list, restrictions: list) -> None:
         vocabulary = self.vocabulary
         players = {o.name for o in self.objects.values() if vocabulary.fits(o.concrete, vocabulary.player)}
@@ -80,7 +89,7 @@ class SequenceChecks:
             if complete and signature.requires and (signature.requires, resolved.objects) not in seen and not enabled:
                 pair = ", ".join(resolved.objects)
                 added = f"{signature.requires}({pair}, any)"
-                other = f" or '{signature.enabled_by}({resolved.objects[0]})'" if signature.enabled_by else ""
+                other = f" or '{signature.enabled_by}({resolved.objects[0]})'" if self.could_enable(signature, resolved.objects[0]) else ""
                 self.advise(
                     "E0403",
                     f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'{other}",
