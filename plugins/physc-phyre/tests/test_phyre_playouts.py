@@ -25,7 +25,7 @@ def _actions(domain, level, count):
 def test_playouts_of_the_pool_say_what_the_full_runs_say(path):
     task = load_task(path)
     domain = domain_of(task)
-    actions = _actions(domain, task.level, 150) + [domain.action_of(task.solution)]
+    actions = _actions(domain, task.level, 60) + [domain.action_of(task.solution)]
     solved = 0
     for action in actions:
         trace = domain.play(task.level, action, recognise=False)
