@@ -162,7 +162,9 @@ class MarginReader:
             since = found[k - 1].time if k else 0.0
             method = getattr(self, declared.name, None)
             margin = method(declared, trace, found[k] if k < len(found) else None, since, found, k) if method else None
-            if margin is not None and k < len(found):
+            # An actor must outlast the blows before it acts, unless it acts by being destroyed
+            # (an explosive's blast: the recogniser's `explosive` kinds).
+            if margin is not None and k < len(found) and trace.kinds.get(declared.objects[0]) not in self.recogniser.explosive:
                 lasting = self.survival(trace, declared.objects[0], found[k].time, declared.text, k)
                 if lasting is not None and lasting.share < margin.share:
                     margin = lasting

@@ -100,3 +100,23 @@ def test_a_tnt_box_destroyed_by_a_blow_is_recognised_as_explode():
     trace = Trace(0.02, ("tnt", "pig"), {"tnt": "tnt", "pig": "pig"}, np.zeros((60, 2, 6)), destructions=destructions)
     found = [i.text() for i in PHYQ.recogniser.recognise(trace, {})]
     assert found == ["explode(tnt)", "destroy(bird, tnt)", "destroy(tnt, pig)"]
+
+
+def test_a_blast_s_margin_is_its_damage_not_the_tnt_s_survival():
+    import attrs
+    import numpy as np
+
+    from physc.domains.angrybirds.worlds import PHYQ
+    from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, Trace
+
+    scenario = scenario_in("x.phys", BLAST, "Blast", INSTALLED)
+    names = ("bird", "tnt", "pig")
+    contact = ContactRecord(0.98, "bird", "tnt", (1.0, 0.0), (1.0, 0.0), (5.0, 0.0), (5.0, 0.0), (0.0, 0.0))
+    damage = (DamageRecord(0.98, "tnt", 5.0, -2.0, "bird"), DamageRecord(1.0, "pig", 34.0, -19.0, "tnt"))
+    destructions = (DestructionRecord(1.0, "tnt", "damage", "bird"), DestructionRecord(1.0, "pig", "damage", "tnt"))
+    states = np.zeros((60, 3, 6))
+    states[:, 1, 0], states[:, 2, 0] = 1.2, 2.0
+    trace = Trace(0.02, names, {"bird": "bird", "tnt": "tnt", "pig": "pig"}, states, (contact,), (), damage, destructions, ("pig",), True)
+    trace = attrs.evolve(trace, interactions=PHYQ.recogniser.recognise(trace, {}))
+    blast = next(m for m in DOMAIN.at("phyq").margins(scenario, trace).links if m.term == "destroy(tnt, pig)")
+    assert (blast.unit, blast.value) == ("damage", 19.0)  # 34 dealt, 15 life: not the TNT's life, spent by design
