@@ -24,7 +24,7 @@ import numpy as np
 
 from physc import budget
 from physc.generation.attempt import Attempt, reaches
-from physc.generation.problem import Ledger, Problem, play, simulate
+from physc.generation.problem import Ledger, Problem, replayed, simulate
 from physc.generation.snapshots import snapshot
 from physc.generation.stages import ChainStage, prefix
 from physc.simulation.margins import Margin, Margins
@@ -152,7 +152,7 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, 
     for r in range(replays):
         noise = random.Random(f"stage/{stage.index}/{attempt.label}/{r}")
         noisy_level, action = domain.noisy(level, attempt.action, noise)
-        played = play(problem, ledger, noisy_level, action)
+        played = replayed(problem, ledger, noisy_level, action)
         strength = min(strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched))
         if strength < 0:
             break

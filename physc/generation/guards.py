@@ -18,7 +18,7 @@ import attrs
 from physc.compiler.concrete_layout import PlacedObject
 from physc.generation import placing
 from physc.generation.attempt import Attempt
-from physc.generation.problem import Ledger, Problem, play, simulate
+from physc.generation.problem import Ledger, Problem, replayed, simulate
 from physc.generation.strengthen import holds_up
 
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0, 3.7, 4.5)  # layout units back along the flight from the hit, tried in turn
@@ -148,7 +148,7 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
             if not holds_up(problem, ledger, solution, candidate):
                 continue
             level = problem.level_of(candidate)
-            if any(play(problem, ledger, level, action).trace.solved for _, action in problem.domain.actions_at(level, obj.name)):
+            if any(replayed(problem, ledger, level, action).trace.solved for _, action in problem.domain.actions_at(level, obj.name)):
                 continue
             layout = candidate
             added.append(obj.name)

@@ -118,7 +118,8 @@ def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | 
     return attempt
 
 
-def play(problem: Problem, ledger: Ledger, level, action, label: str = "") -> Attempt:
-    """`action` played in `level` (uncached: a noisy replay), judged against the scenario."""
+def replayed(problem: Problem, ledger: Ledger, level, action, label: str = "") -> Attempt:
+    """`action` played in `level` once more, judged against the scenario (uncached: a noisy
+    replay, a guard's try, the final play)."""
     trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario))
     return Attempt(label, action, trace, fidelity(problem.scenario, trace))

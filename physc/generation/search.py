@@ -32,7 +32,7 @@ from physc.generation import guards, settings
 from physc.generation.acceptance import verdict
 from physc.generation.chain import Node, chain
 from physc.generation.outcome import Outcome, Parts
-from physc.generation.problem import Ledger, Problem, play
+from physc.generation.problem import Ledger, Problem, replayed
 from physc.generation.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.stopped import why_stopped
 
@@ -77,7 +77,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     validating = time.perf_counter()
     validated, trace = None, attempt.trace
     if problem.validate:
-        final = play(problem, ledger, problem.level_of(layout), attempt.action)
+        final = replayed(problem, ledger, problem.level_of(layout), attempt.action)
         if not final.fidelity.valid:
             return given_up(problem, ledger, settings.NOT_VALIDATED)
         validated, trace = True, final.trace

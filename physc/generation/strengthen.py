@@ -25,7 +25,7 @@ import numpy as np
 from physc.generation.attempt import Attempt
 from physc.generation.chain import Node, score
 from physc.generation.coordinates import Coordinates, weak_parts
-from physc.generation.problem import Ledger, Problem, play, simulate
+from physc.generation.problem import Ledger, Problem, replayed, simulate
 from physc.generation.raising import Candidate, climb
 from physc.generation.settings import NOISE_STREAMS
 from physc.simulation.margins import Margin, Margins
@@ -63,7 +63,7 @@ def replays(problem: Problem, ledger: Ledger, attempt: Attempt, layout, stream: 
     for r in range(domain.robustness_replays or 0):
         noise = random.Random(f"{stream}/{attempt.label}/{r}")
         noisy_level, noisy_action = domain.noisy(level, attempt.action if action is None else action, noise)
-        played = play(problem, ledger, noisy_level, noisy_action)
+        played = replayed(problem, ledger, noisy_level, noisy_action)
         margins = domain.margins(problem.scenario, played.trace)
         valid = played.fidelity.valid
         passed += valid
