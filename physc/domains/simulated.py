@@ -43,7 +43,7 @@ from collections.abc import Iterable
 from physc.domains.base import Domain, MissingCapability, _no_default
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-from physc.simulation.scene import Scene, outcome, play
+from physc.simulation.scene import Scene, outcome, play_scene
 from physc.simulation.stability import stable
 from physc.simulation.trace import Playout, Trace
 
@@ -250,7 +250,7 @@ class SimulatedDomain(Domain):
         `play` passes on to the run loop."""
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
-        return play(
+        return play_scene(
             self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise,
             resume,
         )
@@ -284,7 +284,7 @@ class SimulatedDomain(Domain):
         False, "stable" is PHYRE's acceptance of a scene: left alone, it does not solve itself
         (the shift is still reported)."""
         if self.still_start:
-            return stable(play(self.scene(level, None), self.backend, RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
+            return stable(play_scene(self.scene(level, None), self.backend, RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
         alone = self.play(level, None, recognise=False)
         return not alone.solved, stable(alone, self.stable_limit)[1]
 

@@ -3,7 +3,7 @@
 A domain that judges one action by simulation says what its level is as physics: the
 bodies (physc.backends.BodySpec), the kind of each (what its recogniser calls surfaces,
 background, thrown), the rolling radius of the round ones, the velocities the action
-gives, and which bodies the goal is about. `play` builds that in the backend it is handed
+gives, and which bodies the goal is about. `play_scene` builds that in the backend it is handed
 (the domain's: physc.domains.base.Domain.at), runs the generic loop (physc.simulation.run) with the
 domain's rules, and judges the trace: interactions recognised, restrictions checked.
 Angry Birds' game builds its worlds itself (its rules need the level's own objects);
@@ -54,7 +54,7 @@ def built(scene: Scene, backend: Backend):
 
 def outcome(scene: Scene, backend: Backend, rules: RunRules, seconds: float, to_end: bool = True) -> Playout:
     """`scene` played to its outcome under `rules` (physc.simulation.run.play_out): what
-    `play` would say of the goal, the damage and the destructions, and where the bodies end
+    `play_scene` would say of the goal, the damage and the destructions, and where the bodies end
     (without `to_end`: where they are once the outcome is settled)."""
     dynamic = scene.dynamic
     recorded = play_out(built(scene, backend), dynamic, rules, seconds, scene.dt, to_end)
@@ -64,7 +64,7 @@ def outcome(scene: Scene, backend: Backend, rules: RunRules, seconds: float, to_
     )
 
 
-def play(
+def play_scene(
     scene: Scene, backend: Backend, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
     resume=None,
 ) -> Trace:

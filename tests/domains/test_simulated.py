@@ -17,7 +17,7 @@ from physc.domains.simulated import auccess
 from physc.simulation.fidelity import Fidelity
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-from physc.simulation.scene import Scene, play
+from physc.simulation.scene import Scene, play_scene
 
 
 def rectangle(cx, cy, w, h):
@@ -88,10 +88,10 @@ def test_touch_is_recognised_for_the_goal_bodies_once_held():
     shelf = BodySpec("shelf", rectangle(0, 0, 6, 0.5), 0, 0, static=True, friction=0.9)
     ball = BodySpec("ball", Circle(0.5), 0, 3, density=0.25, friction=0.9)
     scene = Scene((shelf, ball), {"shelf": "surface", "ball": "object"}, 9.8, EngineSettings(dt=1 / 60, velocity_iterations=15, position_iterations=20), {"ball": 0.5}, goal=("ball", "shelf"))
-    trace = play(scene, load_backend(), Held(), 10.0, RECOGNISER)
+    trace = play_scene(scene, load_backend(), Held(), 10.0, RECOGNISER)
     assert trace.solved and trace.duration < 3.0  # ended by the goal, not by the time
     assert [i.text() for i in trace.interactions][-1] == "touch(ball, shelf)"
-    fell = play(attrs.evolve(scene, goal=("ball", "nothing")), load_backend(), Held(("ball", "nothing")), 2.0, RECOGNISER)
+    fell = play_scene(attrs.evolve(scene, goal=("ball", "nothing")), load_backend(), Held(("ball", "nothing")), 2.0, RECOGNISER)
     assert not fell.solved and "touch" not in fell.sequence()
 
 
@@ -170,5 +170,5 @@ def test_the_backend_handed_over_plays_a_scene():
     shelf = BodySpec("shelf", rectangle(0, 0, 6, 0.5), 0, 0, static=True)
     ball = BodySpec("ball", Circle(0.5), 0, 3, density=0.25)
     scene = Scene((shelf, ball), {"shelf": "surface", "ball": "object"}, 9.8, EngineSettings(dt=1 / 60, velocity_iterations=15, position_iterations=20), {"ball": 0.5})
-    trace = play(scene, load_backend("bullet"), RunRules(), 1.5, RECOGNISER)
+    trace = play_scene(scene, load_backend("bullet"), RunRules(), 1.5, RECOGNISER)
     assert trace.states[-1, 0, 1] == pytest.approx(0.75, abs=0.05)  # came to rest on the shelf

@@ -4,7 +4,7 @@ kBallTouchingThreshold, a tenth of a pixel), every other pair by the engine's co
 from __future__ import annotations
 
 import pytest
-from physc.simulation.scene import play
+from physc.simulation.scene import play_scene
 from physc.simulation.snapshot import Snapshot
 
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
@@ -23,7 +23,7 @@ def _balls(gap: float) -> PhyreLevel:
 
 
 def _run(level: PhyreLevel, resume=None):
-    return play(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER, recognise=False, resume=resume)
+    return play_scene(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER, recognise=False, resume=resume)
 
 
 def test_the_threshold_is_a_tenth_of_a_pixel_in_metres():
@@ -66,7 +66,7 @@ def test_the_recognised_touch_is_the_rules_verdict():
     the recognised `touch(green, blue)` is the rules' own, at the time it had held 3 s, so a
     task whose goal PHYRE's rule meets realises its declared `touch`."""
     level = _balls(0.05)
-    trace = play(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER)
+    trace = play_scene(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER)
     assert trace.solved and trace.goal_met == pytest.approx(GOAL_STEPS / 60)
     assert [(i.name, i.objects, i.time) for i in trace.interactions if i.name == "touch"] == [("touch", ("green", "blue"), trace.goal_met)]
     assert _run(_balls(0.2)).goal_met is None
