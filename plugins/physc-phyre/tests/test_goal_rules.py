@@ -34,6 +34,23 @@ def test_the_threshold_is_a_tenth_of_a_pixel_in_metres():
         assert balls_touch((0.0, 0.0), (centre, 0.0), r, r) is touching, gap
 
 
+def test_balls_near_the_limit_are_judged_in_phyres_float_arithmetic():
+    """Judged in doubles away from the limit, in float32 within EXACT_WITHIN of it: the same
+    answer as PHYRE's float32 test everywhere, on a sweep across the limit and at its edges."""
+    import numpy as np
+
+    from physc_phyre.rules import EXACT_WITHIN
+
+    f = np.float32
+    r1, r2 = RADIUS / PIXELS_PER_METRE, 12.5 / PIXELS_PER_METRE
+    limit = r1 + r2 + BALL_TOUCHING_THRESHOLD
+    for offset in np.concatenate([np.linspace(-3 * EXACT_WITHIN, 3 * EXACT_WITHIN, 601), [-EXACT_WITHIN, EXACT_WITHIN]]):
+        a, b = (3.1, 7.3), (3.1 + (limit + offset) * 0.6, 7.3 + (limit + offset) * 0.8)
+        dx, dy = f(a[0]) - f(b[0]), f(a[1]) - f(b[1])
+        phyre = bool(np.sqrt(dx * dx + dy * dy) < f(r1) + f(r2) + f(BALL_TOUCHING_THRESHOLD))
+        assert balls_touch(a, b, r1, r2) is phyre, offset
+
+
 @pytest.mark.parametrize(("gap", "solved"), [(0.05, True), (0.2, False)])
 def test_two_balls_a_twentieth_of_a_pixel_apart_touch_and_a_fifth_do_not(gap, solved):
     """Neither pair is in contact in Box2D (circles collide only when they overlap); PHYRE's
