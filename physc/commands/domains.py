@@ -46,7 +46,7 @@ def _describe_domain(domain) -> str:
                 lines.append(f"    {term.usage():<58} {term.description}")
     statics = [c.name for c in vocabulary.concrete_objects if c.static]
     lines.append(f"  static objects: {', '.join(statics)}")
-    materials = list(dict.fromkeys(m for c in vocabulary.concrete_objects for m in c.materials))
+    materials = vocabulary.materials(every=False)
     if materials:
         lines.append(f"  materials: {', '.join(materials)} (a declaration may name them: `name: term({' | '.join(materials[:2])})`)")
     aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())

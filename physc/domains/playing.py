@@ -19,11 +19,12 @@ def states_at(trace, step: int) -> dict[str, tuple[float, float, float] | None]:
     """Each simulated body's (x, y, angle in radians) after step `step` of `trace` (a Trace,
     or a Playout for its last step), in the engine's units; None for a body gone by then
     (destroyed, or out of the level)."""
-    final = getattr(trace, "final", None)
-    if final is not None:
+    from physc.simulation.trace import Playout
+
+    if isinstance(trace, Playout):
         if step < trace.steps - 1:
             raise ValueError(f"an outcome playout keeps the states of its last step ({trace.steps - 1}) alone, not of step {step}")
-        row = final
+        row = trace.final
     else:
         row = trace.states[min(step, trace.steps - 1)]
     return {name: (None if np.isnan(row[i, 0]) else (float(row[i, 0]), float(row[i, 1]), float(row[i, 2]))) for i, name in enumerate(trace.names)}

@@ -166,12 +166,14 @@ class Vocabulary:
     def spellings(self) -> tuple[str, ...]:
         return tuple(self._by_spelling)
 
-    def materials(self, concrete: tuple[str, ...]) -> tuple[str, ...]:
-        """The materials every one of `concrete` may be made of, in the vocabulary's order."""
-        found = [set(self._concrete[c].materials) for c in concrete if c in self._concrete]
-        common = set.intersection(*found) if found else set()
+    def materials(self, concrete: tuple[str, ...] | None = None, every: bool = True) -> tuple[str, ...]:
+        """The materials every one of `concrete` may be made of (with `every` False: any of
+        them; `concrete` None: every concrete object), in the vocabulary's order."""
+        names = tuple(self._concrete) if concrete is None else concrete
+        found = [set(self._concrete[c].materials) for c in names if c in self._concrete]
+        chosen = (set.intersection if every else set.union)(*found) if found else set()
         order = [m for c in self.concrete_objects for m in c.materials]
-        return tuple(dict.fromkeys(m for m in order if m in common))
+        return tuple(dict.fromkeys(m for m in order if m in chosen))
 
     def is_static(self, concrete: tuple[str, ...]) -> bool:
         return all(self._concrete[c].static for c in concrete)

@@ -166,10 +166,11 @@ class ActionSimulator:
         """The features (or, with `picture`, the picture) of a valid play's level after step
         `step` (-1: the last, when everything rests)."""
         from physc.api.simulating import play_to_rest
+        from physc.simulation.trace import Playout
 
         domain, level, played = result.played
         trace = result.trace
-        if getattr(trace, "final", None) is not None and 0 <= step < trace.steps - 1:  # an outcome playout: the whole play, again
+        if isinstance(trace, Playout) and 0 <= step < trace.steps - 1:  # an outcome playout: the whole play, again
             trace = play_to_rest(domain, level, played)
         make = self.playing.frame_picture if picture else self.playing.frame_features
         return make(domain, level, played, trace, trace.steps - 1 if step < 0 else step)

@@ -43,15 +43,12 @@ def complete(place: Place, snippets: bool) -> list[types.CompletionItem]:
             types.CompletionItem(label=t.name, kind=Kind.Class, detail=" | ".join(t.concrete), documentation=t.noun or None)
             for t in vocabulary.object_terms
         ]
-    if role == context.CONCRETE:
+    if role in (context.CONCRETE, context.MATERIAL):
         term = vocabulary.object_term(place.object_term or "")
         names = term.allowed if term else tuple(c.name for c in vocabulary.concrete_objects)
-        return [_concrete(vocabulary, name) for name in names]
-    if role == context.MATERIAL:
-        term = vocabulary.object_term(place.object_term or "")
-        names = term.allowed if term else tuple(c.name for c in vocabulary.concrete_objects)
-        materials = dict.fromkeys(m for name in names for m in (vocabulary.concrete(name).materials if vocabulary.concrete(name) else ()))
-        return [types.CompletionItem(label=m, kind=Kind.EnumMember, detail="material") for m in materials]
+        if role == context.CONCRETE:
+            return [_concrete(vocabulary, name) for name in names]
+        return [types.CompletionItem(label=m, kind=Kind.EnumMember, detail="material") for m in vocabulary.materials(names, every=False)]
     if role == context.TERM and place.section in ("interactions", "restrictions"):
         kind = INTERACTION if place.section == "interactions" else RESTRICTION
         return [_term(t, snippets) for t in vocabulary.terms if t.kind == kind]

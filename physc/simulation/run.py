@@ -157,12 +157,10 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
         for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
             world.remove(name)
             del lingering[name]
-        row = world.states(dynamic, out=states[step])  # NaN for the bodies already gone
-        for name in lingering:
-            row[index[name]] = np.nan
+        row = _read(world, dynamic, states[step], lingering, index)
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
-            values = _removals(world, dynamic, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
+            values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
         if rules.finished(values, alive, time):
             states = states[: step + 1]
             break
@@ -208,30 +206,33 @@ def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt:
                 world.remove(name)
                 del lingering[name]
         if reads:
-            world.states(dynamic, out=row)
-            for name in lingering:
-                row[index[name]] = np.nan
-            values = row.tolist()
+            values = _read(world, dynamic, row, lingering, index).tolist()
         if removes and rules.removals_due(values, alive, time):
-            if not reads:
-                world.states(dynamic, out=row)
-            values = _removals(world, dynamic, rules, row, time, alive, damage, destructions, lingering)
+            values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering)
         if finished(values, alive, time) or (settled is not None and settled(time, end)):
             break
-    world.states(dynamic, out=row)
+    return Recording(_read(world, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+
+
+def _read(world, dynamic: Sequence[str], out: np.ndarray, lingering: dict, index: dict) -> np.ndarray:
+    """Every dynamic body's state into `out` (NaN for the bodies gone from the world, and for
+    those that linger after leaving the level)."""
+    world.states(dynamic, out=out)
     for name in lingering:
-        row[index[name]] = np.nan
-    return Recording(row[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+        out[index[name]] = np.nan
+    return out
 
 
-def _removals(world, dynamic, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict, recording=None) -> list:
+def _removals(
+    world, dynamic, index: dict, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict,
+    recording=None,
+) -> list:
     """The bodies the rules say leave now taken out (or left to linger), in `dynamic` order: the
     order of removals must not depend on string hashing, and a removal (a blast) changes the
-    state of what is read after it. `row` is rewritten (NaN for the bodies gone); the new
-    values. `recording`: (the bodies no longer recorded, the contacts to end for the record),
-    which a lingering body joins."""
+    state of what is read after it. `row` is written anew (each body still in the level read
+    again, NaN for the others); the new values. `recording`: (the bodies no longer recorded,
+    the contacts to end for the record), which a lingering body joins."""
     row[:] = np.nan
-    index = {name: i for i, name in enumerate(dynamic)}
     for name in [n for n in dynamic if n in alive]:
         state = world.state(name)
         gone = rules.gone(name, state, time, damage)
