@@ -90,11 +90,21 @@ class BodySpec:
     gravity_scale: float = 1.0  # relative to the world's gravity
     angular_damping: float = 0.0  # Box2D-style: ω ← ω / (1 + dt · damping) each step
     continuous: bool = False  # swept against moving bodies too (Box2D's bullet; Unity's Continuous detection)
+    group: str = ""  # bodies of one named group never collide with each other (Unity's layer matrix; Box2D's negative group)
 
     @property
     def outline(self) -> tuple[float, float, float, float, float]:
         """(x, y, angle, half-width, half-height): the body's box where it starts (Trace.outlines)."""
         return (self.x, self.y, self.angle, *half_extents(self.shape))
+
+
+_GROUPS: dict[str, int] = {}
+
+
+def group_number(group: str) -> int:
+    """The positive number an engine knows a `BodySpec.group` by (the same in every world of
+    a process; only equality matters, so the order groups are first met in does not)."""
+    return _GROUPS.setdefault(group, len(_GROUPS) + 1)
 
 
 @attrs.frozen

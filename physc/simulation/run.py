@@ -13,6 +13,8 @@ hooks per simulator):
 * `removals_due` / `gone` / `on_removed`: whether anything may leave this step (cheap,
   every step), why a body leaves (the destruction's cause and author), and what its
   leaving does (a TNT's blast);
+* `enter`: bodies that join the run now (Science Birds: the next bird launched, a blue
+  bird's split), for rules that say `arrivals`;
 * `finished`: the run is over before its time (everything at rest, the goal met);
 * `solved`: whether the recorded run met the domain's goal;
 * `resume`: the run continues from a snapshot (physc.simulation.snapshot): the rules'
@@ -44,8 +46,18 @@ class RunRules:
     step). Rules that ask the world what they need instead (World.moving, World.touches) say
     False, and an outcome playout (`play_out`) then reads no state until the run ends."""
 
+    arrivals = False
+    """Whether bodies join the run after its start (`enter`): the dynamic bodies they will be
+    are listed from the start, not yet in the world (their rows NaN until they enter)."""
+
     def on_start(self, world) -> None:
-        """The run is about to begin in `world`."""
+        """The run is about to begin in `world`: the dynamic bodies not in it yet are
+        `arrivals`' (see `enter`)."""
+
+    def enter(self, world, values: list, alive: set[str], damage: list[DamageRecord], time: float) -> tuple[str, ...]:
+        """The dynamic bodies that join the run now, added to `world` by the rules (for rules
+        that say `arrivals`; called every step after the removals)."""
+        return ()
 
     def on_contact(self, world, contact: ContactRecord, damage: list[DamageRecord], time: float) -> None:
         """A contact began at `time` (append what it damaged to `damage`): the two bodies'
@@ -124,9 +136,12 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
     lingering: dict[str, float] = {}  # bodies gone from the level but still in the world → when they leave it
+    arrivals = rules.arrivals
     unrecorded: set[str] = set()  # bodies that lingered: their contacts are no longer recorded
     parting: list[tuple[str, str]] = []  # their contacts when they left the level: ended for the record next step, as a removal's are
     rules.on_start(world)
+    if arrivals:
+        alive &= set(world.names)  # the bodies still to come are not alive yet
     first, already = 0, set()
     if resume is not None:
         first, already = _continued(world, dynamic, rules, resume, states, alive), set(resume.touching)
@@ -161,6 +176,8 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
             values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
+        if arrivals and _entered(world, rules, values, alive, damage, time, row, index):
+            values = row.tolist()
         if rules.finished(values, alive, time):
             states = states[: step + 1]
             break
@@ -186,11 +203,14 @@ def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt:
     reads = rules.reads_states
     step_world, finished, check = world.step, rules.finished, budget.check
     settled = None if to_end or type(rules).settled is RunRules.settled else rules.settled
+    arrivals = rules.arrivals
     end = steps * dt
     row = np.full((len(dynamic), 6), np.nan)
     values = None
     world.listen(hears)
     rules.on_start(world)
+    if arrivals:
+        alive &= set(world.names)
     step = -1
     for step in range(steps):
         check()
@@ -209,9 +229,21 @@ def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt:
             values = _read(world, dynamic, row, lingering, index).tolist()
         if removes and rules.removals_due(values, alive, time):
             values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering)
+        if arrivals and _entered(world, rules, values, alive, damage, time, row, index):
+            values = row.tolist() if reads else values
         if finished(values, alive, time) or (settled is not None and settled(time, end)):
             break
     return Recording(_read(world, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+
+
+def _entered(world, rules: RunRules, values, alive: set, damage: list, time: float, row: np.ndarray, index: dict) -> bool:
+    """The bodies the rules bring in now (`RunRules.enter`) made alive, their states read into
+    `row`; whether any came."""
+    new = rules.enter(world, values, alive, damage, time)
+    for name in new:
+        alive.add(name)
+        row[index[name]] = world.state(name)
+    return bool(new)
 
 
 def _read(world, dynamic: Sequence[str], out: np.ndarray, lingering: dict, index: dict) -> np.ndarray:

@@ -103,7 +103,8 @@ def test_the_games_rules_go_on_from_the_lives_and_the_birds_checks():
     continued = game.play(SHOT, 10.0, settle_after_solved=0.3, resume=Snapshot.of(trace, cut))
     assert [d for d in continued.damage if d.target == "block"][0] == damaged[0]
     assert game.life["block"] <= damaged[0].life
-    assert game._bird_struck and game._bird_check_at > cut * trace.dt
+    assert "bird" in game.flights.struck
+    assert [d.time for d in continued.destructions if d.name == "bird"] == [d.time for d in trace.destructions if d.name == "bird"]
 
 
 def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):

@@ -34,7 +34,7 @@ from collections.abc import Sequence
 import Box2D
 import numpy as np
 
-from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, colliders, parts
+from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, colliders, group_number, parts
 from physc.backends.convex import MAX_CORNERS, convex_parts, signed_area
 from physc.backends.settings import EngineSettings
 
@@ -247,7 +247,10 @@ def _definitions(spec: BodySpec) -> tuple:
     area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
     density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
     fixtures = tuple(
-        Box2D.b2FixtureDef(shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider)
+        Box2D.b2FixtureDef(
+            shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider,
+            **({"groupIndex": -group_number(spec.group)} if spec.group else {}),
+        )
         for shape, collider in shapes
     )
     return body, _Fixtures(fixtures, tuple(shape for shape, _ in shapes))

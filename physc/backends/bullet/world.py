@@ -91,6 +91,7 @@ class BulletWorld(ContactLog):
         self._id: dict[str, int] = {}  # name → Bullet body id
         self._name_of: dict[int, str] = {}  # Bullet id → name (Bullet gives a freed id to the next body)
         self._dynamic: dict[str, Dynamic] = {}
+        self._groups: dict[str, list[str]] = {}  # BodySpec.group → its bodies so far
         self._pairs: dict[tuple[int, int], tuple] = {}  # touching pairs after the last step
         self._dt: float | None = None
         self._unlagged: set[str] = set()  # bodies set moving before the first step (set_velocity)
@@ -114,6 +115,10 @@ class BulletWorld(ContactLog):
             self._dynamic[spec.name] = Dynamic(mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale)
             if self._dt is not None:
                 self._set_damping(spec.name, body)
+        if spec.group and not spec.static:  # no collision with the group's other bodies (Bullet filters pairs of links)
+            for other in self._groups.setdefault(spec.group, []):
+                pybullet.setCollisionFilterPair(body, self._id[other], BODY_LINK, BODY_LINK, 0, physicsClientId=self.client)
+            self._groups[spec.group].append(spec.name)
         self.names.append(spec.name)
         self._id[spec.name] = body
         self._name_of[body] = spec.name

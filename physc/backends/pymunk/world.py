@@ -30,7 +30,7 @@ import numpy as np
 import pymunk
 import pymunk.batch
 
-from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, colliders, parts
+from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, colliders, group_number, parts
 from physc.backends.settings import EngineSettings
 
 HONOURS = {
@@ -123,6 +123,8 @@ class PymunkWorld(ContactLog):
                     shape.density = spec.density
             shape.friction = math.sqrt(max(spec.friction, 0.0))
             shape.elasticity = spec.bounciness
+            if spec.group:
+                shape.filter = pymunk.ShapeFilter(group=group_number(spec.group))
         self.space.add(body, *shapes)
         self._changed = True
         if not spec.static and spec.gravity_scale != 1.0:

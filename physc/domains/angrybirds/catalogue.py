@@ -101,8 +101,12 @@ def _block(name, prefab, width, height, life, outline="box", points=()):
 
 
 _SHAPES = (
-    # Birds: one circle each (Science Birds: r 0.17 for the red bird).
+    # Birds: one circle each (Science Birds: r 0.17 for the red bird; birds.py has the rest).
     Shape("redBird", "BirdRed", "bird", 0.34, 0.34, "circle"),
+    Shape("blueBird", "BirdBlue", "bird", 0.36, 0.36, "circle"),
+    Shape("yellowBird", "BirdYellow", "bird", 0.32, 0.32, "circle"),
+    Shape("blackBird", "BirdBlack", "bird", 0.40, 0.40, "circle"),
+    Shape("whiteBird", "BirdWhite", "bird", 0.52, 0.52, "circle"),
     # Pigs: the object grammar's two, and BasicBig for real levels.
     Shape("pigSmall", "BasicSmall", "pig", 0.464, 0.45, "ellipse", life={"": 1}),
     Shape("pigMedium", "BasicMedium", "pig", 0.779, 0.756, "ellipse", life={"": 15}),

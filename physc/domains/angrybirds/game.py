@@ -23,14 +23,15 @@ from physc.domains.angrybirds.catalogue import (
     extent,
     shape,
 )
-from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.flight import FIRST, Flights
+from physc.domains.angrybirds.launch import Shot, Shots, shots_of
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import ScienceBirdsWorld
 from physc.simulation.recognise import violations
 from physc.simulation.run import RunRules, play_out, run
 from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, Playout, Trace
 
-BIRD = "bird"
+BIRD = FIRST  # the first bird's name
 GROUND = "ground"
 
 
@@ -51,6 +52,7 @@ class Game(RunRules):
         self._fields, self._combos = readings(points)
         self._settings = tuple(f"rules.{f}" for f in self._fields)
         self._platform_masses = next((p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,))
+        self.flights = Flights((), level.birds, self.rules, self.model, world.launch.bird_rest[0])  # the birds of a run (`simulate`)
 
     def _material(self, obj: LevelObject) -> str:
         return obj.material if obj.material in self.model.materials else "wood"
@@ -119,17 +121,27 @@ class Game(RunRules):
         return world
 
     def launch(self, world, shot: Shot) -> None:
-        """Put the bird into `world` (built by `build`) at the slingshot, flying as `shot` sends it."""
-        model = self.model
-        origin, velocity = shot.start(self.world)
-        bird = BodySpec(
-            BIRD, Circle(shape("redBird").width / 2), *origin, mass=model.bird_mass, friction=model.bird_friction,
-            bounciness=model.bird_bounciness, angular_damping=model.bird_angular_drag, continuous=True,
-        )
-        world.add(bird)
-        self.outlines[BIRD] = bird.outline
-        world.set_velocity(BIRD, *velocity)
-        self.kinds[BIRD] = "bird"
+        """Put the bird of `shot` alone into `world` (built by `build`) at the slingshot, flying as
+        `shot` sends it (a world stepped by hand; `simulate` launches its shots in turn)."""
+        self.flights = Flights((shot,), self.level.birds, self.rules, self.model, self.world.launch.bird_rest[0])
+        self._launch(world, self.flights.launch_due(0.0))
+        self.kinds[shot.bird] = "bird"
+
+    def _launch(self, world, k: int) -> str:
+        """Put the `k`th bird into `world` at the slingshot, flying as its shot sends it (from
+        where the game starts it: its own collider's offset); its name."""
+        flights = self.flights
+        shot, name = flights.shots[k], flights.names[k]
+        (x, y), velocity = shot.start(self.world)
+        bird, red = flights.of(name), self.world.launch.collider_offset
+        origin = (x + bird.offset[0] - red[0], y + bird.offset[1] - red[1]) if bird.prefab != "BirdRed" else (x, y)
+        self._enter(world, flights.body(name, origin), velocity)
+        return name
+
+    def _enter(self, world, spec: BodySpec, velocity: tuple[float, float]) -> None:
+        world.add(spec)
+        self.outlines[spec.name] = spec.outline
+        world.set_velocity(spec.name, *velocity)
 
     # ---- playing ----------------------------------------------------------------------
     def simulate(
@@ -155,18 +167,22 @@ class Game(RunRules):
         world = self.build()
         if invulnerable is None:
             invulnerable = 0.0 if shot is not None else rules.invulnerable_seconds
-        dynamic = [o.name for o in self.level.objects if self.kinds[o.name] != "platform"]
-        if shot is not None:
-            self.launch(world, shot)
-            dynamic = [BIRD] + dynamic
+        shots = shots_of(shot)
+        self.flights = flights = Flights(shots, self.level.birds, rules, self.model, self.world.launch.bird_rest[0])
+        self.arrivals = flights.several or any(s.tap is not None for s in shots)
+        seconds *= max(len(shots), 1)  # each shot's time
+        for name in flights.bodies:
+            self.kinds[name] = flights.kind(name)
+        dynamic = flights.bodies + [o.name for o in self.level.objects if self.kinds[o.name] != "platform"]
+        self._row = {name: i for i, name in enumerate(dynamic)}
+        if shots:
+            self._launch(world, flights.launch_due(0.0))
         # This run's settings and state, read by the hooks below.
         self._invulnerable = invulnerable
         self._dynamic = dynamic
         self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
         self._settle_after_solved, self._solved_at = settle_after_solved, None
         self._stop_at_rest, self._resting_since = stop_at_rest, None
-        self._bird_check_at = rules.bird_lifetime  # the next time the bird may be removed (ABBird.cs)
-        self._bird_struck = False  # whether the bird has collided yet
         dt = self.world.engine.dt
         if not record:
             if resume is not None:
@@ -189,10 +205,7 @@ class Game(RunRules):
     def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
         for name in self._dying.intersection((contact.a, contact.b)):  # OnCollisionEnter2D → DealDamage → Die: it stops again
             _stop(world, name)
-        if not self._bird_struck and BIRD in (contact.a, contact.b):
-            self._bird_struck = True
-            # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
-            self._bird_check_at = min(time + self.rules.bird_still_after, self.rules.bird_lifetime)
+        self.flights.on_contact(contact.a, contact.b, time)
         if time > self._invulnerable:
             self._damage(world, contact, damage, time)
 
@@ -204,12 +217,12 @@ class Game(RunRules):
         self._depends = list(snapshot.depends)
         self.spent = {name for name, life in self.life.items() if life <= 0} - {d.name for d in snapshot.destructions}
         struck = next((c.time for c in snapshot.contacts if BIRD in (c.a, c.b)), None)
-        if struck is not None:
-            self._bird_struck = True
+        if struck is not None and BIRD in self.flights.flying:  # (a snapshot is of a one-shot play: AngryBirds.resumes)
+            self.flights.struck.add(BIRD)
             check = min(struck + self.rules.bird_still_after, self.rules.bird_lifetime)
             while check <= snapshot.time + 1e-9 and check < self.rules.bird_lifetime:
                 check = min(check + self.rules.bird_still_every, self.rules.bird_lifetime)
-            self._bird_check_at = check
+            self.flights.flying[BIRD] = check
         gone = {d.name: d.time for d in snapshot.destructions}
         if self._pigs and set(self._pigs) <= set(gone):
             self._solved_at = max(gone[p] for p in self._pigs)
@@ -219,6 +232,24 @@ class Game(RunRules):
     def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":
             self._explode(world, name, alive, damage, time)
+        elif self.kinds[name] in ("bird", "egg"):
+            blast = self.flights.blast(name)
+            if blast is not None:  # a black bird's or an egg's blast (ABTNT.Explode)
+                self._blast(world, name, blast.radius, blast.power, blast.damage, alive, damage, time)
+            self.flights.left(name, time)
+
+    def enter(self, world, values: list, alive: set, damage: list, time: float) -> tuple[str, ...]:
+        """What comes into the level now: a power's bodies at a tap (flight.py), the next bird."""
+        flights, new = self.flights, []
+        for name in flights.taps_due(time):
+            if name in alive:
+                for spec, velocity in flights.fire(world, name, time):
+                    self._enter(world, spec, velocity)
+                    new.append(spec.name)
+        k = flights.launch_due(time)
+        if k is not None:
+            new.append(self._launch(world, k))
+        return tuple(new)
 
     def finished(self, values: list, alive: set, time: float) -> bool:
         """With `settle_after_solved`, that long after the last pig is destroyed, once nothing
@@ -230,12 +261,15 @@ class Game(RunRules):
                 return True
         if self._stop_at_rest:
             still = self.world.rest_speed
-            if BIRD in alive or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
+            if not alive.isdisjoint(self.flights.flying) or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
                 self._resting_since = None
             elif self._resting_since is None:
                 self._resting_since = time
             elif time - self._resting_since >= 0.3:
-                return True
+                if not self.flights.waiting():
+                    return True
+                self.flights.resting()  # the next shot comes now
+                self._resting_since = None
         return False
 
     def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, **options) -> Trace:
@@ -247,6 +281,9 @@ class Game(RunRules):
         """`trace`, a simulation of this level, with the interactions recognised in it and
         the restrictions it violates (what `play` adds to `simulate`)."""
         interactions = self.world.recogniser.recognise(trace, self.radii())
+        flights = getattr(self, "flights", None)
+        if flights is not None and (flights.tapped or flights.parent):
+            interactions = flights.read(interactions)
         return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
 
     def removals_due(self, values: list, alive: set, time: float) -> bool:
@@ -259,17 +296,21 @@ class Game(RunRules):
         for v in values:  # `_outside`, inlined: this runs every step, and a call per body nearly triples its cost
             if v[0] < left or v[0] > right:
                 return True
-        if BIRD in alive and time >= self._bird_check_at - 1e-9:
-            _, _, _, vx, vy, _ = values[0]  # the bird, if any, is the first body
-            if self._bird_done(vx, vy, time):
-                return True
-            self._bird_check_at = min(self._bird_check_at + self.rules.bird_still_every, self.rules.bird_lifetime)
+        flights = self.flights
+        if flights.blasted or flights.fuses and flights.arm(time):
+            return True
+        for name in flights.flying:
+            if name in alive and flights.check_due(name, time):
+                _, _, _, vx, vy, _ = values[self._row[name]]
+                if flights.done(name, vx, vy, time):
+                    return True
+                flights.checked(name)
         return False
 
     def _falling(self, values: list, dynamic: list[str]) -> bool:
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
         fast = self.world.falling_speed
-        return any(v[4] < -fast for v, name in zip(values, dynamic) if name != BIRD)
+        return any(v[4] < -fast for v, name in zip(values, dynamic) if self.kinds.get(name) != "bird")
 
     def lingers(self, world, name: str, cause: str) -> float:
         """ABGameObject.Die (`Rules.dying_lingers`): a dying pig or block stops, loses its
@@ -297,7 +338,8 @@ class Game(RunRules):
             return ("damage", self._last_attacker(damage, name))
         if self._outside(x):
             return ("out of world", None)
-        if name == BIRD and time >= self._bird_check_at - 1e-9 and self._bird_done(vx, vy, time):
+        flights = self.flights
+        if name in flights.blasted or (flights.check_due(name, time) and flights.done(name, vx, vy, time)):
             return ("removed", None)
         return None
 
@@ -306,19 +348,15 @@ class Game(RunRules):
         already gone)."""
         return x < self.world.frame.left or x > self.world.frame.right
 
-    def _bird_done(self, vx: float, vy: float, time: float) -> bool:
-        """At a check (`_bird_check_at`): whether the bird goes, too old or nearly still."""
-        rules = self.rules
-        return time >= rules.bird_lifetime - 1e-9 or math.hypot(vx, vy) < rules.bird_still_speed
-
     def _wound(self, target: str, amount: float) -> None:
         self.life[target] -= amount
         if self.life[target] <= 0:
             self.spent.add(target)
 
     def radii(self) -> dict[str, float]:
-        """The rolling radius of every body that can roll: circles, pigs, the bird."""
-        out = {BIRD: shape("redBird").width / 2}
+        """The rolling radius of every body that can roll: circles, pigs, the birds."""
+        flights = getattr(self, "flights", None)
+        out = {BIRD: shape("redBird").width / 2} if flights is None else {n: flights.of(n).radius for n in flights.bodies if flights.kind(n) == "bird"}
         for obj in self.level.objects:
             catalogue = BY_PREFAB[obj.type]
             if catalogue.round or catalogue.kind == "pig":
@@ -370,26 +408,30 @@ class Game(RunRules):
         return next((d.by for d in reversed(damage) if d.target == name and d.amount > 0), None)
 
     def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
-        """ABTNT.Explode: every body within the radius but birds takes damage and an impulse
-        away from the TNT, both falling off linearly with the distance."""
+        """A TNT box's blast (TNT.prefab's numbers, `Rules`)."""
         rules = self.rules
+        self._blast(world, name, rules.tnt_radius, rules.tnt_impulse, rules.tnt_damage, alive, damage, time)
+
+    def _blast(self, world, name: str, radius: float, power: float, amount: float, alive: set, damage: list, time: float) -> None:
+        """ABTNT.Explode where `name` is: every body within `radius` but birds takes damage and
+        an impulse away from it, both falling off linearly with the distance."""
         cx, cy = world.state(name)[:2]
         for other in sorted(alive):
             if other == name or self.kinds.get(other) == "bird":
                 continue
             x, y, _, vx, vy, w = world.state(other)
             distance = math.hypot(x - cx, y - cy)
-            share = max(1.0 - distance / rules.tnt_radius, 0.0)
+            share = max(1.0 - distance / radius, 0.0)
             if share <= 0.0 or distance == 0:
                 continue
             # Physics2D.OverlapCircleAll lists colliders: a body with several takes the blast from each.
             hits = self.colliders.get(other, 1)
-            push = hits * rules.tnt_impulse * share / max(world.mass(other), 1e-6)
+            push = hits * power * share / max(world.mass(other), 1e-6)
             world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
             if other in self.life:
-                amount = hits * rules.tnt_damage * share
-                self._wound(other, amount)
-                damage.append(DamageRecord(time, other, amount, self.life[other], name))
+                dealt = hits * amount * share
+                self._wound(other, dealt)
+                damage.append(DamageRecord(time, other, dealt, self.life[other], name))
 
 
 def _stop(world, name: str) -> None:

@@ -80,11 +80,18 @@ class Launch:
 @attrs.frozen
 class Shot:
     """A shot: at a target point on the low or high trajectory, or at a release angle. Where
-    it flies depends on the world (its launch and gravity), so each question takes one."""
+    it flies depends on the world (its launch and gravity), so each question takes one.
+    Version 2 (several shots, birds' powers): the bird it launches (the trace's name of it),
+    when the player taps (its power: seconds after the launch, None: no tap), and, for a shot
+    after the first, when it is shot (`wait`: seconds after the bird before it left the level;
+    None: once the level is at rest, as Phy-Q's agents wait)."""
 
     target: tuple[float, float] | None = None
     trajectory: str = "low"  # "low" | "high"
     angle: float | None = None  # degrees above the horizontal, counter-clockwise
+    tap: float | None = None
+    bird: str = "bird"
+    wait: float | None = None
 
     def release_angle(self, world) -> float:
         """The release angle in degrees in `world` (physc.domains.angrybirds.worlds)."""
@@ -112,7 +119,7 @@ class Shot:
         for trajectory in (self.trajectory, other):
             aimed = world.launch.aim(*target, trajectory, gravity)
             if aimed is not None and abs(aimed - angle) < 1e-3:
-                return Shot(target=target, trajectory=trajectory)
+                return attrs.evolve(self, target=target, trajectory=trajectory, angle=None)
         return None
 
     def origin(self, world) -> tuple[float, float]:
@@ -130,6 +137,28 @@ class Shot:
         return self.start(world)[1]
 
     def text(self) -> str:
-        if self.angle is not None:
-            return f"angle {self.angle:g}°"
-        return f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
+        aim = f"angle {self.angle:g}°" if self.angle is not None else f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
+        return aim + ("" if self.tap is None else f", tap at {self.tap:g} s")
+
+    @property
+    def shots(self) -> tuple[Shot, ...]:
+        return (self,)
+
+
+@attrs.frozen
+class Shots:
+    """Several shots in turn, one bird each (language version 2): each is shot from the state
+    the one before left (`Shot.wait`)."""
+
+    shots: tuple[Shot, ...]
+
+    def text(self) -> str:
+        return "; ".join(f"{s.bird}: {s.text()}" for s in self.shots)
+
+    def then(self, shot: Shot) -> Shots:
+        return Shots(self.shots + (shot,))
+
+
+def shots_of(action) -> tuple[Shot, ...]:
+    """The shots of an action (a Shot or Shots; None: none)."""
+    return () if action is None else action.shots

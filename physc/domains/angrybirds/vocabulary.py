@@ -17,6 +17,11 @@ MATERIALS = ("wood", "stone", "ice")  # a block's (catalogue.MATERIALS)
 
 CONCRETE_OBJECTS = (
     ConcreteObject("redBird", description="the red bird (Science Birds BirdRed)"),
+    # Version 2: the game's other birds and their powers, set off by a tap (`tap(bird)`).
+    ConcreteObject("blueBird", description="the blue bird (BirdBlue): a tap splits it into three, fanned +15°, +5° and −5°"),
+    ConcreteObject("yellowBird", description="the yellow bird (BirdYellow): a tap speeds it up along its flight"),
+    ConcreteObject("blackBird", description="the black bird (BirdBlack): it blasts at a tap, or 0.6 s after it strikes"),
+    ConcreteObject("whiteBird", description="the white bird (BirdWhite): a tap drops an egg that blasts where it lands"),
     ConcreteObject("pigSmall", description="a small pig (BasicSmall)"),
     ConcreteObject("pigMedium", description="a medium pig (BasicMedium)"),
     ConcreteObject("circleSmall", description="a small circular block (CircleSmall)", materials=MATERIALS),
@@ -42,7 +47,7 @@ CONCRETE_OBJECTS = (
 SQUARED = ("rectFat", "rectBig", "rectMedium", "rectSmall", "rectTiny", "squareSmall", "squareTiny")  # flat-bottomed: they fall and slide
 
 OBJECT_TERMS = (
-    ObjectTerm("bird", ("redBird",), noun="a bird"),
+    ObjectTerm("bird", ("redBird",), noun="a bird", pinnable=("blueBird", "yellowBird", "blackBird", "whiteBird")),
     ObjectTerm("pig", ("pigSmall", "pigMedium"), noun="a pig", pinnable=("pigBig",)),
     ObjectTerm("rollableBlock", ("circleSmall", "circle"), "rBlock", noun="a rollable object"),
     ObjectTerm(
