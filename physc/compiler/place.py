@@ -18,6 +18,8 @@ search moves on to the next conjunction.
 
 from __future__ import annotations
 
+import itertools
+
 import random
 
 from physc.compiler.concrete_layout import (
@@ -94,8 +96,12 @@ class Place:
 
     @staticmethod
     def _overlap(bodies: list[Body], placed, joints) -> tuple[str, str] | None:
+        """The first pair of bodies that overlap; the player's objects may share their place
+        (several birds are shot in turn from one slingshot)."""
         outlines = {b.name: polygon(placed[b.name]) for b in bodies if b.concrete != "ground"}
-        return overlapping_pair(outlines, 1e-6, joints)
+        players = [b.name for b in bodies if b.role == "player"]
+        turns = {frozenset(pair) for pair in itertools.combinations(players, 2)}
+        return overlapping_pair(outlines, 1e-6, set(joints) | turns)
 
     @staticmethod
     def _layout(domain_name, graphs, bodies, centres, separations, deferred) -> ConcreteLayout:

@@ -117,8 +117,20 @@ class SimulatedDomain(Domain):
 
     @_no_default
     def actions(self, level, scenario) -> list[tuple[str, object]]:
-        """(label, action) for every candidate action, in the order they are tried."""
+        """(label, action) for every candidate action, in the order they are tried. A domain
+        whose player acts several times (`shot_starts`) takes `start` and `before` too: the
+        candidates of the action that starts at interaction `start`, each extending `before`."""
         raise MissingCapability(self.name, ("actions",), "generating a task")
+
+    def shot_starts(self, scenario) -> tuple[int, ...]:
+        """The interactions at which a later action of the player starts (Angry Birds: a later
+        bird's shot); the search chooses it there, extending each action that got that far
+        (`actions(level, scenario, start, before)`). The default: one action, ()."""
+        return ()
+
+    def resumes(self, action) -> bool:
+        """Whether a play of `action` may go on from a snapshot (`resumable`, for this action)."""
+        return self.resumable
 
     def rules(self, level) -> RunRules:
         """The rules of a run in `level` (when the goal is met, when the run is over): a new

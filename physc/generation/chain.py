@@ -166,7 +166,12 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
     it, the ones whose play leaves the stage's links the most margin come first."""
     domain = problem.domain
     scene = prefix(layout, problem.entry, stage.start)
-    if parent.attempts:
+    if parent.attempts and stage.start in problem.shot_starts:  # the player's next action: each parent's extended
+        order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
+        level = problem.level_of(scene)
+        actions = [(f"{a.label}; {label}", action) for a in order for label, action in domain.actions(level, problem.scenario, stage.start, a.action)]
+        screen = len(actions)
+    elif parent.attempts:
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         actions, screen = [(a.label, a.action) for a in order], 1
     else:
@@ -177,8 +182,9 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
     # The domain's whole run (it stops once all is at rest): a stage's path must go on long
     # enough for the next stage to read where its actor goes, which a slow roll may take
     # most of the run to show (PHYRE: a green ball reaching its ledge's end after 6 s).
+    extends = parent.attempts and stage.start in problem.shot_starts
     for j, (label, action) in enumerate(actions):
-        resume = snapshot(problem, scene, parent, stage, order[j]) if parent.attempts else None
+        resume = snapshot(problem, scene, parent, stage, order[j]) if parent.attempts and not extends else None
         attempt = attrs.evolve(simulate(problem, ledger, scene, action, None, resume), label=label)
         if resume is not None and passes(problem, attempt, stage, layout):  # confirmed from the start
             attempt = attrs.evolve(simulate(problem, ledger, scene, action), label=label)

@@ -41,14 +41,16 @@ class Problem:
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
     validate: bool = True
     acceptance: bool = True  # whether the domain's acceptance rule judges the task
+    shot_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
 
     @classmethod
     def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
         entry = introduced(layout, scenario.interactions)
+        starts = tuple(domain.shot_starts(scenario))
         return cls(
             domain, scenario, layout, domain.search_settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
-            entry, tuple(stages(scenario.interactions, entry)),
-            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance,
+            entry, tuple(stages(scenario.interactions, entry, starts)),
+            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance, starts,
         )
 
     @property

@@ -6,7 +6,8 @@ platforms joined edge to edge enter together, so a shelf that several bodies mov
 along is there from the first of them. The player's object, the ground and what no
 interaction names enter at the start or, for objects no interaction needs, last.
 
-A *stage* runs from an interaction that brings objects in to the next such one. A
+A term of the player's objects alone (a tap of the bird) brings in what the term after it
+brings in. A *stage* runs from an interaction that brings objects in to the next such one. A
 stage's scene holds only what has entered by its start, so what the chain has not
 reached yet can neither help nor get in the way, and a simulation says exactly how far
 the prefix gets.
@@ -46,10 +47,16 @@ def introduced(layout, interactions: Sequence) -> dict[str, int]:
     entry = {}
     for o in layout.objects:
         entry[o.name] = 0 if o.role in ALWAYS or o.concrete in ALWAYS else total
+    players = {o.name for o in layout.objects if o.role == "player"}
+    pending = None  # a run of terms of the player's objects alone (a tap): what comes next enters with them
     for k, term in enumerate(interactions):
+        if term.objects and set(term.objects) <= players:
+            pending = k if pending is None else pending
+            continue
         for name in term.objects:
             if name in entry:
-                entry[name] = min(entry[name], k)
+                entry[name] = min(entry[name], k if pending is None else pending)
+        pending = None
     before = [(support, a) for a, support in supports(layout).items()]
     before += [pair for a, b in map(tuple, joined(layout.conjunction)) for pair in ((a, b), (b, a))]
     before = [(x, y) for x, y in before if x in entry and y in entry]
@@ -62,12 +69,13 @@ def introduced(layout, interactions: Sequence) -> dict[str, int]:
     return entry
 
 
-def stages(interactions: Sequence, entry: Mapping[str, int]) -> list[ChainStage]:
+def stages(interactions: Sequence, entry: Mapping[str, int], shot_starts: Sequence[int] = ()) -> list[ChainStage]:
     """The stages of `interactions` whose objects enter at the interaction `entry` says
     (objects brought in by no interaction: at len(interactions), a last stage that
-    realises nothing new but must keep the rest)."""
+    realises nothing new but must keep the rest); a later action of the player (`shot_starts`)
+    starts a stage too, where the search chooses it."""
     total = len(interactions)
-    starts = sorted({0, *(k for k in entry.values() if 0 < k < total)})
+    starts = sorted({0, *(k for k in (*entry.values(), *shot_starts) if 0 < k < total)})
     if any(k >= total for k in entry.values()):
         starts.append(total)
     out = []

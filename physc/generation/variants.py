@@ -96,30 +96,34 @@ def on_path(problem: Problem, layout, declared, stage: ChainStage, attempt: Atte
     if k and interactions[k - 1].name in ("roll", "slide", "fall"):
         since += settings.settle
     first = int(since / trace.dt)
-    rows = trace.states[first:, trace.index(actor), :]
     members = supports.movers(target, problem.entry)
     sizes = {o.name: (o.width, o.height) for o in layout.objects}
     actor_size = sizes.get(actor, (0.0, 0.0))
-    if declared.name != "fall":
-        sideways = supports.sideways_only(target)
-        places = list(placing.hit_places(actor_size, objects[target], rows, declared.directions, sideways, problem.scale, settings))
-        if sideways and "above" in declared.directions:
-            places = list(placing.landings(actor_size, objects[target], rows, problem.scale)) + places
-    else:
-        heading = problem.heading_after(target, k + 1)
-        behind = None if heading is None else (1.0 if heading == "left" else -1.0)
-        places = list(placing.landings(actor_size, objects[target], rows, problem.scale, behind))
+    places = []
+    # The actor's path, then its parts' (a blue bird's other birds after its split).
+    for body in [actor] + sorted(n for n, whole in trace.parts.items() if whole == actor):
+        rows = trace.states[first:, trace.index(body), :]
+        if declared.name != "fall":
+            sideways = supports.sideways_only(target)
+            found = list(placing.hit_places(actor_size, objects[target], rows, declared.directions, sideways, problem.scale, settings))
+            if sideways and "above" in declared.directions:
+                found = list(placing.landings(actor_size, objects[target], rows, problem.scale)) + found
+        else:
+            heading = problem.heading_after(target, k + 1)
+            behind = None if heading is None else (1.0 if heading == "left" else -1.0)
+            found = list(placing.landings(actor_size, objects[target], rows, problem.scale, behind))
+        places += [(step, x, y, body) for step, x, y in found]
     pushed = None
     if declared.name == "hit" and target in supports.support_of:
         acts_next = next((t for t in interactions[k + 1 :] if t.objects and t.objects[0] == target), None)
         if acts_next is not None and acts_next.name == "fall":
             pushed = problem.pushed_by(k)
-    for step, x, y in places:
+    for step, x, y, body in places:
         moved = placing.shifted(layout, members, x - objects[target].x, y - objects[target].y, supports)
         if moved is None:
             continue
         changed = [o for o in moved.objects if o.name in members]
-        if not placing.clear(trace, first + step, changed, actor, sizes, problem.scale, settings.clear):
+        if not placing.clear(trace, first + step, changed, body, sizes, problem.scale, settings.clear):
             continue
         if not placing.consistent(prefix(moved, problem.entry, stage.start), problem.parameters, members, members):
             continue

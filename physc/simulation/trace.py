@@ -141,6 +141,9 @@ class Trace(Run):
     # read how far a landing or a clearance was from failing from it).
     outlines: dict = attrs.field(factory=dict, eq=False, repr=False)
     radii: dict = attrs.field(factory=dict, eq=False, repr=False)  # name → rolling radius of a round body (the recogniser's)
+    # Bodies that are part of another as the scenario names it (Science Birds: a blue bird's
+    # other two birds after its split are that bird): name → the whole's name.
+    parts: dict = attrs.field(factory=dict, eq=False, repr=False, metadata={"dump": False})
 
     @property
     def decisive(self) -> frozenset[str]:

@@ -74,9 +74,18 @@ class AngryBirds(SimulatedDomain):
 
     @staticmethod
     def reach_targets(scenario) -> list[str]:
-        """The objects the bird must hit directly: the first interaction's target."""
-        first = scenario.interactions[0]
-        return [first.objects[1]] if first.name == "hit" else []
+        """The objects the birds must hit directly: what each bird's shot starts by hitting."""
+        from physc.domains.angrybirds.shots import birds, first_hit, shot_starts
+
+        order, starts = birds(scenario, VOCABULARY.player), (0, *shot_starts(scenario, VOCABULARY.player))
+        return [t for t in (first_hit(scenario, name, start) for name, start in zip(order, starts)) if t is not None]
+
+    @staticmethod
+    def shot_starts(scenario) -> tuple[int, ...]:
+        """The interactions at which a later bird's shot starts (shots.py)."""
+        from physc.domains.angrybirds.shots import shot_starts
+
+        return shot_starts(scenario, VOCABULARY.player)
 
     def reachable(self, x: float, y: float) -> bool:
         return self.world.reachable(x, y)
@@ -85,15 +94,24 @@ class AngryBirds(SimulatedDomain):
     def level_from_layout(self, layout, scenario=None) -> Level:
         """The placed layout as a level that names this world and the physc that made it."""
         from physc import __version__
+        from physc.domains.angrybirds.catalogue import shape
+        from physc.domains.angrybirds.shots import level_birds
         from physc.domains.angrybirds.to_level import level_from_layout
 
-        return attrs.evolve(level_from_layout(layout), world=self.world.name, generator=f"physc {__version__}")
+        birds = level_birds(layout, scenario, VOCABULARY.player, lambda concrete: shape(concrete).prefab)
+        return attrs.evolve(level_from_layout(layout), birds=birds, world=self.world.name, generator=f"physc {__version__}")
 
     @staticmethod
     def level_world(level) -> str | None:
         return level.world
 
-    resumable = True  # `play` passes a snapshot on to the game's run
+    resumable = True  # `play` passes a snapshot on to the game's run (of one untapped shot: `resumes`)
+
+    @staticmethod
+    def resumes(action) -> bool:
+        from physc.domains.angrybirds.shots import simple
+
+        return simple(action)
 
     def game(self, level):
         """`level` as the game plays it in this domain's world and engine."""
@@ -123,10 +141,13 @@ class AngryBirds(SimulatedDomain):
         settle = {} if whole else {"settle_after_solved": 0.0}
         return game.simulate(action, seconds or self.seconds, record=False, **settle)
 
-    def actions(self, level, scenario) -> list:
-        """The paper's candidate shots: at the points of interest of the first hit's target."""
-        first = scenario.interactions[0]
-        return self.actions_at(level, first.objects[1]) if first.name == "hit" else []
+    def actions(self, level, scenario, start: int = 0, before=None) -> list:
+        """The paper's candidate shots: at the points of interest of what the bird's shot starts
+        by hitting (the first bird's, or with `before`, the next bird's at interaction `start`;
+        tapped at a few points of its flight where the scenario taps it: shots.py)."""
+        from physc.domains.angrybirds.shots import candidates
+
+        return candidates(self, level, scenario, start, before)
 
     def actions_at(self, level, name: str) -> list:
         from physc.domains.angrybirds.actions import candidate_shots
@@ -136,39 +157,50 @@ class AngryBirds(SimulatedDomain):
 
     def noisy(self, level, action, rng: random.Random):
         """The evaluation's noise: blocks and pigs jittered, the release angle too."""
-        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds import shots
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 
         noisy = jitter(level, rng)
-        return noisy, Shot(angle=action.release_angle(self.world) + rng.gauss(0.0, ANGLE_SIGMA))
+        return noisy, shots.noisy(action, self.world, rng, ANGLE_SIGMA)
 
     def nudged(self, action, step: int):
-        return action.at_angle(action.release_angle(self.world) + step * NUDGE_STEP, self.world)
+        """The last shot turned by `step` × NUDGE_STEP degrees."""
+        from physc.domains.angrybirds import shots
+
+        return shots.nudged(action, self.world, step, NUDGE_STEP)
 
     def solution(self, label: str, action):
-        from physc.compiler.task import Solution
+        """Version 1's Solution for one untapped red shot, else a ShotsSolution (shots.py)."""
+        from physc.domains.angrybirds import shots
 
-        return Solution(label, action.target, action.trajectory, round(action.release_angle(self.world), 5))
+        return shots.solution(label, action, self.world)
+
+    @property
+    def solution_class(self):
+        from physc.compiler.task import Solution
+        from physc.domains.angrybirds.shots import BirdShot, ShotsSolution
+
+        return (Solution, ShotsSolution, BirdShot)
 
     def played_as(self, level, solution):
-        """The solution with the shot Phy-Q's agents send for it: the whole-pixel drag from the
-        slingshot whose launch is nearest its release angle (agent_action.py), and that launch's angle."""
-        from physc.domains.angrybirds.agent_action import agent_action
+        """The solution with the shots Phy-Q's agents send for it: for each, the whole-pixel drag
+        from the slingshot whose launch is nearest its release angle (agent_action.py), that
+        launch's angle, and its tap in milliseconds."""
+        from physc.domains.angrybirds import shots
 
-        action, angle = agent_action(solution.release_angle, level.slingshot, level.camera.y, level.camera.max_width)
-        return attrs.evolve(solution, agent_action=tuple(action), agent_angle=round(angle, 5))
+        return shots.played_as(level, solution)
 
     @staticmethod
     def sent_action(solution):
-        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds import shots
 
-        return None if solution.agent_angle is None else Shot(angle=solution.agent_angle)
+        return shots.sent_action(solution)
 
     @staticmethod
     def action_of(solution):
-        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds import shots
 
-        return Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+        return shots.action_of(solution)
 
     @staticmethod
     def bodies(placed, scenario) -> list:
@@ -246,13 +278,11 @@ class AngryBirds(SimulatedDomain):
         """The task's level with the paths its solution makes, like the paper's figure; a
         placed layout (`--emit layout --png`) as the level it becomes."""
         from physc.compiler.concrete_layout import ConcreteLayout
-        from physc.domains.angrybirds.launch import Shot
         from physc.domains.angrybirds.picture import draw_level, render, save
 
         if isinstance(task, ConcreteLayout):
             return render(task, fmt, self.world)
-        shot = Shot(target=task.solution.target, trajectory=task.solution.trajectory)
-        trace = self.game(task.level).simulate(shot, PLAY_SECONDS, settle_after_solved=0.5)
+        trace = self.game(task.level).simulate(self.action_of(task.solution), PLAY_SECONDS, settle_after_solved=0.5)
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, self.world, title, trace.paths(), supports), fmt)
@@ -261,13 +291,13 @@ class AngryBirds(SimulatedDomain):
         """The solution's shot (or, with `rng`, the evaluation's noise: release angle and
         object positions jittered), played with the scenario's restrictions and declared
         bounces."""
-        from physc.domains.angrybirds.launch import Shot
+        from physc.domains.angrybirds import shots
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 
         if rng is None:
-            shot = Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+            shot = shots.action_of(solution)
         else:
-            shot = Shot(angle=solution.release_angle + rng.gauss(0.0, ANGLE_SIGMA))
+            shot = shots.action_of(solution, (rng, ANGLE_SIGMA))
             level = jitter(level, rng)
         return self.play(level, shot, scenario, REPLAY_SECONDS)
 

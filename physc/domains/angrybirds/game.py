@@ -193,7 +193,7 @@ class Game(RunRules):
         return Trace(
             dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
             recorded.damage, recorded.destructions, self._pigs, self._solved(recorded), depends=tuple(self._depends),
-            outlines=dict(self.outlines), radii=self.radii(),
+            outlines=dict(self.outlines), radii=self.radii(), parts=dict(self.flights.parent),
         )
 
     def _solved(self, recorded) -> bool:

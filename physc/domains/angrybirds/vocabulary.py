@@ -81,6 +81,13 @@ TERMS = (
         "a TNT box a is destroyed by a blow, and its blast damages and pushes what lies near it (version 2)",
     ),
     TermSignature(
+        "tap",
+        INTERACTION,
+        (Parameter("a", OBJECT, fits="bird", acts=True),),
+        "the player taps bird a in flight, setting off its power: a blue bird splits in three, a yellow one speeds up, "
+        "a black one blasts, a white one drops an egg (version 2)",
+    ),
+    TermSignature(
         "destroy",
         INTERACTION,
         (Parameter("a", OBJECT, dynamic=True, acts=True), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
@@ -96,7 +103,7 @@ VOCABULARY = Vocabulary(
     terms=TERMS,
     direction_aliases={"any": SIDES},
     player="bird",
-    players=1,  # one bird, one shot: several are language version 2's (docs/language.md)
+    players=None,  # version 2: one shot per bird, in the order the sequence first names them (docs/language.md)
     goal="pig",
     goal_unmet="is never destroyed",
     goal_rule="a task is solved when every pig is destroyed",

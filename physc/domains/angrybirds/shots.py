@@ -1,0 +1,207 @@
+"""Several shots and taps (language version 2): the candidate shots of each bird, and their record.
+
+A scenario's birds are shot in the order its sequence first names them; the interaction
+that first names a later bird starts its shot, which the search chooses once the chain has
+got there (physc.generation.chain: a stage that starts a shot extends each parent's action by
+the new bird's candidates). A bird's candidates are the paper's (actions.py) at the first
+object it hits; a bird the scenario taps (`tap(bird)`) is tapped at a few points of its
+flight towards that object (`TAP_SHARES` of the way, in whole milliseconds, as Phy-Q's agents
+send a tap time).
+
+A task whose solution is one untapped shot of the red bird keeps version 1's record
+(physc.compiler.task.Solution); any other is a `ShotsSolution`, one `BirdShot` per bird.
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from physc.domains.angrybirds.launch import Shot, Shots, shots_of
+
+TAP_SHARES = (0.45, 0.6, 0.75, 0.9)  # of the way to the target, where a candidate taps
+
+
+@attrs.frozen
+class BirdShot:
+    """One bird's shot in a task's solution: what it was aimed at, its release angle, its tap
+    (seconds after the launch; None: none), and the action Phy-Q's agents send for it,
+    `[dx, dy, tap in ms]` (agent_action.py), with the angle the game launches that at."""
+
+    bird: str
+    aimed_at: str
+    target: tuple[float, float]
+    trajectory: str
+    release_angle: float
+    tap: float | None = None
+    wait: float | None = None
+    agent_action: tuple[int, int, int] | None = None
+    agent_angle: float | None = None
+
+    def __attrs_post_init__(self):
+        """A task file's shot holds finite numbers where a shot has them (ValueError if not)."""
+        numbers = [*self.target, self.release_angle] if isinstance(self.target, tuple) and len(self.target) == 2 else None
+        numbers = numbers and numbers + [v for v in (self.tap, self.wait) if v is not None]
+        if not numbers or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
+            raise ValueError("a shot's target, release angle, tap and wait must be finite numbers")
+        if self.trajectory not in ("low", "high"):
+            raise ValueError(f"a shot's trajectory is 'low' or 'high', not {self.trajectory!r}")
+
+
+@attrs.frozen
+class ShotsSolution:
+    """A solution of several shots, or of a tapped or non-red bird's (language version 2)."""
+
+    aimed_at: str
+    shots: tuple[BirdShot, ...]
+
+
+def birds(scenario, player: str) -> list[str]:
+    """The scenario's birds in the order shot: as its sequence first names them (a bird it
+    never names comes last, in the order declared)."""
+    declared = [o.name for o in scenario.objects if o.term == player]
+    first = {}
+    for k, term in enumerate(scenario.interactions):
+        for name in term.objects:
+            if name in declared:
+                first.setdefault(name, k)
+    return sorted(declared, key=lambda name: (first.get(name, len(scenario.interactions)), declared.index(name)))
+
+
+def shot_starts(scenario, player: str) -> tuple[int, ...]:
+    """The interactions at which a later bird's shot starts (where the sequence first names it)."""
+    named = birds(scenario, player)[1:]
+    out = []
+    for k, term in enumerate(scenario.interactions):
+        if any(name in named and not any(name in t.objects for t in scenario.interactions[:k]) for name in term.objects):
+            out.append(k)
+    return tuple(sorted(set(out)))
+
+
+def first_hit(scenario, name: str, start: int):
+    """What `name`'s shot is aimed at: the object of the hit its shot starts with (after its
+    taps), if it starts with one."""
+    term = next((t for t in scenario.interactions[start:] if t.name != "tap"), None)
+    return term.objects[1] if term is not None and term.name == "hit" and term.objects[0] == name else None
+
+
+def tapped(scenario, name: str) -> bool:
+    return any(t.name == "tap" and t.objects[0] == name for t in scenario.interactions)
+
+
+def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tuple[str, object]]:
+    """The labelled actions that shoot the bird whose shot starts at interaction `start` (after
+    `before`, the shots so far: then labelled by the bird, the search joins the labels)."""
+    order = birds(scenario, domain.vocabulary.player)
+    k = len(shots_of(before))
+    if k >= len(order):
+        return []
+    name = order[k]
+    target = first_hit(scenario, name, start)
+    if target is None:
+        return []
+    out = []
+    for label, shot in domain.actions_at(level, target):
+        shot = attrs.evolve(shot, bird=name)
+        if tapped(scenario, name):
+            variants = [(f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share))) for share in TAP_SHARES]
+        else:
+            variants = [(label, shot)]
+        for text, variant in variants:
+            if before is None:
+                out.append((text, variant))
+            else:
+                out.append((f"{name}: {text}", Shots((*shots_of(before), variant))))
+    return out
+
+
+def tap_time(shot: Shot, world, share: float) -> float:
+    """When the bird of `shot` is `share` of the way (in x) to its target, in whole milliseconds."""
+    (x, _), (vx, _) = shot.start(world)
+    return round(max(share * (shot.target[0] - x) / vx, 0.001), 3) if vx > 0 else 0.001
+
+
+def simple(action) -> bool:
+    """Whether an action is version 1's: one untapped shot of the bird named `bird`."""
+    return isinstance(action, Shot) and action.tap is None and action.bird == "bird"
+
+
+def noisy(action, world, rng, sigma: float):
+    """Each shot's release angle jittered (in the order shot)."""
+    shots = tuple(Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait) for s in shots_of(action))
+    return shots[0] if isinstance(action, Shot) else Shots(shots)
+
+
+def nudged(action, world, step: int, degrees: float):
+    """The last shot (the one the search chooses now) turned by `step` × `degrees`."""
+    shots = shots_of(action)
+    last = shots[-1].at_angle(shots[-1].release_angle(world) + step * degrees, world)
+    if last is None:
+        return None
+    return last if isinstance(action, Shot) else Shots((*shots[:-1], last))
+
+
+def solution(label: str, action, world):
+    """The task's record of `action` (module docstring)."""
+    from physc.compiler.task import Solution
+
+    if simple(action):
+        return Solution(label, action.target, action.trajectory, round(action.release_angle(world), 5))
+    labels = label.split("; ")
+    parts = []
+    for k, shot in enumerate(shots_of(action)):
+        aimed = labels[k].split(": ", 1)[-1] if k < len(labels) else label
+        parts.append(BirdShot(shot.bird, aimed, shot.target, shot.trajectory, round(shot.release_angle(world), 5), shot.tap, shot.wait))
+    return ShotsSolution(label, tuple(parts))
+
+
+def action_of(solution, noise=None):
+    """The action a recorded solution takes: at its targets, or (`noise`: (rng, σ)) at its
+    release angles jittered."""
+    if isinstance(solution, ShotsSolution):
+        shots = []
+        for s in solution.shots:
+            if noise is None:
+                shots.append(Shot(target=tuple(s.target), trajectory=s.trajectory, tap=s.tap, bird=s.bird, wait=s.wait))
+            else:
+                shots.append(Shot(angle=s.release_angle + noise[0].gauss(0.0, noise[1]), tap=s.tap, bird=s.bird, wait=s.wait))
+        return shots[0] if len(shots) == 1 and shots[0].bird == "bird" and shots[0].tap is None else Shots(tuple(shots))
+    if noise is None:
+        return Shot(target=tuple(solution.target), trajectory=solution.trajectory)
+    return Shot(angle=solution.release_angle + noise[0].gauss(0.0, noise[1]))
+
+
+def played_as(level, solution):
+    """Each shot with the action Phy-Q's agents send for it (agent_action.py; the tap in ms)."""
+    from physc.domains.angrybirds.agent_action import agent_action
+
+    def sent(angle: float, tap: float | None):
+        action, launched = agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
+        return (action[0], action[1], 0 if tap is None else int(round(tap * 1000))), round(launched, 5)
+
+    if isinstance(solution, ShotsSolution):
+        shots = []
+        for s in solution.shots:
+            action, angle = sent(s.release_angle, s.tap)
+            shots.append(attrs.evolve(s, agent_action=action, agent_angle=angle))
+        return attrs.evolve(solution, shots=tuple(shots))
+    action, angle = sent(solution.release_angle, None)
+    return attrs.evolve(solution, agent_action=action, agent_angle=angle)
+
+
+def sent_action(solution):
+    """The action as Phy-Q's agents send it, at the angles the game launches theirs."""
+    if isinstance(solution, ShotsSolution):
+        if any(s.agent_angle is None for s in solution.shots):
+            return None
+        shots = tuple(Shot(angle=s.agent_angle, tap=s.tap, bird=s.bird, wait=s.wait) for s in solution.shots)
+        return shots[0] if len(shots) == 1 and shots[0].bird == "bird" and shots[0].tap is None else Shots(shots)
+    return None if solution.agent_angle is None else Shot(angle=solution.agent_angle)
+
+
+def level_birds(layout, scenario, player: str, prefab_of) -> tuple[str, ...]:
+    """The level's <Bird> list: each bird's prefab, in the order shot."""
+    names = {o.name: o for o in layout.objects}
+    order = birds(scenario, player) if scenario is not None else [o.name for o in layout.objects if o.role == "player"]
+    return tuple(prefab_of(names[n].concrete) for n in order if n in names) or ("BirdRed",)
