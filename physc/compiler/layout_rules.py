@@ -215,8 +215,14 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
             heading.setdefault(mover, term.directions[0])
             moved_on.setdefault(mover, term)
 
-    # 3. Supports and paths, in the order of the sequence.
+    # 3. Supports and paths, in the order of the sequence; first the structures a scenario
+    # declares (version 2: on(a, b), a rests on b).
     support: dict[str, str] = {}
+    for term in scenario.restrictions:
+        if term.name == "on" and term.objects[0] in dynamic and term.objects[0] not in support:
+            top, below = term.objects
+            b.edge(ON_LOCATION, top, below, ("over",), Provenance("support", f"{top} rests on {below}: {term.text}", term.span))
+            support[top] = below
     paths: dict[str, list[str]] = {}
     falls = {t.objects[0] for t in scenario.interactions if t.name == "fall"}
 
@@ -291,6 +297,12 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
             if source in support:
                 b.edge(ON_LOCATION, target, support[source], ("left", "centre", "right"), Provenance("support", f"{target} lies within the blast of {source}: {term.text}", term.span))
                 support[target] = support[source]
+    # A contrast (version 2: contrast(a, b)) rests on its counterpart's support, as it does.
+    for term in scenario.restrictions:
+        if term.name == "contrast" and term.objects[0] in dynamic and term.objects[0] not in support and term.objects[1] in support:
+            contrast, counterpart = term.objects
+            b.edge(ON_LOCATION, contrast, support[counterpart], ("left", "centre", "right"), Provenance("support", f"{contrast} rests as {counterpart} does: {term.text}", term.span))
+            support[contrast] = support[counterpart]
     # Dynamic objects that nothing hits (they never move) still need a support.
     for name in dynamic:
         if name not in support:

@@ -21,6 +21,7 @@ Far relations (on the separated axes). Contact relations:
     MeetN(a, b)        a rests on b's top, its centre in b's middle third, wholly on b
     MeetDuringW(a, b)  a rests on b's top, its centre in b's left third, wholly on b
     MeetDuringE(a, b)  a rests on b's top, its centre in b's right third, wholly on b
+    MeetOver(a, b)     a rests on b's top, its centre over b (a may be wider: a plank on a post)
     MeetNW(a, b)       a's upper-right point is b's upper-left point
     MeetW(a, b)        the middle of a's right side is the middle of b's left side
     MeetSW(a, b)       a's lower-right point is b's lower-left point
@@ -135,11 +136,12 @@ _ON_TOP = [_eq("y", "min", "max"), _ge("x", "min", "min"), _le("x", "max", "max"
 RELATIONS["MeetN"] = tuple(_ON_TOP + [_ge("x", "c", "low_third"), _le("x", "c", "high_third")])
 RELATIONS["MeetDuringW"] = tuple(_ON_TOP + [_le("x", "c", "low_third")])
 RELATIONS["MeetDuringE"] = tuple(_ON_TOP + [_ge("x", "c", "high_third")])
+RELATIONS["MeetOver"] = (_eq("y", "min", "max"), _ge("x", "c", "min"), _le("x", "c", "max"))
 RELATIONS["MeetNW"] = (_eq("x", "ur", "ul"), _eq("y", "ur", "ul"))
 RELATIONS["MeetW"] = (_eq("x", "right_mid", "left_mid"), _eq("y", "right_mid", "left_mid"))
 RELATIONS["MeetSW"] = (_eq("x", "lr", "ll"), _eq("y", "lr", "ll"))
 
-CONTACT = ("MeetN", "MeetDuringW", "MeetDuringE", "MeetNW", "MeetW", "MeetSW")
+CONTACT = ("MeetN", "MeetDuringW", "MeetDuringE", "MeetOver", "MeetNW", "MeetW", "MeetSW")
 
 # ---- layout terms → QSRs (the paper's table "Inferred QSRs") --------------------
 IN_DIRECTION = {
@@ -153,7 +155,7 @@ LOCATED_FAR = {d: tuple(FAR + r for r in rs) for d, rs in IN_DIRECTION.items()}
 # other side lands on b (straight below it, or ahead of it).
 LOCATED_FAR["aboveLeft"] = ("FarN", "FarNW")
 LOCATED_FAR["aboveRight"] = ("FarN", "FarNE")
-ON_LOCATION = {"left": ("MeetDuringW",), "centre": ("MeetN",), "right": ("MeetDuringE",)}
+ON_LOCATION = {"left": ("MeetDuringW",), "centre": ("MeetN",), "right": ("MeetDuringE",), "over": ("MeetOver",)}
 TOUCHING = {"upperLeft": ("MeetNW",), "centreLeft": ("MeetW",), "lowerLeft": ("MeetSW",)}
 JOINS = frozenset(r for rs in TOUCHING.values() for r in rs)
 

@@ -78,6 +78,8 @@ def holds(relation: str, first, second, clearance: float, far: float) -> bool:
         return on_top and _le(centre, b.left + b.width / 3)
     if relation == "MeetDuringE":
         return on_top and _le(b.right - b.width / 3, centre)
+    if relation == "MeetOver":
+        return abs(a.bottom - b.top) <= TOLERANCE and _le(b.left, centre) and _le(centre, b.right)
     if relation == "MeetNW":
         return _eq(a.p["ur"], b.p["ul"])
     if relation == "MeetW":

@@ -128,6 +128,12 @@ class SimulatedDomain(Domain):
         (`actions(level, scenario, start, before)`). The default: one action, ()."""
         return ()
 
+    def contrasted(self, level, action, counterpart: str, contrast: str):
+        """`action` aimed at `contrast` as it is aimed at `counterpart` (language version 2's
+        `contrast(a, b)`, physc.generation.contrasts); None: the domain cannot say (the
+        default), or the action is not aimed at the counterpart."""
+        return None
+
     def resumes(self, action) -> bool:
         """Whether a play of `action` may go on from a snapshot (`resumable`, for this action)."""
         return self.resumable

@@ -95,6 +95,7 @@ class TermSignature:
     enabled_by: str | None = None  # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
     narrows: str | None = None  # restriction: narrows the directions of this interaction
     forbids: str | None = None  # restriction: forbids this interaction of its first object
+    carries: bool = False  # restriction: its first object rests on its second, which sets it in motion when it moves or goes (a structure)
 
     @property
     def required_count(self) -> int:

@@ -296,9 +296,9 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             self.diagnostics.append(
                 Diagnostic(
                     "W0302",
-                    f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} (the player's, for one action) and gives no task for this scenario",
+                    f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} in this domain and gives no task for this scenario",
                     extra.span,
-                    help=f"this version generates a chain of one action, one {player}'s (docs/language.md, \"Static checks\"): make the chain one {player}'s, or keep the scenario for a later version",
+                    help=f"the domain's actions place at most {count(most)} (docs/language.md, \"Static checks\"): name fewer, or keep the scenario for another domain",
                 )
             )
 

@@ -45,7 +45,12 @@ class SequenceChecks:
         waiting: dict[int, list] = {}
         for item in self.immobile:
             waiting.setdefault(item[1], []).append(item)
+        # Structures (version 2, on(a, b)): what rests on a body moves once that body moves or goes.
+        carried = [tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.carries]
         for index, resolved in enumerate(interactions):
+            for top, below in carried:
+                if below in in_motion or below in destroyed:
+                    in_motion.add(top)
             if waiting and index in waiting:
                 for item in waiting[index]:
                     self.explain_immobile(item, movers)

@@ -150,7 +150,7 @@ class Pipeline:
         if most is not None and len(players) > most:
             raise Infeasible(
                 "place",
-                f"it has {len(players)} {vocabulary.player}s ({', '.join(players)}); this version of physc places {most}, for one action",
+                f"it has {len(players)} {vocabulary.player}s ({', '.join(players)}); the domain's actions place at most {most}",
                 budget=Exhausted.VERSION,
             )
 

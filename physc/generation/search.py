@@ -15,8 +15,9 @@ and the `Ledger` it writes (the simulations, how far the chain got, what noise b
    the action) moved by CMA-ES to raise the least margin, then fresh replays to confirm.
 3. **Guards** (guards.py): obstacles against forbidden direct hits (`cannotHit` of the
    player) and against shortcuts, kept only if the solution still holds up.
-4. **Stability** of the level, **distraction**, **validation** (unless told not to), and
-   the domain's **acceptance** rule (acceptance.py, PHYRE's).
+4. **Stability** of the level, **distraction**, **contrasts** (contrasts.py: the action aimed at
+   a contrast does not solve the task), **validation** (unless told not to), and the domain's
+   **acceptance** rule (acceptance.py, PHYRE's).
 
 Every simulation goes through the ledger's Evaluator, which counts it: the figure
 generation's cost is measured in. Noise is drawn from generators named after the action's
@@ -31,6 +32,7 @@ from physc.domains.base import require
 from physc.generation import guards, settings
 from physc.generation.acceptance import verdict
 from physc.generation.chain import Node, chain
+from physc.generation.contrasts import contrasts
 from physc.generation.outcome import Outcome, Parts
 from physc.generation.problem import Ledger, Problem, replayed
 from physc.generation.strengthen import Strong, lost_links, replays, strengthen
@@ -74,6 +76,9 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
         return given_up(problem, ledger, settings.UNSTABLE)
     distracting = time.perf_counter()
     layout, distractors = guards.distract(problem, ledger, rng, layout, attempt)
+    why, contrasted = contrasts(problem, ledger, layout, attempt)
+    if why is not None:
+        return given_up(problem, ledger, why)
     validating = time.perf_counter()
     validated, trace = None, attempt.trace
     if problem.validate:
@@ -90,7 +95,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
         why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
         return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))
     solution = domain.played_as(level, domain.solution(attempt.label, attempt.action))
-    steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ())
+    steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ()) + contrasted
     parts = Parts(
         level=domain.with_solution(level, solution),
         solution=solution,

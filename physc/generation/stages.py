@@ -21,7 +21,7 @@ import attrs
 
 from physc.compiler.qsr import joined
 
-RESTS_ON = ("MeetN", "MeetDuringW", "MeetDuringE")  # the QSRs of an object resting on another
+RESTS_ON = ("MeetN", "MeetDuringW", "MeetDuringE", "MeetOver")  # the QSRs of an object resting on another
 ALWAYS = ("player", "ground")  # roles and concretes present from the start
 
 

@@ -175,6 +175,12 @@ class AngryBirds(SimulatedDomain):
 
         return shots.solution(label, action, self.world)
 
+    def contrasted(self, level, action, counterpart: str, contrast: str):
+        """The shot at the counterpart aimed at the same point of the contrast (shots.py)."""
+        from physc.domains.angrybirds import shots
+
+        return shots.contrasted(self, level, action, counterpart, contrast)
+
     @property
     def solution_class(self):
         from physc.compiler.task import Solution

@@ -205,3 +205,29 @@ def level_birds(layout, scenario, player: str, prefab_of) -> tuple[str, ...]:
     names = {o.name: o for o in layout.objects}
     order = birds(scenario, player) if scenario is not None else [o.name for o in layout.objects if o.role == "player"]
     return tuple(prefab_of(names[n].concrete) for n in order if n in names) or ("BirdRed",)
+
+
+def contrasted(domain, level, action, counterpart: str, contrast: str):
+    """The shot aimed at `counterpart` aimed at the same point of `contrast` instead (its offset
+    from the centre scaled by the two bodies' sizes), on the same trajectory if it reaches
+    there, else on the other; the other shots unchanged. None when no shot is aimed at the
+    counterpart, or the point is out of reach."""
+    from physc.domains.angrybirds.catalogue import extent
+
+    objects = {o.name: o for o in level.objects}
+    if counterpart not in objects or contrast not in objects:
+        return None
+    a, b = objects[counterpart], objects[contrast]
+    (aw, ah), (bw, bh) = extent(a), extent(b)
+    shots = list(shots_of(action))
+    for k, shot in enumerate(shots):
+        if shot.target is None or abs(shot.target[0] - a.x) > aw / 2 + 1e-6 or abs(shot.target[1] - a.y) > ah / 2 + 1e-6:
+            continue
+        point = (round(b.x + (shot.target[0] - a.x) * bw / aw, 5), round(b.y + (shot.target[1] - a.y) * bh / ah, 5))
+        other = "high" if shot.trajectory == "low" else "low"
+        for trajectory in (shot.trajectory, other):
+            if domain.world.launch.aim(*point, trajectory, domain.world.gravity) is not None:
+                shots[k] = attrs.evolve(shot, target=point, trajectory=trajectory, angle=None)
+                return shots[0] if isinstance(action, Shot) else Shots(tuple(shots))
+        return None
+    return None

@@ -4,6 +4,7 @@ paper's tables "Object grammar", "Interaction grammar", "Restriction grammar")."
 from physc.domains.vocabulary import (
     INTERACTION,
     OBJECT,
+    RESTRICTION,
     SIDES,
     ConcreteObject,
     ObjectTerm,
@@ -68,6 +69,20 @@ OBJECT_TERMS = (
 
 
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableBlock", slidable="slidableBlock", surface="surface")
+CONTRAST = TermSignature(
+    "contrast",
+    RESTRICTION,
+    (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
+    "a rests as b does, but the shot that sets b going, aimed at a instead, does not solve the task (version 2: "
+    "the heavier circle, the block on the taller pillar)",
+)
+ON = TermSignature(
+    "on",
+    RESTRICTION,
+    (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
+    "a rests on b in the level: a structure of several bodies, whose weak point is what the chain knocks out (version 2)",
+    carries=True,
+)
 TERMS = (
     PAPER["hit"],
     PAPER["roll"],
@@ -95,7 +110,7 @@ TERMS = (
         requires="hit",
         enabled_by="explode",
     ),
-) + RESTRICTIONS
+) + RESTRICTIONS + (CONTRAST, ON)
 
 VOCABULARY = Vocabulary(
     object_terms=OBJECT_TERMS,

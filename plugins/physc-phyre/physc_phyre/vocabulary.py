@@ -128,6 +128,7 @@ VOCABULARY = Vocabulary(
     terms=TERMS,
     direction_aliases={"any": SIDES},
     player="redBall",
+    players=2,  # PHYRE's actions place one ball or two (its BALL and TWO_BALLS tiers)
     goal="greenObject",
     goal_unmet="never touches its target",
     goal_rule="a task is solved when the green object touches the target for 3 s",
