@@ -23,7 +23,7 @@ import numpy as np
 from physc.compiler.geometry import overlapping_pair
 from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
-from physc.generation.stages import RESTS_ON, supports
+from physc.generation.stages import WHOLLY_ON, supports
 
 GROUND = ("ground", "floor")  # concretes of the ground a body may rest on
 FIXED_ROLES = ("support", "obstacle", "player")  # roles of what the search never places on a path
@@ -57,8 +57,8 @@ def consistent(layout, parameters, moved, resting=frozenset()) -> bool:
     for r in layout.conjunction:  # (not placement's separations: only overlaps matter there)
         if r.a in placed and r.b in placed and (r.a in moved or r.b in moved):
             names = r.alternatives or (r.relation,)
-            if r.a in resting and r.relation in RESTS_ON:
-                names = RESTS_ON
+            if r.a in resting and r.relation in WHOLLY_ON:  # anywhere on its support, as it moves along it
+                names = WHOLLY_ON
             if not any(holds(n, placed[r.a], placed[r.b], parameters.clearance, parameters.far) for n in names):
                 return False
     return True

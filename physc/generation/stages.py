@@ -21,7 +21,8 @@ import attrs
 
 from physc.compiler.qsr import joined
 
-RESTS_ON = ("MeetN", "MeetDuringW", "MeetDuringE", "MeetOver")  # the QSRs of an object resting on another
+WHOLLY_ON = ("MeetN", "MeetDuringW", "MeetDuringE")  # the QSRs of an object resting wholly on another
+RESTS_ON = WHOLLY_ON + ("MeetOver",)  # and of one resting with its centre over it (version 2's structures)
 ALWAYS = ("player", "ground")  # roles and concretes present from the start
 
 

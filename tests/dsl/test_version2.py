@@ -120,3 +120,38 @@ def test_a_blast_s_margin_is_its_damage_not_the_tnt_s_survival():
     trace = attrs.evolve(trace, interactions=PHYQ.recogniser.recognise(trace, {}))
     blast = next(m for m in DOMAIN.at("phyq").margins(scenario, trace).links if m.term == "destroy(tnt, pig)")
     assert (blast.unit, blast.value) == ("damage", 19.0)  # 34 dealt, 15 life: not the TNT's life, spent by design
+
+
+def test_birds_taps_structures_and_contrasts_are_terms_of_the_language():
+    text = """scenario S {
+    objects {
+        bird: bird = blueBird
+        weak: fallableBlock = squareSmall
+        top: fallableBlock(stone) = rectFat
+        other: fallableBlock(stone) = rectFat
+    }
+    interactions {
+        tap(bird) > hit(bird, weak, left) > fall(top, pig) > hit(top, pig, above) > destroy(top, pig)
+    }
+    restrictions {
+        on(top, weak), contrast(other, top)
+    }
+}
+"""
+    assert codes(text) == []
+    assert "E0402" in codes(text.replace("on(top, weak), ", ""))  # nothing set `top` moving
+    assert "E0203" in codes(text.replace("tap(bird) >", "tap(weak) >"))  # only a bird is tapped
+    formatted = format_file(parse_text(text).file, text)
+    assert "tap(bird)" in formatted and "on(top, weak)" in formatted and "contrast(other, top)" in formatted
+
+
+def test_the_meetover_relation_lets_a_plank_rest_on_a_narrower_post():
+    from physc.compiler.qsr_evaluate import holds
+
+    class Box:
+        def __init__(self, x, y, width, height):
+            self.x, self.y, self.width, self.height, self.rotation = x, y, width, height, 0.0
+
+    post, plank = Box(0.0, 0.0, 0.2, 1.0), Box(0.05, 0.6, 1.0, 0.2)
+    assert holds("MeetOver", plank, post, 0.1, 1.5) and not holds("MeetN", plank, post, 0.1, 1.5)
+    assert not holds("MeetOver", Box(0.3, 0.6, 1.0, 0.2), post, 0.1, 1.5)  # its centre beyond the post

@@ -3,7 +3,9 @@
 A level's birds are shot in the order of its <Bird> list (ABGameWorld.AddBird). The first
 flies at once; each next one is shot once the level has come to rest with no bird in flight
 (Phy-Q's agents shoot in the framework's safe mode, which waits until the level is static),
-or `Shot.wait` seconds after the bird before it left the level. A bird is checked as
+or `Shot.wait` seconds after the game put it on the slingshot: when the bird before it first
+struck something, or used its power (ABGameWorld.KillBird, called from ABBird's first
+collision, the blue and white birds' taps and the black bird's blast). A bird is checked as
 ABBird.cs checks it: 3 s after its first collision and every second after, it goes once
 slower than 0.001 units/s, and it never lives more than 20 s (`Rules`). A tap fires the
 bird's power (birds.py) at most once, while the bird is past the slingshot and, but for the
@@ -54,7 +56,7 @@ class Flights:
         self.tried: set[str] = set()  # birds whose tap came (HUD.cs checks once: a tap too early is lost)
         self.fuses: dict[str, float] = {}  # black bird → when it blasts
         self.blasted: set[str] = set()  # bodies that blast and go this step (a black bird, an egg)
-        self.gone_at: float | None = None  # when the last bird shot left the level
+        self.ready_at: float | None = None  # when the game put the next bird on the slingshot (KillBird)
 
     @property
     def bodies(self) -> list[str]:
@@ -85,11 +87,11 @@ class Flights:
 
     def launch_due(self, time: float) -> int | None:
         """The shot to launch now, if one is due."""
-        if not self.waiting() or self.flying or self.due_at is None or time < self.due_at - 1e-9:
+        if not self.waiting() or self.due_at is None or time < self.due_at - 1e-9:
             return None
         k = self.next
         self.next += 1
-        self.due_at = None
+        self.due_at, self.ready_at = None, None
         self.launched[self.names[k]] = time
         self.flying[self.names[k]] = time + self.rules.bird_lifetime
         return k
@@ -109,19 +111,26 @@ class Flights:
         )
 
     def left(self, name: str, time: float) -> None:
-        """A bird left the level: the next shot is due `wait` after, or once all rests."""
+        """A bird left the level (the game's KillBird, if not yet)."""
         self.flying.pop(name, None)
-        if name in self.names and not self.flying:
-            self.gone_at = time
-            if self.waiting():
-                wait = self.shots[self.next].wait
-                self.due_at = None if wait is None else time + wait
+        self.killed(name, time)
+
+    def killed(self, name: str, time: float) -> None:
+        """ABGameWorld.KillBird: the next bird comes onto the slingshot; a timed shot (`wait`) is
+        due that long after."""
+        if name not in self.names or self.names.index(name) != self.next - 1 or self.ready_at is not None:
+            return
+        self.ready_at = time
+        if self.waiting() and self.shots[self.next].wait is not None:
+            self.due_at = time + self.shots[self.next].wait
 
     # ---- contacts and checks ---------------------------------------------------------------
     def on_contact(self, a: str, b: str, time: float) -> None:
         for name in (a, b):
             if name in self.flying and name not in self.struck:
                 self.struck.add(name)
+                if self.of(name).power != "blast":
+                    self.killed(self.parent.get(name, name), time)
                 # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
                 self.flying[name] = min(time + self.rules.bird_still_after, self.launched_at(name) + self.rules.bird_lifetime)
                 if self.of(name).power == "blast" and name not in self.fuses:
@@ -166,6 +175,8 @@ class Flights:
         if x + 2 * b.radius <= self.rest_x + POWERS.past_slingshot or (name in self.struck and b.power != "blast"):
             return []  # HUD.cs: not past the slingshot, or struck already: the power is lost
         self.tapped.append((time, name))
+        if b.power in ("split", "egg"):
+            self.killed(name, time)
         speed = math.hypot(vx, vy)
         if b.power == "boost" and speed > 0:
             push = POWERS.boost / world.mass(name)

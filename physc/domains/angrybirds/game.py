@@ -261,12 +261,15 @@ class Game(RunRules):
                 return True
         if self._stop_at_rest:
             still = self.world.rest_speed
-            if not alive.isdisjoint(self.flights.flying) or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
+            # A shot to come waits for the level to be static, birds and all (ABGameWorld.IsLevelStable:
+            # a bird at rest, not yet removed, is still); the run ends once the last bird is gone too.
+            waiting = self.flights.waiting()
+            if (not waiting and not alive.isdisjoint(self.flights.flying)) or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
                 self._resting_since = None
             elif self._resting_since is None:
                 self._resting_since = time
             elif time - self._resting_since >= 0.3:
-                if not self.flights.waiting():
+                if not waiting:
                     return True
                 self.flights.resting()  # the next shot comes now
                 self._resting_since = None

@@ -6,7 +6,10 @@ got there (physc.generation.chain: a stage that starts a shot extends each paren
 the new bird's candidates). A bird's candidates are the paper's (actions.py) at the first
 object it hits; a bird the scenario taps (`tap(bird)`) is tapped at a few points of its
 flight towards that object (`TAP_SHARES` of the way, in whole milliseconds, as Phy-Q's agents
-send a tap time).
+send a tap time). A later shot is taken once the level rests, as Phy-Q's agents wait; where
+the sequence has an object the shots before set going act after this shot starts (Phy-Q's
+adequate timing), the shot is timed instead, tried `WAITS` after the game brought the bird
+onto the slingshot.
 
 A task whose solution is one untapped shot of the red bird keeps version 1's record
 (physc.compiler.task.Solution); any other is a `ShotsSolution`, one `BirdShot` per bird.
@@ -21,6 +24,7 @@ import attrs
 from physc.domains.angrybirds.launch import Shot, Shots, shots_of
 
 TAP_SHARES = (0.45, 0.6, 0.75, 0.9)  # of the way to the target, where a candidate taps
+WAITS = (0.5, 1.0, 2.0, 3.0)  # seconds after the bird before comes off the slingshot, when a timed shot is tried
 
 
 @attrs.frozen
@@ -86,6 +90,13 @@ def first_hit(scenario, name: str, start: int):
     return term.objects[1] if term is not None and term.name == "hit" and term.objects[0] == name else None
 
 
+def timed(scenario, start: int, player_names) -> bool:
+    """Whether a shot starting at interaction `start` must be taken while something the shots
+    before set going still moves: an object that acted before `start` acts again after it."""
+    before = {t.objects[0] for t in scenario.interactions[:start] if t.objects} - set(player_names)
+    return any(t.objects and t.objects[0] in before for t in scenario.interactions[start:])
+
+
 def tapped(scenario, name: str) -> bool:
     return any(t.name == "tap" and t.objects[0] == name for t in scenario.interactions)
 
@@ -108,6 +119,8 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
             variants = [(f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share))) for share in TAP_SHARES]
         else:
             variants = [(label, shot)]
+        if before is not None and timed(scenario, start, order):
+            variants = [(f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS]
         for text, variant in variants:
             if before is None:
                 out.append((text, variant))

@@ -1,0 +1,142 @@
+"""Language version 2 through the one search: several shots, taps, structures, contrasts."""
+
+from __future__ import annotations
+
+import json
+
+from conftest import run_physc
+
+from physc.dsl.frontend import analyze_text
+from physc.domains.words import INSTALLED
+from physc.domains.angrybirds import DOMAIN
+from physc.domains.angrybirds.shots import WAITS, birds, candidates, shot_starts, timed
+from physc.generation.stages import stages
+
+TWO = """scenario TwoShots {
+    objects { bird2: bird  pig2: pig }
+    interactions { hit(bird, pig, left) > destroy(bird, pig) > hit(bird2, pig2, left) > destroy(bird2, pig2) }
+}
+"""
+SPLIT = """scenario Split {
+    objects { bird: bird = blueBird  pig2: pig }
+    interactions { tap(bird) > hit(bird, pig, left) > destroy(bird, pig) > hit(bird, pig2, left) > destroy(bird, pig2) }
+}
+"""
+TIMED = """scenario Timed {
+    objects { bird2: bird  rBlock: rollableBlock  pig2: pig }
+    interactions { hit(bird, rBlock, left) > roll(rBlock, surface, right) > hit(bird2, pig2, left) > destroy(bird2, pig2) > hit(rBlock, pig, left) > destroy(rBlock, pig) }
+}
+"""
+
+
+def scenario(text):
+    analysis = analyze_text("t.phys", text, INSTALLED)
+    assert not [d for d in analysis.diagnostics if d.is_error], analysis.diagnostics
+    return analysis.scenarios[0]
+
+
+def test_each_bird_is_a_shot_in_the_order_the_sequence_names_them():
+    ir = scenario(TWO)
+    assert birds(ir, "bird") == ["bird", "bird2"] and shot_starts(ir, "bird") == (2,)
+    assert DOMAIN.reach_targets(ir) == ["pig", "pig2"]
+    timing = scenario(TIMED)
+    assert timed(timing, 2, ["bird", "bird2"]) and not timed(ir, 2, ["bird", "bird2"])
+
+
+def test_a_later_shot_starts_a_stage_and_a_tap_brings_in_what_follows_it():
+    ir = scenario(TWO)
+    plan = stages(ir.interactions, {"bird": 0, "bird2": 0, "pig": 0, "pig2": 2}, (2,))
+    assert [(s.start, s.end) for s in plan] == [(0, 2), (2, 4)]
+    from physc.generation.stages import introduced
+
+    class Placed:
+        def __init__(self, name, role, concrete):
+            self.name, self.role, self.concrete = name, role, concrete
+
+    class Layout:
+        objects = [Placed("bird", "player", "blueBird"), Placed("pig", "object", "pigSmall"), Placed("pig2", "object", "pigSmall")]
+        conjunction = ()
+
+    entry = introduced(Layout(), scenario(SPLIT).interactions)
+    assert entry["pig"] == 0 and entry["pig2"] == 3  # the tap's stage has the bird's target
+
+
+def test_a_later_birds_candidates_extend_the_shots_before_and_a_timed_one_waits():
+    from physc.domains.angrybirds.launch import Shot, Shots
+    from physc.domains.angrybirds.level import Level, LevelObject
+
+    level = Level(objects=(LevelObject("Pig", "BasicSmall", -4.0, -3.26, 0.0, name="pig"), LevelObject("Pig", "BasicSmall", -2.0, -3.26, 0.0, name="pig2"),
+                           LevelObject("Circle", "Circle", -6.0, -3.1, 0.0, "wood", name="rBlock")))
+    first = Shot(target=(-4.0, -3.26))
+    later = candidates(DOMAIN, level, scenario(TWO), 2, first)
+    assert later and all(isinstance(a, Shots) and a.shots[0] == first and a.shots[1].bird == "bird2" for _, a in later)
+    assert all(label.startswith("bird2: pig2.") for label, _ in later)
+    waited = candidates(DOMAIN, level, scenario(TIMED), 2, first)
+    assert {a.shots[1].wait for _, a in waited} == set(WAITS)
+    tapped = candidates(DOMAIN, level, scenario(SPLIT))
+    assert tapped and all(a.tap is not None and a.tap > 0 for _, a in tapped)
+
+
+def test_two_shots_compile_to_a_level_of_two_birds_that_verify_replays(tmp_path):
+    source = tmp_path / "two.phys"
+    source.write_text(TWO)
+    task = tmp_path / "two.json"
+    run = run_physc("compile", source, "-q", "--task", task, "-o", tmp_path / "two.xml")
+    assert run.status == 0, run.stderr
+    data = json.loads(task.read_text())
+    shots = data["solution"]["shots"]
+    assert data["solution"]["node"] == "ShotsSolution" and [s["bird"] for s in shots] == ["bird", "bird2"]
+    assert all(len(s["agent_action"]) == 3 and s["agent_action"][2] == 0 for s in shots)
+    assert (tmp_path / "two.xml").read_text().count('<Bird type="BirdRed" />') == 2
+    verified = run_physc("verify", tmp_path / "two.xml", "--task", task)
+    assert verified.status == 0 and "passes" in verified.stdout
+
+
+def test_a_tapped_blue_bird_is_recorded_with_its_tap_in_milliseconds(tmp_path):
+    source = tmp_path / "split.phys"
+    source.write_text(SPLIT)
+    task = tmp_path / "split.json"
+    run = run_physc("compile", source, "-q", "--task", task, "-o", tmp_path / "split.xml")
+    assert run.status == 0, run.stderr
+    data = json.loads(task.read_text())
+    (shot,) = data["solution"]["shots"]
+    assert shot["tap"] > 0 and shot["agent_action"][2] == round(shot["tap"] * 1000)
+    assert data["trace"].startswith("tap(bird) > hit(bird, pig, left)") and '<Bird type="BirdBlue" />' in (tmp_path / "split.xml").read_text()
+
+
+CONTRAST = """scenario Weight {
+    objects { rBlock: rollableBlock(stone) = circleSmall  heavy: rollableBlock(stone) = circle }
+    interactions { hit(bird, rBlock, left) > roll(rBlock, surface, right) > hit(rBlock, pig, left) > destroy(rBlock, pig) }
+    restrictions { cannotHit(bird, pig, any), contrast(heavy, rBlock) }
+}
+"""
+STRUCTURE = """scenario Stack {
+    objects { weak: fallableBlock(ice) = squareSmall  top: fallableBlock(stone) = rectFat }
+    interactions { hit(bird, weak, left) > fall(top, pig) > hit(top, pig, above) > destroy(top, pig) }
+    restrictions { on(top, weak) }
+}
+"""
+
+
+def test_a_contrast_rests_as_its_counterpart_and_a_structure_stacks(tmp_path):
+    source = tmp_path / "c.phys"
+    source.write_text(CONTRAST + STRUCTURE)
+    def edges(name):
+        out = run_physc("compile", source, "--scenario", name, "--emit", "layout-graph")
+        assert out.status == 0, out.stderr
+        return {(e["term"], e["a"], e["b"], tuple(e["values"])) for e in json.loads(out.stdout)["edges"]}
+
+    assert ("onLocation", "heavy", "support_rBlock", ("left", "centre", "right")) in edges("Weight")
+    assert ("onLocation", "top", "weak", ("over",)) in edges("Stack")
+
+
+def test_a_contrast_is_checked_by_aiming_the_shot_at_it():
+    from physc.domains.angrybirds.launch import Shot
+    from physc.domains.angrybirds.level import Level, LevelObject
+
+    a = LevelObject("Block", "CircleSmall", -4.0, -3.29, 0.0, "stone", name="rBlock")
+    b = LevelObject("Block", "Circle", -6.0, -3.125, 0.0, "stone", name="heavy")
+    shot = Shot(target=(-4.0 - 0.21, -3.29), trajectory="low")
+    aimed = DOMAIN.contrasted(Level(objects=(a, b)), shot, "rBlock", "heavy")
+    assert aimed.target[0] == -6.0 - 0.375 and aimed.target[1] == -3.125 and aimed.trajectory == "low"
+    assert DOMAIN.contrasted(Level(objects=(a, b)), Shot(target=(3.0, 0.0)), "rBlock", "heavy") is None
