@@ -105,7 +105,8 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
     """`layout` with shortcuts blocked (actions at other objects than the first target
     that solve the task), each by an obstacle that keeps the solution holding up, at most
     `shortcuts` tried; and the obstacles' descriptions. `count`: obstacles so far."""
-    first = problem.interactions[0].objects[1] if len(problem.interactions[0].objects) > 1 else None
+    lead = problem.interactions[0].objects
+    first = lead[1] if len(lead) > 1 else next(iter(problem.domain.reach_targets(problem.scenario)), None)  # (after a tap: what the bird hits)
     actor = next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
     added: list[str] = []
     if problem.domain.blocker is None or actor is None:

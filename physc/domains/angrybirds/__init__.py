@@ -317,7 +317,8 @@ class AngryBirds(SimulatedDomain):
         """The paper's heuristic agent (agent.py): it shoots at everything but the first target."""
         from physc.domains.angrybirds.agent import accidental
 
-        fraction, plays = accidental(self.game(level), scenario.interactions[0].objects[1])
+        first = self.reach_targets(scenario)
+        fraction, plays = accidental(self.game(level), first[0] if first else None)
         return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}
 
 

@@ -1,19 +1,20 @@
 """The paper's heuristic agent, the evaluation's measure of accidental solvability in
 angrybirds: it shoots at every block, pig and TNT except the solution's target, at its
 points of interest, on both trajectories; a task's value is the fraction of those plays
-that solve it."""
+that solve it. In a level of several birds, a play shoots each of them at the same point,
+in turn (language version 2)."""
 
 from __future__ import annotations
 
 from physc.domains.angrybirds import REPLAY_SECONDS
 from physc.domains.angrybirds.actions import agent_targets, points_of_interest
 from physc.domains.angrybirds.game import Game
-from physc.domains.angrybirds.launch import Shot
+from physc.domains.angrybirds.launch import Shot, Shots
 
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 
 
-def accidental(game: Game, solution_target: str) -> tuple[float | None, int]:
+def accidental(game: Game, solution_target: str | None) -> tuple[float | None, int]:
     """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it,
     and the number of plays. None when the agent found no play (no point of interest within
     reach): a fraction of nothing is not 0, and must not pull a mean down."""
@@ -26,6 +27,9 @@ def accidental(game: Game, solution_target: str) -> tuple[float | None, int]:
                 continue
             for trajectory in ("low", "high"):
                 plays += 1
-                trace = game.simulate(Shot(target=(x, y), trajectory=trajectory), REPLAY_SECONDS, settle_after_solved=0.0)
+                shot = Shot(target=(x, y), trajectory=trajectory)
+                if len(game.level.birds) > 1:
+                    shot = Shots(tuple(Shot(target=(x, y), trajectory=trajectory, bird="bird" if k == 0 else f"bird{k + 1}") for k in range(len(game.level.birds))))
+                trace = game.simulate(shot, REPLAY_SECONDS, settle_after_solved=0.0)
                 solved += trace.solved
     return (solved / plays if plays else None), plays
