@@ -99,8 +99,8 @@ def _fail(args, diagnostic: Diagnostic, source=None) -> int:
 
 
 def _scenario(args):
-    """(the task file's scenario, its level with the scenario's names, that level's text), or
-    None without --task."""
+    """(the task file's scenario, its level with the scenario's names, that level's text, its
+    solution), or None without --task."""
     if args.task is None:
         return None
     from physc.api.errors import FileError
@@ -108,10 +108,10 @@ def _scenario(args):
     from physc.commands.verify import read_task
 
     try:
-        _, scenario, level, text, _ = task_parts(read_task(args.task), args.task)
+        _, scenario, level, text, solution = task_parts(read_task(args.task), args.task)
     except FileError as error:
         raise UsageError(str(error)) from None
-    return scenario, level, text
+    return scenario, level, text, solution
 
 
 def _play(args, task=None):
@@ -126,14 +126,16 @@ def _play(args, task=None):
         return None, None, None, status
     domain = _domain(args, level)
     scenario = None
+    shot = domain.shot(args.shot, args.angle)
     if task is not None:
-        scenario, named, text = task
+        scenario, named, text, solution = task
         data, _ = read_input(args.level, "the level", limit=domain.max_level_bytes + 1)
         if data is not None and _normalised(data.decode("utf-8-sig", "replace")) == _normalised(text):
             level = named
+            if shot is None and args.shot is None and args.angle is None:
+                shot = domain.action_of(solution)  # the task's own solution, all its shots
         else:
             scenario = None  # another level: its objects have other names
-    shot = domain.shot(args.shot, args.angle)
     if shot is not None and not level.has_birds:
         help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
         return None, None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
@@ -145,8 +147,13 @@ def _play(args, task=None):
     return domain, level, shot, trace
 
 
+def _angle(shot, domain) -> float | None:
+    """A single shot's release angle (None for several)."""
+    return round(shot.release_angle(domain.world), 4) if hasattr(shot, "release_angle") else None
+
+
 def cmd_simulate(args) -> int:
-    domain, level, shot, trace = _play(args)
+    domain, level, shot, trace = _play(args, _scenario(args))
     if level is None:
         return trace
     pigs = list(trace.goal)
@@ -157,7 +164,7 @@ def cmd_simulate(args) -> int:
                 "level": args.level,
                 "world": domain.world.name,
                 "backend": domain.backend.name,
-                "shot": None if shot is None else {"text": shot.text(), "release_angle": round(shot.release_angle(domain.world), 4)},
+                "shot": None if shot is None else {"text": shot.text(), "release_angle": _angle(shot, domain)},
                 "seconds": round(trace.duration, 4),
                 "pigs": pigs,
                 "pigs_destroyed": [d.name for d in destroyed],
@@ -166,7 +173,7 @@ def cmd_simulate(args) -> int:
             }
         )
         return EXIT_OK
-    what = "no shot" if shot is None else f"shot {shot.text()} (release angle {shot.release_angle(domain.world):.2f}°)"
+    what = "no shot" if shot is None else f"shot {shot.text()}" + ("" if _angle(shot, domain) is None else f" (release angle {_angle(shot, domain):.2f}°)")
     print(f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}; world {domain.world.name}")
     verdict = "solved" if trace.solved else "not solved"
     print(f"after {trace.duration:.2f} s: {len(destroyed)} of {plural(len(pigs), 'pig')} destroyed: {verdict}")
@@ -231,13 +238,13 @@ def cmd_render(args) -> int:
     if not args.output.lower().endswith((".png", ".svg")):
         raise UsageError("-o must name a .png or .svg file")
     check_output(args.output)
-    if args.shot is None and args.angle is None:
+    if args.shot is None and args.angle is None and args.task is None:
         level, status = _level(args)
         if level is None:
             return status
         domain, paths = _domain(args, level), {}
-    else:
-        domain, level, _, trace = _play(args)
+    else:  # a shot, or the task's solution
+        domain, level, _, trace = _play(args, _scenario(args))
         if level is None:
             return trace
         paths = trace.paths()

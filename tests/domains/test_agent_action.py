@@ -118,3 +118,15 @@ def test_the_level_set_carries_the_shot_the_task_recorded():
     recorded = {"release_angle": 43.0, "agent_action": [-100, -93, 0], "agent_angle": 42.98}
     shots = list(csv.DictReader(io.StringIO(benchmark_files([({"scenario": "SF", "seed": 0, "solution": recorded}, text)])["phyq/shots.csv"].decode())))
     assert (shots[0]["dx"], shots[0]["dy"], shots[0]["agent_angle"]) == ("-100", "-93", "42.98")  # what physc verify replayed
+
+
+def test_the_level_set_carries_every_shot_of_a_task_of_several_in_turn():
+    text = next(iter(sorted((EXAMPLES.parent / "tests" / "data" / "sciencebirds" / "phyq-templates").glob("*.xml")))).read_text(encoding="utf-8-sig")
+    recorded = {"shots": [
+        {"release_angle": 43.0, "agent_action": [-100, -93, 0], "agent_angle": 42.98},
+        {"release_angle": 20.0, "agent_action": [-120, -40, 560], "agent_angle": 20.01},
+    ]}
+    files = benchmark_files([({"scenario": "Two", "seed": 0, "solution": recorded}, text)])
+    shots = list(csv.DictReader(io.StringIO(files["phyq/shots.csv"].decode())))
+    assert [(s["level"], s["shot"], s["tap_time"]) for s in shots] == [("1", "1", "0"), ("1", "2", "560")]
+    assert files["phyq/config.xml"].decode().count("Two_0_1.xml") == 2  # the level once (and the last again, as Phy-Q lists it)

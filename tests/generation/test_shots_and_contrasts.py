@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 
 from conftest import run_physc
@@ -9,6 +11,7 @@ from conftest import run_physc
 from physc.dsl.frontend import analyze_text
 from physc.domains.words import INSTALLED
 from physc.domains.angrybirds import DOMAIN
+from physc.domains.angrybirds.phyq_levels import benchmark_files
 from physc.domains.angrybirds.shots import WAITS, birds, candidates, shot_starts, timed
 from physc.generation.stages import stages
 
@@ -90,6 +93,10 @@ def test_two_shots_compile_to_a_level_of_two_birds_that_verify_replays(tmp_path)
     assert (tmp_path / "two.xml").read_text().count('<Bird type="BirdRed" />') == 2
     verified = run_physc("verify", tmp_path / "two.xml", "--task", task)
     assert verified.status == 0 and "passes" in verified.stdout
+    played = run_physc("simulate", tmp_path / "two.xml", "--task", task)  # the task's own shots, both
+    assert played.status == 0 and "2 of 2 pigs destroyed: solved" in played.stdout and "by bird2" in played.stdout
+    rows = list(csv.DictReader(io.StringIO(benchmark_files([({"scenario": "TwoShots", "seed": 0, "solution": data["solution"]}, (tmp_path / "two.xml").read_text())])["phyq/shots.csv"].decode())))
+    assert [r["shot"] for r in rows] == ["1", "2"] and [int(r["dx"]) for r in rows] == [s["agent_action"][0] for s in shots]
 
 
 def test_a_tapped_blue_bird_is_recorded_with_its_tap_in_milliseconds(tmp_path):

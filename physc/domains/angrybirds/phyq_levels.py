@@ -8,10 +8,11 @@
 * `config.xml`: the game's level list (StreamingAssets/config.xml's form), the levels in that
   order, where `PrepareTestConfig.py` puts them (`9001_Data/StreamingAssets/Levels/physc/Levels/`),
   the last listed twice as Phy-Q's own script does (its note: the game does not load the last);
-* `shots.csv`: per level its number (`load_level(n)`), file, scenario, seed, world, the release
-  angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])` (the task's
-  own record, which `physc verify` replayed), with the angle the game launches that at and the
-  slingshot reference point it was computed from;
+* `shots.csv`: per shot, its level's number (`load_level(n)`), file, scenario, seed, world, the
+  shot's place among the level's (`shot`: 1, 2, … for a task of several, language version 2),
+  the release angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])`
+  (the task's own record, which `physc verify` replayed; the tap in milliseconds), with the
+  angle the game launches that at and the slingshot reference point it was computed from;
 * `replay_shots.py`: a script for `sciencebirdsagents/` that loads each level, sends its shot
   and writes whether the level was solved (it carries agent_action.py's functions, to compute
   the shot again if the game's reference point differs from the one expected);
@@ -28,7 +29,7 @@ from physc.domains.angrybirds import agent_action
 from physc.domains.angrybirds.level_xml import parse_level
 
 GAME_FOLDER = "9001_Data/StreamingAssets/Levels/physc/Levels"  # where the game reads them, relative to its folder
-COLUMNS = ("level", "file", "scenario", "seed", "world", "release_angle", "dx", "dy", "tap_time", "agent_angle", "reference_x", "reference_y")
+COLUMNS = ("level", "file", "scenario", "seed", "world", "shot", "release_angle", "dx", "dy", "tap_time", "agent_angle", "reference_x", "reference_y")
 
 
 def level_file(row: dict, number: int) -> str:
@@ -45,26 +46,27 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         files[f"phyq/Levels/{name}"] = text.encode("utf-8")
         level = parse_level(text)
         solution = row.get("solution") or {}
-        angle = solution.get("release_angle")
         reference = agent_action.reference_point(level.slingshot, level.camera.y, level.camera.max_width)
-        action, launched = solution.get("agent_action"), solution.get("agent_angle")
-        if action is None or launched is None:  # a task made before solutions recorded it
-            action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
         world = level.world or row.get("world") or "phyq"
         worlds.add(world)
-        shots.append(
-            {
-                "level": number, "file": name, "scenario": row["scenario"], "seed": row["seed"], "world": world,
-                "release_angle": angle, "dx": action[0], "dy": action[1], "tap_time": action[2],
-                "agent_angle": round(launched, 5), "reference_x": reference[0], "reference_y": reference[1],
-            }
-        )
+        for k, shot in enumerate(solution.get("shots") or [solution], start=1):  # a ShotsSolution's, or the one
+            angle = shot.get("release_angle")
+            action, launched = shot.get("agent_action"), shot.get("agent_angle")
+            if action is None or launched is None:  # a task made before solutions recorded it
+                action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
+            shots.append(
+                {
+                    "level": number, "file": name, "scenario": row["scenario"], "seed": row["seed"], "world": world, "shot": k,
+                    "release_angle": angle, "dx": action[0], "dy": action[1], "tap_time": action[2],
+                    "agent_angle": round(launched, 5), "reference_x": reference[0], "reference_y": reference[1],
+                }
+            )
     table = io.StringIO()
     writer = csv.DictWriter(table, COLUMNS, lineterminator="\n")
     writer.writeheader()
     writer.writerows(shots)
     files["phyq/shots.csv"] = table.getvalue().encode("utf-8")
-    files["phyq/config.xml"] = config([s["file"] for s in shots]).encode("utf-8")
+    files["phyq/config.xml"] = config(list(dict.fromkeys(s["file"] for s in shots))).encode("utf-8")
     files["phyq/replay_shots.py"] = replay_script().encode("utf-8")
     files["phyq/README.md"] = readme(len(shots), sorted(worlds)).encode("utf-8")
     return files
@@ -111,18 +113,19 @@ def main():
     env.make(agent=agent, start_level=1, state_representation_type="symbolic")
     with open(args.out, "w", newline="") as handle:
         out = csv.writer(handle)
-        out.writerow(["level", "file", "dx", "dy", "reference_x", "reference_y", "solved"])
+        out.writerow(["level", "file", "shot", "dx", "dy", "reference_x", "reference_y", "solved"])
         for shot in shots:
-            env.current_level = int(shot["level"])
-            env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
+            if int(shot.get("shot") or 1) == 1:  # a level's first shot: load it (its later shots go on from there)
+                env.current_level = int(shot["level"])
+                env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
             action = [int(shot["dx"]), int(shot["dy"]), int(shot["tap_time"])]
             expected = (int(shot["reference_x"]), int(shot["reference_y"]))
             live = (env.sling_center.X, env.sling_center.Y)
             if live != expected:  # another screen or camera than expected: aim from the game's own reference point
                 level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
-                action = aimed_again(float(shot["release_angle"]), level_text, live)
+                action = aimed_again(float(shot["release_angle"]), level_text, live) + [int(shot["tap_time"])]
             _, _, _, info = env.step(action)
-            out.writerow([shot["level"], shot["file"], action[0], action[1], live[0], live[1], bool(info[0])])
+            out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], live[0], live[1], bool(info[0])])
 
 
 def aimed_again(angle, level_text, reference):
@@ -133,7 +136,7 @@ def aimed_again(angle, level_text, reference):
     camera = re.search(r'<Camera x="[^"]+" y="([^"]+)" minWidth="[^"]+" maxWidth="([^"]+)"', level_text)
     slingshot = (float(sling.group(1)), float(sling.group(2))) if sling else (-12.0, -2.5)
     camera_y, max_width = (float(camera.group(1)), float(camera.group(2))) if camera else (-1.0, 35.0)
-    return agent_action(angle, slingshot, camera_y, max_width, reference=reference)[0]
+    return agent_action(angle, slingshot, camera_y, max_width, reference=reference)[0][:2]
 
 
 if __name__ == "__main__":
