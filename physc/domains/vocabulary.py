@@ -223,3 +223,24 @@ def paper_terms(rollable: str, slidable: str, surface: str) -> tuple[dict[str, T
         TermSignature("cannotFall", RESTRICTION, (Parameter("a", OBJECT, dynamic=True),), "during the solution, a must not fall", forbids="fall"),
     )
     return {t.name: t for t in interactions}, restrictions
+
+
+def structure_terms() -> tuple[TermSignature, TermSignature]:
+    """Language version 2's restrictions on a level's make-up, which the layout rules read
+    (physc.compiler.layout_rules) and the search checks (physc.generation.contrasts):
+    `contrast(a, b)` (a domain that has it writes `SimulatedDomain.contrasted`) and `on(a, b)`."""
+    contrast = TermSignature(
+        "contrast",
+        RESTRICTION,
+        (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
+        "a rests as b does, but the action that sets b going, aimed at a instead, does not solve the task (version 2: "
+        "the heavier circle, the block on the taller pillar)",
+    )
+    on = TermSignature(
+        "on",
+        RESTRICTION,
+        (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
+        "a rests on b in the level: a structure of several bodies, whose weak point is what the chain knocks out (version 2)",
+        carries=True,
+    )
+    return contrast, on

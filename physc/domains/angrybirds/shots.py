@@ -220,11 +220,15 @@ def level_birds(layout, scenario, player: str, prefab_of) -> tuple[str, ...]:
     return tuple(prefab_of(names[n].concrete) for n in order if n in names) or ("BirdRed",)
 
 
+CONTRAST_REACH = 1.5  # units: a shot whose aim lies this near the counterpart's centre is the one aimed at it
+
+
 def contrasted(domain, level, action, counterpart: str, contrast: str):
-    """The shot aimed at `counterpart` aimed at the same point of `contrast` instead (its offset
-    from the centre scaled by the two bodies' sizes), on the same trajectory if it reaches
-    there, else on the other; the other shots unchanged. None when no shot is aimed at the
-    counterpart, or the point is out of reach."""
+    """The shot aimed at `counterpart` (its aim nearest the counterpart's centre, within
+    CONTRAST_REACH: a raised shot is named by a point of its flight near, not on, the body)
+    aimed at the same point of `contrast` instead (its offset from the centre scaled by the two
+    bodies' sizes), on the same trajectory if it reaches there, else on the other; the other
+    shots unchanged. None when no shot is aimed near the counterpart, or the point is out of reach."""
     from physc.domains.angrybirds.catalogue import extent
 
     objects = {o.name: o for o in level.objects}
@@ -233,14 +237,16 @@ def contrasted(domain, level, action, counterpart: str, contrast: str):
     a, b = objects[counterpart], objects[contrast]
     (aw, ah), (bw, bh) = extent(a), extent(b)
     shots = list(shots_of(action))
-    for k, shot in enumerate(shots):
-        if shot.target is None or abs(shot.target[0] - a.x) > aw / 2 + 1e-6 or abs(shot.target[1] - a.y) > ah / 2 + 1e-6:
-            continue
-        point = (round(b.x + (shot.target[0] - a.x) * bw / aw, 5), round(b.y + (shot.target[1] - a.y) * bh / ah, 5))
-        other = "high" if shot.trajectory == "low" else "low"
-        for trajectory in (shot.trajectory, other):
-            if domain.world.launch.aim(*point, trajectory, domain.world.gravity) is not None:
-                shots[k] = attrs.evolve(shot, target=point, trajectory=trajectory, angle=None)
-                return shots[0] if isinstance(action, Shot) else Shots(tuple(shots))
+    near = [(math.hypot(s.target[0] - a.x, s.target[1] - a.y), k) for k, s in enumerate(shots) if s.target is not None]
+    near = [(d, k) for d, k in near if d <= CONTRAST_REACH]
+    if not near:
         return None
+    k = min(near)[1]
+    shot = shots[k]
+    point = (round(b.x + (shot.target[0] - a.x) * bw / aw, 5), round(b.y + (shot.target[1] - a.y) * bh / ah, 5))
+    other = "high" if shot.trajectory == "low" else "low"
+    for trajectory in (shot.trajectory, other):
+        if domain.world.launch.aim(*point, trajectory, domain.world.gravity) is not None:
+            shots[k] = attrs.evolve(shot, target=point, trajectory=trajectory, angle=None)
+            return shots[0] if isinstance(action, Shot) else Shots(tuple(shots))
     return None

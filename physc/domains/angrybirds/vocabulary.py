@@ -4,7 +4,6 @@ paper's tables "Object grammar", "Interaction grammar", "Restriction grammar")."
 from physc.domains.vocabulary import (
     INTERACTION,
     OBJECT,
-    RESTRICTION,
     SIDES,
     ConcreteObject,
     ObjectTerm,
@@ -12,6 +11,7 @@ from physc.domains.vocabulary import (
     TermSignature,
     Vocabulary,
     paper_terms,
+    structure_terms,
 )
 
 MATERIALS = ("wood", "stone", "ice")  # a block's (catalogue.MATERIALS)
@@ -69,20 +69,7 @@ OBJECT_TERMS = (
 
 
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableBlock", slidable="slidableBlock", surface="surface")
-CONTRAST = TermSignature(
-    "contrast",
-    RESTRICTION,
-    (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
-    "a rests as b does, but the shot that sets b going, aimed at a instead, does not solve the task (version 2: "
-    "the heavier circle, the block on the taller pillar)",
-)
-ON = TermSignature(
-    "on",
-    RESTRICTION,
-    (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
-    "a rests on b in the level: a structure of several bodies, whose weak point is what the chain knocks out (version 2)",
-    carries=True,
-)
+CONTRAST, ON = structure_terms()
 TERMS = (
     PAPER["hit"],
     PAPER["roll"],

@@ -18,6 +18,7 @@ from physc.domains.vocabulary import (
     TermSignature,
     Vocabulary,
     paper_terms,
+    structure_terms,
 )
 
 CONCRETE_OBJECTS = (
@@ -82,6 +83,7 @@ OBJECT_TERMS = (
 
 
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableObject", slidable="slidableObject", surface="surface")
+_, ON = structure_terms()  # on(a, b): a rests on b (the catapult's green ball on its plank, 00023)
 TERMS = tuple(PAPER.values()) + (
     TermSignature(
         "touch",
@@ -106,7 +108,9 @@ TERMS = tuple(PAPER.values()) + (
         "inside",
         RESTRICTION,
         (Parameter("a", OBJECT, fits="fallableObject"), Parameter("b", OBJECT, fits="container")),
-        "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar)",
+        "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar); "
+        "a moves once the jar does",
+        carries=True,
     ),
     TermSignature(
         "cradled",
@@ -120,6 +124,7 @@ TERMS = tuple(PAPER.values()) + (
         (Parameter("a", OBJECT, fits="rollableObject"),),
         "a rests on a row of pegs, small black static balls, which it rolls along or is knocked off (PHYRE's templates 00012, 00013)",
     ),
+    ON,
 )
 
 VOCABULARY = Vocabulary(
