@@ -42,8 +42,10 @@ def supports(layout) -> dict[str, str]:
     return {r.a: r.b for r in layout.conjunction if r.relation in RESTS_ON}
 
 
-def introduced(layout, interactions: Sequence) -> dict[str, int]:
-    """The interaction at which each object of `layout` enters the scene (module docstring)."""
+def introduced(layout, interactions: Sequence, carried: Sequence[tuple[str, str]] = ()) -> dict[str, int]:
+    """The interaction at which each object of `layout` enters the scene (module docstring);
+    `carried`: (a, b) pairs of the scenario's structures (version 2: a rests on or in b), where a
+    enters with b, being there when b is."""
     total = len(interactions)
     entry = {}
     for o in layout.objects:
@@ -59,6 +61,7 @@ def introduced(layout, interactions: Sequence) -> dict[str, int]:
                 entry[name] = min(entry[name], k if pending is None else pending)
         pending = None
     before = [(support, a) for a, support in supports(layout).items()]
+    before += [(a, b) for a, b in carried]
     before += [pair for a, b in map(tuple, joined(layout.conjunction)) for pair in ((a, b), (b, a))]
     before = [(x, y) for x, y in before if x in entry and y in entry]
     changed = True
