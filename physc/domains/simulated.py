@@ -118,8 +118,9 @@ class SimulatedDomain(Domain):
     @_no_default
     def actions(self, level, scenario) -> list[tuple[str, object]]:
         """(label, action) for every candidate action, in the order they are tried. A domain
-        whose player acts several times (`shot_starts`) takes `start` and `before` too: the
-        candidates of the action that starts at interaction `start`, each extending `before`."""
+        whose player acts several times (`shot_starts`) takes `start`, `before` and `after` too:
+        the candidates of the action that starts at interaction `start`, each extending `before`,
+        aimed at the level as the play of `before` left it (`after`, its trace)."""
         raise MissingCapability(self.name, ("actions",), "generating a task")
 
     def shot_starts(self, scenario) -> tuple[int, ...]:

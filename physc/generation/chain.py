@@ -169,7 +169,9 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
     if parent.attempts and stage.start in problem.shot_starts:  # the player's next action: each parent's extended
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         level = problem.level_of(scene)
-        actions = [(f"{a.label}; {label}", action) for a in order for label, action in domain.actions(level, problem.scenario, stage.start, a.action)]
+        actions = [
+            (f"{a.label}; {label}", action) for a in order for label, action in domain.actions(level, problem.scenario, stage.start, a.action, a.trace)
+        ]
         screen = len(actions)
     elif parent.attempts:
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]

@@ -147,3 +147,21 @@ def test_a_contrast_is_checked_by_aiming_the_shot_at_it():
     aimed = DOMAIN.contrasted(Level(objects=(a, b)), shot, "rBlock", "heavy")
     assert aimed.target[0] == -6.0 - 0.375 and aimed.target[1] == -3.125 and aimed.trajectory == "low"
     assert DOMAIN.contrasted(Level(objects=(a, b)), Shot(target=(3.0, 0.0)), "rBlock", "heavy") is None
+
+
+def test_a_later_bird_is_aimed_where_the_shots_before_left_its_target():
+    from physc.domains.angrybirds.launch import Shot
+    from physc.domains.angrybirds.level import Level, LevelObject
+    from physc.domains.angrybirds.shots import where_left
+
+    pig = LevelObject("Pig", "BasicSmall", -6.0, -3.26, 0.0, name="pig")
+    pig2 = LevelObject("Pig", "BasicBig", -3.0, -3.03, 0.0, name="pig2")
+    level = Level(objects=(pig, pig2), birds=("BirdRed", "BirdRed"))
+    first = Shot(target=(pig.x, pig.y))
+    trace = DOMAIN.play(level, first, None)
+    moved = where_left(level, trace)
+    assert "pig" not in {o.name for o in moved.objects}  # destroyed by the first shot
+    (left,) = [o for o in moved.objects if o.name == "pig2"]
+    later = DOMAIN.actions(level, scenario(TWO), 2, first, trace)
+    centre = next(a.shots[1].target for label, a in later if label.endswith("pig2.c, low"))
+    assert centre == (round(left.x, 5), round(left.y, 5))

@@ -141,13 +141,14 @@ class AngryBirds(SimulatedDomain):
         settle = {} if whole else {"settle_after_solved": 0.0}
         return game.simulate(action, seconds or self.seconds, record=False, **settle)
 
-    def actions(self, level, scenario, start: int = 0, before=None) -> list:
+    def actions(self, level, scenario, start: int = 0, before=None, after=None) -> list:
         """The paper's candidate shots: at the points of interest of what the bird's shot starts
-        by hitting (the first bird's, or with `before`, the next bird's at interaction `start`;
-        tapped at a few points of its flight where the scenario taps it: shots.py)."""
-        from physc.domains.angrybirds.shots import candidates
+        by hitting (the first bird's, or with `before`, the next bird's at interaction `start`,
+        where the play of `before`, `after`, left it; tapped at a few points of its flight where
+        the scenario taps it: shots.py)."""
+        from physc.domains.angrybirds.shots import candidates, where_left
 
-        return candidates(self, level, scenario, start, before)
+        return candidates(self, level if after is None else where_left(level, after), scenario, start, before)
 
     def actions_at(self, level, name: str) -> list:
         from physc.domains.angrybirds.actions import candidate_shots

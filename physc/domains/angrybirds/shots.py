@@ -129,6 +129,22 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
     return out
 
 
+def where_left(level, trace):
+    """`level` as a play left it (its trace's last step): each object where it ended, turned as
+    it ended; an object gone by then left out. A later bird is aimed at its target there, as an
+    agent sees the level before its next shot."""
+    from physc.domains.playing import states_at
+
+    states = states_at(trace, trace.steps - 1)
+    objects = []
+    for obj in level.objects:
+        state = states.get(obj.name, ())
+        if state is None:
+            continue
+        objects.append(obj if not state else attrs.evolve(obj, x=round(state[0], 5), y=round(state[1], 5), rotation=round(math.degrees(state[2]), 3)))
+    return attrs.evolve(level, objects=tuple(objects))
+
+
 def tap_time(shot: Shot, world, share: float) -> float:
     """When the bird of `shot` is `share` of the way (in x) to its target, in whole milliseconds."""
     (x, _), (vx, _) = shot.start(world)

@@ -83,7 +83,6 @@ OBJECT_TERMS = (
 
 
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableObject", slidable="slidableObject", surface="surface")
-_, ON = structure_terms()  # on(a, b): a rests on b (the catapult's green ball on its plank, 00023)
 TERMS = tuple(PAPER.values()) + (
     TermSignature(
         "touch",
@@ -108,9 +107,8 @@ TERMS = tuple(PAPER.values()) + (
         "inside",
         RESTRICTION,
         (Parameter("a", OBJECT, fits="fallableObject"), Parameter("b", OBJECT, fits="container")),
-        "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar); "
-        "a moves once the jar does",
-        carries=True,
+        "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar)",
+        carries=True,  # a moves once the jar does
     ),
     TermSignature(
         "cradled",
@@ -124,7 +122,7 @@ TERMS = tuple(PAPER.values()) + (
         (Parameter("a", OBJECT, fits="rollableObject"),),
         "a rests on a row of pegs, small black static balls, which it rolls along or is knocked off (PHYRE's templates 00012, 00013)",
     ),
-    ON,
+    structure_terms()[1],  # on(a, b): a rests on b (version 2)
 )
 
 VOCABULARY = Vocabulary(
