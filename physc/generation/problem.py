@@ -14,7 +14,6 @@ from __future__ import annotations
 import attrs
 
 from physc.compiler.layout_rules import pushes
-from physc.domains.vocabulary import TermSignature
 from physc.generation import placing
 from physc.generation.attempt import Attempt
 from physc.generation.evaluator import Evaluator
@@ -24,7 +23,6 @@ from physc.simulation.fidelity import fidelity
 from physc.simulation.margins import Margin
 from physc.simulation.snapshot import Snapshot
 
-NOT_CARRYING = TermSignature("", "", ())  # (what an unknown restriction carries: nothing)
 KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
 
 
@@ -48,7 +46,7 @@ class Problem:
     @classmethod
     def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
         vocabulary = domain.vocabulary
-        carried = [tuple(t.objects[:2]) for t in scenario.restrictions if (vocabulary.term(t.name) or NOT_CARRYING).carries]
+        carried = [tuple(t.objects[:2]) for t in scenario.restrictions if (term := vocabulary.term(t.name)) is not None and term.carries]
         entry = introduced(layout, scenario.interactions, carried)
         starts = tuple(domain.shot_starts(scenario))
         return cls(

@@ -80,13 +80,18 @@ def test_a_later_birds_candidates_extend_the_shots_before_and_a_timed_one_waits(
     assert tapped and all(a.tap is not None and a.tap > 0 for _, a in tapped)
 
 
-def test_two_shots_compile_to_a_level_of_two_birds_that_verify_replays(tmp_path):
-    source = tmp_path / "two.phys"
-    source.write_text(TWO)
-    task = tmp_path / "two.json"
-    run = run_physc("compile", source, "-q", "--task", task, "-o", tmp_path / "two.xml")
+def compiled(tmp_path, text: str, name: str):
+    """(the task file's data, its path) of `text` compiled to `name`.xml and `name`.json."""
+    source = tmp_path / f"{name}.phys"
+    source.write_text(text)
+    task = tmp_path / f"{name}.json"
+    run = run_physc("compile", source, "-q", "--task", task, "-o", tmp_path / f"{name}.xml")
     assert run.status == 0, run.stderr
-    data = json.loads(task.read_text())
+    return json.loads(task.read_text()), task
+
+
+def test_two_shots_compile_to_a_level_of_two_birds_that_verify_replays(tmp_path):
+    data, task = compiled(tmp_path, TWO, "two")
     shots = data["solution"]["shots"]
     assert data["solution"]["node"] == "ShotsSolution" and [s["bird"] for s in shots] == ["bird", "bird2"]
     assert all(len(s["agent_action"]) == 3 and s["agent_action"][2] == 0 for s in shots)
@@ -100,12 +105,7 @@ def test_two_shots_compile_to_a_level_of_two_birds_that_verify_replays(tmp_path)
 
 
 def test_a_tapped_blue_bird_is_recorded_with_its_tap_in_milliseconds(tmp_path):
-    source = tmp_path / "split.phys"
-    source.write_text(SPLIT)
-    task = tmp_path / "split.json"
-    run = run_physc("compile", source, "-q", "--task", task, "-o", tmp_path / "split.xml")
-    assert run.status == 0, run.stderr
-    data = json.loads(task.read_text())
+    data, _ = compiled(tmp_path, SPLIT, "split")
     (shot,) = data["solution"]["shots"]
     assert shot["tap"] > 0 and shot["agent_action"][2] == round(shot["tap"] * 1000)
     assert data["trace"].startswith("tap(bird) > hit(bird, pig, left)") and '<Bird type="BirdBlue" />' in (tmp_path / "split.xml").read_text()

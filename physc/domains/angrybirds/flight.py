@@ -19,11 +19,11 @@ from __future__ import annotations
 
 import math
 
-from physc.simulation.recognise import ORDER
-from physc.simulation.trace import Interaction
 from physc.backends import BodySpec, Circle, Polygon
 from physc.domains.angrybirds.birds import POWERS, Bird, Blast, bird
 from physc.domains.angrybirds.launch import Shot
+from physc.simulation.recognise import ORDER
+from physc.simulation.trace import Interaction
 
 FIRST = "bird"  # the first bird's name in a trace, as before version 2
 GROUP = "birds"  # the game's Birds layer: birds (and the white bird's egg) never collide with one another
@@ -99,15 +99,11 @@ class Flights:
     def body(self, name: str, origin: tuple[float, float]) -> BodySpec:
         """The body of a bird (the red bird: as the world's model has it)."""
         b, model = self.of(name), self.model
-        group = GROUP if self.several else ""
-        if b.prefab == "BirdRed":
-            return BodySpec(
-                name, Circle(b.radius), *origin, mass=model.bird_mass, friction=model.bird_friction, bounciness=model.bird_bounciness,
-                angular_damping=model.bird_angular_drag, continuous=True, group=group,
-            )
+        red = b.prefab == "BirdRed"
+        mass, friction, bounciness = (model.bird_mass, model.bird_friction, model.bird_bounciness) if red else (b.mass, b.friction, b.bounciness)
         return BodySpec(
-            name, Circle(b.radius), *origin, mass=b.mass, friction=b.friction, bounciness=b.bounciness,
-            angular_damping=model.bird_angular_drag, continuous=True, group=group,
+            name, Circle(b.radius), *origin, mass=mass, friction=friction, bounciness=bounciness,
+            angular_damping=model.bird_angular_drag, continuous=True, group=GROUP if self.several else "",
         )
 
     def left(self, name: str, time: float) -> None:
@@ -128,15 +124,19 @@ class Flights:
     def on_contact(self, a: str, b: str, time: float) -> None:
         for name in (a, b):
             if name in self.flying and name not in self.struck:
-                self.struck.add(name)
-                if self.of(name).power != "blast":
-                    self.killed(self.parent.get(name, name), time)
-                # ABBird.OnCollisionEnter2D: InvokeRepeating("CheckVelocityToDie", 3 s, every 1 s)
-                self.flying[name] = min(time + self.rules.bird_still_after, self.launched_at(name) + self.rules.bird_lifetime)
-                if self.of(name).power == "blast" and name not in self.fuses:
-                    self.fuses[name] = time + POWERS.black_fuse
+                self.strike(name, time)
             elif self.kind(name) == EGG and name in self.launched:
                 self.blasted.add(name)  # ABEgg.OnCollisionEnter2D: it blasts at once
+
+    def strike(self, name: str, time: float) -> None:
+        """A bird's first collision (ABBird.OnCollisionEnter2D): the next bird comes (KillBird; the
+        black bird's fuse starts instead), and the bird is checked 3 s later and every 1 s after."""
+        self.struck.add(name)
+        if self.of(name).power != "blast":
+            self.killed(self.parent.get(name, name), time)
+        self.flying[name] = min(time + self.rules.bird_still_after, self.launched_at(name) + self.rules.bird_lifetime)
+        if self.of(name).power == "blast" and name not in self.fuses:
+            self.fuses[name] = time + POWERS.black_fuse
 
     def launched_at(self, name: str) -> float:
         """When the bird (of a blue bird's copies: the blue bird) was shot."""

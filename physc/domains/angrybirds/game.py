@@ -24,7 +24,7 @@ from physc.domains.angrybirds.catalogue import (
     shape,
 )
 from physc.domains.angrybirds.flight import FIRST, Flights
-from physc.domains.angrybirds.launch import Shot, Shots, shots_of
+from physc.domains.angrybirds.launch import Shot, shots_of
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import ScienceBirdsWorld
 from physc.simulation.recognise import violations
@@ -52,7 +52,7 @@ class Game(RunRules):
         self._fields, self._combos = readings(points)
         self._settings = tuple(f"rules.{f}" for f in self._fields)
         self._platform_masses = next((p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,))
-        self.flights = Flights((), level.birds, self.rules, self.model, world.launch.bird_rest[0])  # the birds of a run (`simulate`)
+        self.flights = self._flights(())  # the birds of a run (`simulate`)
 
     def _material(self, obj: LevelObject) -> str:
         return obj.material if obj.material in self.model.materials else "wood"
@@ -123,9 +123,13 @@ class Game(RunRules):
     def launch(self, world, shot: Shot) -> None:
         """Put the bird of `shot` alone into `world` (built by `build`) at the slingshot, flying as
         `shot` sends it (a world stepped by hand; `simulate` launches its shots in turn)."""
-        self.flights = Flights((shot,), self.level.birds, self.rules, self.model, self.world.launch.bird_rest[0])
+        self.flights = self._flights((shot,))
         self._launch(world, self.flights.launch_due(0.0))
         self.kinds[shot.bird] = "bird"
+
+    def _flights(self, shots) -> Flights:
+        """The birds of a run of `shots`, the level's <Bird> list giving each its kind."""
+        return Flights(tuple(shots), self.level.birds, self.rules, self.model, self.world.launch.bird_rest[0])
 
     def _launch(self, world, k: int) -> str:
         """Put the `k`th bird into `world` at the slingshot, flying as its shot sends it (from
@@ -168,7 +172,7 @@ class Game(RunRules):
         if invulnerable is None:
             invulnerable = 0.0 if shot is not None else rules.invulnerable_seconds
         shots = shots_of(shot)
-        self.flights = flights = Flights(shots, self.level.birds, rules, self.model, self.world.launch.bird_rest[0])
+        self.flights = flights = self._flights(shots)
         self.arrivals = flights.several or any(s.tap is not None for s in shots)
         seconds *= max(len(shots), 1)  # each shot's time
         for name in flights.bodies:
@@ -217,12 +221,11 @@ class Game(RunRules):
         self._depends = list(snapshot.depends)
         self.spent = {name for name, life in self.life.items() if life <= 0} - {d.name for d in snapshot.destructions}
         struck = next((c.time for c in snapshot.contacts if BIRD in (c.a, c.b)), None)
-        if struck is not None and BIRD in self.flights.flying:  # (a snapshot is of a one-shot play: AngryBirds.resumes)
-            self.flights.struck.add(BIRD)
-            check = min(struck + self.rules.bird_still_after, self.rules.bird_lifetime)
-            while check <= snapshot.time + 1e-9 and check < self.rules.bird_lifetime:
-                check = min(check + self.rules.bird_still_every, self.rules.bird_lifetime)
-            self.flights.flying[BIRD] = check
+        flights = self.flights
+        if struck is not None and BIRD in flights.flying:  # (a snapshot is of a one-shot play: AngryBirds.resumes)
+            flights.strike(BIRD, struck)
+            while flights.flying[BIRD] <= snapshot.time + 1e-9 and flights.flying[BIRD] < self.rules.bird_lifetime:
+                flights.checked(BIRD)  # the checks it passed before the cut
         gone = {d.name: d.time for d in snapshot.destructions}
         if self._pigs and set(self._pigs) <= set(gone):
             self._solved_at = max(gone[p] for p in self._pigs)

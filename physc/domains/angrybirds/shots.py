@@ -151,6 +151,13 @@ def tap_time(shot: Shot, world, share: float) -> float:
     return round(max(share * (shot.target[0] - x) / vx, 0.001), 3) if vx > 0 else 0.001
 
 
+def as_action(shots) -> Shot | Shots:
+    """Shots as one action: a single shot as itself (as the search's candidates give it), more
+    as `Shots`."""
+    shots = tuple(shots)
+    return shots[0] if len(shots) == 1 else Shots(shots)
+
+
 def simple(action) -> bool:
     """Whether an action is version 1's: one untapped shot of the bird named `bird`."""
     return isinstance(action, Shot) and action.tap is None and action.bird == "bird"
@@ -158,8 +165,7 @@ def simple(action) -> bool:
 
 def noisy(action, world, rng, sigma: float):
     """Each shot's release angle jittered (in the order shot)."""
-    shots = tuple(Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait) for s in shots_of(action))
-    return shots[0] if isinstance(action, Shot) else Shots(shots)
+    return as_action(Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait) for s in shots_of(action))
 
 
 def nudged(action, world, step: int, degrees: float):
@@ -168,7 +174,7 @@ def nudged(action, world, step: int, degrees: float):
     last = shots[-1].at_angle(shots[-1].release_angle(world) + step * degrees, world)
     if last is None:
         return None
-    return last if isinstance(action, Shot) else Shots((*shots[:-1], last))
+    return as_action((*shots[:-1], last))
 
 
 def solution(label: str, action, world):
@@ -195,7 +201,7 @@ def action_of(solution, noise=None):
                 shots.append(Shot(target=tuple(s.target), trajectory=s.trajectory, tap=s.tap, bird=s.bird, wait=s.wait))
             else:
                 shots.append(Shot(angle=s.release_angle + noise[0].gauss(0.0, noise[1]), tap=s.tap, bird=s.bird, wait=s.wait))
-        return shots[0] if len(shots) == 1 and shots[0].bird == "bird" and shots[0].tap is None else Shots(tuple(shots))
+        return as_action(shots)
     if noise is None:
         return Shot(target=tuple(solution.target), trajectory=solution.trajectory)
     return Shot(angle=solution.release_angle + noise[0].gauss(0.0, noise[1]))
@@ -224,8 +230,7 @@ def sent_action(solution):
     if isinstance(solution, ShotsSolution):
         if any(s.agent_angle is None for s in solution.shots):
             return None
-        shots = tuple(Shot(angle=s.agent_angle, tap=s.tap, bird=s.bird, wait=s.wait) for s in solution.shots)
-        return shots[0] if len(shots) == 1 and shots[0].bird == "bird" and shots[0].tap is None else Shots(shots)
+        return as_action(Shot(angle=s.agent_angle, tap=s.tap, bird=s.bird, wait=s.wait) for s in solution.shots)
     return None if solution.agent_angle is None else Shot(angle=solution.agent_angle)
 
 
@@ -264,5 +269,5 @@ def contrasted(domain, level, action, counterpart: str, contrast: str):
     for trajectory in (shot.trajectory, other):
         if domain.world.launch.aim(*point, trajectory, domain.world.gravity) is not None:
             shots[k] = attrs.evolve(shot, target=point, trajectory=trajectory, angle=None)
-            return shots[0] if isinstance(action, Shot) else Shots(tuple(shots))
+            return as_action(shots)
     return None
