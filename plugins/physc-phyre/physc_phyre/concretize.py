@@ -114,9 +114,11 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
                 angle = rng.uniform(*incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
         elif concrete in ("blackBar", "purpleBar", "pegRow") and node.static:
-            widest = max((_across(bodies[o].geometry) for o in carried.get(name, ()) if o in bodies), default=0.0)
+            # A load rests in the ledge's left, middle or right third: three of its widths; a
+            # piece of furniture, as wide as a ledge, only needs its centre over an outer third.
+            loads = [(_across(bodies[o].geometry), bodies[o].concrete in furniture.KINDS) for o in carried.get(name, ()) if o in bodies]
             low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else TARGET_LENGTH if concrete == "purpleBar" else BAR_LENGTH
-            low = max(low, 3 * widest + 6.0)
+            low = max([low] + [(1.5 if wide else 3) * across + 6.0 for across, wide in loads])
             length = round(rng.uniform(low, max(high, low + 30.0)), 1)
             geometry = furniture.peg_row(length) if concrete == "pegRow" else Geometry(length, BAR_HEIGHT)
             bodies[name] = Body(name, node.role, concrete, geometry)

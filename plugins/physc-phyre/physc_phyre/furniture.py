@@ -31,7 +31,7 @@ import random
 import attrs
 from physc.compiler.geometry import Geometry
 
-from physc_phyre.world import BAR_HEIGHT, extent
+from physc_phyre.world import BAR_HEIGHT, extent, jar_thickness
 
 FULCRUM = 12.5  # px, a see-saw's fulcrum ball (PHYRE's 00004: scale 0.1)
 SEESAW_LENGTH = (77.0, 115.0)  # px, 00004's beam: 0.3-0.45 of the scene
@@ -124,8 +124,10 @@ def cover_height(radius: float) -> float:
 def inside(bodies: list, pairs, held) -> list:
     """`bodies` with each (object, jar) of `pairs` (the scenario's `inside(a, jar)`) put
     together: an upside-down jar is moved over the object where it lies, resized to cover it;
-    an object is moved into an upright jar, onto its base (`held`: level.held, for a ball). The
-    support the layout gave the one moved (`support_NAME`) goes with it."""
+    an upright jar is moved to a ball that the layout put on a support of its own (where its
+    path starts), its base where the ball rests; any other object is moved into an upright
+    jar, onto its base (`held`: level.held, for a ball). The support the layout gave the one
+    moved (`support_NAME`) goes with it."""
     out = list(bodies)
     for name, jar_name in pairs:
         index = {b.name: k for k, b in enumerate(out)}
@@ -143,6 +145,14 @@ def inside(bodies: list, pairs, held) -> list:
             # Turned 180°, the jar's origin (its base's middle) lies `below` above its box's middle.
             below = extent("jar", height)[2]
             out[index[jar_name]] = attrs.evolve(jar, x=thing.x, y=round(bottom + height / 2 + below, 3), size=height)
+            moved = jar_name
+        elif thing.shape == "ball" and f"support_{name}" in index:
+            # Upright, and the layout placed the ball on a support of its own (where its path
+            # starts): the jar comes to it, its base where the ball rests, the ball in it.
+            base = thing.y - thing.size + jar_thickness(jar.size) / 2
+            _, ball = held(name, thing.x, base, jar.angle, jar.size, thing.color, jar.color)
+            out[index[jar_name]] = attrs.evolve(jar, x=round(thing.x, 3), y=round(base, 3))
+            out[index[name]] = attrs.evolve(thing, x=ball.x, y=ball.y, size=min(thing.size, ball.size))
             moved = jar_name
         else:  # upright: the object goes in
             if thing.shape == "ball":

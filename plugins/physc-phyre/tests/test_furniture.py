@@ -94,6 +94,40 @@ def test_a_cover_jar_comes_over_the_ball_and_a_ball_goes_into_an_upright_jar():
     assert (moved["green"].x, moved["green"].y) == (expected.x, expected.y) and moved["jar"] == upright
 
 
+def test_an_upright_jar_comes_to_a_ball_the_layout_put_on_a_support_of_its_own():
+    """PHYRE's 00005 and 00010: the ball's place (where its path starts) wins; the jar stands
+    there on the ball's support, the ball on its base, and the jar's own support goes."""
+    shelf = SceneBody("support_green", "bar", 100.0, 80.0, 0.0, 90.0, "black", False)
+    ball = SceneBody("green", "ball", 110.0, 80.0 + BAR_HEIGHT / 2 + 9.5, 0.0, 9.5, "green", True)
+    upright = SceneBody("jar", "jar", 200.0, 30.0, 0.0, 50.0, "gray", True)
+    stray = SceneBody("support_jar", "bar", 200.0, 20.0, 0.0, 60.0, "black", False)
+    out = {b.name: b for b in inside([shelf, ball, upright, stray], [("green", "jar")], held)}
+    assert "support_jar" not in out and "support_green" in out
+    jar = out["jar"]
+    assert jar.x == ball.x and outline_box(jar)[1] == pytest.approx(shelf.y + BAR_HEIGHT / 2, abs=1e-3)
+    _, expected = held("green", jar.x, jar.y, 0.0, 50.0, "green", "gray")
+    assert (out["green"].x, out["green"].y) == (expected.x, expected.y)
+    end = end_of(PhyreLevel(tuple(out.values()), ("", "")), "green")
+    assert abs(end[0] - jar.x) < 1.0  # it stays in the jar
+
+
+def test_a_ledge_carries_a_see_saw_with_its_centre_over_an_outer_third():
+    """A load rests in a ledge's left, middle or right third; a see-saw, as wide as a ledge,
+    needs a ledge of one and a half of its widths, not three (PHYRE's 00023 lays its catapult
+    on a step shorter than the bar)."""
+    from physc.domains import load_domain
+    from physc.domains.words import INSTALLED
+    from physc.dsl.frontend import analyze
+    from physc.generation.pipeline import Pipeline
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "phyre" / "task00023.phys"
+    (scenario,) = analyze(str(path), INSTALLED).scenarios
+    layout = {o.name: o for o in Pipeline(load_domain("phyre"), scenario, 0).placed.layout.objects}
+    lever, ledge = layout["lever"], layout["support_lever"]
+    assert ledge.concrete == "blackBar" and 1.5 * lever.width + 6.0 <= ledge.width + 1e-6 < 3 * lever.width
+    assert abs(lever.y - lever.height / 2 - (ledge.y + ledge.height / 2)) < 1e-3
+
+
 def test_the_layouts_furniture_and_restrictions_reach_the_level():
     class Scenario:
         name = "T"
