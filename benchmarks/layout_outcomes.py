@@ -33,22 +33,25 @@ USED = "(the layout used, fallbacks' second tries included)"
 
 
 class Watched:
-    """The domain, with every layout's outcome noted: (why it was given up, how many
-    interactions its best simulation realised in order)."""
+    """Every layout's outcome, noted while the search runs: (why it was given up, how many
+    interactions its best simulation realised in order). The layout loop calls
+    `search.satisfy`; while watching, that is this recorder around it."""
 
-    searched = False  # the layout loop calls `satisfy` below, which runs physc's search
-
-    def __init__(self, domain):
-        self.domain = domain
+    def __init__(self):
         self.outcomes: list[tuple[str, int]] = []
+        self.satisfy = search.satisfy
 
-    def __getattr__(self, name):
-        return getattr(self.domain, name)
+    def __enter__(self):
+        def recorded(*args, **kwargs):
+            result = self.satisfy(*args, **kwargs)
+            self.outcomes.append(("" if result.satisfied else result.given_up, result.best))
+            return result
 
-    def satisfy(self, *args, **kwargs):
-        result = search.satisfy(self.domain, *args, **kwargs)
-        self.outcomes.append(("" if result.satisfied else result.given_up, result.best))
-        return result
+        search.satisfy = recorded
+        return self
+
+    def __exit__(self, *exc):
+        search.satisfy = self.satisfy
 
 
 def main() -> None:
@@ -65,11 +68,10 @@ def main() -> None:
         scenario = scenarios[name]
         layouts, simulations, failed = [], [], 0
         by_reason: dict[str, list[int]] = {}  # reason → [layouts, simulations]
-        watched = Watched(domain)
-        for seed in range(args.seeds):
-            try:
-                task = Pipeline(watched, scenario, seed, time_budget=args.time_budget).task
-            except Infeasible:
+        with Watched() as watched:
+            tasks = [_task(domain, scenario, seed, args.time_budget) for seed in range(args.seeds)]
+        for task in tasks:
+            if task is None:
                 failed += 1
                 continue
             layouts.append(task.layouts_tried)
@@ -99,6 +101,14 @@ def main() -> None:
         for why, (n, sims) in sorted(by_reason.items(), key=lambda item: -item[1][1]):
             print(f"  {100 * n / total_layouts:5.1f} % of layouts, {100 * sims / total_simulations:5.1f} % of simulations: {why}", flush=True)
         _chain_breaks(scenario, stopped)
+
+
+def _task(domain, scenario, seed: int, time_budget: float):
+    """The task of one seed, or None where it gives none."""
+    try:
+        return Pipeline(domain, scenario, seed, time_budget=time_budget).task
+    except Infeasible:
+        return None
 
 
 def _chain_breaks(scenario, stopped: list[int]) -> None:

@@ -86,7 +86,7 @@ def selected(source: str | os.PathLike, scenario: str | None):
 def check_min_robustness(value: int | None, domain, name: str = "min_robustness") -> None:
     """A fallback's least number of noisy replays passed (`name`: how the caller calls it)
     counts the domain's replays: from 1 to their number (ValueError otherwise)."""
-    replays = getattr(domain, "robustness_replays", None)
+    replays = domain.robustness_replays
     if value is not None and replays is not None and not 1 <= value <= replays:
         raise ValueError(f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}")
 

@@ -81,12 +81,8 @@ def simulate(
 
 def play_to_rest(domain, level, action, scenario=None, seconds: float | None = None):
     """`domain.play` of the level with the action, judged against `scenario`, until everything
-    rests where the domain can say so (angrybirds' `whole`), within `seconds` (default: the
-    domain's)."""
-    import inspect
-
-    whole = {"whole": True} if "whole" in inspect.signature(domain.play).parameters else {}
-    return domain.play(level, action, scenario, seconds or getattr(domain, "seconds", None), **whole)
+    rests as the target world plays it (`whole`), within `seconds` (default: the domain's)."""
+    return domain.play(level, action, scenario, seconds or domain.seconds, whole=True)
 
 
 def bound_domain(domain=None, world: str | None = None, backend: str | None = None):

@@ -24,7 +24,7 @@ def cmd_agent(args) -> int:
     import json
 
     from physc.domains import load_domain
-    from physc.domains.base import Domain, DomainError
+    from physc.domains.base import DomainError
     from physc.evaluation.agent import AgentError, load
     from physc.files import read_json_lines, write_atomic
 
@@ -38,7 +38,7 @@ def cmd_agent(args) -> int:
     check_output(args.out, folder=True)
     try:
         domain = load_domain(domains[0])
-        if type(domain).score_agent is Domain.score_agent:
+        if "score_agent" not in domain.capabilities:
             raise UsageError(f"the domain '{domain.name}' scores no agent (it has no score_agent); the PHYRE-like plugin's datasets can be scored")
     except DomainError as error:
         raise UsageError(f"{folder}: {error.message}") from None

@@ -191,7 +191,7 @@ def cmd_trace(args) -> int:
     if level is None:
         return trace
     scenario = task[0] if task is not None and level is task[1] else None
-    margins = domain.margins(scenario or Recognised.of(trace), trace) if hasattr(domain, "margins") else None
+    margins = domain.margins(scenario or Recognised.of(trace), trace)
     by_time = {}
     if margins is not None:
         found = [i for i in trace.interactions]

@@ -3,9 +3,8 @@
 A domain is registered under the entry-point group `physc.domains`; the entry
 point names an instance of a `physc.domains.base.Domain` subclass, whose
 interface (what every domain must say, what generation asks for, the defaults)
-is documented there and in `docs/plugins.md`. `load_domain` checks at load what
-every domain must say (E0702). A duck-typed object that says it loads too, but
-gets none of the base class's defaults: each hook a stage calls must be its own.
+is documented there and in `docs/plugins.md`. `load_domain` checks at load that
+the plugin is such an instance and calls itself by its entry point's name (E0702).
 """
 
 from __future__ import annotations
@@ -13,7 +12,7 @@ from __future__ import annotations
 import functools
 from importlib.metadata import EntryPoint, entry_points
 
-from physc.domains.base import REQUIRED, Domain, DomainError, MissingCapability
+from physc.domains.base import Domain, DomainError, MissingCapability
 from physc.domains.vocabulary import Vocabulary
 from physc.suggest import asking, closest
 
@@ -58,22 +57,14 @@ def load_domain(name: str) -> Domain:
     return domain
 
 
-def bound(domain, world: str | None = None, backend: str | None = None):
-    """`domain` simulating in `world` with `backend` (`Domain.at`). A duck-typed plugin (no
-    `at`) simulates nothing of physc's: it is returned as it is, and naming a world for it is a
-    WorldError."""
-    if hasattr(domain, "at"):
-        return domain.at(world, backend)
-    if world is not None:
-        from physc.worlds import WorldError
-
-        raise WorldError(f"the domain '{domain.name}' names no worlds")
-    return domain
+def bound(domain: Domain, world: str | None = None, backend: str | None = None) -> Domain:
+    """`domain` simulating in `world` with `backend` (`Domain.at`)."""
+    return domain.at(world, backend)
 
 
 def world_name(domain) -> str:
     """The name of the world `domain` simulates in; "" for a domain that names none."""
-    return domain.world.name if getattr(domain, "worlds", ()) else ""
+    return domain.world.name if domain.worlds else ""
 
 
 def _not_a_domain(domain, name: str) -> str | None:
@@ -82,9 +73,8 @@ def _not_a_domain(domain, name: str) -> str | None:
     error in the middle of a compilation."""
     if isinstance(domain, type):
         return f"names the class '{domain.__name__}', not a domain: write `DOMAIN = {domain.__name__}()` and name that"
-    absent = [attribute for attribute in REQUIRED if not hasattr(domain, attribute)]
-    if absent:
-        return "has no " + " and no ".join(f"'{attribute}'" for attribute in absent)
+    if not isinstance(domain, Domain):
+        return f"is a {type(domain).__name__}, not a physc.domains.base.Domain: subclass Domain (or SimulatedDomain)"
     if not isinstance(domain.vocabulary, Vocabulary):
         return f"has a 'vocabulary' that is a {type(domain.vocabulary).__name__}, not a physc.domains.vocabulary.Vocabulary"
     if domain.name != name:

@@ -7,13 +7,13 @@ of promise:
 
 * **The front end** (`physc check`, `fmt`, `domains`, `compile --emit ast|scenario`)
   needs `name`, `description` and `vocabulary`. Every domain must say them; they are
-  abstract, so a subclass that forgets one cannot be instantiated, and `load_domain`
-  checks them on any plugin object (E0702).
-* **Generation** needs capabilities: `layout_rules`, `layout_parameters`,
-  `concretize`, `satisfy` (physc's one search, for a SimulatedDomain), `emit_level`,
-  `picture`, `replay` (verification), `stability` (the evaluation); and playing level files,
-  `read_level` and `draw`. No default could be right for
-  another domain, so the base class has none; a domain that lacks them still loads and
+  abstract, so a subclass that forgets one cannot be instantiated; `load_domain` refuses a
+  plugin object that is not a `Domain` (E0702).
+* **Generation** needs capabilities, which a domain declares (`capabilities`): `layout_rules`,
+  `layout_parameters`, `concretize`, `satisfy` (physc's one search makes its tasks: a
+  SimulatedDomain), `emit_level`, `picture`, `replay` (verification), `stability` (the
+  evaluation); and playing level files, `read_level` and `draw`. No default could be right
+  for another domain, so the base class has none; a domain that lacks them still loads and
   checks, and a command that needs one refuses before any work with E0703, naming the
   domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable`,
   `robustness_replays`, `level_classes`, `solution_class` and `accidental` have working
@@ -23,7 +23,7 @@ of promise:
   pass down with the domain to every simulation (`world`, `backend`).
 
 A domain whose task is one action in a simulated scene subclasses
-physc.domains.simulated.SimulatedDomain instead, which makes `satisfy`, `replay`,
+physc.domains.simulated.SimulatedDomain instead, which has `satisfy`, `replay`,
 `stability` and `accidental` from a few hooks of its own.
 """
 
@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import abc
 import copy
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from physc.domains.vocabulary import Vocabulary
 
@@ -41,6 +41,8 @@ if TYPE_CHECKING:
     from physc.compiler.concrete_layout import Body, ConcreteLayout
     from physc.compiler.dimension_graphs import LayoutParameters
     from physc.compiler.layout_graph import LayoutGraph
+    from physc.compiler.layout_rules import LayoutRules
+    from physc.domains.playing import Playing
     from physc.compiler.task import Task
     from physc.dsl.scenario import ScenarioIR
 
@@ -116,40 +118,27 @@ class MissingCapability(DomainError):
         self.hooks = hooks
 
 
-def _no_default(function):
-    """Marks a base-class method without a default: a domain that does not override it
-    lacks that capability (`provides` reads the mark)."""
-    function.physc_no_default = True
-    return function
+def provides(domain: Domain, hook: str) -> bool:
+    """Whether `domain` has `hook`: what every domain says (REQUIRED) and the working defaults
+    (DEFAULTS) it always has; any other hook (CAPABILITIES, and a SimulatedDomain's own) when
+    it declares it in `capabilities`."""
+    return hook in REQUIRED or hook in DEFAULTS or hook in domain.capabilities
 
 
-def provides(domain: Any, hook: str) -> bool:
-    """Whether `domain` (a `Domain`, or any plugin object) has `hook`: a duck-typed plugin
-    has only what it defines itself, a subclass also the base class's defaults."""
-    if hook == "satisfy":  # physc's one search makes the tasks of a SimulatedDomain, and of no other
-        return bool(getattr(domain, "searched", False))
-    if not hasattr(domain, hook):
-        return False
-    value = getattr(domain, hook)
-    if value is None and hook in CAPABILITIES:  # layout_rules, layout_parameters: None is none
-        return False
-    return not getattr(value, "physc_no_default", False)
-
-
-def missing(domain: Any, hooks: tuple[str, ...]) -> tuple[str, ...]:
+def missing(domain: Domain, hooks: tuple[str, ...]) -> tuple[str, ...]:
     """The hooks of `hooks` that `domain` lacks, in order."""
     return tuple(hook for hook in hooks if not provides(domain, hook))
 
 
-def solution_classes(domain: Any) -> dict[str, type]:
+def solution_classes(domain: Domain) -> dict[str, type]:
     """The classes a task file's solution may be in `domain`, by name (its `solution_class`)."""
     from physc.compiler.task import Solution
 
-    kinds = getattr(domain, "solution_class", None) or Solution
+    kinds = domain.solution_class or Solution
     return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
 
 
-def require(domain: Any, hooks: tuple[str, ...], asked: str) -> None:
+def require(domain: Domain, hooks: tuple[str, ...], asked: str) -> None:
     """MissingCapability (E0703) unless `domain` has every hook of `hooks`."""
     lacking = missing(domain, hooks)
     if lacking:
@@ -177,6 +166,12 @@ class Domain(abc.ABC):
     def vocabulary(self) -> Vocabulary:
         """The object and interaction terms of `.phys` in this domain: all the static
         checks need (physc.domains.vocabulary)."""
+
+    capabilities: frozenset[str] = frozenset()
+    """The capabilities (CAPABILITIES) the domain has: each names the hook it writes, and
+    "satisfy" that physc's search makes its tasks (SimulatedDomain declares it). A command
+    asks for what it needs before any work (`require`) and refuses with E0703 naming what
+    is not declared here."""
 
     # --- the world it simulates, and the engine -----------------------------------
 
@@ -230,36 +225,26 @@ class Domain(abc.ABC):
 
     # --- generation: capabilities without a default ----------------------------
 
-    layout_rules: Any = None
-    """The layout inference (stage layout-graph): an object whose `infer(scenario)` gives
-    the `LayoutGraph` of the scenario's objects and QSRs, each with its provenance. None:
-    the domain does not lay out."""
+    layout_rules: LayoutRules | None = None
+    """The layout inference (stage layout-graph, physc.compiler.layout_rules): its `infer(scenario,
+    structure)` gives the `LayoutGraph` of the scenario's objects and QSRs, each with its
+    provenance. None: the domain does not lay out."""
 
     layout_parameters: LayoutParameters | None = None
     """The distances of the QSRs (clearance, far) and the area objects are placed in
     (stages dimension-graphs and layout). None: the domain does not place."""
 
-    @_no_default
     def concretize(self, graph: LayoutGraph, scenario: ScenarioIR, rng) -> dict[str, Body]:
         """The concrete game object, material and shape of every node of the layout graph,
         by name (stage dimension-graphs); draws from `rng` only, so a seed gives the same
         shapes."""
         raise MissingCapability(self.name, ("concretize",), "placing objects")
 
-    @_no_default
-    def satisfy(self, scenario: ScenarioIR, layout: ConcreteLayout, rng, validate: bool = True, accept: int | None = None):
-        """The capability of making a placed layout a task by simulation (stage task): physc's
-        one search (physc.generation.search) gives it to a SimulatedDomain, and nothing calls
-        this method; a domain that is not `searched` lacks it (E0703)."""
-        raise MissingCapability(self.name, ("satisfy",), "generating a task")
-
-    @_no_default
     def emit_level(self, level) -> str:
         """The task's level as the domain's level file (stage level; angrybirds: Science
         Birds XML)."""
         raise MissingCapability(self.name, ("emit_level",), "writing a level")
 
-    @_no_default
     def picture(self, task: Task | ConcreteLayout, fmt: str = "png") -> bytes:
         """A picture of the generated task, or of a placed layout (`--emit layout`), `fmt`
         "png" or "svg" (`--png`). No default: how a level looks is the domain's own; a domain
@@ -267,7 +252,6 @@ class Domain(abc.ABC):
         draw a format raises MissingCapability (E0703) for it."""
         raise MissingCapability(self.name, ("picture",), "--png")
 
-    @_no_default
     def replay(self, level, solution, scenario: ScenarioIR, rng=None):
         """The solution played in `level`, in the domain's world and backend (`at`): a
         physc.simulation.trace.Trace with its interactions
@@ -276,13 +260,11 @@ class Domain(abc.ABC):
         verify`, `--verify-backend` and the evaluation's replays run."""
         raise MissingCapability(self.name, ("replay",), "replaying a solution")
 
-    @_no_default
     def stability(self, level) -> tuple[bool, float]:
         """(stable, the largest shift) of `level` left alone: the evaluation's physical
         stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
         raise MissingCapability(self.name, ("stability",), "measuring stability")
 
-    @_no_default
     def read_level(self, data: bytes):
         """The level of a level file's bytes (`physc simulate`, `trace`, `render`); LevelError
         (a diagnostic's code, message, line and column) for a file that cannot be played."""
@@ -301,7 +283,6 @@ class Domain(abc.ABC):
     max_level_bytes: int = 4 * 1024 * 1024
     """The largest level file `read_level` is given (a larger one is refused unread, E0906)."""
 
-    @_no_default
     def draw(self, level, title: str, paths: dict, fmt: str = "png") -> bytes:
         """A picture of `level` with `paths` (body name → [(x, y), …], drawn as arrows), in the
         domain's world (`physc render`)."""
@@ -333,7 +314,7 @@ class Domain(abc.ABC):
     kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
     verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
 
-    playing: Any = None
+    playing: Playing | None = None
     """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
     Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
 

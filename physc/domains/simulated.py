@@ -19,16 +19,15 @@ does:
 * `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
   and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
   its solutions);
-* optionally, for the search: `bodies`, `mass` and `friction` (the bodies a new object may
-  take, which the search chooses by the physics of its meeting), `actions_at` and
-  `blocker` (the actions aimed at an object, and the static bar that blocks forbidden
-  hits and shortcuts), `distractors`, `proposals` (the domain's own local changes), and
-  `search_settings`. A domain with a game of its own (angrybirds) overrides `play`
-  instead of writing `scene` and `rules`.
+* optionally, for the search, a part of its own, `search` (physc.domains.search_hooks):
+  the bodies a new object may take and their physics, the actions aimed at an object and the
+  static bar that blocks forbidden hits and shortcuts, distractors, the domain's own local
+  changes, and the search's settings. A domain with a game of its own (angrybirds) overrides `play`
+  instead of writing `scene` and `rules`, and declares it (`capabilities`).
 
 Everything else is physc's: the search that makes a placed layout a task
-(physc.generation.search, which the layout loop runs for a domain that is
-`searched`), the robustness replays,
+(physc.generation.search, which the layout loop runs for a domain that declares
+`satisfy`), the robustness replays,
 stability, the replays of `physc verify` and the evaluation's measurements
 (intended solvability, the random agent's accidental solvability and AUCCESS).
 """
@@ -40,7 +39,9 @@ import math
 import random
 from collections.abc import Iterable
 
-from physc.domains.base import Domain, MissingCapability, _no_default
+from physc.domains.base import Domain, MissingCapability
+from physc.domains.part import part
+from physc.domains.search_hooks import SearchHooks
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
 from physc.simulation.scene import Scene, outcome, play_scene
@@ -100,22 +101,21 @@ class SimulatedDomain(Domain):
 
     robustness_replays = 6  # noisy replays a generated solution must pass
 
-    trace_scale: float = 1.0
-    """Layout lengths per length of the simulation (PHYRE: pixels per metre): how a
-    simulated path is read in the placed layout (physc.generation.placing)."""
+    capabilities = frozenset({"satisfy", "replay", "stability"})
+    """physc's search makes its tasks, replays its solutions and measures its levels' stability;
+    a subclass adds what it writes (`Domain.capabilities`), and for the search declares
+    `level_from_layout`, `actions`, and `scene` (the generic `play`) or `play` (a game of its
+    own); optionally `distractors` and `random_action` (the evaluation's random agent)."""
 
     # ---- what the domain writes ---------------------------------------------------------
-    @_no_default
     def level_from_layout(self, layout, scenario):
         """The placed layout (a ConcreteLayout) of `scenario` as the domain's level."""
         raise MissingCapability(self.name, ("level_from_layout",), "generating a task")
 
-    @_no_default
     def scene(self, level, action) -> Scene:
         """The level as physics, with `action` taken (None: the level left alone)."""
         raise MissingCapability(self.name, ("scene",), "simulating a level")
 
-    @_no_default
     def actions(self, level, scenario) -> list[tuple[str, object]]:
         """(label, action) for every candidate action, in the order they are tried. A domain
         whose player acts several times (`shot_starts`) takes `start`, `before` and `after` too:
@@ -209,64 +209,18 @@ class SimulatedDomain(Domain):
         return []
 
     # ---- what the search asks, with defaults ----------------------------------------------
-    search_settings = None
-    """The search's budgets and beams, a physc.generation.settings.SearchSettings (None:
-    physc's defaults)."""
-
-    def actions_at(self, level, name: str) -> list[tuple[str, object]]:
-        """(label, action) aimed at the object `name`: what the guards try against forbidden
-        direct hits and shortcuts (the default: none, so nothing is guarded)."""
-        return []
-
-    def bodies(self, placed, scenario) -> list:
-        """The other bodies `placed` (a PlacedObject) may take, as PlacedObjects of the same
-        name with their concrete object, material and size: what the search chooses a new
-        object's body from (physc.generation.choosing). The default: none."""
-        return []
-
-    def mass(self, placed) -> float:
-        """The mass of a placed body, in the units of the domain's physics (the default: its
-        box's area at density 1)."""
-        return placed.width * placed.height
-
-    def friction(self, placed) -> float:
-        """The friction of a placed body (the default: 0.5)."""
-        return 0.5
-
-    def toughness(self, placed) -> float:
-        """The damage that destroys a placed body under the world's rules (the search gives an
-        object that is to be destroyed the weakest body it may take). The default: 0, every
-        body alike."""
-        return 0.0
-
-    blocker: str | None = None
-    """The concrete object of an obstacle the guards place (a static bar); None: the domain
-    places none, and its restrictions are only judged."""
-    blocker_length: float = 1.0
-    blocker_thickness: float = 0.1
-
-    def distractor_count(self, rng: random.Random, most: int) -> int:
-        """How many distractors to try to add: for a domain that writes `distractors`, 0 to
-        `most` at random (the paper's), else none."""
-        return rng.randint(0, most) if type(self).distractors is not SimulatedDomain.distractors else 0
-
-    def distractors(self, layout, index: int, rng: random.Random):
-        """Candidate distractors (PlacedObjects named for `index`), tried in turn until one is
-        kept (the default: none)."""
-        return ()
-
-    def proposals(self, layout, scenario, failed, start: int):
-        """(description, layout): the domain's own local changes for a stage starting at
-        interaction `start` that `failed` (the best failed attempt) did not realise (the
-        default: none)."""
-        return ()
+    search = part(SearchHooks)
+    """What the search may ask beyond levels and actions (physc.domains.search_hooks): bodies and
+    their physics, obstacles, distractors, the domain's own local changes, budgets."""
 
     # ---- what physc does with them --------------------------------------------------------
-    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True, resume=None) -> Trace:
+    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True, resume=None, whole: bool = False) -> Trace:
         """`level` played with `action` in the selected backend; judged against `scenario`'s
         restrictions and declared bounces when one is given; `resume`: a snapshot of an
         earlier run to go on from (physc.simulation.snapshot), which a domain that overrides
-        `play` passes on to the run loop."""
+        `play` passes on to the run loop. `whole`: played as the target world plays it to the
+        end (`physc simulate`), where a domain's play would stop sooner for the search (the
+        generic play always plays all of `seconds`)."""
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
         return play_scene(
@@ -283,12 +237,10 @@ class SimulatedDomain(Domain):
         Without `to_end`, it stops once the outcome is settled (a verdict that reads nothing else)."""
         return outcome(self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, to_end)
 
-    @property
-    def resumable(self) -> bool:
-        """Whether `play` goes on from a snapshot (its `resume`): the generic play does; a
-        domain that overrides `play` sets `resumable = True` once it passes `resume` on to
-        the run loop (otherwise the search replays every prefix from the start)."""
-        return type(self).play is SimulatedDomain.play
+    resumable: bool = True
+    """Whether `play` goes on from a snapshot (its `resume`): the generic play does; a domain
+    whose own `play` does not pass `resume` on to the run loop sets False (then the search
+    replays every prefix from the start)."""
 
     def replay(self, level, solution, scenario, rng=None):
         action = self.action_of(solution)
@@ -307,15 +259,10 @@ class SimulatedDomain(Domain):
         alone = self.play(level, None, recognise=False)
         return not alone.solved, stable(alone, self.stable_limit)[1]
 
-    searched = True
-    """Physc's one generation search (physc.generation.search) makes this domain's tasks from
-    its hooks: the domain writes no `satisfy` (base.provides counts it as provided)."""
-
     def search_hooks(self) -> tuple[str, ...]:
         """The hooks the search needs that this domain must write (E0703 before any work if it
-        lacks one): a domain with a game of its own overrides `play` and needs no `scene`."""
-        overrides_play = type(self).play is not SimulatedDomain.play
-        return tuple(h for h in HOOKS if not (overrides_play and h == "scene"))
+        lacks one): a domain with a game of its own declares `play` and needs no `scene`."""
+        return tuple(h for h in HOOKS if not ("play" in self.capabilities and h == "scene"))
 
     def attempts(self, level, actions: Iterable, until_solved: bool = False) -> list[bool]:
         """An agent's attempts at `level`, as PHYRE's evaluator counts them: whether each of
@@ -337,7 +284,7 @@ class SimulatedDomain(Domain):
         """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn
         from `rng`, each played; the fraction that solve the level, and the task's AUCCESS.
         Empty when the domain has no random agent."""
-        if type(self).random_action is SimulatedDomain.random_action:  # the default: no random agent
+        if "random_action" not in self.capabilities:  # no random agent
             return {}
         outcomes = self.attempts(level, iter(lambda: self.random_action(level, rng), None))
         if not outcomes:

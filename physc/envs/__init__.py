@@ -23,7 +23,7 @@ def register_envs() -> list[str]:
     ids = []
     for name in installed_domains():
         try:
-            playing = getattr(load_domain(name), "playing", None)
+            playing = load_domain(name).playing
         except DomainError:  # a broken plugin is `physc domains`'s to report, not an import error here
             continue
         if playing is None or not playing.env_id:

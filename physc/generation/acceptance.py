@@ -341,7 +341,7 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
     """`domain`'s verdict on a finished level whose intended action is `action` (`label`
     names it in messages); None when the domain has no rule. Every play is counted by the
     search's `evaluator`, whose budget it keeps."""
-    rule = domain.acceptance_of(level) if hasattr(domain, "acceptance_of") else getattr(domain, "acceptance", None)
+    rule = domain.acceptance_of(level)
     if rule is None:
         return None
 

@@ -82,14 +82,14 @@ def alternatives(problem: Problem, layout, declared, stage, attempt):
     if act is None:
         return
     current = objects[target]
-    options = domain.bodies(current, problem.scenario)
+    options = domain.search.bodies(current, problem.scenario)
     if not options:
         return
-    actor_mass = domain.mass(objects[actor]) if actor in objects else None
+    actor_mass = domain.search.mass(objects[actor]) if actor in objects else None
 
     def estimate(body) -> float:
-        toughness = domain.toughness(body) if act == "destroyed" else 0.0
-        return worth(act, domain.mass(body), domain.friction(body), actor_mass, toughness)
+        toughness = domain.search.toughness(body) if act == "destroyed" else 0.0
+        return worth(act, domain.search.mass(body), domain.search.friction(body), actor_mass, toughness)
 
     here = estimate(current)
     ranked = sorted(options, key=estimate, reverse=True)

@@ -145,10 +145,10 @@ class Coordinates:
                         break
                 if placed.concrete == getattr(rules, "inclined", None) and not any(b == name for b in supports.support_of.values()):
                     axes.append(Coordinate("slope", name, frozenset((name,)), settings.raise_turn))
-            options = problem.domain.bodies(placed, problem.scenario)
+            options = problem.domain.search.bodies(placed, problem.scenario)
             kinds = {(o.concrete, o.material): o for o in options}
             if len(kinds) > 1 and (placed.concrete, placed.material) in kinds:
-                ranked = sorted(kinds.values(), key=problem.domain.mass)
+                ranked = sorted(kinds.values(), key=problem.domain.search.mass)
                 current = next(i for i, o in enumerate(ranked) if (o.concrete, o.material) == (placed.concrete, placed.material))
                 axes.append(Coordinate("body", name, frozenset((name,)), 1.0, bodies=tuple(ranked), current=current))
         for a, b in pairs:

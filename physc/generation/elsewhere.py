@@ -94,7 +94,7 @@ def _built(there, scenario, placed, accept: int):
     from physc.generation.chain import Node, chain
     from physc.generation.problem import Ledger, Problem
 
-    if placed is None or not hasattr(there, "search_hooks"):
+    if placed is None or "satisfy" not in there.capabilities:
         return None
     problem = Problem.of(there, scenario, placed, accept)
     ledger = Ledger()

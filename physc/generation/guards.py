@@ -1,8 +1,8 @@
 """Obstacles against what a task must not allow: forbidden direct hits and shortcuts.
 
 `cannotHit(p, b, d)` of the player's object `p` asks for `pathObstructed`: once the search
-has a robust solution, every action the domain aims at `b` (`actions_at`) that hits `b`
-from a forbidden side is blocked by an obstacle (the domain's `blocker`, a static bar)
+has a robust solution, every action the domain aims at `b` (`search.actions_at`) that hits `b`
+from a forbidden side is blocked by an obstacle (the domain's `search.blocker`, a static bar)
 across the flight before the hit, a little further back each time, kept only when the
 solution still realises the sequence. Then the shortcut guard does the same for actions
 at other objects that solve the task without the sequence, at most `shortcuts` of them.
@@ -53,7 +53,7 @@ def obstruct(problem: Problem, ledger: Ledger, layout, solution: Attempt) -> tup
 
 def offending(problem: Problem, ledger: Ledger, layout, restriction) -> Attempt | None:
     """An action at the restricted object that breaks the restriction in `layout`."""
-    for label, action in problem.domain.actions_at(problem.level_of(layout), restriction.objects[1]):
+    for label, action in problem.domain.search.actions_at(problem.level_of(layout), restriction.objects[1]):
         attempt = attrs.evolve(simulate(problem, ledger, layout, action), label=label)
         if breaks(attempt, restriction):
             return attempt
@@ -64,7 +64,7 @@ def block(problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: s
     """(`layout` with an obstacle across `actor`'s flight in `offending` after which the
     solution still works and `bad` no longer holds of the offending action, its
     description), or None."""
-    blocker = problem.domain.blocker
+    blocker = problem.domain.search.blocker
     if blocker is None or actor not in offending.trace.names:
         return None
     trace = offending.trace
@@ -78,7 +78,7 @@ def block(problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: s
             continue
         x, y, vx, vy = at
         angle = (math.degrees(math.atan2(vy, vx)) + 180.0) % 180.0 - 90.0  # across the flight
-        obstacle = PlacedObject(name, "obstacle", blocker, None, round(x, 5), round(y, 5), round(angle, 3), problem.domain.blocker_length, problem.domain.blocker_thickness)
+        obstacle = PlacedObject(name, "obstacle", blocker, None, round(x, 5), round(y, 5), round(angle, 3), problem.domain.search.blocker_length, problem.domain.search.blocker_thickness)
         candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
         if not placing.consistent(candidate, problem.parameters, {name}):
             continue
@@ -109,7 +109,7 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
     first = lead[1] if len(lead) > 1 else next(iter(problem.domain.reach_targets(problem.scenario)), None)  # (after a tap: what the bird hits)
     actor = next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
     added: list[str] = []
-    if problem.domain.blocker is None or actor is None:
+    if problem.domain.search.blocker is None or actor is None:
         return layout, added
     left = problem.settings.shortcuts
     for obj in layout.objects:
@@ -117,7 +117,7 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
             break
         if obj.name == first or obj.name in problem.supports.fixed:
             continue
-        for label, action in problem.domain.actions_at(problem.level_of(layout), obj.name):
+        for label, action in problem.domain.search.actions_at(problem.level_of(layout), obj.name):
             attempt = attrs.evolve(simulate(problem, ledger, layout, action), label=label)
             if not attempt.trace.solved or attempt.fidelity.valid:
                 continue
@@ -135,8 +135,8 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
     """`layout` with the domain's distractors, each kept only if the level still stands,
     the solution still holds up, and it is no way to solve the task; and their names."""
     added: list[str] = []
-    for index in range(problem.domain.distractor_count(rng, problem.settings.distractors)):
-        for obj in problem.domain.distractors(layout, index + 1, rng):
+    for index in range(problem.domain.search.distractor_count(rng, problem.settings.distractors)):
+        for obj in problem.domain.search.distractors(layout, index + 1, rng):
             candidate = attrs.evolve(layout, objects=layout.objects + (obj,))
             if not placing.consistent(candidate, problem.parameters, {obj.name}):
                 continue
@@ -149,7 +149,7 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
             if not holds_up(problem, ledger, solution, candidate):
                 continue
             level = problem.level_of(candidate)
-            if any(replayed(problem, ledger, level, action).trace.solved for _, action in problem.domain.actions_at(level, obj.name)):
+            if any(replayed(problem, ledger, level, action).trace.solved for _, action in problem.domain.search.actions_at(level, obj.name)):
                 continue
             layout = candidate
             added.append(obj.name)

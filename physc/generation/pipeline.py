@@ -72,7 +72,7 @@ class Pipeline:
         # least: when no layout within the budget gives one that passes them all, the most
         # robust of the fragile ones that pass this many is used (a fallback). None (the
         # default): all of them, no fallbacks.
-        self.min_robustness = min_robustness if min_robustness is not None else (getattr(domain, "robustness_replays", None) or 1)
+        self.min_robustness = min_robustness if min_robustness is not None else (domain.robustness_replays or 1)
         self.rng = random.Random(seed)
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
@@ -114,8 +114,7 @@ class Pipeline:
     def structures(self) -> tuple[str, ...]:
         """The structures the scenario can be laid out in (physc.compiler.layout_rules,
         "Structures"): the paper's reading first."""
-        offered = getattr(self.domain.layout_rules, "structures", None)
-        return offered(self.scenario) if offered else ("flat",)
+        return self.domain.layout_rules.structures(self.scenario)
 
     @functools.cached_property
     def placed(self) -> Placed:

@@ -10,7 +10,7 @@ meeting, or that breaks a QSR of the chosen conjunction.
 
 Everything here works on the placed layout (physc.compiler.concrete_layout), not on a
 domain's level, so it serves every domain: lengths of a trace times the domain's
-`trace_scale` are the layout's.
+`search.trace_scale` are the layout's.
 """
 
 from __future__ import annotations

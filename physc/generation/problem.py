@@ -50,7 +50,7 @@ class Problem:
         entry = introduced(layout, scenario.interactions, carried)
         starts = tuple(domain.shot_starts(scenario))
         return cls(
-            domain, scenario, layout, domain.search_settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
+            domain, scenario, layout, domain.search.settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
             entry, tuple(stages(scenario.interactions, entry, starts)),
             frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance, starts,
         )
@@ -67,7 +67,7 @@ class Problem:
     @property
     def scale(self) -> float:
         """Layout lengths per length of the simulation."""
-        return self.domain.trace_scale
+        return self.domain.search.trace_scale
 
     def level_of(self, layout):
         return self.domain.level_from_layout(layout, self.scenario)
@@ -75,7 +75,7 @@ class Problem:
     def pushed_by(self, k: int) -> str | None:
         """The way ("left" or "right") the hit `interactions[k]` pushes its target, if known
         (physc.compiler.layout_rules.pushes, with the domain's heading of the player's object)."""
-        pushed = pushes(self.interactions, k, self.players, getattr(self.domain.layout_rules, "player_heading", None))
+        pushed = pushes(self.interactions, k, self.players, self.domain.layout_rules.player_heading)
         return pushed if pushed in ("left", "right") else None
 
     def heading_after(self, name: str, index: int) -> str | None:

@@ -134,13 +134,13 @@ def bodies_for(problem: Problem, layout, objects, name: str, act: str, start: in
     hit = last_hit_on(problem.interactions, name)
     actor = objects.get(hit.objects[0]) if hit is not None else None
     domain = problem.domain
-    actor_mass = domain.mass(actor) if actor is not None else None
+    actor_mass = domain.search.mass(actor) if actor is not None else None
 
     def estimate(body) -> float:
-        return choosing.worth(act, domain.mass(body), domain.friction(body), actor_mass)
+        return choosing.worth(act, domain.search.mass(body), domain.search.friction(body), actor_mass)
 
     here = estimate(current)
-    for body in sorted(domain.bodies(current, problem.scenario), key=estimate, reverse=True):
+    for body in sorted(domain.search.bodies(current, problem.scenario), key=estimate, reverse=True):
         if estimate(body) <= here * (1 + 1e-6):
             break
         fitted = choosing.refitted(current, body, ())

@@ -2,7 +2,7 @@
 
 Every number that bounds the one generation search (physc.generation.search) is a field
 of `SearchSettings`, with its default here and nowhere else; a domain that needs other
-values sets its own `search_settings` (PHYRE-like: the same; angrybirds: the same). The
+values sets its own `search.settings` (physc.domains.search_hooks; PHYRE-like: the same; angrybirds: the same). The
 measurements that chose them are in docs/generation.md.
 """
 

@@ -53,7 +53,7 @@ def repaired(problem: Problem, ledger: Ledger, parent, stage: ChainStage, seen: 
     base = parent.layout if depth == 0 else ledger.failed_layout.get(stage.index, parent.layout)
     lead = next((j for j, a in enumerate(parent.attempts) if a.label == failed.label), 0)
     changes = itertools.chain(
-        proposals.offered(problem, base, failed, stage.start), problem.domain.proposals(base, problem.scenario, failed, stage.start)
+        proposals.offered(problem, base, failed, stage.start), problem.domain.search.proposals(base, problem.scenario, failed, stage.start)
     )
     for description, layout in itertools.islice(changes, problem.settings.proposals):
         if layout.objects in seen:

@@ -28,6 +28,7 @@ from physc.backends import BodySpec, Circle, Polygon, load_backend
 from physc.compiler.concrete_layout import Body
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
+from physc.compiler.layout_rules import LayoutRules
 from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
 from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
@@ -129,11 +130,14 @@ class Level:
         return Level(tuple(attrs.evolve(t, x=round(float(x), 6)) if t.name == name else t for t in self.things))
 
 
-class LayoutRules:
+@attrs.frozen
+class PushLayout(LayoutRules):
     """`hit(a, b, d)` and `touch(a, b, d)`: a starts on side d of b (inDirection(a, b, d))."""
 
-    @staticmethod
-    def infer(scenario) -> LayoutGraph:
+    player: str = "ball"
+    flat: str = "pad"
+
+    def infer(self, scenario, structure: str = "flat") -> LayoutGraph:
         nodes = tuple(
             LayoutNode(o.name, o.term, o.concrete, o.static, PLAYER if o.term == VOCABULARY.player else OBJECT_NODE)
             for o in scenario.objects
@@ -200,9 +204,10 @@ class Minimal(SimulatedDomain):
     description = "a ball pushed on flat ground, a box, goal pads a box must touch (physc's test domain)"
     vocabulary = VOCABULARY
     worlds = (WORLD,)
-    layout_rules = LayoutRules()
+    layout_rules = PushLayout()
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=0.0, right=8.0, bottom=0.0, top=HEIGHT)
     seconds = SECONDS
+    capabilities = SimulatedDomain.capabilities | {"layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "emit_level", "picture"}
 
     @staticmethod
     def concretize(graph, scenario, rng) -> dict[str, Body]:
@@ -217,7 +222,9 @@ class Minimal(SimulatedDomain):
     def level_from_layout(layout, scenario=None) -> Level:
         return Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
 
-    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True) -> Trace:
+    resumable = False  # its play starts from the start every time
+
+    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None, whole: bool = False) -> Trace:
         return simulate(level, action or 0.0)
 
     @staticmethod

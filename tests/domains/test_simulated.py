@@ -148,9 +148,15 @@ def test_the_next_target_goes_with_its_support_onto_the_actors_path():
     from physc.generation.problem import Problem
     from physc.generation.variants import on_path
 
+    from physc.domains.part import part
+    from physc_phyre import PhyreSearch
+
+    class UnscaledSearch(PhyreSearch):
+        trace_scale = 1.0
+
     class Unscaled(type(load_domain("phyre"))):
         layout_parameters = LayoutParameters(clearance=0.05, far=1.0, left=0, right=12, bottom=0, top=10)
-        trace_scale = 1.0
+        search = part(UnscaledSearch)
 
     search = Problem.of(Unscaled(), scenario, layout, 0)
     stage = search.plan[1]

@@ -79,6 +79,7 @@ class Line(SimulatedDomain):
         goal="pig",
     )
     worlds = (LINE,)
+    capabilities = SimulatedDomain.capabilities | {"layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "emit_level"}
     layout_rules = LayoutRules(player="ball", flat="bar", ground=None)
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=-1.0, right=6.0, bottom=0.0, top=2.0)
     level_classes = (LineLevel,)
@@ -111,7 +112,9 @@ class Line(SimulatedDomain):
     def emit_level(self, level):
         return json.dumps({"pig": level.pig}) + "\\n"
 
-    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None):
+    resumable = False  # its play starts from the start every time
+
+    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None, whole=False):
         v, gap = max(action.speed, 1e-6), level.pig - REACH
         meets = v * v - 2 * FRICTION * gap
         met = None if meets < 0 or gap < 0 else (v - math.sqrt(meets)) / FRICTION

@@ -102,7 +102,7 @@ def test_a_new_object_is_offered_the_bodies_its_next_act_favours():
     act = choosing.next_act(s.interactions, target, stage.start + 1)
     assert (declared.name, act) == ("hit", "fall")  # pushed off, it falls onto the pig (and destroys it)
     current = {o.name: o for o in s.placed.objects}
-    worth = lambda body: choosing.worth(act, s.domain.mass(body), s.domain.friction(body), s.domain.mass(current[actor]))  # noqa: E731
+    worth = lambda body: choosing.worth(act, s.domain.search.mass(body), s.domain.search.friction(body), s.domain.search.mass(current[actor]))  # noqa: E731
     offered = list(choosing.alternatives(s.problem, s.placed, declared, stage, attempt))
     assert offered
     for note, layout in offered:
@@ -129,7 +129,7 @@ def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight(monkeypatch):
     assert blocked is not None
     layout, note = blocked
     obstacle = layout.objects[-1]
-    assert len(layout.objects) == len(s.placed.objects) + 1 and obstacle.role == "obstacle" and obstacle.concrete == s.domain.blocker
+    assert len(layout.objects) == len(s.placed.objects) + 1 and obstacle.role == "obstacle" and obstacle.concrete == s.domain.search.blocker
     assert obstacle.name == "obstacle1" and "across the flight" in note
 
 
@@ -148,7 +148,7 @@ def _valid_for(s, action):
 
 
 def test_settings_are_one_value_with_the_defaults():
-    assert SearchSettings().beam == 3 and load_domain("angrybirds").search_settings is None  # physc's defaults
+    assert SearchSettings().beam == 3 and load_domain("angrybirds").search.settings is None  # physc's defaults
     assert search("F").settings == SearchSettings()
 
 

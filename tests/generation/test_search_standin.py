@@ -88,6 +88,8 @@ class Line(SimulatedDomain):
     default_world = "line"
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=-1.0, right=10.0, bottom=0.0, top=1.0)
     robustness_replays = 6
+    capabilities = SimulatedDomain.capabilities | {"layout_parameters", "level_from_layout", "play", "actions"}
+    resumable = False  # its play starts from the start every time
 
     def __init__(self, speeds=(1.74,), plays=None):
         self.speeds = speeds
@@ -111,7 +113,7 @@ class Line(SimulatedDomain):
     def stability(self, level):
         return True, 0.0
 
-    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None):
+    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None, whole=False):
         """The push's trace, from the formulas of the module docstring."""
         self.plays.append((level, action))
         v, gap = max(action.speed, 1e-6), level.pig - REACH

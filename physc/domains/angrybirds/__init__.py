@@ -13,17 +13,17 @@ import random
 
 import attrs
 
-from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
 from physc.domains.angrybirds.level import Camera, Level, LevelObject
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.domains.angrybirds.worlds import PHYQ, WORLDS
+from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
+from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 
 REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
 PLAY_SECONDS = 9.0  # a play's simulated time at most while generating
 NUDGE_STEP = 0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
-OBSTACLE_LENGTH = 1.4  # an obstacle platform's length
 
 
 class AngryBirds(SimulatedDomain):
@@ -32,6 +32,10 @@ class AngryBirds(SimulatedDomain):
     vocabulary = VOCABULARY
     worlds = WORLDS
     default_world = PHYQ.name
+    capabilities = SimulatedDomain.capabilities | {
+        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "distractors",
+        "emit_level", "picture", "read_level", "draw",
+    }
     @property
     def layout_rules(self):
         """The layout graph's rules in Science Birds (the compiler loads when a scenario is compiled)."""
@@ -63,9 +67,7 @@ class AngryBirds(SimulatedDomain):
         area = self.world.frame.placement
         return LayoutParameters(clearance=0.1, far=1.5, left=area.left, right=area.right, bottom=area.bottom, top=area.top)
 
-    blocker = "flatPlatform"
-    blocker_length = OBSTACLE_LENGTH
-    blocker_thickness = PLATFORM_THICKNESS
+    search = part(ScienceBirdsSearch)  # the search's hooks: bodies, obstacles, distractors (search_hooks.py)
 
     def concretize(self, graph, scenario, rng):
         from physc.domains.angrybirds.concretize import concretize
@@ -104,8 +106,6 @@ class AngryBirds(SimulatedDomain):
     @staticmethod
     def level_world(level) -> str | None:
         return level.world
-
-    resumable = True  # `play` passes a snapshot on to the game's run (of one untapped shot: `resumes`)
 
     @staticmethod
     def resumes(action) -> bool:
@@ -149,12 +149,6 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.shots import candidates, where_left
 
         return candidates(self, level if after is None else where_left(level, after), scenario, start, before)
-
-    def actions_at(self, level, name: str) -> list:
-        from physc.domains.angrybirds.actions import candidate_shots
-
-        obj = next((o for o in level.objects if o.name == name), None)
-        return [] if obj is None else candidate_shots(obj, self.world)
 
     def noisy(self, level, action, rng: random.Random):
         """The evaluation's noise: blocks and pigs jittered, the release angle too."""
@@ -208,32 +202,6 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds import shots
 
         return shots.action_of(solution)
-
-    @staticmethod
-    def bodies(placed, scenario) -> list:
-        from physc.domains.angrybirds.bodies import bodies
-
-        return bodies(placed, scenario)
-
-    def mass(self, placed) -> float:
-        from physc.domains.angrybirds.bodies import mass
-
-        return mass(placed, self.world)
-
-    def toughness(self, placed) -> float:
-        from physc.domains.angrybirds.bodies import toughness
-
-        return toughness(placed, self.world)
-
-    def friction(self, placed) -> float:
-        from physc.domains.angrybirds.bodies import friction
-
-        return friction(placed, self.world)
-
-    def distractors(self, layout, index: int, rng: random.Random):
-        from physc.domains.angrybirds.distract import distractors
-
-        return distractors(layout, index, rng, self.world)
 
     # ---- files, pictures, evaluation ------------------------------------------------------
     @staticmethod

@@ -113,7 +113,7 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
     if target is None:
         return []
     out = []
-    for label, shot in domain.actions_at(level, target):
+    for label, shot in domain.search.actions_at(level, target):
         shot = attrs.evolve(shot, bird=name)
         if tapped(scenario, name):
             variants = [(f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share))) for share in TAP_SHARES]

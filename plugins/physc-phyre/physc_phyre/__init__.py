@@ -18,6 +18,8 @@ from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.base import MissingCapability
+from physc.domains.part import part
+from physc.domains.search_hooks import SearchHooks
 from physc.domains.simulated import SimulatedDomain
 from physc.generation.acceptance import Acceptance
 from physc.picture import FORMATS
@@ -45,11 +47,27 @@ BALL_CHUNKS_FOR_TWO_BALLS = 30
 __all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
 
 
+class PhyreSearch(SearchHooks):
+    """PHYRE's hooks of the search: paths read in pixels, and distractors."""
+
+    trace_scale = world.PIXELS_PER_METRE
+
+    def distractors(self, layout, index: int, rng: random.Random):
+        """Static bars and balls, and gray balls on the floor, that play no part (distract.py)."""
+        from physc_phyre.distract import distractors
+
+        return distractors(layout, index, rng)
+
+
 class Phyre(SimulatedDomain):
     name = "phyre"
     description = "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
     vocabulary = VOCABULARY
     worlds = (PHYRE,)
+    capabilities = SimulatedDomain.capabilities | {
+        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "scene", "actions", "distractors", "random_action",
+        "emit_level", "picture", "score_agent",
+    }
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     level_classes = (PhyreLevel, SceneBody, BallAction, TwoBallAction)
@@ -100,7 +118,7 @@ class Phyre(SimulatedDomain):
         from physc_phyre.pool import acceptance_chunk
 
         return acceptance_chunk(BALLS[tier], chunk, size)[1]
-    trace_scale = world.PIXELS_PER_METRE
+    search = part(PhyreSearch)  # the search's hooks: the trace's scale, distractors
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
 
@@ -152,13 +170,6 @@ class Phyre(SimulatedDomain):
     @staticmethod
     def neighbours(action) -> list:
         return actions.neighbours(action)
-
-    @staticmethod
-    def distractors(layout, index: int, rng: random.Random):
-        """Static bars and balls, and gray balls on the floor, that play no part (distract.py)."""
-        from physc_phyre.distract import distractors
-
-        return distractors(layout, index, rng)
 
     @staticmethod
     def valid(level: PhyreLevel, action) -> bool:
