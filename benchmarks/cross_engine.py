@@ -39,8 +39,8 @@ def replayed(records: list[dict], backend: str, replays: int):
             scenarios[key] = next(s for s in analyze(record["file"], INSTALLED).scenarios if s.name == record["scenario"])
         scenario = scenarios[key]
         domain = load_domain(scenario.domain)
-        level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
-        kind = domain.solution_class or Solution
+        level = from_data(record["level"], {cls.__name__: cls for cls in domain.files.level_classes})
+        kind = domain.files.solution_class or Solution
         solution = from_data(record["solution"], {kind.__name__: kind})
         started = time.perf_counter()
         check = verify(domain, scenario, level, solution, backend)

@@ -60,7 +60,7 @@ def judge(path: Path) -> dict:
 
     task = load_task(path)
     domain = domain_of(task)
-    action = domain.action_of(task.solution)
+    action = domain.actions.action_of(task.solution)
     counter = Counter()
     started = time.perf_counter()
     judged = verdict(domain, task.level, "", action, counter)

@@ -80,7 +80,7 @@ def measure(domain, scenario, lv: Level, replays: int = REPLAYS, why: bool = Fal
 
     realised = robust = 0
     fastest = 0.0
-    for label, shot in domain.actions(lv, scenario):
+    for label, shot in domain.actions.candidates(lv, scenario):
         traces = plays(lv, shot)
         for trace in traces:
             fastest = max(fastest, _strike(trace))
@@ -89,7 +89,7 @@ def measure(domain, scenario, lv: Level, replays: int = REPLAYS, why: bool = Fal
         realised += 1
         passed = True
         for k in range(replays):
-            noisy_level, noisy_shot = domain.noisy(lv, shot, random.Random(k))
+            noisy_level, noisy_shot = domain.actions.noisy(lv, shot, random.Random(k))
             for reading, trace in zip(readings, plays(noisy_level, noisy_shot)):
                 judged = fidelity(scenario, trace)
                 passed = passed and judged.valid

@@ -33,12 +33,12 @@ DEFAULT = sorted((ROOT / "tests" / "golden" / "task").glob("*.json")) + sorted((
 def actions(domain, task, count: int) -> list:
     if task.domain == "angrybirds":
         rng = random.Random(0)
-        shot = domain.action_of(task.solution)
-        return [shot] + [domain.noisy(task.level, shot, rng)[1] for _ in range(count - 1)]
+        shot = domain.actions.action_of(task.solution)
+        return [shot] + [domain.actions.noisy(task.level, shot, rng)[1] for _ in range(count - 1)]
     from physc_phyre.pool import acceptance_chunk
 
     _, placed = acceptance_chunk(len(task.level.players), 0)
-    return [a for a in placed if domain.valid(task.level, a)][:count]
+    return [a for a in placed if domain.actions.valid(task.level, a)][:count]
 
 
 def worlds(domain, level, action):

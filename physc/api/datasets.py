@@ -120,7 +120,7 @@ def generation_needs(png: bool, verify_backend: str | None) -> tuple[str, ...]:
     a second engine)."""
     from physc.domains.base import STAGE_NEEDS
 
-    return STAGE_NEEDS["level"] + ("level_suffix",) + (("picture",) if png else ()) + (("replay",) if verify_backend else ())
+    return STAGE_NEEDS["level"] + (("picture",) if png else ()) + (("replay",) if verify_backend else ())
 
 
 def evaluation_needs() -> tuple[str, ...]:

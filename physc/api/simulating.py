@@ -35,7 +35,7 @@ def read_level(source: str | os.PathLike | bytes, domain: str = "angrybirds"):
         except OSError as error:
             raise FileError(f"{name}: {error.strerror or error}") from None
     try:
-        return load_domain(domain).read_level(data)
+        return load_domain(domain).files.read_level(data)
     except LevelError as error:
         where = f":{error.line}" if error.line else ""
         raise FileError(f"{name}{where}: {error}") from None
@@ -69,13 +69,13 @@ def simulate(
         level = level.level
     else:
         played = bound_domain(domain, world, backend)
-        if world is None and (domain is None or isinstance(domain, str)) and played.level_world(level):
-            played = played.at(played.level_world(level))  # the world the level names
+        if world is None and (domain is None or isinstance(domain, str)) and played.files.level_world(level):
+            played = played.at(played.files.level_world(level))  # the world the level names
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
-        action = played.action_of(action)
+        action = played.actions.action_of(action)
     if noise is not None:
         rng = noise if isinstance(noise, random.Random) else random.Random(noise)
-        level, action = played.noisy(level, action, rng)
+        level, action = played.actions.noisy(level, action, rng)
     return play_to_rest(played, level, action, scenario, seconds)
 
 
@@ -124,9 +124,9 @@ def render(
     if isinstance(task, Task):
         played = domain_of(task, world, backend)
         if action is None and title is None:
-            return played.picture(task, fmt)
+            return played.files.picture(task, fmt)
         paths = simulate(task, action if action is not None else task.solution, world=world, backend=backend).paths()
-        return played.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
+        return played.files.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
     played = bound_domain(domain, world, backend)
     paths = {} if action is None else simulate(task, action, domain=played).paths()
-    return played.draw(task, title or "", paths, fmt)
+    return played.files.draw(task, title or "", paths, fmt)

@@ -56,19 +56,19 @@ def task_parts(task: dict, path: str):
         require(domain, ("replay", "emit_level"), "reading a task file")
     except DomainError as error:
         raise FileError(f"{path}: {error.message}") from None
-    if not domain.level_classes:
+    if not domain.files.level_classes:
         raise FileError(f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)")
     analysis = analyze_text(f"{path} (source)", str(task["source"]), INSTALLED)
     scenario = next((s for s in analysis.scenarios if s.name == task["scenario"]), None)
     if scenario is None or any(d.is_error for d in analysis.diagnostics):
         raise FileError(f"{path}: its source does not hold a valid scenario '{task['scenario']}'")
     try:
-        level = from_data(task["level"], {cls.__name__: cls for cls in domain.level_classes})
-        if not isinstance(level, domain.level_classes[0]):
-            raise ValueError(f"the level is not a {domain.level_classes[0].__name__}")
+        level = from_data(task["level"], {cls.__name__: cls for cls in domain.files.level_classes})
+        if not isinstance(level, domain.files.level_classes[0]):
+            raise ValueError(f"the level is not a {domain.files.level_classes[0].__name__}")
         kinds = solution_classes(domain)
         solution = _solution(from_data(task["solution"], kinds), tuple(kinds.values()))
-        level_text = domain.emit_level(level)  # also checks that the level is one the domain can write
+        level_text = domain.files.emit_level(level)  # also checks that the level is one the domain can write
     except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:
         raise FileError(f"{path}: its level or solution cannot be read: {error or type(error).__name__}") from None
     return domain, scenario, level, level_text, solution
@@ -131,7 +131,7 @@ def scenario_of(task: Task):
 
 def level_text(task: Task) -> str:
     """The task's level as its domain's level file (angrybirds: Science Birds XML)."""
-    return domain_of(task).emit_level(task.level)
+    return domain_of(task).files.emit_level(task.level)
 
 
 def save_task(task: Task, path: str | os.PathLike) -> None:

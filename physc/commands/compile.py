@@ -75,7 +75,7 @@ def _picture_format(path: str) -> str:
 
 def _picture(value, domain, path: str) -> bytes:
     """The picture of a layout or a task, as --png asks: the domain's own drawing."""
-    return domain.picture(value, _picture_format(path))
+    return domain.files.picture(value, _picture_format(path))
 
 
 def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnostic]:
@@ -207,7 +207,7 @@ def cmd_compile(args) -> int:
     done = diagnostics.exit_status(refused) if refused else EXIT_INFEASIBLE if failures else EXIT_OK
     if chosen.name == "level":
         for name, domain, value in outputs:
-            text = domain.emit_level(value.level)
+            text = domain.files.emit_level(value.level)
             if args.output:
                 write_atomic(_destination(args.output, many, name, "xml"), text)
             elif not many:

@@ -31,7 +31,7 @@ def _domain(args, level=None):
     from physc.domains import load_domain
 
     domain = load_domain(LEVEL_DOMAIN)
-    named = None if level is None else domain.level_world(level)
+    named = None if level is None else domain.files.level_world(level)
     if named and not args.world:
         from physc.worlds import WorldError
 
@@ -71,16 +71,16 @@ def load_level(args, domain):
     """The level of args.level, or None after reporting why not (the exit status is returned too)."""
     from physc.domains.base import LevelError
 
-    limit = domain.max_level_bytes
+    limit = domain.files.max_level_bytes
     data, problem = read_input(args.level, "the level", limit=limit + 1)
     if data is None:
         return None, _fail(args, Diagnostic("E0001", problem))
     if len(data) > limit:
         return None, _fail(args, Diagnostic("E0906", f"the level file is larger than physc reads ({limit:,} bytes)"))
     try:
-        return domain.read_level(data), 0
+        return domain.files.read_level(data), 0
     except LevelError as error:
-        source = SourceText(args.level, domain.level_text(data))  # as the level was read, so that lines and columns match
+        source = SourceText(args.level, domain.files.level_text(data))  # as the level was read, so that lines and columns match
         span = None
         if error.line is not None and error.line <= source.line_count:
             start = source.offset(error.line, error.column or 1)
@@ -129,11 +129,11 @@ def _play(args, task=None):
     shot = domain.shot(args.shot, args.angle)
     if task is not None:
         scenario, named, text, solution = task
-        data, _ = read_input(args.level, "the level", limit=domain.max_level_bytes + 1)
+        data, _ = read_input(args.level, "the level", limit=domain.files.max_level_bytes + 1)
         if data is not None and _normalised(data.decode("utf-8-sig", "replace")) == _normalised(text):
             level = named
             if shot is None and args.shot is None and args.angle is None:
-                shot = domain.action_of(solution)  # the task's own solution, all its shots
+                shot = domain.actions.action_of(solution)  # the task's own solution, all its shots
         else:
             scenario = None  # another level: its objects have other names
     if shot is not None and not level.has_birds:
@@ -249,7 +249,7 @@ def cmd_render(args) -> int:
             return trace
         paths = trace.paths()
     kind = "svg" if args.output.lower().endswith(".svg") else "png"
-    write_atomic(args.output, domain.draw(level, args.title or args.level, paths, kind))
+    write_atomic(args.output, domain.files.draw(level, args.title or args.level, paths, kind))
     if args.format == "json":
         print_json({"level": args.level, "picture": args.output, "format": kind, "paths": sorted(paths)})
     return EXIT_OK

@@ -29,13 +29,13 @@ def _finished(folder: Path, job: Job, row: dict | None) -> bool:
 
 
 def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
-    """Each domain's files in its target world's own format (Domain.benchmark_files), from
+    """Each domain's files in its target world's own format (its files' benchmark_files), from
     the tasks generated."""
     files: dict[str, bytes] = {}
     for name in dict.fromkeys(row["domain"] for row in rows):
         tasks = [(row, (folder / row["level"]).read_text(encoding="utf-8")) for row in rows if row["domain"] == name and row.get("level")]
         if tasks:
-            files.update(load_domain(name).benchmark_files(tasks))
+            files.update(load_domain(name).files.benchmark_files(tasks))
     return files
 
 

@@ -50,15 +50,15 @@ def make(job: Job) -> dict:
         )
         with run.within_budget():  # the picture is part of the task's work, within its one budget
             task = run.task
-            picture = domain.picture(task, "png") if job.picture else None
+            picture = domain.files.picture(task, "png") if job.picture else None
     except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         row.update(outcome=NO_TASK, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return {"row": row, "files": {}}
     seconds = round(time.perf_counter() - started, 4)
-    names = file_names(job, domain.level_suffix)
+    names = file_names(job, domain.files.level_suffix)
     data = to_data(task)
     data.pop("seconds", None)  # times are the manifest's: the task file's bytes depend on its seed only
-    files = {names["level"]: domain.emit_level(task.level), names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n"}
+    files = {names["level"]: domain.files.emit_level(task.level), names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n"}
     if picture is not None:
         files[names["picture"]] = picture
     passed, run = task.robustness

@@ -29,7 +29,7 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
     scenarios = [_scenario(name, pairs) for name, pairs in by_scenario.items()]
     made = [r for r in rows if r["outcome"] != NO_TASK]
     domains = sorted({job.domain for job in jobs})
-    suffixes = {load_domain(d).level_suffix for d in domains}
+    suffixes = {load_domain(d).files.level_suffix for d in domains}
     suffix = suffixes.pop() if len(suffixes) == 1 else "<suffix>"
     template = jinja2.Environment(keep_trailing_newline=True, undefined=jinja2.StrictUndefined).from_string(
         resources.files("physc.dataset").joinpath("templates/README.md.j2").read_text(encoding="utf-8")
@@ -48,7 +48,7 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
         pictures=any(r.get("picture") for r in rows),
         level_suffix="level.json" if suffix == "json" else suffix,
         domains=domains,
-        level_formats=[{"domain": d, "format": load_domain(d).level_format} for d in domains],
+        level_formats=[{"domain": d, "format": load_domain(d).files.level_format} for d in domains],
         size_category=_size_category(len(rows)),
         command=command,
         version=__version__,

@@ -11,13 +11,12 @@ of promise:
   plugin object that is not a `Domain` (E0702).
 * **Generation** needs capabilities, which a domain declares (`capabilities`): `layout_rules`,
   `layout_parameters`, `concretize`, `satisfy` (physc's one search makes its tasks: a
-  SimulatedDomain), `emit_level`, `picture`, `replay` (verification), `stability` (the
-  evaluation); and playing level files, `read_level` and `draw`. No default could be right
-  for another domain, so the base class has none; a domain that lacks them still loads and
-  checks, and a command that needs one refuses before any work with E0703, naming the
-  domain and what it lacks (`missing`, `require`). `reach_targets`, `reachable`,
-  `robustness_replays`, `level_classes`, `solution_class` and `accidental` have working
-  defaults.
+  SimulatedDomain), `replay` (verification), `stability` (the evaluation), and among its files
+  (`files`, physc.domains.level_files) `emit_level`, `picture`, and for playing level files
+  `read_level` and `draw`. No default could be right for another domain, so the base class has
+  none; a domain that lacks them still loads and checks, and a command that needs one refuses
+  before any work with E0703, naming the domain and what it lacks (`missing`, `require`).
+  `reach_targets`, `reachable`, `robustness_replays` and `accidental` have working defaults.
 * **Worlds**: a domain names the worlds it simulates (`worlds`, physc.worlds.World) and its
   default; `at(world, backend)` binds a copy to one world and one physics engine, which then
   pass down with the domain to every simulation (`world`, `backend`).
@@ -33,27 +32,35 @@ import abc
 import copy
 from typing import TYPE_CHECKING
 
+from physc.domains.errors import DomainError, LevelError, MissingCapability
+from physc.domains.level_files import LevelFiles
+from physc.domains.part import part
 from physc.domains.vocabulary import Vocabulary
 
 if TYPE_CHECKING:
     from physc.backends import Backend
     from physc.worlds import World
-    from physc.compiler.concrete_layout import Body, ConcreteLayout
+    from physc.compiler.concrete_layout import Body
     from physc.compiler.dimension_graphs import LayoutParameters
     from physc.compiler.layout_graph import LayoutGraph
     from physc.compiler.layout_rules import LayoutRules
     from physc.domains.playing import Playing
-    from physc.compiler.task import Task
     from physc.dsl.scenario import ScenarioIR
+
+__all__ = [
+    "CAPABILITIES", "DEFAULTS", "REQUIRED", "STAGE_NEEDS", "Domain", "DomainError", "LevelError", "MissingCapability", "missing", "provides", "require",
+    "solution_classes", "FILES",
+]
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = (
     "layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability", "read_level", "draw",
 )  # no default
 DEFAULTS = (
-    "reach_targets", "reachable", "robustness_replays", "level_classes", "level_format", "level_suffix", "solution_class", "accidental", "measures",
-    "benchmark_files", "score_agent", "worlds", "default_world", "at", "world", "backend", "level_text", "level_world", "max_level_bytes", "playing",
+    "reach_targets", "reachable", "robustness_replays", "accidental", "measures", "score_agent", "worlds", "default_world", "at", "world", "backend",
+    "playing", "files",
 )  # working defaults (score_agent's: no agent is scored, MissingCapability)
+FILES = ("emit_level", "picture", "read_level", "draw")  # the capabilities that are members of `files`
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
 # the stages before it, so each includes what they need. `picture` is asked for by
@@ -74,50 +81,6 @@ STAGE_NEEDS: dict[str, tuple[str, ...]] = {
 }
 
 
-class DomainError(Exception):
-    """A domain is unknown (`code` E0701), its plugin fails to load (E0702), or it
-    lacks a capability that was asked for (E0703)."""
-
-    def __init__(self, code: str, message: str, help: str | None = None, suggestions: tuple[str, ...] = ()):
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.help = help
-        self.suggestions = suggestions  # installed domain names the asked-for one may be a misspelling of
-
-
-class LevelError(Exception):
-    """An unusable level file (`Domain.read_level`): `code` is a physc diagnostic code, `line`
-    and `column` 1-based or None."""
-
-    def __init__(self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None):
-        super().__init__(message)
-        self.code = code
-        self.message = message
-        self.line = line
-        self.column = column
-        self.help = help
-
-    def __str__(self) -> str:
-        where = "" if self.line is None else f"line {self.line}" + ("" if self.column is None else f":{self.column}") + ": "
-        return where + self.message
-
-
-class MissingCapability(DomainError):
-    """The domain `domain` lacks `hooks`, which `asked` (e.g. "--emit level") needs."""
-
-    def __init__(self, domain: str, hooks: tuple[str, ...], asked: str):
-        names = ", ".join(hooks)
-        super().__init__(
-            "E0703",
-            f"the domain '{domain}' cannot do what {asked} needs: it has no {names}",
-            "its vocabulary alone serves `physc check` and `--emit ast` or `scenario`; what each hook does is in "
-            "docs/plugins.md, \"The domain interface\"",
-        )
-        self.domain = domain
-        self.hooks = hooks
-
-
 def provides(domain: Domain, hook: str) -> bool:
     """Whether `domain` has `hook`: what every domain says (REQUIRED) and the working defaults
     (DEFAULTS) it always has; any other hook (CAPABILITIES, and a SimulatedDomain's own) when
@@ -131,10 +94,10 @@ def missing(domain: Domain, hooks: tuple[str, ...]) -> tuple[str, ...]:
 
 
 def solution_classes(domain: Domain) -> dict[str, type]:
-    """The classes a task file's solution may be in `domain`, by name (its `solution_class`)."""
+    """The classes a task file's solution may be in `domain`, by name (its files' `solution_class`)."""
     from physc.compiler.task import Solution
 
-    kinds = domain.solution_class or Solution
+    kinds = domain.files.solution_class or Solution
     return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
 
 
@@ -240,18 +203,6 @@ class Domain(abc.ABC):
         shapes."""
         raise MissingCapability(self.name, ("concretize",), "placing objects")
 
-    def emit_level(self, level) -> str:
-        """The task's level as the domain's level file (stage level; angrybirds: Science
-        Birds XML)."""
-        raise MissingCapability(self.name, ("emit_level",), "writing a level")
-
-    def picture(self, task: Task | ConcreteLayout, fmt: str = "png") -> bytes:
-        """A picture of the generated task, or of a placed layout (`--emit layout`), `fmt`
-        "png" or "svg" (`--png`). No default: how a level looks is the domain's own; a domain
-        without one says so clearly instead of drawing something wrong, and one that cannot
-        draw a format raises MissingCapability (E0703) for it."""
-        raise MissingCapability(self.name, ("picture",), "--png")
-
     def replay(self, level, solution, scenario: ScenarioIR, rng=None):
         """The solution played in `level`, in the domain's world and backend (`at`): a
         physc.simulation.trace.Trace with its interactions
@@ -265,42 +216,10 @@ class Domain(abc.ABC):
         stability (angrybirds: 10 s, nothing moves more than 0.05 units, nothing destroyed)."""
         raise MissingCapability(self.name, ("stability",), "measuring stability")
 
-    def read_level(self, data: bytes):
-        """The level of a level file's bytes (`physc simulate`, `trace`, `render`); LevelError
-        (a diagnostic's code, message, line and column) for a file that cannot be played."""
-        raise MissingCapability(self.name, ("read_level",), "reading a level file")
-
-    def level_world(self, level) -> str | None:
-        """The world a level file names (`physc simulate`, `trace`, `render` and `verify` play
-        it there unless told otherwise); None: it names none (the default)."""
-        return None
-
-    def level_text(self, data: bytes) -> str:
-        """A level file's text as `read_level` reads it, so that a LevelError's line and column
-        point into it. Default: UTF-8."""
-        return data.decode("utf-8", "replace")
-
-    max_level_bytes: int = 4 * 1024 * 1024
-    """The largest level file `read_level` is given (a larger one is refused unread, E0906)."""
-
-    def draw(self, level, title: str, paths: dict, fmt: str = "png") -> bytes:
-        """A picture of `level` with `paths` (body name → [(x, y), …], drawn as arrows), in the
-        domain's world (`physc render`)."""
-        raise MissingCapability(self.name, ("draw",), "drawing a level")
-
-    level_format: str = "the domain's level file"
-    """What a level file is, in words a dataset's README gives its users: the format, and whose
-    reader and version of it the files are written for."""
-    level_suffix: str = "level"
-    """The file suffix of the domain's level files, without the dot (angrybirds: "xml"): what
-    `physc generate` names a task's level `<seed>.<suffix>` with ("json": `<seed>.level.json`,
-    beside the task's own `<seed>.json`)."""
-
-    level_classes: tuple[type, ...] = ()
-    """The attrs classes a level of this domain is made of, the level's own class first
-    (angrybirds: Level, Camera, LevelObject): what reads a level back from a task file
-    (physc.serialize.from_data, `physc verify`). Empty: task files of this domain cannot be
-    read back."""
+    files = part(LevelFiles)
+    """The domain's files (physc.domains.level_files): its level files read and written, its
+    pictures, its task files' values; `emit_level`, `picture`, `read_level` and `draw` are
+    capabilities among them, declared in `capabilities`."""
 
     # --- generation: working defaults ------------------------------------------
 
@@ -308,11 +227,6 @@ class Domain(abc.ABC):
     """The noisy replays `satisfy` puts a solution through; `--min-robustness K` may ask
     at most this many. None (the default): the domain makes no noisy replays, so
     --min-robustness has nothing to count and is not checked."""
-
-    solution_class: type | tuple[type, ...] | None = None
-    """The attrs class of a task's solution, or a tuple of them when a domain has several
-    kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
-    verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
 
     playing: Playing | None = None
     """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
@@ -326,13 +240,6 @@ class Domain(abc.ABC):
         """The evaluation's accidental solvability of a task: a dict of figures for its record
         (`accidental`: the fraction of an agent's plays that solve it, None when it found
         none; `agent_plays`; optionally `auccess`). Default: {} (no agent: not measured)."""
-        return {}
-
-    def benchmark_files(self, tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
-        """The files of the target world's own benchmark format that a dataset of this domain
-        holds beside physc's (`physc generate`; PHYRE: its TaskCollection, observations and
-        folds): {path relative to the dataset: contents}, from each generated task's manifest
-        row and level file (text), in the dataset's order. Default: none."""
         return {}
 
     def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
@@ -352,3 +259,4 @@ class Domain(abc.ABC):
         trajectories). Default: everywhere, a player without a limited reach; placement
         asks it only about `reach_targets`."""
         return True
+

@@ -8,22 +8,15 @@ does:
 * `level_from_layout(layout, scenario)`: the placed layout as the domain's level;
 * `scene(level, action)`: the level as physics (a physc.simulation.scene.Scene), the
   action taken (None: no action);
-* `actions(level, scenario)`: the candidate actions, labelled (the paper's points of
-  interest of the first target);
 * `rules(level)`: the run's rules (physc.simulation.run.RunRules: when the goal is met,
-  when the run is over), and `recogniser`, `seconds`, `stable_limit`;
-* for the noisy replays and the evaluation's agent: `noisy(level, action, rng)`,
-  `nudged(action, step)` (the action moved along a line, a coordinate the raising of a
-  weak chain moves), `random_action(level, rng)` and
-  `valid(level, action)`;
-* `solution(label, action)` / `action_of(solution)`: the task file's record of an action,
-  and `with_solution(level, solution)`: the level as written with it (PHYRE's task keeps
-  its solutions);
-* optionally, for the search, a part of its own, `search` (physc.domains.search_hooks):
-  the bodies a new object may take and their physics, the actions aimed at an object and the
-  static bar that blocks forbidden hits and shortcuts, distractors, the domain's own local
-  changes, and the search's settings. A domain with a game of its own (angrybirds) overrides `play`
-  instead of writing `scene` and `rules`, and declares it (`capabilities`).
+  when the run is over), and `seconds`, `stable_limit`;
+* its parts (physc.domains.part), each a small base class with defaults: `actions`
+  (physc.domains.actions: the candidate actions, their noise, the line the search moves one
+  along, their record in a task file, the random agent's draw), `search`
+  (physc.domains.search_hooks: the bodies a new object may take and their physics, the static
+  bar that blocks forbidden hits, distractors, the search's settings) and, as every domain,
+  `files` (physc.domains.level_files). A domain with a game of its own (angrybirds) overrides
+  `play` instead of writing `scene` and `rules`, and declares it (`capabilities`).
 
 Everything else is physc's: the search that makes a placed layout a task
 (physc.generation.search, which the layout loop runs for a domain that declares
@@ -40,6 +33,7 @@ import random
 from collections.abc import Iterable
 
 from physc.domains.base import Domain, MissingCapability
+from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.simulation.recognise import Recogniser
@@ -116,76 +110,10 @@ class SimulatedDomain(Domain):
         """The level as physics, with `action` taken (None: the level left alone)."""
         raise MissingCapability(self.name, ("scene",), "simulating a level")
 
-    def actions(self, level, scenario) -> list[tuple[str, object]]:
-        """(label, action) for every candidate action, in the order they are tried. A domain
-        whose player acts several times (`shot_starts`) takes `start`, `before` and `after` too:
-        the candidates of the action that starts at interaction `start`, each extending `before`,
-        aimed at the level as the play of `before` left it (`after`, its trace)."""
-        raise MissingCapability(self.name, ("actions",), "generating a task")
-
-    def shot_starts(self, scenario) -> tuple[int, ...]:
-        """The interactions at which a later action of the player starts (Angry Birds: a later
-        bird's shot); the search chooses it there, extending each action that got that far
-        (`actions(level, scenario, start, before)`). The default: one action, ()."""
-        return ()
-
-    def contrasted(self, level, action, counterpart: str, contrast: str):
-        """`action` aimed at `contrast` as it is aimed at `counterpart` (language version 2's
-        `contrast(a, b)`, physc.generation.contrasts); None: the domain cannot say (the
-        default), or the action is not aimed at the counterpart."""
-        return None
-
-    def resumes(self, action) -> bool:
-        """Whether a play of `action` may go on from a snapshot (`resumable`, for this action)."""
-        return self.resumable
-
     def rules(self, level) -> RunRules:
         """The rules of a run in `level` (when the goal is met, when the run is over): a new
         object per run, as rules keep the run's state."""
         return RunRules()
-
-    def noisy(self, level, action, rng: random.Random):
-        """(level, action) as one noisy replay draws them from `rng`: the domain's noise
-        model. The default has none: robustness replays are exact replays."""
-        return level, action
-
-    def nudged(self, action, step: int):
-        """`action` moved `step` whole steps along a line (one of the coordinates the search
-        moves to raise a weak chain's margins, physc.generation.coordinates); None: no such
-        line, or no such action there (the default: no line)."""
-        return None
-
-    def random_action(self, level, rng: random.Random):
-        """An action for `level` drawn as the evaluation's random agent draws one (None: the
-        domain has no random agent, and no accidental solvability is measured)."""
-        return None
-
-    def valid(self, level, action) -> bool:
-        """Whether `action` may be taken in `level` (PHYRE: the ball occludes nothing)."""
-        return True
-
-    def solution(self, label: str, action):
-        """The task's record of the action found (an attrs value; the default: the action)."""
-        return action
-
-    def action_of(self, solution):
-        """The action a task's recorded solution takes (the inverse of `solution`)."""
-        return solution
-
-    def played_as(self, level, solution):
-        """`solution` with what the target world's players send to make it, if that is not the
-        action itself (angrybirds: the drag Phy-Q's agent framework sends); the default: as it is."""
-        return solution
-
-    def sent_action(self, solution):
-        """The action `played_as` recorded, as the world plays it (`physc verify` replays it
-        beside the solution); None: the solution's own action is what players send (default)."""
-        return None
-
-    def with_solution(self, level, solution):
-        """The generated task's level with its solution, if the domain's level keeps it (the
-        default: the level as it is)."""
-        return level
 
     acceptance = None
     """The benchmark's rule for keeping a task by how random actions fare in it, a
@@ -203,12 +131,11 @@ class SimulatedDomain(Domain):
         chunks of 10,000, drawn as PHYRE draws them). Needed with an `acceptance` rule."""
         raise MissingCapability(self.name, ("action_pool",), "judging a task by the benchmark's random actions")
 
-    def neighbours(self, action) -> list:
-        """The actions a solution's stability is judged by (PHYRE: the ball moved half a pixel
-        in the 8 directions); the default: none, so every solution counts as stable."""
-        return []
-
     # ---- what the search asks, with defaults ----------------------------------------------
+    actions = part(Actions)
+    """The player's actions (physc.domains.actions): the candidates, their noise, the line the
+    search moves one along, their record in a task file."""
+
     search = part(SearchHooks)
     """What the search may ask beyond levels and actions (physc.domains.search_hooks): bodies and
     their physics, obstacles, distractors, the domain's own local changes, budgets."""
@@ -237,15 +164,12 @@ class SimulatedDomain(Domain):
         Without `to_end`, it stops once the outcome is settled (a verdict that reads nothing else)."""
         return outcome(self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, to_end)
 
-    resumable: bool = True
-    """Whether `play` goes on from a snapshot (its `resume`): the generic play does; a domain
-    whose own `play` does not pass `resume` on to the run loop sets False (then the search
-    replays every prefix from the start)."""
-
     def replay(self, level, solution, scenario, rng=None):
-        action = self.action_of(solution)
+        """The solution played in `level`, judged against `scenario`; with `rng`, a noisy replay
+        under the domain's noise model (`actions.noisy`)."""
+        action = self.actions.action_of(solution)
         if rng is not None:
-            level, action = self.noisy(level, action, rng)
+            level, action = self.actions.noisy(level, action, rng)
         return self.play(level, action, scenario)
 
     def stability(self, level) -> tuple[bool, float]:
@@ -273,7 +197,7 @@ class SimulatedDomain(Domain):
         for action in itertools.islice(actions, AGENT_DRAWS):
             if len(outcomes) == AGENT_ATTEMPTS:
                 break
-            if action is None or not self.valid(level, action):
+            if action is None or not self.actions.valid(level, action):
                 continue
             outcomes.append(self.playout(level, action, to_end=False).solved)
             if until_solved and outcomes[-1]:
@@ -286,7 +210,8 @@ class SimulatedDomain(Domain):
         Empty when the domain has no random agent."""
         if "random_action" not in self.capabilities:  # no random agent
             return {}
-        outcomes = self.attempts(level, iter(lambda: self.random_action(level, rng), None))
+        actions = self.actions
+        outcomes = self.attempts(level, iter(lambda: actions.random_action(level, rng), None))
         if not outcomes:
             return {"accidental": None, "agent_plays": 0}
         first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)

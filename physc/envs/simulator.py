@@ -141,7 +141,7 @@ class ActionSimulator:
             return Simulation(SimulationStatus.INVALID_INPUT, 0.0, {"valid": False})
         if noise is not None:
             rng = noise if isinstance(noise, random.Random) else random.Random(noise)
-            level, played = domain.noisy(level, played, rng)
+            level, played = domain.actions.noisy(level, played, rng)
         scenario = self._scenarios[index]
         if need_interactions or need_images or need_featurized_objects:
             trace = play_to_rest(domain, level, played, scenario)

@@ -333,12 +333,12 @@ def _pictures(records: list[dict], folder: Path) -> None:
             continue
         seen.add(record["interactions"])
         domain = load_domain(record.get("domain", "angrybirds"))
-        if not domain.level_classes or not provides(domain, "picture"):
+        if not domain.files.level_classes or not provides(domain, "picture"):
             continue
-        level = from_data(record["level"], {cls.__name__: cls for cls in domain.level_classes})
+        level = from_data(record["level"], {cls.__name__: cls for cls in domain.files.level_classes})
         solution = from_data(record["solution"], solution_classes(domain))
         task = Task(
             record["scenario"], domain.name, record["seed"], "", level, solution, record["trace"], None, tuple(record["robustness"]),
             (), (), (), record.get("layouts_tried", 0), 0, record.get("simulations", 0), {}, {},
         )
-        write_atomic(folder / f"task_{record['scenario']}_{record['seed']}.png", domain.picture(task))
+        write_atomic(folder / f"task_{record['scenario']}_{record['seed']}.png", domain.files.picture(task))

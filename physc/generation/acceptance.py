@@ -349,5 +349,5 @@ def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
         return evaluator.run(lambda: domain.playout(level, candidate, to_end=False)).solved
 
     return judge(
-        rule, action, lambda r, chunk: domain.action_pool(level, r.tier, chunk, r.chunk), lambda a: domain.valid(level, a), solves, domain.neighbours,
+        rule, action, lambda r, chunk: domain.action_pool(level, r.tier, chunk, r.chunk), lambda a: domain.actions.valid(level, a), solves, domain.actions.neighbours,
     )

@@ -151,7 +151,7 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, 
     level = problem.level_of(scene)
     for r in range(replays):
         noise = random.Random(f"stage/{stage.index}/{attempt.label}/{r}")
-        noisy_level, action = domain.noisy(level, attempt.action, noise)
+        noisy_level, action = domain.actions.noisy(level, attempt.action, noise)
         played = replayed(problem, ledger, noisy_level, action)
         strength = min(strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched))
         if strength < 0:
@@ -166,25 +166,25 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
     it, the ones whose play leaves the stage's links the most margin come first."""
     domain = problem.domain
     scene = prefix(layout, problem.entry, stage.start)
-    if parent.attempts and stage.start in problem.shot_starts:  # the player's next action: each parent's extended
+    if parent.attempts and stage.start in problem.action_starts:  # the player's next action: each parent's extended
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         level = problem.level_of(scene)
         actions = [
-            (f"{a.label}; {label}", action) for a in order for label, action in domain.actions(level, problem.scenario, stage.start, a.action, a.trace)
+            (f"{a.label}; {label}", action) for a in order for label, action in domain.actions.candidates(level, problem.scenario, stage.start, a.action, a.trace)
         ]
         screen = len(actions)
     elif parent.attempts:
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         actions, screen = [(a.label, a.action) for a in order], 1
     else:
-        actions = domain.actions(problem.level_of(scene), problem.scenario)
+        actions = domain.actions.candidates(problem.level_of(scene), problem.scenario)
         actions = [c for c in actions if c[0] in ledger.screened] + [c for c in actions if c[0] not in ledger.screened]
         screen = len(ledger.screened) or len(actions)
     good, failed = [], []
     # The domain's whole run (it stops once all is at rest): a stage's path must go on long
     # enough for the next stage to read where its actor goes, which a slow roll may take
     # most of the run to show (PHYRE: a green ball reaching its ledge's end after 6 s).
-    extends = parent.attempts and stage.start in problem.shot_starts
+    extends = parent.attempts and stage.start in problem.action_starts
     for j, (label, action) in enumerate(actions):
         resume = snapshot(problem, scene, parent, stage, order[j]) if parent.attempts and not extends else None
         attempt = attrs.evolve(simulate(problem, ledger, scene, action, None, resume), label=label)

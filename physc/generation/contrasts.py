@@ -27,12 +27,12 @@ def contrasts(problem: Problem, ledger: Ledger, layout, attempt) -> tuple[str | 
     notes = []
     for term in terms:
         contrast, counterpart = term.objects
-        action = domain.contrasted(level, attempt.action, counterpart, contrast)
+        action = domain.actions.contrasted(level, attempt.action, counterpart, contrast)
         if action is None:
             return settings.CONTRAST_UNAIMED, ()
         plays = [replayed(problem, ledger, level, action)]
         for r in range(domain.robustness_replays or 0):
-            noisy_level, noisy_action = domain.noisy(level, action, random.Random(f"contrast/{contrast}/{r}"))
+            noisy_level, noisy_action = domain.actions.noisy(level, action, random.Random(f"contrast/{contrast}/{r}"))
             plays.append(replayed(problem, ledger, noisy_level, noisy_action))
         solved = sum(bool(p.trace.solved) for p in plays)
         if solved:

@@ -5,7 +5,7 @@ edge into shelves, and the chosen conjunction's QSRs say where each lies. So the
 move whole pieces, the ways that keep those relations (each checked against every QSR of the
 conjunction and the placement area, placing.consistent):
 
-* **the action** along the domain's `nudged` line (Science Birds: the release angle), ±`raise_steps`;
+* **the action** along the domain's `actions.nudged` line (Science Birds: the release angle), ±`raise_steps`;
 * **an object along what it rests on** (sideways), where that is not the ground;
 * **its structure**, everything joined to it or resting on it, transitively (a shelf with its
   blocks), sideways, and up and down where it does not stand on the ground;
@@ -124,7 +124,7 @@ class Coordinates:
         fixed = set(problem.players) | {o.name for o in layout.objects if o.concrete in placing.GROUND or o.role == "obstacle"}
         groups = structures(layout)
         axes = []
-        if problem.domain.nudged(action, 1) is not None:
+        if problem.domain.actions.nudged(action, 1) is not None:
             axes.append(Coordinate("action", "", frozenset(), float(settings.raise_steps)))
         for name in sorted(n for n in names if n in objects and n not in fixed and n not in supports.fixed):
             support = supports.support_of.get(name)
@@ -266,7 +266,7 @@ class Coordinates:
         layout = attrs.evolve(self.layout, objects=tuple(objects)) if moved else self.layout
         if moved and not placing.consistent(layout, problem.parameters, moved, moved):
             return None
-        action = self.action if not steps else problem.domain.nudged(self.action, steps)
-        if action is None or not problem.domain.valid(problem.level_of(layout), action):
+        action = self.action if not steps else problem.domain.actions.nudged(self.action, steps)
+        if action is None or not problem.domain.actions.valid(problem.level_of(layout), action):
             return None
         return layout, action, ", ".join(notes)

@@ -106,4 +106,4 @@ def _built(there, scenario, placed, accept: int):
 
 def _candidates(domain, level, scenario) -> list:
     """The domain's candidate actions for the level (the search's first stage), without their labels."""
-    return [action for _, action in domain.actions(level, scenario)]
+    return [action for _, action in domain.actions.candidates(level, scenario)]

@@ -140,7 +140,7 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
             candidate = attrs.evolve(layout, objects=layout.objects + (obj,))
             if not placing.consistent(candidate, problem.parameters, {obj.name}):
                 continue
-            if not problem.domain.valid(problem.level_of(candidate), solution.action):  # it covers the player's action
+            if not problem.domain.actions.valid(problem.level_of(candidate), solution.action):  # it covers the player's action
                 continue
             if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
                 continue

@@ -41,14 +41,14 @@ class Problem:
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
     validate: bool = True
     acceptance: bool = True  # whether the domain's acceptance rule judges the task
-    shot_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
+    action_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
 
     @classmethod
     def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
         vocabulary = domain.vocabulary
         carried = [tuple(t.objects[:2]) for t in scenario.restrictions if (term := vocabulary.term(t.name)) is not None and term.carries]
         entry = introduced(layout, scenario.interactions, carried)
-        starts = tuple(domain.shot_starts(scenario))
+        starts = tuple(domain.actions.starts(scenario))
         return cls(
             domain, scenario, layout, domain.search.settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
             entry, tuple(stages(scenario.interactions, entry, starts)),

@@ -3,7 +3,7 @@
 The search raises margins in two places: a stage whose variants all lost a link, or kept it
 only in some noisy replays (chain.py), and a whole chain that does not hold under noise
 (strengthen.py). Both move the same coordinates (coordinates.py: the action along the domain's
-`nudged` line, the places of the weak links' objects, the lengths and slopes of their
+`actions.nudged` line, the places of the weak links' objects, the lengths and slopes of their
 surfaces, inside the region the layout's QSRs allow) and judge a candidate the same way: played
 as is and in the same noisy replays (common random numbers), its value the least margin any of
 them leaves (chain.score: a failed link's margin is negative, so a link that does not happen yet

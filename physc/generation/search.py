@@ -52,7 +52,7 @@ def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | 
 def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     """The steps of the module docstring, in turn, for one placed layout."""
     domain = problem.domain
-    if not domain.actions(problem.level_of(problem.placed), problem.scenario):
+    if not domain.actions.candidates(problem.level_of(problem.placed), problem.scenario):
         return given_up(problem, ledger, settings.NO_ACTION)
     found = chain(problem, ledger, Node(problem.placed, (), -1), 0)
     if found is None:
@@ -87,17 +87,17 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
             return given_up(problem, ledger, settings.NOT_VALIDATED)
         validated, trace = True, final.trace
     level = problem.level_of(layout)
-    if not domain.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
+    if not domain.actions.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
         return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
     judged = verdict(domain, level, attempt.label, attempt.action, ledger.evaluator) if problem.acceptance else None
     if judged is not None and not judged.accepted:
         why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
         return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))
-    solution = domain.played_as(level, domain.solution(attempt.label, attempt.action))
+    solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
     steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ()) + contrasted
     parts = Parts(
-        level=domain.with_solution(level, solution),
+        level=domain.files.with_solution(level, solution),
         solution=solution,
         trace=trace.sequence(),
         validated=validated,

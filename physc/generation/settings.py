@@ -102,7 +102,7 @@ class SearchSettings:
     raise_turn: float = 5.0
     """Degrees the strengthening may turn an inclined surface either way."""
     raise_steps: int = 60
-    """Steps along the domain's `nudged` line the strengthening may move the action either way
+    """Steps along the domain's `actions.nudged` line the strengthening may move the action either way
     (angrybirds: 1° of release angle)."""
     obstacles: int = 6
     """Obstacles tried per forbidden hit."""

@@ -15,7 +15,7 @@ def snapshot(problem, scene, parent, stage, source) -> Snapshot | None:
     from the parent's by more than the stage's new objects, or the cut would save less than
     `snapshot_least`."""
     settings = problem.settings
-    if not (settings.snapshots and problem.domain.resumes(source.action)) or parent.stage < 0 or stage.start in problem.shot_starts:
+    if not (settings.snapshots and problem.domain.actions.resumes(source.action)) or parent.stage < 0 or stage.start in problem.action_starts:
         return None
     before = prefix(parent.layout, problem.entry, problem.plan[parent.stage].start).objects
     new = [o for o in scene.objects if o.name in stage.new]

@@ -73,13 +73,13 @@ def introduced(layout, interactions: Sequence, carried: Sequence[tuple[str, str]
     return entry
 
 
-def stages(interactions: Sequence, entry: Mapping[str, int], shot_starts: Sequence[int] = ()) -> list[ChainStage]:
+def stages(interactions: Sequence, entry: Mapping[str, int], action_starts: Sequence[int] = ()) -> list[ChainStage]:
     """The stages of `interactions` whose objects enter at the interaction `entry` says
     (objects brought in by no interaction: at len(interactions), a last stage that
-    realises nothing new but must keep the rest); a later action of the player (`shot_starts`)
+    realises nothing new but must keep the rest); a later action of the player (`action_starts`)
     starts a stage too, where the search chooses it."""
     total = len(interactions)
-    starts = sorted({0, *(k for k in (*entry.values(), *shot_starts) if 0 < k < total)})
+    starts = sorted({0, *(k for k in (*entry.values(), *action_starts) if 0 < k < total)})
     if any(k >= total for k in entry.values()):
         starts.append(total)
     out = []

@@ -1,6 +1,6 @@
 """A realised chain made to hold under noise: its margins measured and its weakest links raised.
 
-A working action is replayed under the domain's noise model (`noisy`, the evaluation's)
+A working action is replayed under the domain's noise model (`actions.noisy`, the evaluation's)
 `robustness_replays` times, each replay's noise drawn from its own named generator, and each
 replay's links read for their margins (physc.simulation.margins, under the worst reading of
 what the world's files leave open). One that keeps every link in every replay, with a margin
@@ -62,7 +62,7 @@ def replays(problem: Problem, ledger: Ledger, attempt: Attempt, layout, stream: 
     passed, scores, read = 0, [], []
     for r in range(domain.robustness_replays or 0):
         noise = random.Random(f"{stream}/{attempt.label}/{r}")
-        noisy_level, noisy_action = domain.noisy(level, attempt.action if action is None else action, noise)
+        noisy_level, noisy_action = domain.actions.noisy(level, attempt.action if action is None else action, noise)
         played = replayed(problem, ledger, noisy_level, noisy_action)
         margins = domain.margins(problem.scenario, played.trace)
         valid = played.fidelity.valid

@@ -5,7 +5,7 @@ sequence as recorded and under the domain's noise, under every reading of what t
 files leave open (physc.worlds.OpenPoint; Science Birds: the sign of relativeVelocity, the
 kinematic platform's mass, near ties of the attacker), and, when asked, in an engine with
 another contact solver. `verify` replays the solution once as recorded (and once as the
-target world's players send it, where the domain says how: `sent_action`) and `noisy` times
+target world's players send it, where the domain says how: `actions.sent_action`) and `noisy` times
 under the domain's noise, each replay in every reading that can change it
 (physc.worlds.under_readings: the readings its own run shows to decide something), and says
 which readings failed. `physc verify`, `physc compile --verify-backend`, the generation's
@@ -128,7 +128,7 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
         return out
 
     exact = played()
-    sent = getattr(there, "sent_action", lambda _: None)(solution)
+    sent = there.actions.sent_action(solution)
     if sent is not None:  # the action as players send it (Phy-Q's agents: whole pixels) must hold too
         exact += played(sent=sent)
     _, trace, check = exact[0]

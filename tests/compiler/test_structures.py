@@ -41,7 +41,7 @@ def test_a_goal_object_is_given_the_weakest_body_the_damage_rule_allows():
     scenario = paper_scenarios()["R"]
     assert next_act(scenario.interactions, "pig", 2) == "destroyed"
     pig = PlacedObject("pig", "object", "pigMedium", None, 0.0, 0.0, 0.0, 0.779, 0.756)
-    options = {body.concrete: body for body in DOMAIN.bodies(pig, scenario)}
+    options = {body.concrete: body for body in DOMAIN.search.bodies(pig, scenario)}
     assert set(options) == {"pigSmall", "pigMedium"}
     assert (toughness(options["pigSmall"], PHYQ), toughness(options["pigMedium"], PHYQ)) == (2.0, 16.0)  # life + defence
     assert worth("destroyed", 0.1, 0.7, 0.4, 2.0) > worth("destroyed", 0.4, 0.7, 0.4, 16.0)

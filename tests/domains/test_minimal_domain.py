@@ -33,6 +33,9 @@ from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLA
 from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
 from physc.domains.base import STAGE_NEEDS, MissingCapability, missing
+from physc.domains.level_files import LevelFiles
+from physc.domains.part import part
+from physc.domains.actions import Actions
 from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.dsl.check import check_file
@@ -197,6 +200,58 @@ def simulate(level: Level, push: float) -> Trace:
     return attrs.evolve(trace, interactions=found, violations=violations(found, ()), solved=bool(pads) and touched >= set(pads))
 
 
+class MinimalFiles(LevelFiles):
+    """Its level file, JSON, and a picture in SVG."""
+
+    @staticmethod
+    def emit_level(level: Level) -> str:
+        return json.dumps({"things": [attrs.asdict(t) for t in level.things]}, indent=2) + "\n"
+
+    def picture(self, task, fmt: str = "png") -> bytes:
+        if fmt != "svg":
+            raise MissingCapability(self.domain.name, ("picture",), f"a {fmt} picture (it draws SVG only)")
+        if not hasattr(task, "solution"):
+            raise MissingCapability(self.domain.name, ("picture",), "a picture of a layout (it draws tasks only)")
+        trace = simulate(task.level, task.solution.target[0])
+        flip = lambda y: 2 - y  # noqa: E731
+        shapes = [
+            f'<circle cx="{t.x}" cy="{flip(t.y)}" r="{t.width / 2}"/>' if t.kind == "ball"
+            else f'<rect x="{t.x - t.width / 2}" y="{flip(t.y + t.height / 2)}" width="{t.width}" height="{t.height}"/>'
+            for t in task.level.things
+        ]
+        paths = [
+            '<polyline fill="none" stroke="red" stroke-width="0.02" points="' + " ".join(f"{x:.3f},{flip(y):.3f}" for x, y in points) + '"/>'
+            for points in trace.paths().values()
+        ]
+        body = "".join(shapes + paths)
+        return f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 8 2">{body}</svg>\n'.encode()
+
+
+
+class MinimalActions(Actions):
+    """Its actions: pushes of the ball."""
+
+    resumable = False  # its play starts from the start every time
+
+    @staticmethod
+    def candidates(level, scenario) -> list[tuple[str, float]]:
+        """Pushes of the ball towards the first hit's target, if both have entered the scene."""
+        first = scenario.interactions[0]
+        names = {t.name for t in level.things}
+        if not set(first.objects) <= names:
+            return []
+        ball, target = level.thing(first.objects[0]), level.thing(first.objects[1])
+        return [(f"{ball.name} pushed at {speed:g} units/s", math.copysign(speed, target.x - ball.x)) for speed in SPEEDS]
+
+    @staticmethod
+    def solution(label: str, push: float) -> Solution:
+        return Solution(label, (push, 0.0), "push", 0.0)
+
+    @staticmethod
+    def action_of(solution: Solution) -> float:
+        return solution.target[0]
+
+
 class Minimal(SimulatedDomain):
     """What differs in this domain, as hooks of physc's one search (SimulatedDomain)."""
 
@@ -207,7 +262,9 @@ class Minimal(SimulatedDomain):
     layout_rules = PushLayout()
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=0.0, right=8.0, bottom=0.0, top=HEIGHT)
     seconds = SECONDS
+    files = part(MinimalFiles)
     capabilities = SimulatedDomain.capabilities | {"layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "emit_level", "picture"}
+    actions = part(MinimalActions)
 
     @staticmethod
     def concretize(graph, scenario, rng) -> dict[str, Body]:
@@ -222,55 +279,16 @@ class Minimal(SimulatedDomain):
     def level_from_layout(layout, scenario=None) -> Level:
         return Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
 
-    resumable = False  # its play starts from the start every time
-
     def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None, whole: bool = False) -> Trace:
         return simulate(level, action or 0.0)
-
-    @staticmethod
-    def actions(level, scenario) -> list[tuple[str, float]]:
-        """Pushes of the ball towards the first hit's target, if both have entered the scene."""
-        first = scenario.interactions[0]
-        names = {t.name for t in level.things}
-        if not set(first.objects) <= names:
-            return []
-        ball, target = level.thing(first.objects[0]), level.thing(first.objects[1])
-        return [(f"{ball.name} pushed at {speed:g} units/s", math.copysign(speed, target.x - ball.x)) for speed in SPEEDS]
 
     @staticmethod
     def stability(level) -> tuple[bool, float]:
         return stable(simulate(level, 0.0), STANDS)
 
-    @staticmethod
-    def solution(label: str, push: float) -> Solution:
-        return Solution(label, (push, 0.0), "push", 0.0)
 
-    @staticmethod
-    def action_of(solution: Solution) -> float:
-        return solution.target[0]
 
-    @staticmethod
-    def emit_level(level: Level) -> str:
-        return json.dumps({"things": [attrs.asdict(t) for t in level.things]}, indent=2) + "\n"
 
-    def picture(self, task, fmt: str = "png") -> bytes:
-        if fmt != "svg":
-            raise MissingCapability(self.name, ("picture",), f"a {fmt} picture (it draws SVG only)")
-        if not hasattr(task, "solution"):
-            raise MissingCapability(self.name, ("picture",), "a picture of a layout (it draws tasks only)")
-        trace = simulate(task.level, task.solution.target[0])
-        flip = lambda y: 2 - y  # noqa: E731
-        shapes = [
-            f'<circle cx="{t.x}" cy="{flip(t.y)}" r="{t.width / 2}"/>' if t.kind == "ball"
-            else f'<rect x="{t.x - t.width / 2}" y="{flip(t.y + t.height / 2)}" width="{t.width}" height="{t.height}"/>'
-            for t in task.level.things
-        ]
-        paths = [
-            '<polyline fill="none" stroke="red" stroke-width="0.02" points="' + " ".join(f"{x:.3f},{flip(y):.3f}" for x, y in points) + '"/>'
-            for points in trace.paths().values()
-        ]
-        body = "".join(shapes + paths)
-        return f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 8 2">{body}</svg>\n'.encode()
 
 
 DOMAIN = Minimal()
@@ -347,14 +365,14 @@ def test_a_task_is_compiled_and_its_solution_realises_the_sequence_in_a_fresh_si
     still = simulate(level, 0.0)
     assert stable(still, STANDS)[0] and not still.solved and not fidelity(ir, still).matched
     # The level file and the picture.
-    assert json.loads(DOMAIN.emit_level(level)) == {"things": [attrs.asdict(t) for t in level.things]}
-    assert DOMAIN.picture(task, "svg").startswith(b"<svg") and b"polyline" in DOMAIN.picture(task, "svg")
+    assert json.loads(DOMAIN.files.emit_level(level)) == {"things": [attrs.asdict(t) for t in level.things]}
+    assert DOMAIN.files.picture(task, "svg").startswith(b"<svg") and b"polyline" in DOMAIN.files.picture(task, "svg")
 
 
 def test_the_same_seed_gives_the_same_task_and_another_seed_another_layout():
     first, again, other = compiled(0), compiled(0), compiled(1)
     same = ("solution", "trace", "repairs", "layouts_tried", "simulations", "conjunctions_tried")
-    assert DOMAIN.emit_level(first.level) == DOMAIN.emit_level(again.level)
+    assert DOMAIN.files.emit_level(first.level) == DOMAIN.files.emit_level(again.level)
     assert [getattr(first, f) for f in same] == [getattr(again, f) for f in same]
     assert positions(other.level) != positions(first.level)
     assert other.validated and fidelity(scenario_ir(), simulate(other.level, other.solution.target[0])).valid
@@ -377,7 +395,7 @@ def test_the_command_line_compiles_it_as_an_installed_plugin(tmp_path, monkeypat
         )
         assert (out.status, out.stderr) == (0, "")
         expected = compiled(0)
-        assert (tmp_path / "push.json").read_text() == DOMAIN.emit_level(expected.level)
+        assert (tmp_path / "push.json").read_text() == DOMAIN.files.emit_level(expected.level)
         task = json.loads((tmp_path / "task.json").read_text())
         assert (task["domain"], task["trace"], task["validated"]) == ("minimal", expected.trace, True)
         assert (tmp_path / "push.svg").read_bytes().startswith(b"<svg")

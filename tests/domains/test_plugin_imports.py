@@ -55,7 +55,7 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # 00013; 1,760 with issue 63's outcome playouts: rules that ask the world and settle early,
     # balls judged in doubles away from the limit, the level's bodies made once; 1,790 with
     # issue 64's jar that comes to its ball (PHYRE's 00005, 00010) and issue 65's declared
-    # capabilities and search part); PHYRE's own formats, pools, simulation cache, folds
+    # capabilities, 1,810 with its search and files as parts); PHYRE's own formats, pools, simulation cache, folds
     # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), and how
     # agents play them (playing.py: PHYRE's action, features and picture, issue 55), are
     # counted apart.
@@ -64,7 +64,7 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
         "playing.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
-    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1790, counted
+    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1810, counted
     assert sum(n for name, n in counted.items() if name in phyres_own) <= 1100, counted  # 1,000; 1,100 with playing.py
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.

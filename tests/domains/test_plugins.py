@@ -13,7 +13,8 @@ import pytest
 from conftest import ROOT, run_physc
 from physc import domains
 from physc.compiler.stages import BY_NAME
-from physc.domains.base import CAPABILITIES, DEFAULTS, REQUIRED, STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.base import CAPABILITIES, DEFAULTS, FILES, REQUIRED, STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.level_files import LevelFiles
 
 PLUGINS = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
 ERRORS = (ROOT / "docs" / "errors.md").read_text(encoding="utf-8")
@@ -76,7 +77,7 @@ def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(ma
     assert missing(domain, STAGE_NEEDS["level"] + ("picture", "replay", "stability", "read_level", "draw")) == CAPABILITIES
     assert domain.reach_targets(None) == [] and domain.reachable(-1e6, 1e6) and domain.robustness_replays is None
     with pytest.raises(MissingCapability, match="the domain 'marbles' cannot .* it has no picture"):
-        domain.picture(None)
+        domain.files.picture(None)
 
 
 def test_a_vocabulary_only_domain_checks_and_refuses_to_generate(marbles_domain, tmp_path, monkeypatch):
@@ -152,9 +153,13 @@ def test_the_interface_is_documented_hook_by_hook():
     """Every public attribute of Domain is required, a capability or a default, and a row
     of the table in docs/plugins.md, "The domain interface"."""
     public = {name for name in dir(Domain) if not name.startswith("_")}
-    # `satisfy` is a capability without a method (physc's search); `capabilities` declares them.
-    assert public == set(REQUIRED + CAPABILITIES + DEFAULTS) - {"satisfy"} | {"capabilities"}
+    # `satisfy` is a capability without a method (physc's search); `capabilities` declares them;
+    # FILES are members of the domain's files.
+    assert public == set(REQUIRED + CAPABILITIES + DEFAULTS) - {"satisfy"} - set(FILES) | {"capabilities"}
     section = PLUGINS[PLUGINS.index("## The domain interface") :]
     section = section[: section.index("\n## ", 1)]  # to the next section
     rows = re.findall(r"^\| `(\w+)", section, re.M)
-    assert sorted(rows) == sorted(public | {"satisfy"})
+    files = {name for name in dir(LevelFiles) if not name.startswith("_")} - {"domain"}
+    assert set(FILES) <= files and not files & public
+    assert sorted(rows) == sorted(public | {"satisfy"} | files)  # the domain's table, and its files'
+    assert set(FILES) <= set(CAPABILITIES)

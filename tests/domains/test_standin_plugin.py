@@ -27,6 +27,9 @@ from physc.compiler.concrete_layout import Body
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_rules import LayoutRules
+from physc.domains.actions import Actions
+from physc.domains.level_files import LevelFiles
+from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import (
     DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary,
@@ -56,6 +59,27 @@ class LineLevel:
     pig: float  # the pig's centre, from the ball's start
 
 
+class LineFiles(LevelFiles):
+    level_classes = (LineLevel,)
+    solution_class = Push
+
+    def emit_level(self, level):
+        return json.dumps({"pig": level.pig}) + "\\n"
+
+
+class LineActions(Actions):
+    resumable = False  # its play starts from the start every time
+
+    def candidates(self, level, scenario):
+        return [(f"push {speed:g}", Push(speed)) for speed in (1.0, 2.0, 3.0, 4.0)]
+
+    def nudged(self, action, step):
+        return Push(round(action.speed + 0.05 * step, 6))
+
+    def noisy(self, level, action, rng):
+        return level, Push(action.speed + rng.gauss(0.0, 0.02))
+
+
 class Line(SimulatedDomain):
     name = "line"
     description = "a ball pushed along a line at a pig (a test's stand-in)"
@@ -82,8 +106,8 @@ class Line(SimulatedDomain):
     capabilities = SimulatedDomain.capabilities | {"layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "emit_level"}
     layout_rules = LayoutRules(player="ball", flat="bar", ground=None)
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=-1.0, right=6.0, bottom=0.0, top=2.0)
-    level_classes = (LineLevel,)
-    solution_class = Push
+    files = part(LineFiles)
+    actions = part(LineActions)
     robustness_replays = 4
 
     def concretize(self, graph, scenario, rng):
@@ -97,22 +121,8 @@ class Line(SimulatedDomain):
     def level_from_layout(self, layout, scenario=None):
         return LineLevel(round(layout.object("pig").x, 6))
 
-    def actions(self, level, scenario):
-        return [(f"push {speed:g}", Push(speed)) for speed in (1.0, 2.0, 3.0, 4.0)]
-
-    def nudged(self, action, step):
-        return Push(round(action.speed + 0.05 * step, 6))
-
-    def noisy(self, level, action, rng):
-        return level, Push(action.speed + rng.gauss(0.0, 0.02))
-
     def stability(self, level):
         return True, 0.0
-
-    def emit_level(self, level):
-        return json.dumps({"pig": level.pig}) + "\\n"
-
-    resumable = False  # its play starts from the start every time
 
     def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None, whole=False):
         v, gap = max(action.speed, 1e-6), level.pig - REACH

@@ -30,8 +30,8 @@ class Domain:
     def play(self, level, action, scenario):
         return SimpleNamespace(matched=self.matched[self.world.name])
 
-    def actions(self, level, scenario):
-        return []
+    actions = SimpleNamespace(candidates=lambda level, scenario: [])
+    capabilities = frozenset()
 
     def margins(self, scenario, trace):
         return SimpleNamespace(weakest=self.weakest.get(self.world.name))

@@ -36,7 +36,7 @@ def test_paper_scenario_compiles_and_validates(name):
     task = Pipeline(DOMAIN, scenario, seed=GENERATED[name]).task
     assert task.validated
     # Replay the written level independently: the solution realises the sequence.
-    written = read_level(DOMAIN.emit_level(task.level).encode())
+    written = read_level(DOMAIN.files.emit_level(task.level).encode())
     # Level files carry no names; objects keep their order.
     level = attrs.evolve(written, objects=tuple(attrs.evolve(o, name=n.name) for o, n in zip(written.objects, task.level.objects)))
     assert level == task.level

@@ -98,7 +98,7 @@ def test_a_new_object_is_offered_the_bodies_its_next_act_favours():
     stage = s.plan[1]
     declared = s.interactions[stage.start]
     actor, target = declared.objects[0], declared.objects[1]
-    attempt = next(a for a in [s.simulate(s.placed, action) for _, action in s.domain.actions(s.level_of(s.placed), s.scenario)])
+    attempt = next(a for a in [s.simulate(s.placed, action) for _, action in s.domain.actions.candidates(s.level_of(s.placed), s.scenario)])
     act = choosing.next_act(s.interactions, target, stage.start + 1)
     assert (declared.name, act) == ("hit", "fall")  # pushed off, it falls onto the pig (and destroys it)
     current = {o.name: o for o in s.placed.objects}

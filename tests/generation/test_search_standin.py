@@ -21,6 +21,8 @@ import pytest
 from physc.backends.settings import EngineSettings
 from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.dimension_graphs import LayoutParameters
+from physc.domains.actions import Actions
+from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 from physc.generation import search
 from physc.generation.problem import Ledger, Problem
@@ -78,6 +80,24 @@ class Vocabulary:
     player = "ball"
 
 
+class LineActions(Actions):
+    """Its actions: pushes of the ball."""
+
+    resumable = False  # its play starts from the start every time
+
+    def candidates(self, level, scenario):
+        return [(f"push {speed:g}", Push(speed)) for speed in self.domain.speeds]
+
+    def nudged(self, action, step):
+        return Push(round(action.speed + 0.05 * step, 6))
+
+    def noisy(self, level, action, rng):
+        return Level(level.pig + rng.gauss(0.0, 0.01)), Push(action.speed + rng.gauss(0.0, 0.05))
+
+    def valid(self, level, action):
+        return action.speed > 0
+
+
 class Line(SimulatedDomain):
     """The stand-in domain: every hook the search asks, written by hand."""
 
@@ -89,7 +109,7 @@ class Line(SimulatedDomain):
     layout_parameters = LayoutParameters(clearance=0.1, far=1.0, left=-1.0, right=10.0, bottom=0.0, top=1.0)
     robustness_replays = 6
     capabilities = SimulatedDomain.capabilities | {"layout_parameters", "level_from_layout", "play", "actions"}
-    resumable = False  # its play starts from the start every time
+    actions = part(LineActions)
 
     def __init__(self, speeds=(1.74,), plays=None):
         self.speeds = speeds
@@ -97,18 +117,6 @@ class Line(SimulatedDomain):
 
     def level_from_layout(self, layout, scenario=None):
         return Level(layout.object("pig").x)
-
-    def actions(self, level, scenario):
-        return [(f"push {speed:g}", Push(speed)) for speed in self.speeds]
-
-    def nudged(self, action, step):
-        return Push(round(action.speed + 0.05 * step, 6))
-
-    def noisy(self, level, action, rng):
-        return Level(level.pig + rng.gauss(0.0, 0.01)), Push(action.speed + rng.gauss(0.0, 0.05))
-
-    def valid(self, level, action):
-        return action.speed > 0
 
     def stability(self, level):
         return True, 0.0

@@ -144,9 +144,9 @@ def test_a_contrast_is_checked_by_aiming_the_shot_at_it():
     a = LevelObject("Block", "CircleSmall", -4.0, -3.29, 0.0, "stone", name="rBlock")
     b = LevelObject("Block", "Circle", -6.0, -3.125, 0.0, "stone", name="heavy")
     shot = Shot(target=(-4.0 - 0.21, -3.29), trajectory="low")
-    aimed = DOMAIN.contrasted(Level(objects=(a, b)), shot, "rBlock", "heavy")
+    aimed = DOMAIN.actions.contrasted(Level(objects=(a, b)), shot, "rBlock", "heavy")
     assert aimed.target[0] == -6.0 - 0.375 and aimed.target[1] == -3.125 and aimed.trajectory == "low"
-    assert DOMAIN.contrasted(Level(objects=(a, b)), Shot(target=(3.0, 0.0)), "rBlock", "heavy") is None
+    assert DOMAIN.actions.contrasted(Level(objects=(a, b)), Shot(target=(3.0, 0.0)), "rBlock", "heavy") is None
 
 
 def test_a_later_bird_is_aimed_where_the_shots_before_left_its_target():
@@ -162,6 +162,6 @@ def test_a_later_bird_is_aimed_where_the_shots_before_left_its_target():
     moved = where_left(level, trace)
     assert "pig" not in {o.name for o in moved.objects}  # destroyed by the first shot
     (left,) = [o for o in moved.objects if o.name == "pig2"]
-    later = DOMAIN.actions(level, scenario(TWO), 2, first, trace)
+    later = DOMAIN.actions.candidates(level, scenario(TWO), 2, first, trace)
     centre = next(a.shots[1].target for label, a in later if label.endswith("pig2.c, low"))
     assert centre == (round(left.x, 5), round(left.y, 5))

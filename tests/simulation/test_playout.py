@@ -28,7 +28,7 @@ def test_a_playout_of_a_golden_task_is_its_full_run_bit_for_bit(path):
     task = load_task(path)
     domain = domain_of(task)
     rng = random.Random(0)
-    shots = [domain.action_of(task.solution)] + [domain.noisy(task.level, domain.action_of(task.solution), rng)[1] for _ in range(2)]
+    shots = [domain.actions.action_of(task.solution)] + [domain.actions.noisy(task.level, domain.actions.action_of(task.solution), rng)[1] for _ in range(2)]
     for shot in shots:
         assert same_outcome(domain.play(task.level, shot, recognise=False), domain.playout(task.level, shot))
         assert same_outcome(domain.play(task.level, shot, whole=True), domain.playout(task.level, shot, whole=True))
@@ -37,6 +37,6 @@ def test_a_playout_of_a_golden_task_is_its_full_run_bit_for_bit(path):
 
 def test_a_playout_keeps_no_states_over_time():
     task = load_task(TASKS[0])
-    playout = domain_of(task).playout(task.level, domain_of(task).action_of(task.solution))
+    playout = domain_of(task).playout(task.level, domain_of(task).actions.action_of(task.solution))
     assert playout.final.shape == (len(playout.names), 6)
     assert not hasattr(playout, "states") and not hasattr(playout, "contacts")

@@ -9,21 +9,21 @@ obstacles (a platform) and distractors, its level file and picture.
 
 from __future__ import annotations
 
-import random
 
 import attrs
 
-from physc.domains.angrybirds.level import Camera, Level, LevelObject
+from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.domains.angrybirds.worlds import PHYQ, WORLDS
+from physc.domains.angrybirds.level_files import ScienceBirdsFiles
 from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
+from physc.domains.angrybirds.shooting import ScienceBirdsActions
 from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 
 REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
 PLAY_SECONDS = 9.0  # a play's simulated time at most while generating
-NUDGE_STEP = 0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
 
 
 class AngryBirds(SimulatedDomain):
@@ -44,12 +44,8 @@ class AngryBirds(SimulatedDomain):
         return LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform")
 
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
-    level_classes = (Level, Camera, LevelObject)
-    level_suffix = "xml"  # Science Birds level files
-    level_format = (
-        "a Science Birds level: XML in UTF-8 (ASCII; the game's own files declare utf-16 over the same bytes), as the Science Birds of the Phy-Q testbed (phy-q/benchmark, "
-        "LevelLoader.cs) loads it (physc's docs/angrybirds.md)"
-    )
+    files = part(ScienceBirdsFiles)  # its level XML, pictures and Phy-Q's level set (level_files.py)
+    actions = part(ScienceBirdsActions)  # the birds' shots: candidates, noise, records (shooting.py)
     seconds = PLAY_SECONDS
 
     @property
@@ -82,13 +78,6 @@ class AngryBirds(SimulatedDomain):
         order, starts = birds(scenario, VOCABULARY.player), (0, *shot_starts(scenario, VOCABULARY.player))
         return [t for t in (first_hit(scenario, name, start) for name, start in zip(order, starts)) if t is not None]
 
-    @staticmethod
-    def shot_starts(scenario) -> tuple[int, ...]:
-        """The interactions at which a later bird's shot starts (shots.py)."""
-        from physc.domains.angrybirds.shots import shot_starts
-
-        return shot_starts(scenario, VOCABULARY.player)
-
     def reachable(self, x: float, y: float) -> bool:
         return self.world.reachable(x, y)
 
@@ -102,16 +91,6 @@ class AngryBirds(SimulatedDomain):
 
         birds = level_birds(layout, scenario, VOCABULARY.player, lambda concrete: shape(concrete).prefab)
         return attrs.evolve(level_from_layout(layout), birds=birds, world=self.world.name, generator=f"physc {__version__}")
-
-    @staticmethod
-    def level_world(level) -> str | None:
-        return level.world
-
-    @staticmethod
-    def resumes(action) -> bool:
-        from physc.domains.angrybirds.shots import simple
-
-        return simple(action)
 
     def game(self, level):
         """`level` as the game plays it in this domain's world and engine."""
@@ -141,85 +120,7 @@ class AngryBirds(SimulatedDomain):
         settle = {} if whole else {"settle_after_solved": 0.0}
         return game.simulate(action, seconds or self.seconds, record=False, **settle)
 
-    def actions(self, level, scenario, start: int = 0, before=None, after=None) -> list:
-        """The paper's candidate shots: at the points of interest of what the bird's shot starts
-        by hitting (the first bird's, or with `before`, the next bird's at interaction `start`,
-        where the play of `before`, `after`, left it; tapped at a few points of its flight where
-        the scenario taps it: shots.py)."""
-        from physc.domains.angrybirds.shots import candidates, where_left
-
-        return candidates(self, level if after is None else where_left(level, after), scenario, start, before)
-
-    def noisy(self, level, action, rng: random.Random):
-        """The evaluation's noise: blocks and pigs jittered, the release angle too."""
-        from physc.domains.angrybirds import shots
-        from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
-
-        noisy = jitter(level, rng)
-        return noisy, shots.noisy(action, self.world, rng, ANGLE_SIGMA)
-
-    def nudged(self, action, step: int):
-        """The last shot turned by `step` × NUDGE_STEP degrees."""
-        from physc.domains.angrybirds import shots
-
-        return shots.nudged(action, self.world, step, NUDGE_STEP)
-
-    def solution(self, label: str, action):
-        """Version 1's Solution for one untapped red shot, else a ShotsSolution (shots.py)."""
-        from physc.domains.angrybirds import shots
-
-        return shots.solution(label, action, self.world)
-
-    def contrasted(self, level, action, counterpart: str, contrast: str):
-        """The shot at the counterpart aimed at the same point of the contrast (shots.py)."""
-        from physc.domains.angrybirds import shots
-
-        return shots.contrasted(self, level, action, counterpart, contrast)
-
-    @property
-    def solution_class(self):
-        from physc.compiler.task import Solution
-        from physc.domains.angrybirds.shots import BirdShot, ShotsSolution
-
-        return (Solution, ShotsSolution, BirdShot)
-
-    def played_as(self, level, solution):
-        """The solution with the shots Phy-Q's agents send for it: for each, the whole-pixel drag
-        from the slingshot whose launch is nearest its release angle (agent_action.py), that
-        launch's angle, and its tap in milliseconds."""
-        from physc.domains.angrybirds import shots
-
-        return shots.played_as(level, solution)
-
-    @staticmethod
-    def sent_action(solution):
-        from physc.domains.angrybirds import shots
-
-        return shots.sent_action(solution)
-
-    @staticmethod
-    def action_of(solution):
-        from physc.domains.angrybirds import shots
-
-        return shots.action_of(solution)
-
     # ---- files, pictures, evaluation ------------------------------------------------------
-    @staticmethod
-    def read_level(data: bytes) -> Level:
-        from physc.domains.angrybirds.level_xml import read_level
-
-        return read_level(data)
-
-    @staticmethod
-    def level_text(data: bytes) -> str:
-        """The level file's text as `read_level` decodes it (UTF-16 by its byte-order mark, else UTF-8)."""
-        from physc.domains.angrybirds.level_xml import decode
-        from physc.domains.base import LevelError
-
-        try:
-            return decode(data)
-        except LevelError:
-            return data.decode("utf-8", "replace")
 
     @staticmethod
     def shot(point: tuple[float, float, str] | None = None, angle: float | None = None):
@@ -231,41 +132,11 @@ class AngryBirds(SimulatedDomain):
         x, y, trajectory = point
         return Shot(target=(x, y), trajectory=trajectory)
 
-    def draw(self, level, title: str, paths: dict, fmt: str = "png") -> bytes:
-        from physc.domains.angrybirds.picture import draw_level, save
-
-        return save(draw_level(level, self.world, title, paths), fmt)
-
-    @staticmethod
-    def benchmark_files(tasks) -> dict[str, bytes]:
-        """The tasks as a level set Phy-Q's game loads, with the shots its agents send (phyq_levels.py)."""
-        from physc.domains.angrybirds.phyq_levels import benchmark_files
-
-        return benchmark_files(tasks)
-
-    @staticmethod
-    def emit_level(level) -> str:
-        from physc.domains.angrybirds.level_xml import emit_level
-
-        return emit_level(level)
-
-    def picture(self, task, fmt: str = "png") -> bytes:
-        """The task's level with the paths its solution makes, like the paper's figure; a
-        placed layout (`--emit layout --png`) as the level it becomes."""
-        from physc.compiler.concrete_layout import ConcreteLayout
-        from physc.domains.angrybirds.picture import draw_level, render, save
-
-        if isinstance(task, ConcreteLayout):
-            return render(task, fmt, self.world)
-        trace = self.game(task.level).simulate(self.action_of(task.solution), PLAY_SECONDS, settle_after_solved=0.5)
-        supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
-        title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return save(draw_level(task.level, self.world, title, trace.paths(), supports), fmt)
-
     def replay(self, level, solution, scenario, rng=None):
-        """The solution's shot (or, with `rng`, the evaluation's noise: release angle and
-        object positions jittered), played with the scenario's restrictions and declared
-        bounces."""
+        """The solution's shots (or, with `rng`, the evaluation's noise: the recorded release angles
+        jittered, then the objects: noise.py), played with the scenario's restrictions and declared
+        bounces for REPLAY_SECONDS. The same noise as `actions.noisy`, drawn from the task file's
+        record in the order its replays have always drawn it (a verification stays what it was)."""
         from physc.domains.angrybirds import shots
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 

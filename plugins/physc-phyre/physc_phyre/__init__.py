@@ -14,22 +14,20 @@ import functools
 import random
 
 import attrs
-from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
-from physc.domains.base import MissingCapability
+from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.domains.simulated import SimulatedDomain
 from physc.generation.acceptance import Acceptance
-from physc.picture import FORMATS
 from physc.simulation.scene import Scene
 
 from physc_phyre import actions, two_balls, world
 from physc_phyre.concretize import concretize
+from physc_phyre.files import PhyreFiles
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.rules import GoalRules
-from physc_phyre.task_file import task_json
 from physc_phyre.vocabulary import VOCABULARY
 from physc_phyre.worlds import PHYRE
 
@@ -59,6 +57,39 @@ class PhyreSearch(SearchHooks):
         return distractors(layout, index, rng)
 
 
+class PhyreActions(Actions):
+    """PHYRE's actions: one red ball placed, or two (actions.py, two_balls.py)."""
+
+    @staticmethod
+    def candidates(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
+        """Every valid drop onto the first target's points of interest (actions.py); in the
+        two-ball tier, pairs of such drops (two_balls.py)."""
+        if len(level.players) == 2:
+            return two_balls.candidate_pairs(level, scenario)
+        return actions.drops(level, scenario.interactions[0])
+
+    @staticmethod
+    def noisy(level: PhyreLevel, action, rng: random.Random):
+        return level, actions.noisy(action, rng)
+
+    @staticmethod
+    def nudged(action, step: int):
+        """The balls `step` whole pixels sideways."""
+        return actions.moved(action, lambda ball: (step, 0))
+
+    @staticmethod
+    def random_action(level: PhyreLevel, rng: random.Random):
+        return actions.random_action(level, rng)
+
+    @staticmethod
+    def neighbours(action) -> list:
+        return actions.neighbours(action)
+
+    @staticmethod
+    def valid(level: PhyreLevel, action) -> bool:
+        return actions.valid(level, action)
+
+
 class Phyre(SimulatedDomain):
     name = "phyre"
     description = "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
@@ -70,13 +101,6 @@ class Phyre(SimulatedDomain):
     }
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
-    level_classes = (PhyreLevel, SceneBody, BallAction, TwoBallAction)
-    level_suffix = "json"  # task files in PHYRE's task structure
-    level_format = (
-        "PHYRE's Task (src/if/task.thrift of facebookresearch/phyre) as JSON with thrift's field names; the benchmark "
-        "in PHYRE's own binary TaskCollection is phyre/tasks50.bin.lzma"
-    )
-    solution_class = (BallAction, TwoBallAction)
     seconds = world.MAX_STEPS / world.FPS
     measures = (
         "stability = PHYRE's acceptance of a scene: left alone for 1,000 steps (16.7 s), it does not solve itself (its "
@@ -118,7 +142,9 @@ class Phyre(SimulatedDomain):
         from physc_phyre.pool import acceptance_chunk
 
         return acceptance_chunk(BALLS[tier], chunk, size)[1]
+    actions = part(PhyreActions)  # the red balls placed: candidates, noise, the random agent's draw
     search = part(PhyreSearch)  # the search's hooks: the trace's scale, distractors
+    files = part(PhyreFiles)  # PHYRE's task structure, its benchmark files, pictures (files.py)
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
 
@@ -146,69 +172,12 @@ class Phyre(SimulatedDomain):
         """PHYRE's goal: two balls touch by its distance rule, other pairs by contact (rules.py)."""
         return GoalRules.of(level)
 
-    @staticmethod
-    def actions(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
-        """Every valid drop onto the first target's points of interest (actions.py); in the
-        two-ball tier, pairs of such drops (two_balls.py)."""
-        if len(level.players) == 2:
-            return two_balls.candidate_pairs(level, scenario)
-        return actions.drops(level, scenario.interactions[0])
-
-    @staticmethod
-    def noisy(level: PhyreLevel, action, rng: random.Random):
-        return level, actions.noisy(action, rng)
-
-    @staticmethod
-    def nudged(action, step: int):
-        """The balls `step` whole pixels sideways."""
-        return actions.moved(action, lambda ball: (step, 0))
-
-    @staticmethod
-    def random_action(level: PhyreLevel, rng: random.Random):
-        return actions.random_action(level, rng)
-
-    @staticmethod
-    def neighbours(action) -> list:
-        return actions.neighbours(action)
-
-    @staticmethod
-    def valid(level: PhyreLevel, action) -> bool:
-        return actions.valid(level, action)
-
-    @staticmethod
-    def with_solution(level: PhyreLevel, solution) -> PhyreLevel:
-        return attrs.evolve(level, solutions=(solution,))
-
-    @staticmethod
-    def emit_level(level: PhyreLevel) -> str:
-        """The task in PHYRE's task structure, as JSON (task_file.py)."""
-        return task_json(level)
-
-    @staticmethod
-    def benchmark_files(tasks) -> dict[str, bytes]:
-        """PHYRE's own benchmark files beside the dataset (benchmark.py)."""
-        from physc_phyre.benchmark import benchmark_files
-
-        return benchmark_files(tasks)
-
     def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
         """PHYRE's AUCCESS of `agent` on the folds of a generated benchmark (agents.py)."""
         from physc_phyre.agents import score
 
         return score(self, folder, agent, setup, folds, split)
 
-    def picture(self, task, fmt: str = "png") -> bytes:
-        """The scene in PHYRE's look with the red ball of the solution and the paths it makes;
-        a placed layout as the level it becomes."""
-        from physc_phyre.picture import picture
-
-        if fmt not in FORMATS:
-            raise MissingCapability(self.name, (f"picture in {fmt}",), f"--png as {fmt}")
-        if isinstance(task, ConcreteLayout):
-            return picture(level_from_layout(task, None), f"{task.scenario} (seed {task.seed})", None, None, fmt)
-        trace = self.play(task.level, task.solution, recognise=False)
-        title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return picture(task.level, title, task.solution, trace.paths(threshold=0.5), fmt)
 
 
 @functools.lru_cache(maxsize=64)

@@ -90,7 +90,7 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
         raise ValueError(f"no split '{split}' (PHYRE's: {', '.join(SPLITS)})")
     seen = observations(folder)
     files = {row["task_id"]: row["task"] for row in _rows(folder)}
-    classes = {c.__name__: c for c in domain.level_classes}
+    classes = {c.__name__: c for c in domain.files.level_classes}
     setups = json.loads((folder / "phyre" / "folds.json").read_text())
     if setup not in setups:
         raise DomainError(

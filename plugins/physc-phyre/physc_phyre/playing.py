@@ -70,7 +70,7 @@ class PhyrePlaying(Playing):
         if len(vector) != SIZES[mode]:
             raise ValueError(f"an action of the {mode} tier has {SIZES[mode]} numbers, not {len(vector)}")
         played = from_unit(vector)
-        return played if played is not None and domain.valid(level, played) else None
+        return played if played is not None and domain.actions.valid(level, played) else None
 
     def features(self, domain, level) -> np.ndarray:
         return observation.features(json.loads(task_json(level))).astype(np.float32)

@@ -88,13 +88,13 @@ def task_level(path: str):
         raise ValueError(f"{path} is not a task of the domain '{DOMAIN.name}'")
     try:
         domain = bound(DOMAIN, task.get("world") or None, task.get("backend") or None)
-        level = from_data(task["level"], {cls.__name__: cls for cls in DOMAIN.level_classes})
+        level = from_data(task["level"], {cls.__name__: cls for cls in DOMAIN.files.level_classes})
     except (WorldError, BackendError) as error:
         raise ValueError(f"{path}: {error}") from None
     except (TypeError, ValueError, AttributeError, KeyError, RecursionError) as error:
         raise ValueError(f"{path}: its level cannot be read: {error or type(error).__name__}") from None
-    if not isinstance(level, DOMAIN.level_classes[0]):
-        raise ValueError(f"{path}: its level is not a {DOMAIN.level_classes[0].__name__}")
+    if not isinstance(level, DOMAIN.files.level_classes[0]):
+        raise ValueError(f"{path}: its level is not a {DOMAIN.files.level_classes[0].__name__}")
     return domain, level
 
 

@@ -18,14 +18,14 @@ TASKS = [DATA / "balls_00000.json", DATA / "ramp_00011.json"]  # two balls by PH
 
 def _actions(domain, level, count):
     _, placed = acceptance_chunk(1, 0)
-    return [a for a in placed[: 6 * count] if domain.valid(level, a)][:count]
+    return [a for a in placed[: 6 * count] if domain.actions.valid(level, a)][:count]
 
 
 @pytest.mark.parametrize("path", TASKS, ids=lambda p: p.stem)
 def test_playouts_of_the_pool_say_what_the_full_runs_say(path):
     task = load_task(path)
     domain = domain_of(task)
-    actions = _actions(domain, task.level, 60) + [domain.action_of(task.solution)]
+    actions = _actions(domain, task.level, 60) + [domain.actions.action_of(task.solution)]
     solved = 0
     for action in actions:
         trace = domain.play(task.level, action, recognise=False)

@@ -289,8 +289,8 @@ def test_may_be_trivial_reaches_the_level_and_its_rule(tmp_path):
 def test_a_solution_the_finished_level_makes_invalid_is_not_kept(tmp_path, monkeypatch):
     """The finished level (obstacles, distractors, objects moved) may occlude the intended
     ball: the search checks the action on it, with or without PHYRE's acceptance."""
-    from physc_phyre import Phyre
+    from physc_phyre import PhyreActions
 
-    monkeypatch.setattr(Phyre, "valid", staticmethod(lambda level, action: False))
+    monkeypatch.setattr(PhyreActions, "valid", lambda self, level, action: False)
     status, _, err = physc("compile", LEDGE, "--seed", "1", "--no-acceptance", "--layouts", "2", "-o", tmp_path / "t.json")
     assert status == 3 and "the solution is not a valid action in the finished level" in err

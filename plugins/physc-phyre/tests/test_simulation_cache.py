@@ -97,7 +97,7 @@ def test_the_statuses_are_the_domains(dataset):
     from physc.serialize import from_data
 
     rows = pq.read_table(dataset / "phyre" / "tasks.parquet", columns=["task_id", "task", "tier"]).to_pylist()
-    classes = {c.__name__: c for c in DOMAIN.level_classes}
+    classes = {c.__name__: c for c in DOMAIN.files.level_classes}
     for row in rows:
         loaded = joblib.load(path(dataset, simulation_cache.TIERS[row["tier"]]))
         level = from_data(json.loads((dataset / row["task"]).read_text())["level"], classes)

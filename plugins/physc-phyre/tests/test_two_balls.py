@@ -41,15 +41,15 @@ def test_six_numbers_are_read_as_phyres_two_ball_mapper_reads_them():
 
 def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
     far = TwoBallAction(BallAction(40, 200, 8), BallAction(200, 200, 8))
-    assert DOMAIN.valid(TWO, far) and not DOMAIN.valid(ONE, far)
-    assert DOMAIN.valid(ONE, far.first)
-    assert DOMAIN.valid(TWO, far.first)  # the ball tier's action: PHYRE judges a two-ball task by one ball too
+    assert DOMAIN.actions.valid(TWO, far) and not DOMAIN.actions.valid(ONE, far)
+    assert DOMAIN.actions.valid(ONE, far.first)
+    assert DOMAIN.actions.valid(TWO, far.first)  # the ball tier's action: PHYRE judges a two-ball task by one ball too
     # Apart is PHYRE's mapper's test, before it rounds to pixels: a pair that close is never
     # placed (from_unit), and one placed and then rounded closer is simulated as PHYRE does.
     assert actions.from_unit((40 / 255, 200 / 255, 6 / 30, 56 / 255, 200 / 255, 6 / 30)) is None  # 16 px apart, 17 needed
-    assert DOMAIN.valid(TWO, TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8)))
+    assert DOMAIN.actions.valid(TWO, TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8)))
     on_the_ledge = TwoBallAction(BallAction(40, 200, 8), BallAction(128, 62, 8))
-    assert not DOMAIN.valid(TWO, on_the_ledge)  # the second ball occludes the ledge
+    assert not DOMAIN.actions.valid(TWO, on_the_ledge)  # the second ball occludes the ledge
     with pytest.raises(ValueError, match="places 1 red balls"):
         DOMAIN.scene(ONE, far)  # more balls than the level's tier places are refused, not cut
     assert len(DOMAIN.scene(TWO, far.first).bodies) == len(DOMAIN.scene(TWO, far).bodies) - 1  # one ball: the ball tier's play
@@ -57,11 +57,11 @@ def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
 
 def test_random_actions_and_neighbours_are_phyres_for_two_balls():
     rng = random.Random(0)
-    drawn = [DOMAIN.random_action(TWO, rng) for _ in range(200)]
+    drawn = [DOMAIN.actions.random_action(TWO, rng) for _ in range(200)]
     assert all(isinstance(a, TwoBallAction) and actions.apart(*a.balls) for a in drawn)
-    assert all(isinstance(DOMAIN.random_action(ONE, rng), BallAction) for _ in range(20))
+    assert all(isinstance(DOMAIN.actions.random_action(ONE, rng), BallAction) for _ in range(20))
     pair = drawn[0]
-    moved = DOMAIN.neighbours(pair)
+    moved = DOMAIN.actions.neighbours(pair)
     assert len(moved) == 8
     for n in moved:  # both balls moved together, by half a pixel (_yield_user_input_neighborhood)
         (dx1, dy1), (dx2, dy2) = ((b.x - a.x, b.y - a.y) for a, b in zip(pair.balls, n.balls))
@@ -78,7 +78,7 @@ def test_the_acceptance_rule_is_the_tiers():
     # PHYRE's pool: a two-ball task is judged by one ball too (valid there), in PHYRE's order
     first = DOMAIN.action_pool(TWO, "ball", 0, 10)[:3]
     assert all(isinstance(a, BallAction) for a in first) and DOMAIN.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.action_pool(TWO, "two_balls", 0, 10)[0]
-    assert any(DOMAIN.valid(TWO, a) for a in first)
+    assert any(DOMAIN.actions.valid(TWO, a) for a in first)
     # `mayBeTrivial()`: the template's search_params exclude no flag (PHYRE's 00000, 00003, …)
     assert ball.excluded == ("TRIVIAL",) and DOMAIN.acceptance_of(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
 
@@ -87,7 +87,7 @@ def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
     pair = TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12))
     trace = DOMAIN.play(TWO, pair, recognise=False)
     assert {"first", "second"} <= set(trace.names)
-    task = json.loads(task_json(DOMAIN.with_solution(TWO, pair)))
+    task = json.loads(task_json(DOMAIN.files.with_solution(TWO, pair)))
     assert task["tier"] == "TWO_BALLS"
     assert [b["radius"] for b in task["solutions"][0]["balls"]] == [8.0, 12.0]
     assert task["physc"]["actions"] == [list(pair.unit())]
@@ -98,8 +98,8 @@ def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
 
 
 def test_the_benchmark_keeps_six_numbers_and_splits_each_tier_on_its_own():
-    one = json.loads(task_json(DOMAIN.with_solution(ONE, BallAction(120, 120, 8))))
-    two = json.loads(task_json(DOMAIN.with_solution(TWO, TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12)))))
+    one = json.loads(task_json(DOMAIN.files.with_solution(ONE, BallAction(120, 120, 8))))
+    two = json.loads(task_json(DOMAIN.files.with_solution(TWO, TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12)))))
     assert len(benchmark._action(one)) == 3 and len(benchmark._action(two)) == 6
     ids = [f"{t:05d}:{i:03d}" for t in range(10) for i in range(5)]
     tiers = {task: "BALL" if task < "00005" else "TWO_BALLS" for task in ids}

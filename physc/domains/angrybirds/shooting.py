@@ -1,0 +1,87 @@
+"""Science Birds' actions (`AngryBirds.actions`): the birds' shots. The paper's candidate shots,
+each later bird's aimed where the shots before left the level, the noise of a replay (objects
+jittered, the release angle), the release angle turned in steps, and a task file's record of
+the shots with what Phy-Q's agents send for them (shots.py, agent_action.py)."""
+
+from __future__ import annotations
+
+import random
+
+from physc.domains.actions import Actions
+from physc.domains.angrybirds.vocabulary import VOCABULARY
+
+NUDGE_STEP = 0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
+
+
+class ScienceBirdsActions(Actions):
+    """The birds' shots in the bound domain's world."""
+
+    @staticmethod
+    def starts(scenario) -> tuple[int, ...]:
+        """The interactions at which a later bird's shot starts (shots.py)."""
+        from physc.domains.angrybirds.shots import shot_starts
+
+        return shot_starts(scenario, VOCABULARY.player)
+
+    @staticmethod
+    def resumes(action) -> bool:
+        """The game's run goes on from a snapshot for one untapped shot (`play` passes it on)."""
+        from physc.domains.angrybirds.shots import simple
+
+        return simple(action)
+
+    def candidates(self, level, scenario, start: int = 0, before=None, after=None) -> list:
+        """The paper's candidate shots: at the points of interest of what the bird's shot starts
+        by hitting (the first bird's, or with `before`, the next bird's at interaction `start`,
+        where the play of `before`, `after`, left it; tapped at a few points of its flight where
+        the scenario taps it: shots.py)."""
+        from physc.domains.angrybirds.shots import candidates, where_left
+
+        return candidates(self.domain, level if after is None else where_left(level, after), scenario, start, before)
+
+    def noisy(self, level, action, rng: random.Random):
+        """The noise of every noisy replay (the search's, `physc verify`'s, the evaluation's):
+        blocks and pigs jittered, then the release angle (noise.py)."""
+        from physc.domains.angrybirds import shots
+        from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
+
+        noisy = jitter(level, rng)
+        return noisy, shots.noisy(action, self.domain.world, rng, ANGLE_SIGMA)
+
+    def nudged(self, action, step: int):
+        """The last shot turned by `step` × NUDGE_STEP degrees."""
+        from physc.domains.angrybirds import shots
+
+        return shots.nudged(action, self.domain.world, step, NUDGE_STEP)
+
+    def solution(self, label: str, action):
+        """Version 1's Solution for one untapped red shot, else a ShotsSolution (shots.py)."""
+        from physc.domains.angrybirds import shots
+
+        return shots.solution(label, action, self.domain.world)
+
+    def contrasted(self, level, action, counterpart: str, contrast: str):
+        """The shot at the counterpart aimed at the same point of the contrast (shots.py)."""
+        from physc.domains.angrybirds import shots
+
+        return shots.contrasted(self.domain, level, action, counterpart, contrast)
+
+    def played_as(self, level, solution):
+        """The solution with the shots Phy-Q's agents send for it: for each, the whole-pixel drag
+        from the slingshot whose launch is nearest its release angle (agent_action.py), that
+        launch's angle, and its tap in milliseconds."""
+        from physc.domains.angrybirds import shots
+
+        return shots.played_as(level, solution)
+
+    @staticmethod
+    def sent_action(solution):
+        from physc.domains.angrybirds import shots
+
+        return shots.sent_action(solution)
+
+    @staticmethod
+    def action_of(solution):
+        from physc.domains.angrybirds import shots
+
+        return shots.action_of(solution)
