@@ -2,7 +2,7 @@
 
 Reads task files (`physc compile … --task FILE`; drafts made with `--no-acceptance` do, as
 the verdict is judged here, not read from the file) and judges each as the search does
-(physc.generation.acceptance.verdict: PHYRE's rule on PHYRE's pool of random actions), in
+(the PHYRE-like domain's `evaluation.acceptance`, physc_phyre.acceptance: PHYRE's rule on PHYRE's pool of random actions), in
 this process, one after another. Prints one JSON line per task (its verdict's record and
 the seconds and simulations it took) and a total line; the verdicts are what a change to
 the simulation must leave the same, so two checkouts are compared by their lines (the
@@ -56,14 +56,13 @@ def make(folder: Path) -> list[Path]:
 
 def judge(path: Path) -> dict:
     from physc.api import domain_of, load_task
-    from physc.generation.acceptance import verdict
 
     task = load_task(path)
     domain = domain_of(task)
     action = domain.actions.action_of(task.solution)
     counter = Counter()
     started = time.perf_counter()
-    judged = verdict(domain, task.level, "", action, counter)
+    judged = domain.evaluation.acceptance(task.level, action, lambda a: counter.run(lambda: domain.playout(task.level, a, to_end=False)).solved)
     seconds = time.perf_counter() - started
     return {"task": path.name, "seconds": round(seconds, 3), "plays": counter.simulations, "verdict": judged.record() if judged else None}
 

@@ -44,7 +44,7 @@ def cmd_agent(args) -> int:
         raise UsageError(f"{folder}: {error.message}") from None
     try:
         agent = load(args.agent)
-        scored = domain.score_agent(folder, agent, args.setup, range(args.folds), args.split)
+        scored = domain.evaluation.score_agent(folder, agent, args.setup, range(args.folds), args.split)
     except AgentError as error:
         print(f"physc eval: error: {error}", file=sys.stderr)
         return EXIT_INPUT

@@ -70,6 +70,6 @@ def make(job: Job) -> dict:
     )
     if job.accidental:
         rng = random.Random(f"physc-generate/{job.scenario}/{job.seed}")
-        row.update(domain.accidental(task.level, scenario, task.solution, rng))
+        row.update(domain.evaluation.accidental(task.level, scenario, task.solution, rng))
     row.update(generation_seconds=seconds, seconds=task.seconds)
     return {"row": row, "files": files}

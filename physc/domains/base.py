@@ -16,7 +16,9 @@ of promise:
   `read_level` and `draw`. No default could be right for another domain, so the base class has
   none; a domain that lacks them still loads and checks, and a command that needs one refuses
   before any work with E0703, naming the domain and what it lacks (`missing`, `require`).
-  `reach_targets`, `reachable`, `robustness_replays` and `accidental` have working defaults.
+  `reach_targets`, `reachable`, `robustness_replays` and the evaluation (`evaluation`,
+  physc.domains.evaluation: acceptance, the accidental agent, scored agents) have working
+  defaults.
 * **Worlds**: a domain names the worlds it simulates (`worlds`, physc.worlds.World) and its
   default; `at(world, backend)` binds a copy to one world and one physics engine, which then
   pass down with the domain to every simulation (`world`, `backend`).
@@ -33,6 +35,7 @@ import copy
 from typing import TYPE_CHECKING
 
 from physc.domains.errors import DomainError, LevelError, MissingCapability
+from physc.domains.evaluation import Evaluation
 from physc.domains.level_files import LevelFiles
 from physc.domains.part import part
 from physc.domains.vocabulary import Vocabulary
@@ -57,9 +60,8 @@ CAPABILITIES = (
     "layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability", "read_level", "draw",
 )  # no default
 DEFAULTS = (
-    "reach_targets", "reachable", "robustness_replays", "accidental", "measures", "score_agent", "worlds", "default_world", "at", "world", "backend",
-    "playing", "files",
-)  # working defaults (score_agent's: no agent is scored, MissingCapability)
+    "reach_targets", "reachable", "robustness_replays", "worlds", "default_world", "at", "world", "backend", "playing", "files", "evaluation",
+)  # working defaults
 FILES = ("emit_level", "picture", "read_level", "draw")  # the capabilities that are members of `files`
 
 # What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
@@ -221,6 +223,11 @@ class Domain(abc.ABC):
     pictures, its task files' values; `emit_level`, `picture`, `read_level` and `draw` are
     capabilities among them, declared in `capabilities`."""
 
+    evaluation = part(Evaluation)
+    """The domain's evaluation (physc.domains.evaluation): the benchmark's rule for keeping a
+    task, the agent that measures accidental solvability, agents scored on a dataset
+    (`score_agent`, a capability), and what its measurements mean."""
+
     # --- generation: working defaults ------------------------------------------
 
     robustness_replays: int | None = None
@@ -231,22 +238,6 @@ class Domain(abc.ABC):
     playing: Playing | None = None
     """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
     Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
-
-    measures: str = ""
-    """What the domain's evaluation measures mean (stability's limit, the noise, the agent),
-    a few sentences for the report of `physc eval`."""
-
-    def accidental(self, level, scenario: ScenarioIR, solution, rng) -> dict:
-        """The evaluation's accidental solvability of a task: a dict of figures for its record
-        (`accidental`: the fraction of an agent's plays that solve it, None when it found
-        none; `agent_plays`; optionally `auccess`). Default: {} (no agent: not measured)."""
-        return {}
-
-    def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
-        """An agent (a Python callable) scored on a dataset of this domain made by `physc
-        generate` (`physc eval --agent`; PHYRE: AUCCESS on its folds): a dict for the report,
-        with `auccess`, the mean over `folds`. Default: the domain scores no agent."""
-        raise MissingCapability(self.name, ("score_agent",), "physc eval --agent")
 
     def reach_targets(self, scenario: ScenarioIR) -> list[str]:
         """The objects the player's action must reach directly (angrybirds: the first hit's

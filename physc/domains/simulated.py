@@ -27,11 +27,6 @@ stability, the replays of `physc verify` and the evaluation's measurements
 
 from __future__ import annotations
 
-import itertools
-import math
-import random
-from collections.abc import Iterable
-
 from physc.domains.base import Domain, MissingCapability
 from physc.domains.actions import Actions
 from physc.domains.part import part
@@ -44,20 +39,12 @@ from physc.simulation.trace import Playout, Trace
 
 # What a simulated domain must write for generation (checked before `satisfy` runs).
 HOOKS = ("level_from_layout", "scene", "actions")
-AGENT_ATTEMPTS = 100  # the random agent's valid attempts per task (PHYRE's evaluation)
-AGENT_DRAWS = 100_000  # draws it may make to find them (PHYRE samples from 100,000 actions)
 
 
-def auccess(first_solved: int | None, attempts: int = AGENT_ATTEMPTS) -> float:
-    """PHYRE's AUCCESS of one task for an agent that first solved it at attempt
-    `first_solved` (1-based; None: never): Σ_k w_k s_k / Σ_k w_k with w_k = ln(k+1) − ln k,
-    s_k = 1 from that attempt on. The mean over tasks is the AUCCESS of the set."""
-    if first_solved is None or first_solved > attempts:
-        return 0.0
-    weights = sum(math.log(k + 1) - math.log(k) for k in range(first_solved, attempts + 1))
-    return weights / math.log(attempts + 1)
-
-
+def search_needs(domain: SimulatedDomain) -> tuple[str, ...]:
+    """The hooks the search needs that a simulated domain must write (E0703 before any work if it
+    lacks one): a domain with a game of its own declares `play` and needs no `scene`."""
+    return tuple(h for h in HOOKS if not ("play" in domain.capabilities and h == "scene"))
 class SimulatedDomain(Domain):
     """The base class of a one-action domain (module docstring): the generation, replay and
     measurement hooks of `Domain` from a few of its own."""
@@ -115,22 +102,6 @@ class SimulatedDomain(Domain):
         object per run, as rules keep the run's state."""
         return RunRules()
 
-    acceptance = None
-    """The benchmark's rule for keeping a task by how random actions fare in it, a
-    physc.generation.acceptance.Acceptance (PHYRE: GOOD_STABLE and not TRIVIAL); None:
-    every task the search finds is kept."""
-
-    def acceptance_of(self, level):
-        """The acceptance rule for `level` (the default: `acceptance` for every level; PHYRE's
-        depends on the level's action tier)."""
-        return self.acceptance
-
-    def action_pool(self, level, tier: str, chunk: int, size: int) -> list:
-        """The first `size` actions of chunk `chunk` (0, 1, …) of the benchmark's fixed pool
-        of random actions of `tier`, which its acceptance rule judges a task by (PHYRE:
-        chunks of 10,000, drawn as PHYRE draws them). Needed with an `acceptance` rule."""
-        raise MissingCapability(self.name, ("action_pool",), "judging a task by the benchmark's random actions")
-
     # ---- what the search asks, with defaults ----------------------------------------------
     actions = part(Actions)
     """The player's actions (physc.domains.actions): the candidates, their noise, the line the
@@ -182,37 +153,3 @@ class SimulatedDomain(Domain):
             return stable(play_scene(self.scene(level, None), self.backend, RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
         alone = self.play(level, None, recognise=False)
         return not alone.solved, stable(alone, self.stable_limit)[1]
-
-    def search_hooks(self) -> tuple[str, ...]:
-        """The hooks the search needs that this domain must write (E0703 before any work if it
-        lacks one): a domain with a game of its own declares `play` and needs no `scene`."""
-        return tuple(h for h in HOOKS if not ("play" in self.capabilities and h == "scene"))
-
-    def attempts(self, level, actions: Iterable, until_solved: bool = False) -> list[bool]:
-        """An agent's attempts at `level`, as PHYRE's evaluator counts them: whether each of
-        the first AGENT_ATTEMPTS valid actions of `actions` solves it (None or an invalid
-        action is not an attempt; AGENT_DRAWS actions are read at most); with
-        `until_solved`, none after the first that solves it."""
-        outcomes: list[bool] = []
-        for action in itertools.islice(actions, AGENT_DRAWS):
-            if len(outcomes) == AGENT_ATTEMPTS:
-                break
-            if action is None or not self.actions.valid(level, action):
-                continue
-            outcomes.append(self.playout(level, action, to_end=False).solved)
-            if until_solved and outcomes[-1]:
-                break
-        return outcomes
-
-    def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
-        """The random agent (PHYRE's evaluation): up to AGENT_ATTEMPTS valid actions drawn
-        from `rng`, each played; the fraction that solve the level, and the task's AUCCESS.
-        Empty when the domain has no random agent."""
-        if "random_action" not in self.capabilities:  # no random agent
-            return {}
-        actions = self.actions
-        outcomes = self.attempts(level, iter(lambda: actions.random_action(level, rng), None))
-        if not outcomes:
-            return {"accidental": None, "agent_plays": 0}
-        first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)
-        return {"accidental": round(sum(outcomes) / len(outcomes), 5), "agent_plays": len(outcomes), "auccess": round(auccess(first), 5)}

@@ -262,8 +262,8 @@ def _definitions(domains: list[str]) -> list[str]:
     for name in domains:
         if name == "angrybirds":
             lines += list(ANGRYBIRDS_DEFINITIONS)
-        elif load_domain(name).measures:
-            lines.append(f"Definitions ({name}): {load_domain(name).measures}")
+        elif load_domain(name).evaluation.measures:
+            lines.append(f"Definitions ({name}): {load_domain(name).evaluation.measures}")
     lines.append("Metrics are over the generated tasks; generation ran with the final validation skipped, as in the paper.")
     return lines
 

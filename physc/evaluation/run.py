@@ -86,7 +86,7 @@ def evaluate(job: Job) -> dict:
         intended_noisy=replay["noisy_solved"],
         fidelity_exact=replay["exact_faithful"],
         fidelity_noisy=replay["noisy_faithful"],
-        **domain.accidental(task.level, scenario, task.solution, rng),
+        **domain.evaluation.accidental(task.level, scenario, task.solution, rng),
         trace=replay["trace"],
         solution=to_data(task.solution),
         level=to_data(task.level),

@@ -65,7 +65,7 @@ class LayoutLoop:
     # A second backend the solution must also pass in (--verify-backend): the recorded
     # solution and as many noisy replays as the generator's own acceptance asked for.
     verify_backend: str | None = None
-    # Whether the domain's acceptance rule judges each task (physc.generation.acceptance).
+    # Whether the domain's acceptance rule judges each task (the domain's `evaluation.acceptance`).
     acceptance: bool = True
 
     def satisfy(self, layout, accept: int | None = None):

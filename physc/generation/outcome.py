@@ -24,7 +24,7 @@ class Parts:
     repairs: tuple[str, ...]
     obstacles: tuple[str, ...]
     distractors: tuple[str, ...]
-    acceptance: dict | None = None  # what random actions showed (physc.generation.acceptance), if the domain has a rule
+    acceptance: dict | None = None  # what random actions showed (the domain's evaluation's `acceptance`), if the domain has a rule
     margins: dict | None = None  # the links' margins: the weakest over the noisy replays, each as played (search.margins_record)
 
 

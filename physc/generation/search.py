@@ -17,7 +17,7 @@ and the `Ledger` it writes (the simulations, how far the chain got, what noise b
    player) and against shortcuts, kept only if the solution still holds up.
 4. **Stability** of the level, **distraction**, **contrasts** (contrasts.py: the action aimed at
    a contrast does not solve the task), **validation** (unless told not to), and the domain's
-   **acceptance** rule (acceptance.py, PHYRE's).
+   **acceptance** rule (its evaluation's `acceptance`: PHYRE's, in the plugin).
 
 Every simulation goes through the ledger's Evaluator, which counts it: the figure
 generation's cost is measured in. Noise is drawn from generators named after the action's
@@ -29,8 +29,8 @@ from __future__ import annotations
 import time
 
 from physc.domains.base import require
+from physc.domains.simulated import search_needs
 from physc.generation import guards, settings
-from physc.generation.acceptance import verdict
 from physc.generation.chain import Node, chain
 from physc.generation.contrasts import contrasts
 from physc.generation.outcome import Outcome, Parts
@@ -43,7 +43,7 @@ def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | 
     """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
     or why not; `accept`: the noisy replays a solution must pass (default: all of them);
     `acceptance`: whether the domain's acceptance rule judges the task."""
-    require(domain, domain.search_hooks(), "generating a task")
+    require(domain, search_needs(domain), "generating a task")
     replays_run = domain.robustness_replays or 0
     problem = Problem.of(domain, scenario, layout, replays_run if accept is None else accept, validate, acceptance)
     return search(problem, Ledger(), rng)
@@ -90,7 +90,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     if not domain.actions.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
         return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
-    judged = verdict(domain, level, attempt.label, attempt.action, ledger.evaluator) if problem.acceptance else None
+    judged = domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)) if problem.acceptance else None
     if judged is not None and not judged.accepted:
         why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
         return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))
@@ -140,3 +140,9 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
         lost=lost_links(ledger), weakest=ledger.weakest,
         furthest=None if furthest is None else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action, problem.placed),
     )
+
+
+def solves(domain, level, action, ledger: Ledger) -> bool:
+    """Whether `action` solves `level`: one play of the benchmark's acceptance, counted by the
+    search's evaluator within its budget."""
+    return ledger.evaluator.run(lambda: domain.playout(level, action, to_end=False)).solved

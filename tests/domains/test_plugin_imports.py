@@ -57,15 +57,16 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # issue 64's jar that comes to its ball (PHYRE's 00005, 00010) and issue 65's declared
     # capabilities, 1,810 with its search and files as parts); PHYRE's own formats, pools, simulation cache, folds
     # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), and how
-    # agents play them (playing.py: PHYRE's action, features and picture, issue 55), are
-    # counted apart.
+    # agents play them (playing.py: PHYRE's action, features and picture, issue 55), and PHYRE's
+    # evaluation (its acceptance rule, random agent and AUCCESS, in physc's core until issue 65:
+    # acceptance.py, evaluation.py) are counted apart.
     phyres_own = {
         "phyre_format.py", "observation.py", "folds.py", "benchmark.py", "agents.py", "pool.py", "simulation_cache.py", "cache.py",
-        "playing.py",
+        "playing.py", "acceptance.py", "evaluation.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
     assert sum(n for name, n in counted.items() if name not in phyres_own) <= 1810, counted
-    assert sum(n for name, n in counted.items() if name in phyres_own) <= 1100, counted  # 1,000; 1,100 with playing.py
+    assert sum(n for name, n in counted.items() if name in phyres_own) <= 1550, counted  # 1,000; 1,100 with playing.py; 1,550 with its evaluation
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.
     assert not {"satisfy", "replay", "stability", "accidental", "play"} & set(vars(Phyre))

@@ -14,6 +14,7 @@ from conftest import ROOT, run_physc
 from physc import domains
 from physc.compiler.stages import BY_NAME
 from physc.domains.base import CAPABILITIES, DEFAULTS, FILES, REQUIRED, STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.evaluation import Evaluation
 from physc.domains.level_files import LevelFiles
 
 PLUGINS = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
@@ -160,6 +161,7 @@ def test_the_interface_is_documented_hook_by_hook():
     section = section[: section.index("\n## ", 1)]  # to the next section
     rows = re.findall(r"^\| `(\w+)", section, re.M)
     files = {name for name in dir(LevelFiles) if not name.startswith("_")} - {"domain"}
-    assert set(FILES) <= files and not files & public
-    assert sorted(rows) == sorted(public | {"satisfy"} | files)  # the domain's table, and its files'
+    evaluation = {name for name in dir(Evaluation) if not name.startswith("_")} - {"domain"}
+    assert set(FILES) <= files and not files & public and not evaluation & public
+    assert sorted(rows) == sorted(public | {"satisfy"} | files | evaluation)  # the domain's table, its files', its evaluation's
     assert set(FILES) <= set(CAPABILITIES)

@@ -4,7 +4,6 @@ placing of a stage's new objects by the one search."""
 
 from __future__ import annotations
 
-import math
 
 import attrs
 import pytest
@@ -13,7 +12,6 @@ from physc.backends import BodySpec, Circle, Compound, Polygon, load_backend
 from physc.backends.settings import EngineSettings
 from physc.compiler.concrete_layout import ChosenRelation, ConcreteLayout, PlacedObject
 from physc.compiler.dimension_graphs import LayoutParameters
-from physc.domains.simulated import auccess
 from physc.simulation.fidelity import Fidelity
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
@@ -93,13 +91,6 @@ def test_touch_is_recognised_for_the_goal_bodies_once_held():
     assert [i.text() for i in trace.interactions][-1] == "touch(ball, shelf)"
     fell = play_scene(attrs.evolve(scene, goal=("ball", "nothing")), load_backend(), Held(("ball", "nothing")), 2.0, RECOGNISER)
     assert not fell.solved and "touch" not in fell.sequence()
-
-
-def test_auccess_weights_early_solutions_as_phyre_does():
-    assert auccess(1) == pytest.approx(1.0)
-    assert auccess(None) == 0.0 and auccess(101) == 0.0
-    assert auccess(100) == pytest.approx((math.log(101) - math.log(100)) / math.log(101))
-    assert auccess(10) == pytest.approx((math.log(101) - math.log(10)) / math.log(101))
 
 
 def test_the_goal_check_speaks_the_domains_words(tmp_path):

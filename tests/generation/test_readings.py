@@ -8,6 +8,7 @@ import attrs
 import pytest
 
 from physc.backends import load_backend
+from physc.domains.actions import Actions
 from physc.domains.angrybirds.damage import Party, Strike
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level import Level, LevelObject
@@ -106,6 +107,7 @@ class ToyDomain:
     recorded only when `decides` is set."""
 
     robustness_replays = 2
+    actions = Actions(None)  # the defaults: the solution is what players send
 
     def __init__(self, world=TOY, decides=True, runs=None):
         self.world, self.decides, self.runs = world, decides, runs if runs is not None else []

@@ -16,6 +16,7 @@ from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.domains.angrybirds.worlds import PHYQ, WORLDS
+from physc.domains.angrybirds.evaluation import ScienceBirdsEvaluation
 from physc.domains.angrybirds.level_files import ScienceBirdsFiles
 from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
 from physc.domains.angrybirds.shooting import ScienceBirdsActions
@@ -46,6 +47,7 @@ class AngryBirds(SimulatedDomain):
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     files = part(ScienceBirdsFiles)  # its level XML, pictures and Phy-Q's level set (level_files.py)
     actions = part(ScienceBirdsActions)  # the birds' shots: candidates, noise, records (shooting.py)
+    evaluation = part(ScienceBirdsEvaluation)  # the paper's heuristic agent (evaluation.py)
     seconds = PLAY_SECONDS
 
     @property
@@ -153,13 +155,6 @@ class AngryBirds(SimulatedDomain):
 
         return stability(self.game(level))
 
-    def accidental(self, level, scenario, solution, rng) -> dict:
-        """The paper's heuristic agent (agent.py): it shoots at everything but the first target."""
-        from physc.domains.angrybirds.agent import accidental
-
-        first = self.reach_targets(scenario)
-        fraction, plays = accidental(self.game(level), first[0] if first else None)
-        return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}
 
 
 DOMAIN = AngryBirds()

@@ -20,27 +20,16 @@ from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.domains.simulated import SimulatedDomain
-from physc.generation.acceptance import Acceptance
 from physc.simulation.scene import Scene
 
 from physc_phyre import actions, two_balls, world
 from physc_phyre.concretize import concretize
+from physc_phyre.evaluation import PhyreEvaluation
 from physc_phyre.files import PhyreFiles
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.rules import GoalRules
 from physc_phyre.vocabulary import VOCABULARY
 from physc_phyre.worlds import PHYRE
-
-# PHYRE's SOLVABILITY_THRESHOLD_PROBS (docs/phyre-sources.md, section 5), by PHYRE's action tier.
-THRESHOLDS = {"ball": 1e-5, "two_balls": 1e-6}
-# A level's tier (task.thrift's `tier`) → the action tier that judges it.
-ACTION_TIERS = {"BALL": "ball", "TWO_BALLS": "two_balls"}
-BALLS = {"ball": 1, "two_balls": 2}  # red balls an action of the tier places
-# PHYRE decides a two-ball task's ball tier first and draws until it is decided: with no
-# stable one-ball solution, BAD_STABLE needs about 150,000 valid attempts (P[X = 0] < 0.05 at
-# twice 1e-5), with one about 237,000; physc allows 30 chunks (300,000 attempts) before it
-# gives the task up.
-BALL_CHUNKS_FOR_TWO_BALLS = 30
 
 __all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
 
@@ -102,14 +91,6 @@ class Phyre(SimulatedDomain):
     layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
     layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
     seconds = world.MAX_STEPS / world.FPS
-    measures = (
-        "stability = PHYRE's acceptance of a scene: left alone for 1,000 steps (16.7 s), it does not solve itself (its "
-        "objects may move at the start, as in PHYRE's templates); intended "
-        "solvability = the recorded action solves the task (exactly; and the share of 10 replays with the ball moved "
-        "σ 0.5 px, PHYRE's half-pixel test of a stable solution); sequence fidelity = the replay realises the declared "
-        "sequence; accidental solvability = the share of 100 valid attempts of PHYRE's random agent (uniform actions, "
-        "occluding ones dropped) that solve the task; AUCCESS = PHYRE's area under the success curve of those attempts."
-    )
     @property
     def playing(self):
         """How agents play its tasks (playing.py; physc/PhyreLike-v0)."""
@@ -117,34 +98,10 @@ class Phyre(SimulatedDomain):
 
         return PLAYING
 
-    acceptance = Acceptance(threshold=THRESHOLDS["ball"], tier="ball")
-    """PHYRE's acceptance of a ball-tier task, decided as PHYRE's eval_task_complexity.py
-    decides it on PHYRE's own pool of random actions (physc.generation.acceptance): done
-    after ≥ 10,000 valid attempts and ≥ 3 stable solutions, kept when GOOD_STABLE (a stable
-    solve rate shown above 1e-5) and not TRIVIAL; and, physc's own addition, its intended
-    solution stable under half-pixel moves."""
-
-    def acceptance_of(self, level: PhyreLevel) -> Acceptance:
-        """The rule of the level's tier: two balls with threshold 1e-6, and the task must not
-        be GOOD_STABLE with one ball (PHYRE's two-ball templates all `reject_ball_solvable`);
-        TRIVIAL allowed where the scenario says `mayBeTrivial()`, as some of PHYRE's
-        templates do."""
-        rule = attrs.evolve(self.acceptance, excluded=()) if level.may_be_trivial else self.acceptance
-        if level.tier == "BALL":
-            return rule
-        tier = ACTION_TIERS[level.tier]
-        ball = attrs.evolve(self.acceptance, max_chunks=BALL_CHUNKS_FOR_TWO_BALLS)
-        return attrs.evolve(rule, threshold=THRESHOLDS[tier], tier=tier, unsolvable_in=(ball,))
-
-    @staticmethod
-    def action_pool(level: PhyreLevel, tier: str, chunk: int, size: int) -> list:
-        """The first `size` actions of chunk `chunk` of PHYRE's acceptance pool of `tier` (pool.py)."""
-        from physc_phyre.pool import acceptance_chunk
-
-        return acceptance_chunk(BALLS[tier], chunk, size)[1]
     actions = part(PhyreActions)  # the red balls placed: candidates, noise, the random agent's draw
     search = part(PhyreSearch)  # the search's hooks: the trace's scale, distractors
     files = part(PhyreFiles)  # PHYRE's task structure, its benchmark files, pictures (files.py)
+    evaluation = part(PhyreEvaluation)  # PHYRE's acceptance, random agent and AUCCESS, agents scored (evaluation.py)
     stable_limit = 0.5 / world.PIXELS_PER_METRE  # half a pixel, in metres: the trace's unit
     still_start = False  # PHYRE's scenes may move before the action; one left alone must not solve itself
 
@@ -172,11 +129,6 @@ class Phyre(SimulatedDomain):
         """PHYRE's goal: two balls touch by its distance rule, other pairs by contact (rules.py)."""
         return GoalRules.of(level)
 
-    def score_agent(self, folder, agent, setup: str, folds, split: str) -> dict:
-        """PHYRE's AUCCESS of `agent` on the folds of a generated benchmark (agents.py)."""
-        from physc_phyre.agents import score
-
-        return score(self, folder, agent, setup, folds, split)
 
 
 

@@ -28,9 +28,9 @@ rule decides: after `max_chunks` chunks (PHYRE draws until its rule decides, up 
 `screen` attempts is above `trivial` beyond doubt (`give_up`: the exact interval at that
 level lies above it). The record says which.
 
-A domain states its rule as `acceptance` (an `Acceptance`; None: every task is kept; per
-level, `acceptance_of`), its pool as `action_pool(level, tier, chunk, size)` and the
-neighbourhood of an action as `neighbours` (physc.domains.simulated.SimulatedDomain).
+The PHYRE-like domain states its rule per level (evaluation.py, `PhyreEvaluation.rule`), its
+pool as PHYRE's (pool.py) and the neighbourhood of an action as its actions' `neighbours`; physc's
+search asks for the verdict through the domain's evaluation (physc.domains.evaluation).
 """
 
 from __future__ import annotations
@@ -337,17 +337,8 @@ def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: C
     return Verdict(True, main, tuple(excluded), plays[0])
 
 
-def verdict(domain, level, label: str, action, evaluator) -> Verdict | None:
-    """`domain`'s verdict on a finished level whose intended action is `action` (`label`
-    names it in messages); None when the domain has no rule. Every play is counted by the
-    search's `evaluator`, whose budget it keeps."""
-    rule = domain.acceptance_of(level)
-    if rule is None:
-        return None
-
-    def solves(candidate) -> bool:
-        return evaluator.run(lambda: domain.playout(level, candidate, to_end=False)).solved
-
-    return judge(
-        rule, action, lambda r, chunk: domain.action_pool(level, r.tier, chunk, r.chunk), lambda a: domain.actions.valid(level, a), solves, domain.actions.neighbours,
-    )
+def verdict(rule: Acceptance, level, action, solves: Callable, pool: Callable, valid: Callable, neighbours: Callable) -> Verdict:
+    """`rule`'s verdict on a finished level whose intended action is `action`: `solves(candidate)`
+    plays one action (within the search's budget), `pool(level, tier, chunk, size)` the pool's
+    chunks, `valid(level, action)` and `neighbours(action)` as the domain's actions say."""
+    return judge(rule, action, lambda r, chunk: pool(level, r.tier, chunk, r.chunk), lambda a: valid(level, a), solves, neighbours)

@@ -15,7 +15,9 @@ action tier (PHYRE reports its ball and two-ball tiers apart) and per template (
 
 from __future__ import annotations
 
+import itertools
 import json
+import math
 import random
 import statistics
 from collections.abc import Callable, Iterable
@@ -24,7 +26,6 @@ from pathlib import Path
 import attrs
 import numpy as np
 from physc.domains.base import DomainError
-from physc.domains.simulated import auccess
 from physc.evaluation.agent import calling
 
 from physc_phyre import observation, phyre_format
@@ -63,9 +64,52 @@ def observations(folder: Path) -> dict[str, Observation]:
     return {t["taskId"]: Observation(t["taskId"], observation.raster(t), observation.features(t), t) for t in shown}
 
 
+AGENT_ATTEMPTS = 100  # an agent's valid attempts per task (PHYRE's evaluation)
+AGENT_DRAWS = 100_000  # draws it may make to find them (PHYRE samples from 100,000 actions)
+
+
+def auccess(first_solved: int | None, attempts: int = AGENT_ATTEMPTS) -> float:
+    """PHYRE's AUCCESS of one task for an agent that first solved it at attempt
+    `first_solved` (1-based; None: never): Σ_k w_k s_k / Σ_k w_k with w_k = ln(k+1) − ln k,
+    s_k = 1 from that attempt on. The mean over tasks is the AUCCESS of the set."""
+    if first_solved is None or first_solved > attempts:
+        return 0.0
+    weights = sum(math.log(k + 1) - math.log(k) for k in range(first_solved, attempts + 1))
+    return weights / math.log(attempts + 1)
+
+
+def attempts(domain, level, actions: Iterable, until_solved: bool = False) -> list[bool]:
+    """An agent's attempts at `level`, as PHYRE's evaluator counts them: whether each of the first
+    AGENT_ATTEMPTS valid actions of `actions` solves it (None or an invalid action is not an
+    attempt; AGENT_DRAWS actions are read at most); with `until_solved`, none after the first
+    that solves it."""
+    outcomes: list[bool] = []
+    for action in itertools.islice(actions, AGENT_DRAWS):
+        if len(outcomes) == AGENT_ATTEMPTS:
+            break
+        if action is None or not domain.actions.valid(level, action):
+            continue
+        outcomes.append(domain.playout(level, action, to_end=False).solved)
+        if until_solved and outcomes[-1]:
+            break
+    return outcomes
+
+
+def random_attempts(domain, level, rng: random.Random) -> dict:
+    """PHYRE's random agent on one task: up to AGENT_ATTEMPTS valid actions drawn from `rng`,
+    each played; the fraction that solve it, and the task's AUCCESS (the evaluation's
+    accidental solvability)."""
+    drawn = domain.actions
+    outcomes = attempts(domain, level, iter(lambda: drawn.random_action(level, rng), None))
+    if not outcomes:
+        return {"accidental": None, "agent_plays": 0}
+    first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)
+    return {"accidental": round(sum(outcomes) / len(outcomes), 5), "agent_plays": len(outcomes), "auccess": round(auccess(first), 5)}
+
+
 def first_solved(domain, level, seen: Observation, agent: Callable) -> int | None:
     """The valid attempt (1-based) at which `agent`'s actions first solve the task, if any
-    (SimulatedDomain.attempts, PHYRE's counting); the agent's own failures are its own."""
+    (`attempts`, PHYRE's counting); the agent's own failures are its own."""
 
     def actions():
         with calling(f"on task {seen.task_id}"):
@@ -77,7 +121,7 @@ def first_solved(domain, level, seen: Observation, agent: Callable) -> int | Non
                 return
             yield from_unit(action)
 
-    outcomes = domain.attempts(level, actions(), until_solved=True)
+    outcomes = attempts(domain, level, actions(), until_solved=True)
     return len(outcomes) if outcomes and outcomes[-1] else None
 
 

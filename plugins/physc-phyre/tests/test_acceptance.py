@@ -1,14 +1,15 @@
-"""A benchmark's acceptance of a task by its pool of random actions (physc.generation.acceptance):
+"""A benchmark's acceptance of a task by its pool of random actions (physc_phyre.acceptance):
 PHYRE's flags and stopping rule, the same verdict as PHYRE's full evaluation with fewer
 simulations, and the give-ups."""
 
 from __future__ import annotations
 
+import math
 import random
 
 import pytest
 
-from physc.generation.acceptance import Acceptance, done, evaluate, flags, judge, outcome
+from physc_phyre.acceptance import Acceptance, done, evaluate, flags, judge, outcome
 
 # PHYRE's rule at a tenth of its pool, so that a test simulates thousands of actions, not
 # tens of thousands: the thresholds are scaled so that the same binomial tests decide.
@@ -180,3 +181,12 @@ def test_a_template_that_allows_trivial_tasks_keeps_one_after_a_few_plays():
     expected, chunks, full_plays = phyres(rule, World(0.5))
     assert expected and result.chunks == chunks
     assert world.plays < 50 < full_plays
+
+
+def test_auccess_weights_early_solutions_as_phyre_does():
+    from physc_phyre.agents import auccess
+
+    assert auccess(1) == pytest.approx(1.0)
+    assert auccess(None) == 0.0 and auccess(101) == 0.0
+    assert auccess(100) == pytest.approx((math.log(101) - math.log(100)) / math.log(101))
+    assert auccess(10) == pytest.approx((math.log(101) - math.log(10)) / math.log(101))

@@ -136,10 +136,10 @@ def _layout_classes():
 def tenth_of_phyres_pool(monkeypatch):
     """PHYRE's acceptance at a tenth of its pool (chunks of 1,000, ten times the threshold, so
     that the same binomial tests decide), for tests: the full rule costs a minute a task."""
-    from physc_phyre import Phyre
+    from physc_phyre.evaluation import PhyreEvaluation
 
-    rule = attrs.evolve(Phyre.acceptance, threshold=1e-4, chunk=1000, min_valid=1000, screen=100)
-    monkeypatch.setattr(Phyre, "acceptance", rule)
+    rule = attrs.evolve(PhyreEvaluation.ball_rule, threshold=1e-4, chunk=1000, min_valid=1000, screen=100)
+    monkeypatch.setattr(PhyreEvaluation, "ball_rule", rule)
     return rule
 
 
@@ -283,7 +283,7 @@ def test_may_be_trivial_reaches_the_level_and_its_rule(tmp_path):
     )
     assert status == 0, err
     level = load_task(tmp_path / "task.json").level
-    assert level.may_be_trivial and DOMAIN.acceptance_of(level).excluded == ()
+    assert level.may_be_trivial and DOMAIN.evaluation.rule(level).excluded == ()
 
 
 def test_a_solution_the_finished_level_makes_invalid_is_not_kept(tmp_path, monkeypatch):

@@ -71,16 +71,16 @@ def test_random_actions_and_neighbours_are_phyres_for_two_balls():
 def test_the_acceptance_rule_is_the_tiers():
     """PHYRE's SOLVABILITY_THRESHOLD_PROBS by tier, its pool and stopping constants, and its
     two-ball templates' `reject_ball_solvable`."""
-    ball, two = DOMAIN.acceptance_of(ONE), DOMAIN.acceptance_of(TWO)
+    ball, two = DOMAIN.evaluation.rule(ONE), DOMAIN.evaluation.rule(TWO)
     assert (ball.threshold, ball.tier, ball.unsolvable_in) == (1e-5, "ball", ())
     assert (two.threshold, two.tier, two.unsolvable_in) == (1e-6, "two_balls", (attrs.evolve(ball, max_chunks=30),))
     assert (ball.min_valid, ball.min_solutions, ball.chunk, ball.p_value, ball.trivial) == (10_000, 3, 10_000, 0.05, 0.1)
     # PHYRE's pool: a two-ball task is judged by one ball too (valid there), in PHYRE's order
-    first = DOMAIN.action_pool(TWO, "ball", 0, 10)[:3]
-    assert all(isinstance(a, BallAction) for a in first) and DOMAIN.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.action_pool(TWO, "two_balls", 0, 10)[0]
+    first = DOMAIN.evaluation.action_pool(TWO, "ball", 0, 10)[:3]
+    assert all(isinstance(a, BallAction) for a in first) and DOMAIN.evaluation.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.evaluation.action_pool(TWO, "two_balls", 0, 10)[0]
     assert any(DOMAIN.actions.valid(TWO, a) for a in first)
     # `mayBeTrivial()`: the template's search_params exclude no flag (PHYRE's 00000, 00003, …)
-    assert ball.excluded == ("TRIVIAL",) and DOMAIN.acceptance_of(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
+    assert ball.excluded == ("TRIVIAL",) and DOMAIN.evaluation.rule(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
 
 
 def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():

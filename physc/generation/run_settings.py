@@ -1,0 +1,47 @@
+"""The settings of one run that makes a task, as one value: from `physc compile`'s options and
+`physc.compile`'s keywords down to the layout loop, the search and the workers of `physc
+generate` and `physc eval`, under one name each (the option `--time-budget` is the field
+`time_budget` everywhere). A job (physc.generation.job.Job) carries one; a stored result says
+which it was made with (`record`)."""
+
+from __future__ import annotations
+
+import attrs
+
+from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET
+
+
+@attrs.frozen
+class RunSettings:
+    """How one run makes a task (each field is the option of the same name; docs/cli.md)."""
+
+    time_budget: float = TIME_BUDGET
+    """Seconds for the whole run, fallbacks and picture included (`--time-budget`)."""
+    layouts: int = LAYOUT_BUDGET
+    """Placed layouts that simulation may try (`--layouts`)."""
+    clause_budget: int = DEFAULT_NODE_BUDGET
+    """Clause choices the layout search may try per shape draw (`--clause-budget`)."""
+    min_robustness: int | None = MIN_ROBUSTNESS
+    """Noisy replays a fallback must pass at least (`--min-robustness`); None: no fallbacks, a
+    task passes every noisy replay of the domain's `robustness_replays`."""
+    validate: bool = True
+    """Whether a generated task is validated at the end (`--no-validate`: not; the evaluation,
+    as the paper, skips it)."""
+    acceptance: bool = True
+    """Whether the domain's acceptance rule judges each task (`--no-acceptance`: not)."""
+    verify_backend: str | None = None
+    """A second physics backend the task's solution must also pass in (`--verify-backend`)."""
+
+    def robustness(self, domain) -> int:
+        """The noisy replays a solution must pass at least in `domain`: `min_robustness`, or all
+        of the domain's (at least one)."""
+        return self.min_robustness if self.min_robustness is not None else (domain.robustness_replays or 1)
+
+    def record(self) -> dict:
+        """The settings a stored result depends on, by name (a dataset row's and an evaluation
+        record's `settings`)."""
+        return {
+            "time_budget": self.time_budget, "layouts": self.layouts, "min_robustness": self.min_robustness, "validate": self.validate,
+            "acceptance": self.acceptance,
+        }
