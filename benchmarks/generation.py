@@ -24,6 +24,7 @@ from physc.domains import load_domain
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 from physc.generation.pipeline import Pipeline
+from physc.generation.run_settings import RunSettings
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 
@@ -51,7 +52,7 @@ def main() -> None:
         for seed in range(args.seeds):
             start = time.perf_counter()
             try:
-                task = Pipeline(domain, scenario, seed, time_budget=args.time_budget).task
+                task = Pipeline(domain, scenario, seed, RunSettings(time_budget=args.time_budget)).task
                 ok.append(time.perf_counter() - start)
                 simulations.append(task.simulations)
                 stages = stages_by_count.setdefault(count, {})

@@ -23,6 +23,7 @@ from pathlib import Path
 from physc.compiler.infeasible import Infeasible
 from physc.generation import search
 from physc.generation.pipeline import Pipeline
+from physc.generation.run_settings import RunSettings
 from physc.generation.settings import NOT_REALISED
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
@@ -106,7 +107,7 @@ def main() -> None:
 def _task(domain, scenario, seed: int, time_budget: float):
     """The task of one seed, or None where it gives none."""
     try:
-        return Pipeline(domain, scenario, seed, time_budget=time_budget).task
+        return Pipeline(domain, scenario, seed, RunSettings(time_budget=time_budget)).task
     except Infeasible:
         return None
 

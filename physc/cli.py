@@ -103,9 +103,6 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
-        "--budget", type=arguments.count, default=50_000, metavar="N", help="clause choices the layout search may try (default 50000)"
-    )
-    compile_.add_argument(
         "--format", choices=("json", "dot", "xml"),
         help="the printed stage's format: by default its own (a level: the domain's level file; the other stages: json); dot (Graphviz) for graph stages",
     )

@@ -259,7 +259,7 @@ def random_number(rng) -> str:
 
 # The numeric options of each command (physc/cli.py, physc/commands/).
 NUMERIC_OPTIONS = {
-    "compile": ["--seed", "--layouts", "--time-budget", "--budget", "--min-robustness"],
+    "compile": ["--seed", "--layouts", "--time-budget", "--clause-budget", "--min-robustness"],
     "simulate": ["--seconds", "--angle", "--shot"],
     "trace": ["--seconds", "--angle", "--shot"],
     "render": ["--seconds", "--angle", "--shot"],

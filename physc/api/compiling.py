@@ -14,14 +14,14 @@ from pathlib import Path
 
 from physc.api.errors import NoTask, ScenarioError
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
 from physc.diagnostics import Diagnostic, Label
 
 __all__ = ["check", "compile", "scenarios"]
 
 # What would help when a budget ran out (Infeasible.budget names it).
 BUDGET_HELP = {
-    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --budget or another --seed, or simplify the scenario",
+    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --clause-budget or another --seed, or simplify the scenario",
     Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
     Exhausted.TIME: "the time ran out before every layout allowed was tried: more time may help (--time-budget), or another --seed",
     Exhausted.ALLOWED: "every layout the scenario's constraints allow was tried: more time or layouts cannot help; another --seed draws other shapes, or change the scenario (or the world, where one is named above)",
@@ -91,15 +91,16 @@ def check_min_robustness(value: int | None, domain, name: str = "min_robustness"
         raise ValueError(f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}")
 
 
-def pipeline(scenario_ast, ir, domain, seed: int = 0, **settings):
+def pipeline(scenario_ast, ir, domain, seed: int = 0, settings=None, progress=None):
     """The generation pipeline (physc.generation.pipeline.Pipeline) of one checked scenario in
-    `domain` (bound to its world and engine), with the scenario's block form as the task's
-    source; `settings` are Pipeline's keywords."""
+    `domain` (bound to its world and engine) under the run's `settings` (a RunSettings; None:
+    the defaults), with the scenario's block form as the task's source."""
     from physc.dsl import ast
     from physc.dsl.fmt import format_file
     from physc.generation.pipeline import Pipeline
+    from physc.generation.run_settings import RunSettings
 
-    return Pipeline(domain, ir, seed, source=format_file(ast.File((scenario_ast,))), **settings)
+    return Pipeline(domain, ir, seed, settings or RunSettings(), format_file(ast.File((scenario_ast,))), progress)
 
 
 def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
@@ -136,6 +137,7 @@ def compile(  # noqa: A001 - the library's verb is the command's
     backend: str | None = None,
     time_budget: float = TIME_BUDGET,
     layouts: int = LAYOUT_BUDGET,
+    clause_budget: int = CLAUSE_BUDGET,
     validate: bool = True,
     acceptance: bool = True,
     min_robustness: int | None = MIN_ROBUSTNESS,
@@ -159,10 +161,13 @@ def compile(  # noqa: A001 - the library's verb is the command's
     domain = bound(load_domain(ir.domain), world, backend)
     check_min_robustness(min_robustness, domain)
     require(domain, STAGE_NEEDS["task"] + (("replay",) if verify_backend else ()), "compile")
-    run = pipeline(
-        scenario_ast, ir, domain, seed, validate=validate, acceptance=acceptance, layout_budget=layouts, time_budget=time_budget,
-        min_robustness=min_robustness, verify_backend=verify_backend, progress=progress,
+    from physc.generation.run_settings import RunSettings
+
+    settings = RunSettings(
+        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=validate,
+        acceptance=acceptance, verify_backend=verify_backend,
     )
+    run = pipeline(scenario_ast, ir, domain, seed, settings, progress)
     try:
         with run.within_budget("task"):
             return run.task

@@ -16,7 +16,8 @@ from pathlib import Path
 import attrs
 
 from physc.api.errors import FileError, ScenarioError
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+from physc.generation.run_settings import RunSettings
 
 __all__ = ["Dataset", "Evaluation", "evaluate", "generate", "load_dataset"]
 
@@ -104,15 +105,12 @@ def clashes(jobs) -> str | None:
     return f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename"
 
 
-def job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance) -> dict:
-    """The fields of a job (physc.generation.job.Job) that generation's options set, as
-    `physc generate` and `eval` and their functions here name them (None: the default)."""
+def job_settings(world, backend, settings: RunSettings) -> dict:
+    """The fields of a job (physc.generation.job.Job) that generation's options set: where it
+    is made (None: the default world, box2d) and the run's settings."""
     from physc.backends import DEFAULT_BACKEND
 
-    return dict(
-        world=world or "", backend=backend or DEFAULT_BACKEND, time_budget=time_budget, layouts=layouts,
-        min_robustness=min_robustness, verify_backend=verify_backend, acceptance=acceptance,
-    )
+    return dict(world=world or "", backend=backend or DEFAULT_BACKEND, settings=settings)
 
 
 def generation_needs(png: bool, verify_backend: str | None) -> tuple[str, ...]:
@@ -143,6 +141,7 @@ def generate(
     backend: str | None = None,
     time_budget: float = TIME_BUDGET,
     layouts: int = LAYOUT_BUDGET,
+    clause_budget: int = CLAUSE_BUDGET,
     min_robustness: int | None = MIN_ROBUSTNESS,
     verify_backend: str | None = None,
     acceptance: bool = True,
@@ -160,9 +159,12 @@ def generate(
     from physc.dataset.build import build
     from physc.execution import executor_for
 
+    settings = RunSettings(
+        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=validate,
+        acceptance=acceptance, verify_backend=verify_backend,
+    )
     made = _jobs(
-        files, tasks, seed, scenarios, generation_needs(png, verify_backend), validate=validate, picture=png, accidental=accidental,
-        **job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
+        files, tasks, seed, scenarios, generation_needs(png, verify_backend), picture=png, accidental=accidental, **job_settings(world, backend, settings),
     )
     problem = clashes(made)
     if problem:
@@ -194,6 +196,7 @@ def evaluate(
     backend: str | None = None,
     time_budget: float = TIME_BUDGET,
     layouts: int = LAYOUT_BUDGET,
+    clause_budget: int = CLAUSE_BUDGET,
     min_robustness: int | None = MIN_ROBUSTNESS,
     verify_backend: str | None = None,
     acceptance: bool = True,
@@ -210,10 +213,11 @@ def evaluate(
     from physc.evaluation.run import run
     from physc.execution import executor_for
 
-    made = _jobs(
-        files, tasks, seed, scenarios, evaluation_needs(), validate=False,
-        **job_settings(world, backend, time_budget, layouts, min_robustness, verify_backend, acceptance),
+    settings = RunSettings(
+        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=False,
+        acceptance=acceptance, verify_backend=verify_backend,
     )
+    made = _jobs(files, tasks, seed, scenarios, evaluation_needs(), **job_settings(world, backend, settings))
     started = time.perf_counter()
     with executor_for(jobs, scheduler, dask_workers) as executor:
         records = run(made, Path(out), executor)

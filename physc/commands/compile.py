@@ -22,6 +22,7 @@ from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
 from physc.api.compiling import no_task, pipeline as scenario_pipeline
+from physc.commands.options import run_settings
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
@@ -159,20 +160,7 @@ def cmd_compile(args) -> int:
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
         heartbeat = Heartbeat(f"[{index}/{len(selected)}] {ir.name}") if generating and not args.quiet else None
-        pipeline = scenario_pipeline(
-            scenario,
-            ir,
-            domain,
-            args.seed,
-            budget=args.budget,
-            validate=not args.no_validate,
-            acceptance=not args.no_acceptance,
-            layout_budget=args.layouts,
-            time_budget=args.time_budget,
-            min_robustness=args.min_robustness,
-            progress=None if heartbeat is None else heartbeat.update,
-            verify_backend=args.verify_backend,
-        )
+        pipeline = scenario_pipeline(scenario, ir, domain, args.seed, run_settings(args), progress=None if heartbeat is None else heartbeat.update)
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:

@@ -74,7 +74,7 @@ def cmd_eval(args) -> int:
 
     check_batch(args)
     # Generation's final validation is skipped, as in the paper's evaluation.
-    jobs, problems = jobs_for(args.files, args.tasks, args.seed, **generation_settings(args), validate=False)
+    jobs, problems = jobs_for(args.files, args.tasks, args.seed, **generation_settings(args, validate=False))
     jobs, status = selected_jobs(args, jobs, problems)
     if status is None:  # generation needs the domain's capabilities, and so do its replays and measurements
         status = refused_domains(args, jobs, evaluation_needs(), "physc eval")

@@ -32,8 +32,7 @@ def cmd_generate(args) -> int:
 
     check_batch(args)
     jobs, problems = jobs_for(
-        args.files, args.tasks, args.seed, **generation_settings(args), validate=not args.no_validate, picture=args.png,
-        accidental=args.accidental,
+        args.files, args.tasks, args.seed, **generation_settings(args), picture=args.png, accidental=args.accidental,
     )
     jobs, status = selected_jobs(args, jobs, problems)
     if status is not None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from physc.backends import DEFAULT_BACKEND
 from physc.commands import arguments
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
 
 
 def add_target(parser, verify: bool = True, replay: bool = False) -> None:
@@ -53,17 +53,33 @@ def add_generation(parser, validate: bool = True) -> None:
         "--no-acceptance", action="store_true",
         help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts",
     )
+    parser.add_argument(
+        "--clause-budget", "--budget", dest="clause_budget", type=arguments.count, default=CLAUSE_BUDGET, metavar="N",
+        help=f"clause choices the layout search may try per shape draw (default {CLAUSE_BUDGET}; --budget is its old name)",
+    )
     if validate:
         parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each generated task")
 
 
-def generation_settings(args) -> dict:
-    """The fields of a job (physc.generation.job.Job) that `add_generation` and `add_target` set."""
+def run_settings(args, validate: bool | None = None):
+    """The run's settings (physc.generation.run_settings.RunSettings) that `add_generation` and
+    `add_target` parsed, under the options' own names; `validate` where the command decides it
+    (eval: never, as the paper's evaluation)."""
+    from physc.generation.run_settings import RunSettings
+
+    return RunSettings(
+        time_budget=args.time_budget, layouts=args.layouts, clause_budget=args.clause_budget, min_robustness=args.min_robustness,
+        validate=(not args.no_validate) if validate is None else validate, acceptance=not args.no_acceptance,
+        verify_backend=args.verify_backend,
+    )
+
+
+def generation_settings(args, validate: bool | None = None) -> dict:
+    """The fields of a job (physc.generation.job.Job) that `add_generation` and `add_target` set:
+    the world, the engine and the run's settings."""
     from physc.api.datasets import job_settings
 
-    return job_settings(
-        args.world, args.backend, args.time_budget, args.layouts, args.min_robustness, args.verify_backend, not args.no_acceptance,
-    )
+    return job_settings(args.world, args.backend, run_settings(args, validate))
 
 
 def replaying(domain, recorded: dict, args, command: str):

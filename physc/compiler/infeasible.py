@@ -13,7 +13,7 @@ class Exhausted(enum.Enum):
     """What ran out before a task was found (`Infeasible.budget`); the value is the option
     that sets it, where there is one."""
 
-    CLAUSES = "--budget"  # clause choices of the layout search, per shape draw
+    CLAUSES = "--clause-budget"  # clause choices of the layout search, per shape draw
     LAYOUTS = "--layouts"  # placed layouts that simulation may try
     TIME = "--time-budget"  # seconds for the whole generation
     PLACEMENTS = "placement"  # consistent conjunctions placement may try (no option)

@@ -13,7 +13,7 @@ PHYRE-like plugin both do. The paper's table "Inferred layout constraints":
                         just before: it comes down ahead; see `pushes`)
     destroy, touch    → nothing of their own (the hit or fall before them places them)
     slide(a, b, d)    → inDirection(a, b, -d)
-    bounce(a, b, d)   → inDirection(a, b, d)
+    bounce(a, b, d)   → inDirection(a, b, d), and for d left or right also inDirection(a, b, -d)
     cannotHit(a,b,d)  → pathObstructed(a, b, d)
     cannotFall(a)     → a chain of touching surfaces that a moves on
 
@@ -157,6 +157,18 @@ def _ramps(scenario: ScenarioIR, rules: LayoutRules) -> bool:
     return infer(scenario, rules, "ramp") != infer(scenario, rules, "flat")
 
 
+def bounced_from(directions) -> tuple[str, ...]:
+    """Where an object that bounces off a surface towards `directions` starts, beside it.
+    `bounce(a, b, d)` means that a leaves b heading d (docs/language.md; the recogniser reads
+    the heading after the bounce). Thrown back up or down, a came from that side (the paper's
+    inDirection(a, b, d)); heading left or right, a came from that side and was thrown back,
+    or from the other side and glanced off b's top or underside, going on the way it went."""
+    out = []
+    for d in directions:
+        out += [d] + ([OPPOSITE[d]] if d in ("left", "right") else [])
+    return tuple(dict.fromkeys(out))
+
+
 def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> LayoutGraph:
     b = _Builder(scenario, rules)
     ramps: list[str] = []  # the surfaces the ramp structure makes inclined
@@ -196,7 +208,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         elif term.name == "bounce":
             if b.is_ground(term.objects[1]):
                 continue  # the ground spans the scene: nothing is beside it
-            b.edge(IN_DIRECTION, term.objects[0], term.objects[1], term.directions, why)
+            b.edge(IN_DIRECTION, term.objects[0], term.objects[1], bounced_from(term.directions), why)
     for term in scenario.restrictions:
         if term.name == "cannotHit":
             values = ("all",) if set(term.directions) == set(SIDES) else term.directions

@@ -10,6 +10,7 @@ import attrs
 MIN_ROBUSTNESS = None
 LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
 TIME_BUDGET = 120.0  # seconds for generating one task
+CLAUSE_BUDGET = 50_000  # clause choices the layout search may try per shape draw
 
 
 @attrs.frozen

@@ -29,6 +29,7 @@ from physc.compiler.dimension_graphs import (
 )
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
+from physc.compiler.task import CLAUSE_BUDGET
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 # The most interactions the search takes. Its memory grows with the square of the bodies
@@ -36,7 +37,6 @@ from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 # clause choice costs the square of the bodies: a 64-interaction chain ends its search in
 # about 35 s and 140 MB, a 200-interaction one ran for minutes at 2 GB (docs/generation.md).
 MAX_INTERACTIONS = 64
-DEFAULT_NODE_BUDGET = 50_000  # clause choices the search may try per shape draw
 SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up, if no conjunction is consistent
 MAX_SHAPE_DRAWS = 120  # draws in all while consistent conjunctions are found and still asked for
 
@@ -59,9 +59,9 @@ def clause_constraints(clause: QsrClause, relation: str, bodies: dict[str, Body]
 class ToDimensionGraphs:
     name = "to-dimension-graphs"
 
-    def __init__(self, domain, node_budget: int = DEFAULT_NODE_BUDGET):
+    def __init__(self, domain, clause_budget: int = CLAUSE_BUDGET):
         self.domain = domain
-        self.node_budget = node_budget
+        self.clause_budget = clause_budget
 
     def base(self, bodies: dict[str, Body]):
         parameters = self.domain.layout_parameters
@@ -105,7 +105,7 @@ class ToDimensionGraphs:
                 clause = dnf.clauses[depth]
                 for relation in clause.relations:
                     nodes += 1
-                    if nodes > self.node_budget:
+                    if nodes > self.clause_budget:
                         raise _BudgetSpent()
                     budget.check()
                     constraints = clause_constraints(clause, relation, bodies, parameters)
@@ -163,7 +163,7 @@ class ToDimensionGraphs:
             systems, _ = self.base(bodies)
         except Inconsistent:  # the last shapes drawn did not fit: nothing to explain by the clauses
             return ()
-        left = [self.node_budget]
+        left = [self.clause_budget]
 
         def feasible(clauses: list[QsrClause]) -> bool:
             def walk(depth, current):

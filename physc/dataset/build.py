@@ -23,7 +23,7 @@ README = "README.md"
 
 def _finished(folder: Path, job: Job, row: dict | None) -> bool:
     """Whether the task's row was made with the job's settings and its files are all there."""
-    if row is None or row.get("settings") != job.settings:
+    if row is None or row.get("settings") != job.recorded:
         return False
     return all((folder / row[name]).is_file() for name in ("level", "task", "picture") if row.get(name))
 

@@ -40,14 +40,11 @@ def make(job: Job) -> dict:
         "file": scenario_file(job.scenario), "scenario": job.scenario, "seed": job.seed, "domain": scenario.domain,
         "world": domain.world.name, "backend": domain.backend.name, "title": scenario.title,
         "interactions": len(scenario.interactions), "sequence": " > ".join(t.text for t in scenario.interactions),
-        "sequence_terms": [t.text for t in scenario.interactions], "settings": job.settings,
+        "sequence_terms": [t.text for t in scenario.interactions], "settings": job.recorded,
     }
     started = time.perf_counter()
     try:
-        run = Pipeline(
-            domain, scenario, job.seed, validate=job.validate, layout_budget=job.layouts, acceptance=job.acceptance, time_budget=job.time_budget,
-            source=job.source, min_robustness=job.min_robustness, verify_backend=job.verify_backend,
-        )
+        run = Pipeline(domain, scenario, job.seed, job.settings, job.source)
         with run.within_budget():  # the picture is part of the task's work, within its one budget
             task = run.task
             picture = domain.files.picture(task, "png") if job.picture else None

@@ -32,9 +32,9 @@ COLUMNS = [
     ("layouts_tried", "int32"), ("simulations", "int64"), ("accidental", "float64"), ("agent_plays", "int32"),
     ("auccess", "float64"), ("generation_seconds", "float64"), ("seconds", "seconds"), ("settings", "settings"),
 ]
-# A job's settings (physc.generation.job.Job.settings), each field typed whether or not a run set it.
+# A job's settings (physc.generation.job.Job.recorded), each field typed whether or not a run set it.
 SETTINGS = (
-    ("acceptance", "bool_"), ("accidental", "bool_"), ("backend", "string"), ("code", "string"), ("layouts", "int64"),
+    ("acceptance", "bool_"), ("accidental", "bool_"), ("backend", "string"), ("clause_budget", "int64"), ("code", "string"), ("layouts", "int64"),
     ("min_robustness", "int64"), ("physc", "string"), ("picture", "bool_"), ("scenario", "string"), ("time_budget", "float64"),
     ("validate", "bool_"), ("verify_backend", "string"), ("world", "string"),
 )

@@ -211,7 +211,7 @@ def paper_terms(rollable: str, slidable: str, surface: str) -> tuple[dict[str, T
         TermSignature(
             "bounce", INTERACTION,
             (Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=SIDES)),
-            "a bounces off b towards d",
+            "a bounces off b towards d (where a goes after the bounce)",
         ),
     )
     restrictions = (

@@ -45,15 +45,12 @@ def evaluate(job: Job) -> dict:
         "backend": domain.backend.name,
         "interactions": len(scenario.interactions),
         "seed": job.seed,
-        "min_robustness": job.min_robustness,
-        "settings": job.settings,
+        "min_robustness": job.settings.min_robustness,
+        "settings": job.recorded,
     }
     started = time.perf_counter()
     try:
-        task = Pipeline(
-            domain, scenario, job.seed, validate=job.validate, layout_budget=job.layouts, time_budget=job.time_budget, min_robustness=job.min_robustness,
-            verify_backend=job.verify_backend, acceptance=job.acceptance,
-        ).task
+        task = Pipeline(domain, scenario, job.seed, job.settings).task
     except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return record
@@ -91,10 +88,10 @@ def evaluate(job: Job) -> dict:
         solution=to_data(task.solution),
         level=to_data(task.level),
     )
-    if job.verify_backend is not None:
-        check = verify(domain, scenario, task.level, task.solution, job.verify_backend, noisy=measure.NOISY_REPLAYS)
+    if job.settings.verify_backend is not None:
+        check = verify(domain, scenario, task.level, task.solution, job.settings.verify_backend, noisy=measure.NOISY_REPLAYS)
         record.update(
-            verify_backend=job.verify_backend,
+            verify_backend=job.settings.verify_backend,
             verified_solved=check.solved,
             verified_realised=check.realised,
             verified_noisy=check.noisy_passed / check.noisy_run,
@@ -119,7 +116,7 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
     ensure_folder(folder)
     records = done_records(folder)
     # A record made with other settings is made again (the last line of a key wins).
-    todo = [job for job in jobs if key(job) not in records or records[key(job)].get("settings") != job.settings]
+    todo = [job for job in jobs if key(job) not in records or records[key(job)].get("settings") != job.recorded]
     path = folder / RECORDS
     # Rewrite the file whole first, so that a torn last line cannot stay in the middle.
     if records:

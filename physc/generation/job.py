@@ -1,9 +1,10 @@
 """One task to make: the job `physc generate` and `physc eval` hand a worker.
 
 A job names a scenario (its text travels with it: a worker may be on another machine), a
-seed, the world and engine it is made in, and the generation's settings. It depends on
+seed, the world and engine it is made in, and the run's settings (one RunSettings value,
+physc.generation.run_settings). It depends on
 nothing else, so the task it makes depends only on the job, never on the process or the
-number of workers. `settings` is what a stored result (a dataset row, an evaluation record)
+number of workers. `recorded` is what a stored result (a dataset row, an evaluation record)
 was made with: one made with other settings is made again.
 """
 
@@ -13,11 +14,11 @@ import attrs
 
 from physc import __version__
 from physc.backends import DEFAULT_BACKEND
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
 from physc.domains import bound, load_domain, world_name
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze_files, scenario_in
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
+from physc.generation.run_settings import RunSettings
 
 
 @attrs.frozen
@@ -25,16 +26,11 @@ class Job:
     path: str  # the .phys file
     scenario: str
     seed: int
-    time_budget: float = TIME_BUDGET
-    layouts: int = LAYOUT_BUDGET  # placed layouts simulation may try
-    min_robustness: int | None = MIN_ROBUSTNESS  # None: no fallbacks (see physc.generation.pipeline.Pipeline)
-    validate: bool = True  # the final validation of a generated task (`physc compile`'s; eval skips it, as the paper)
-    acceptance: bool = True  # the domain's acceptance rule judges each task (--no-acceptance: off)
+    settings: RunSettings = RunSettings()  # the run's budgets and checks (eval: validate=False, as the paper)
     picture: bool = False  # also draw the task (generate --png)
     accidental: bool = False  # also measure accidental solvability (generate --accidental)
     world: str = ""  # the domain's world ("": its default)
     backend: str = DEFAULT_BACKEND  # the engine that generates and measures (--backend)
-    verify_backend: str | None = None  # a second engine the solution is replayed in (--verify-backend)
     domain: str = ""  # the scenario's domain
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
     code: str = ""  # of the code that makes the task (code_fingerprint)
@@ -45,13 +41,14 @@ class Job:
         return (self.scenario, self.seed)
 
     @property
-    def settings(self) -> dict:
-        """What the job's result depends on besides its key."""
+    def recorded(self) -> dict:
+        """What the job's result depends on besides its key (a stored result's `settings`: one
+        made with others is made again)."""
+        run = self.settings
         return {
-            "time_budget": self.time_budget, "layouts": self.layouts, "min_robustness": self.min_robustness, "validate": self.validate,
-            "acceptance": self.acceptance, "picture": self.picture, "accidental": self.accidental, "world": self.world,
-            "backend": self.backend, "verify_backend": self.verify_backend, "scenario": self.fingerprint, "physc": __version__,
-            "code": self.code,
+            "time_budget": run.time_budget, "layouts": run.layouts, "clause_budget": run.clause_budget, "min_robustness": run.min_robustness,
+            "validate": run.validate, "acceptance": run.acceptance, "picture": self.picture, "accidental": self.accidental, "world": self.world,
+            "backend": self.backend, "verify_backend": run.verify_backend, "scenario": self.fingerprint, "physc": __version__, "code": self.code,
         }
 
     def target(self):
@@ -62,12 +59,14 @@ class Job:
 
 def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[Job], list]:
     """Every (scenario, seed) job of the files, seeds `seed` to `seed + tasks - 1`, and the
-    diagnostics of files with errors. `settings`: the other fields of Job. The world is
+    diagnostics of files with errors. `settings`: the other fields of Job (its RunSettings as
+    `settings`). The world is
     named in each job (the domain's default when none is given), so a stored result says
     which world made it."""
     jobs = []
     scenarios, problems = analyze_files(files, INSTALLED)
-    engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), settings.get("verify_backend")) if n)
+    run = settings.get("settings") or RunSettings()
+    engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), run.verify_backend) if n)
     for path, scenario, source in scenarios:
         world = world_name(bound(load_domain(scenario.domain), settings.get("world") or None))  # WorldError: not this domain's
         common = dict(

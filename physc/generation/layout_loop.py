@@ -21,6 +21,7 @@ from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
 from physc.generation import elsewhere, search
+from physc.generation.run_settings import RunSettings
 from physc.generation.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
@@ -55,23 +56,19 @@ class LayoutLoop:
     domain: object
     scenario: object
     rng: object
-    validate: bool
-    layout_budget: int
-    time_budget: float
-    # Noisy replays a solution must pass at least (see Pipeline): fragile layouts that
-    # passed this many are fallbacks.
-    min_robustness: int
+    settings: RunSettings  # the run's budgets and checks (physc.generation.run_settings)
     progress: Callable[[Progress], None] | None = None
-    # A second backend the solution must also pass in (--verify-backend): the recorded
-    # solution and as many noisy replays as the generator's own acceptance asked for.
-    verify_backend: str | None = None
-    # Whether the domain's acceptance rule judges each task (the domain's `evaluation.acceptance`).
-    acceptance: bool = True
+
+    @property
+    def min_robustness(self) -> int:
+        """Noisy replays a solution must pass at least: fragile layouts that passed this many
+        are fallbacks."""
+        return self.settings.robustness(self.domain)
 
     def satisfy(self, layout, accept: int | None = None):
         """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
         noisy replays, for a fallback), then the checks that it holds where it is played."""
-        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.validate, accept, self.acceptance)
+        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.settings, accept)
         return self.checked(result, accept) if result.satisfied else result
 
     def checked(self, result, accept: int | None):
@@ -85,8 +82,8 @@ class LayoutLoop:
         replays = noisy_replays(self.domain)
         needed = accept if accept is not None else replays
         places = [(self.domain, None)]
-        if self.verify_backend is not None:
-            places.append((self.domain, self.verify_backend))
+        if self.settings.verify_backend is not None:
+            places.append((self.domain, self.settings.verify_backend))
         spent = 0
         for domain, other in places:
             check = verify(domain, self.scenario, parts.level, parts.solution, other or domain.backend.name, noisy=replays)
@@ -115,7 +112,7 @@ class LayoutLoop:
         furthest: list = []  # the plays that came furthest, one a layout: (score, level, action, placed), replayed elsewhere on failure
         given_up: dict[str, dict[str, int]] = {}
         clock = time.perf_counter()
-        kept = elsewhere.reserve(self.domain, self.time_budget)
+        kept = elsewhere.reserve(self.domain, self.settings.time_budget)
         left = budget.remaining()
         inner = budget.deadline(left - kept) if kept and left is not None and left > kept else contextlib.nullcontext()
         fallback = None
@@ -166,7 +163,7 @@ class LayoutLoop:
                     fragile.append((-result.nearest, layouts, placed))
                 if self.progress is not None:
                     self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
-                if layouts >= self.layout_budget:
+                if layouts >= self.settings.layouts:
                     failure = Infeasible(
                         "satisfy",
                         f"no layout realised the sequence in simulation within the budget ({layouts} layouts)",
@@ -210,7 +207,7 @@ class LayoutLoop:
     def _out_of_time(self, layouts: int) -> Infeasible:
         return Infeasible(
             "satisfy",
-            f"the time budget of {self.time_budget:g} s ran out after {layouts} {'layout' if layouts == 1 else 'layouts'}",
+            f"the time budget of {self.settings.time_budget:g} s ran out after {layouts} {'layout' if layouts == 1 else 'layouts'}",
             budget=Exhausted.TIME,
         )
 

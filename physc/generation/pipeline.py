@@ -27,11 +27,12 @@ from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
-from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET, ToDimensionGraphs
+from physc.compiler.task import Task
+from physc.compiler.to_dimension_graphs import ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.domains import world_name
 from physc.dsl.scenario import ScenarioIR
+from physc.generation.run_settings import RunSettings
 from physc.generation.layout_loop import LayoutLoop
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
@@ -45,49 +46,22 @@ class Placed:
 
 
 class Pipeline:
-    def __init__(
-        self,
-        domain,
-        scenario: ScenarioIR,
-        seed: int = 0,
-        budget: int = DEFAULT_NODE_BUDGET,
-        validate: bool = True,
-        layout_budget: int = LAYOUT_BUDGET,
-        time_budget: float = TIME_BUDGET,
-        source: str = "",
-        min_robustness: int | None = MIN_ROBUSTNESS,
-        progress=None,
-        verify_backend: str | None = None,
-        acceptance: bool = True,
-    ):
+    def __init__(self, domain, scenario: ScenarioIR, seed: int = 0, settings: RunSettings = RunSettings(), source: str = "", progress=None):
         self.domain = domain
         self.scenario = scenario
         self.seed = seed
-        self.budget = budget  # clause choices the search may try per shape draw
-        self.validate = validate
-        self.layout_budget = layout_budget  # layouts that simulation may try
-        self.time_budget = time_budget  # seconds for the whole generation
+        self.settings = settings  # the run's budgets and checks, as one value (physc.generation.run_settings)
         self.source = source
-        # Noisy replays (of the domain's robustness_replays) that a solution must pass at
-        # least: when no layout within the budget gives one that passes them all, the most
-        # robust of the fragile ones that pass this many is used (a fallback). None (the
-        # default): all of them, no fallbacks.
-        self.min_robustness = min_robustness if min_robustness is not None else (domain.robustness_replays or 1)
         self.rng = random.Random(seed)
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
         self.progress = progress
-        # A second physics backend the task's solution must pass in too (--verify-backend).
-        self.verify_backend = verify_backend
-        # Whether a task must pass the domain's acceptance rule (PHYRE's GOOD_STABLE, not
-        # TRIVIAL); off: --no-acceptance, for drafts.
-        self.acceptance = acceptance
 
     @functools.cached_property
     def deadline(self) -> budget.Deadline:
         """The run's time budget, started when it is first asked for: when the run's work
         starts (`within_budget`), not when the pipeline is made."""
-        return budget.Deadline(self.time_budget)
+        return budget.Deadline(self.settings.time_budget)
 
     @contextlib.contextmanager
     def within_budget(self, stage: str = "task"):
@@ -100,7 +74,7 @@ class Pipeline:
             with budget.deadline(self.deadline):
                 yield
         except budget.OutOfTime:
-            raise Infeasible(stage, f"the time budget of {self.time_budget:g} s ran out", budget=Exhausted.TIME) from None
+            raise Infeasible(stage, f"the time budget of {self.settings.time_budget:g} s ran out", budget=Exhausted.TIME) from None
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
@@ -156,7 +130,7 @@ class Pipeline:
     def _placements(self, structure: str, graph: LayoutGraph, dnf: QsrDnf | None):
         """The placed layouts of one structure's layout graph."""
         dnf = dnf or ToQsr().run(graph, self.rng, self.seed)
-        search = ToDimensionGraphs(self.domain, self.budget).run(dnf, graph, self.scenario, self.rng)
+        search = ToDimensionGraphs(self.domain, self.settings.clause_budget).run(dnf, graph, self.scenario, self.rng)
         place = Place(self.domain)
         consistent = 0
         try:
@@ -190,10 +164,7 @@ class Pipeline:
         layouts and time. The time budget covers everything, the fallbacks included: the
         work stops at its next stopping point (a simulated step, a clause choice) once the
         time is spent."""
-        loop = LayoutLoop(
-            self.domain, self.scenario, self.rng, self.validate, self.layout_budget, self.time_budget,
-            self.min_robustness, self.progress, self.verify_backend, self.acceptance,
-        )
+        loop = LayoutLoop(self.domain, self.scenario, self.rng, self.settings, self.progress)
         with self.within_budget():
             generated = loop.run(self.placements())
         result, used = generated.outcome, generated.placed.layout

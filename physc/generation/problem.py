@@ -17,6 +17,7 @@ from physc.compiler.layout_rules import pushes
 from physc.generation import placing
 from physc.generation.attempt import Attempt
 from physc.generation.evaluator import Evaluator
+from physc.generation.run_settings import RunSettings
 from physc.generation.settings import SETTINGS, SearchSettings
 from physc.generation.stages import ChainStage, introduced, stages
 from physc.simulation.fidelity import fidelity
@@ -39,12 +40,11 @@ class Problem:
     plan: tuple[ChainStage, ...]
     players: frozenset[str]  # the player's objects (the bird)
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
-    validate: bool = True
-    acceptance: bool = True  # whether the domain's acceptance rule judges the task
+    run: RunSettings = RunSettings()  # the run's settings: validation, the acceptance rule
     action_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
 
     @classmethod
-    def of(cls, domain, scenario, layout, accept: int, validate: bool = True, acceptance: bool = True) -> Problem:
+    def of(cls, domain, scenario, layout, accept: int, run: RunSettings = RunSettings()) -> Problem:
         vocabulary = domain.vocabulary
         carried = [tuple(t.objects[:2]) for t in scenario.restrictions if (term := vocabulary.term(t.name)) is not None and term.carries]
         entry = introduced(layout, scenario.interactions, carried)
@@ -52,7 +52,7 @@ class Problem:
         return cls(
             domain, scenario, layout, domain.search.settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
             entry, tuple(stages(scenario.interactions, entry, starts)),
-            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, validate, acceptance, starts,
+            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, run, starts,
         )
 
     @property

@@ -8,8 +8,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.task import LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
-from physc.compiler.to_dimension_graphs import DEFAULT_NODE_BUDGET
+from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
 
 
 @attrs.frozen
@@ -20,7 +19,7 @@ class RunSettings:
     """Seconds for the whole run, fallbacks and picture included (`--time-budget`)."""
     layouts: int = LAYOUT_BUDGET
     """Placed layouts that simulation may try (`--layouts`)."""
-    clause_budget: int = DEFAULT_NODE_BUDGET
+    clause_budget: int = CLAUSE_BUDGET
     """Clause choices the layout search may try per shape draw (`--clause-budget`)."""
     min_robustness: int | None = MIN_ROBUSTNESS
     """Noisy replays a fallback must pass at least (`--min-robustness`); None: no fallbacks, a

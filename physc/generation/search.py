@@ -35,17 +35,19 @@ from physc.generation.chain import Node, chain
 from physc.generation.contrasts import contrasts
 from physc.generation.outcome import Outcome, Parts
 from physc.generation.problem import Ledger, Problem, replayed
+from physc.generation.run_settings import RunSettings
 from physc.generation.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.stopped import why_stopped
 
 
-def satisfy(domain, scenario, layout, rng, validate: bool = True, accept: int | None = None, acceptance: bool = True) -> Outcome:
+def satisfy(domain, scenario, layout, rng, run: RunSettings = RunSettings(), accept: int | None = None) -> Outcome:
     """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
-    or why not; `accept`: the noisy replays a solution must pass (default: all of them);
-    `acceptance`: whether the domain's acceptance rule judges the task."""
+    or why not, under the run's settings (`run`: whether the task is validated and judged by
+    the domain's acceptance rule); `accept`: the noisy replays a solution must pass (default:
+    all of them)."""
     require(domain, search_needs(domain), "generating a task")
     replays_run = domain.robustness_replays or 0
-    problem = Problem.of(domain, scenario, layout, replays_run if accept is None else accept, validate, acceptance)
+    problem = Problem.of(domain, scenario, layout, replays_run if accept is None else accept, run)
     return search(problem, Ledger(), rng)
 
 
@@ -81,7 +83,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
         return given_up(problem, ledger, why)
     validating = time.perf_counter()
     validated, trace = None, attempt.trace
-    if problem.validate:
+    if problem.run.validate:
         final = replayed(problem, ledger, problem.level_of(layout), attempt.action)
         if not final.fidelity.valid:
             return given_up(problem, ledger, settings.NOT_VALIDATED)
@@ -90,7 +92,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     if not domain.actions.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
         return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
-    judged = domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)) if problem.acceptance else None
+    judged = domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)) if problem.run.acceptance else None
     if judged is not None and not judged.accepted:
         why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
         return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))

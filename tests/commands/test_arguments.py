@@ -61,7 +61,7 @@ def test_play_options(command, option, value, level, tmp_path):
         ("--min-robustness", "9"),
         ("--seed", "-1"),
         ("--seed", str(2**63)),
-        ("--budget", "0"),
+        ("--clause-budget", "0"),
     ],
 )
 def test_compile_options(option, value, tmp_path):

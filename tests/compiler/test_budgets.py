@@ -12,6 +12,7 @@ from middle_end import DOMAIN, paper_scenarios
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
 from physc.generation.pipeline import Pipeline
+from physc.generation.run_settings import RunSettings
 
 SRF = EXAMPLES / "paper" / "13_SRF.phys"
 
@@ -52,7 +53,7 @@ def test_a_started_deadline_is_one_budget_for_every_block_that_keeps_it(monkeypa
 
 
 def test_a_run_owns_one_deadline_for_the_rest_of_it(monkeypatch):
-    run = Pipeline(DOMAIN, paper_scenarios()["R"], time_budget=5.0)
+    run = Pipeline(DOMAIN, paper_scenarios()["R"], settings=RunSettings(time_budget=5.0))
     now = [50.0]  # the budget starts with the run's work, not when the pipeline is made
     monkeypatch.setattr(budget.time, "monotonic", lambda: now[0])
     with run.within_budget("layout"):
@@ -83,13 +84,13 @@ def test_the_layout_budget_names_its_option():
     if run.status == 0:
         pytest.skip("SRF seed 0's first layout works: nothing ran out")
     assert "error[E0802]" in run.stderr
-    assert "allow more with --layouts" in run.stderr and "--budget" not in run.stderr
+    assert "allow more with --layouts" in run.stderr and "--clause-budget" not in run.stderr
 
 
 def test_the_clause_budget_names_its_option():
-    run = run_physc("compile", SRF, "--emit", "layout", "--budget", "1")
+    run = run_physc("compile", SRF, "--emit", "layout", "--clause-budget", "1")
     assert run.status == 3, run.stderr
-    assert "try a larger --budget" in run.stderr
+    assert "try a larger --clause-budget" in run.stderr
 
 
 @pytest.mark.parametrize(

@@ -103,3 +103,28 @@ def test_bodies_moving_in_turn_along_one_surface_are_consistent(term, a, b, move
     layout = run.placed.layout
     objects = {o.name: o for o in layout.objects}
     assert objects[a].x < objects[b].x < objects["pig"].x
+
+
+GLANCING = """
+scenario Glancing {
+    objects { ledge: horizontalSurface }
+    interactions {
+        hit(bird, ledge, any) > bounce(bird, ledge, right) > hit(bird, pig, left) > destroy(bird, pig)
+    }
+}
+"""
+
+
+def test_a_bounce_means_where_the_object_goes_in_the_layout_as_in_the_recogniser():
+    """`bounce(a, b, d)`: a leaves b heading d (docs/language.md; the recogniser reads the
+    heading after the bounce). Heading right off a ledge, the bird came from the left and
+    glanced off it, or from the right and was thrown back: the layout allows both, and the
+    bird, shot from the left, is laid out (this was E0801, 486 conjunctions inconsistent)."""
+    from physc.compiler.layout_rules import bounced_from
+
+    assert bounced_from(("right",)) == ("right", "left") and bounced_from(("below",)) == ("below",)
+    run = Pipeline(DOMAIN, scenario_from_text(GLANCING), 0)
+    texts = {e.text() for e in run.layout_graph.edges}
+    assert "inDirection(bird, ledge, right | left)" in texts or "inDirection(bird, ledge, left | right)" in texts, texts
+    objects = {o.name: o for o in run.placed.layout.objects}
+    assert objects["bird"].x < objects["ledge"].x < objects["pig"].x

@@ -205,7 +205,7 @@ def test_mutated_levels_through_the_command_line(rng, text, command):
 
 
 numbers = st.sampled_from(NUMBERS) | st.floats().map(repr) | st.integers().map(str)
-COMPILE_OPTIONS = ["--seed", "--layouts", "--time-budget", "--budget", "--min-robustness"]
+COMPILE_OPTIONS = ["--seed", "--layouts", "--time-budget", "--clause-budget", "--min-robustness"]
 PLAY_OPTIONS = ["--seconds", "--angle", "--shot"]
 EVAL_OPTIONS = ["--tasks", "--jobs", "--seed", "--time-budget", "--min-robustness"]
 

@@ -17,6 +17,7 @@ from physc.domains.angrybirds.worlds import PHYQ, ROLLING
 from physc.generation.layout_loop import LayoutLoop
 from physc.generation.outcome import Outcome
 from physc.generation.pipeline import Pipeline
+from physc.generation.run_settings import RunSettings
 from physc.generation.verify import verify
 from physc.simulation.trace import ContactRecord
 
@@ -74,7 +75,7 @@ def test_a_generated_task_passes_physc_verify_in_every_reading():
 def test_a_solution_that_fails_a_reading_gives_the_layout_up():
     scenario = paper_scenarios()["SF"]
     task = Pipeline(DOMAIN, scenario, seed=0).task
-    loop = LayoutLoop(DOMAIN, scenario, None, False, 1, 10.0, 6)
+    loop = LayoutLoop(DOMAIN, scenario, None, RunSettings(time_budget=10.0, layouts=1, min_robustness=6, validate=False))
     parts = mock.Mock(level=task.level, solution=task.solution)
     passed = loop.checked(Outcome(True, 5, parts), None)
     check = verify(DOMAIN, scenario, task.level, task.solution, "box2d", noisy=6)

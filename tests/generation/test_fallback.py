@@ -16,6 +16,7 @@ from physc.generation import search
 from physc.generation.layout_loop import FALLBACKS, LayoutLoop
 from physc.generation.outcome import Outcome, Parts
 from physc.generation.pipeline import Pipeline
+from physc.generation.run_settings import RunSettings
 
 
 class Scripted:
@@ -44,7 +45,7 @@ def generate(script, min_robustness, layouts=5):
     # The scripted outcomes have no level to replay: the checks in the game are left out here
     # (tests/generation/test_checked.py has them).
     with mock.patch.object(search, "satisfy", script.satisfy), mock.patch.object(LayoutLoop, "checked", lambda self, result, accept: result):
-        return Pipeline(DOMAIN, paper_scenarios()["R"], 0, validate=False, layout_budget=layouts, min_robustness=min_robustness).task
+        return Pipeline(DOMAIN, paper_scenarios()["R"], 0, RunSettings(layouts=layouts, min_robustness=min_robustness, validate=False)).task
 
 
 def test_the_most_robust_fragile_layout_is_tried_first():
@@ -79,7 +80,7 @@ def test_nothing_below_the_floor_and_nothing_when_all_replays_are_asked_for():
 
 def test_by_default_there_are_no_fallbacks():
     assert MIN_ROBUSTNESS is None
-    assert Pipeline(DOMAIN, paper_scenarios()["R"]).min_robustness == DOMAIN.robustness_replays == 6
+    assert RunSettings().robustness(DOMAIN) == DOMAIN.robustness_replays == 6
 
 
 def test_cli_refuses_a_floor_below_one(tmp_path):

@@ -125,3 +125,13 @@ def test_sliding_counts_on_a_surfaces_upper_side_only():
     assert RECOGNISER.recognise(_sliding_trace("wall", (1.0, 0.0)), {}) == ()
     slope = (math.sin(math.radians(40)), math.cos(math.radians(40)))
     assert [i.text() for i in RECOGNISER.recognise(_sliding_trace("slope", slope), {})] == ["slide(block, slope, right)"]
+
+
+def test_a_glancing_bounce_reads_back_as_the_heading_after_it():
+    """A bird that comes down onto a ledge's top and skips on to the right reads back as
+    `bounce(bird, ledge, right)`: where it goes, the term's meaning (docs/language.md), which
+    the layout rules lay out (compiler/layout_rules.bounced_from)."""
+    ledge = LevelObject("Platform", "Platform", -4.0, -2.5, 0.0, scale_x=6 / 0.64, scale_y=0.5, name="ledge")
+    trace = Game(Level(objects=(ledge,)), PHYQ, BOX2D).play(Shot(target=(-5.0, -2.3), trajectory="low"), 4.0)
+    bounces = [i for i in trace.interactions if i.name == "bounce" and i.objects == ("bird", "ledge")]
+    assert bounces and bounces[0].text() == "bounce(bird, ledge, right)", [i.text() for i in trace.interactions]
