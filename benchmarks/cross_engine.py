@@ -19,7 +19,6 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
-from physc.compiler.task import Solution
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
@@ -40,7 +39,7 @@ def replayed(records: list[dict], backend: str, replays: int):
         scenario = scenarios[key]
         domain = load_domain(scenario.domain)
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.files.level_classes})
-        kind = domain.files.solution_class or Solution
+        kind = domain.files.solution_class
         solution = from_data(record["solution"], {kind.__name__: kind})
         started = time.perf_counter()
         check = verify(domain, scenario, level, solution, backend)

@@ -32,7 +32,7 @@ _EXPORTS = {
         "physc.api",
     ),
     "Task": "physc.compiler.task",
-    "Solution": "physc.compiler.task",
+    "Solution": "physc.domains.angrybirds.shots",
     "Trace": "physc.simulation.trace",
     "Diagnostic": "physc.diagnostics",
     "Shot": "physc.domains.angrybirds.launch",

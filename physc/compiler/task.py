@@ -1,4 +1,5 @@
-"""The Task IR: a generated task, its solution, and how it was made."""
+"""The Task IR: a generated task, its solution (the domain's own record of its action), and how
+it was made."""
 
 from __future__ import annotations
 
@@ -14,28 +15,13 @@ CLAUSE_BUDGET = 50_000  # clause choices the layout search may try per shape dra
 
 
 @attrs.frozen
-class Solution:
-    """The intended solution: a full-stretch shot."""
-
-    aimed_at: str  # the point of interest, e.g. "rBlock.left, low"
-    target: tuple[float, float]
-    trajectory: str  # "low" | "high"
-    release_angle: float  # degrees
-    # The shot as Phy-Q's agent framework sends it, `env.step([dx, dy, tap_time])` (whole
-    # pixels from the slingshot's reference point), and the release angle the game launches
-    # that at (physc.domains.angrybirds.agent_action); None in task files from before them.
-    agent_action: tuple[int, int, int] | None = None
-    agent_angle: float | None = None
-
-
-@attrs.frozen
 class Task:
     scenario: str
     domain: str
     seed: int
     source: str  # the scenario as written, in block form
     level: object  # the domain's level (angrybirds: a Science Birds Level)
-    solution: Solution
+    solution: object  # the domain's record of the intended action (its files' solution_class)
     trace: str  # the interactions the solution realises, in .phys syntax
     validated: bool | None  # None when validation was skipped
     robustness: tuple[int, int]  # perturbed replays passed, run (fewer than run: a fallback)

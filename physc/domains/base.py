@@ -97,9 +97,7 @@ def missing(domain: Domain, hooks: tuple[str, ...]) -> tuple[str, ...]:
 
 def solution_classes(domain: Domain) -> dict[str, type]:
     """The classes a task file's solution may be in `domain`, by name (its files' `solution_class`)."""
-    from physc.compiler.task import Solution
-
-    kinds = domain.files.solution_class or Solution
+    kinds = domain.files.solution_class or ()
     return {cls.__name__: cls for cls in (kinds if isinstance(kinds, tuple) else (kinds,))}
 
 

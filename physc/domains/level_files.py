@@ -73,7 +73,7 @@ class LevelFiles(Part):
     solution_class: type | tuple[type, ...] | None = None
     """The attrs class of a task's solution, or a tuple of them when a domain has several
     kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
-    verify`). None: physc.compiler.task.Solution, angrybirds' shot."""
+    verify`). None: a task file's solution cannot be read back."""
 
     def benchmark_files(self, tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         """The files of the target world's own benchmark format that a dataset of this domain

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.task import Solution
 
 
 @attrs.frozen
@@ -17,7 +16,7 @@ class Parts:
     """The parts of a task that a satisfied layout gives (see Task)."""
 
     level: object  # the domain's level
-    solution: Solution
+    solution: object  # the domain's record of the action (its actions' `solution`)
     trace: str  # the interactions the solution realises, in .phys syntax
     validated: bool | None  # None when validation was skipped
     robustness: tuple[int, int]  # noisy replays passed, run

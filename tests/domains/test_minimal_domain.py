@@ -30,7 +30,6 @@ from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_rules import LayoutRules
 from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
-from physc.compiler.task import Solution
 from physc.diagnostics import SourceText
 from physc.domains.base import STAGE_NEEDS, MissingCapability, missing
 from physc.domains.level_files import LevelFiles
@@ -200,8 +199,18 @@ def simulate(level: Level, push: float) -> Trace:
     return attrs.evolve(trace, interactions=found, violations=violations(found, ()), solved=bool(pads) and touched >= set(pads))
 
 
+@attrs.frozen
+class Push:
+    """A task's solution in this domain: the push, in its own record (not another domain's)."""
+
+    aimed_at: str
+    speed: float
+
+
 class MinimalFiles(LevelFiles):
     """Its level file, JSON, and a picture in SVG."""
+
+    solution_class = Push
 
     @staticmethod
     def emit_level(level: Level) -> str:
@@ -212,7 +221,7 @@ class MinimalFiles(LevelFiles):
             raise MissingCapability(self.domain.name, ("picture",), f"a {fmt} picture (it draws SVG only)")
         if not hasattr(task, "solution"):
             raise MissingCapability(self.domain.name, ("picture",), "a picture of a layout (it draws tasks only)")
-        trace = simulate(task.level, task.solution.target[0])
+        trace = simulate(task.level, task.solution.speed)
         flip = lambda y: 2 - y  # noqa: E731
         shapes = [
             f'<circle cx="{t.x}" cy="{flip(t.y)}" r="{t.width / 2}"/>' if t.kind == "ball"
@@ -244,12 +253,12 @@ class MinimalActions(Actions):
         return [(f"{ball.name} pushed at {speed:g} units/s", math.copysign(speed, target.x - ball.x)) for speed in SPEEDS]
 
     @staticmethod
-    def solution(label: str, push: float) -> Solution:
-        return Solution(label, (push, 0.0), "push", 0.0)
+    def solution(label: str, push: float) -> Push:
+        return Push(label, push)
 
     @staticmethod
-    def action_of(solution: Solution) -> float:
-        return solution.target[0]
+    def action_of(solution: Push) -> float:
+        return solution.speed
 
 
 class Minimal(SimulatedDomain):
@@ -353,7 +362,7 @@ def test_a_task_is_compiled_and_its_solution_realises_the_sequence_in_a_fresh_si
     assert all(math.isclose(t.y, HEIGHT / 2) for t in level.things)
     # A fresh simulation of the solution realises the declared sequence, meets the goal, and
     # recognises exactly what the task says.
-    push = task.solution.target[0]
+    push = task.solution.speed
     assert push > 0 and task.solution.aimed_at == f"ball pushed at {push:g} units/s"
     trace = simulate(level, push)
     realised = fidelity(ir, trace)
@@ -375,7 +384,7 @@ def test_the_same_seed_gives_the_same_task_and_another_seed_another_layout():
     assert DOMAIN.files.emit_level(first.level) == DOMAIN.files.emit_level(again.level)
     assert [getattr(first, f) for f in same] == [getattr(again, f) for f in same]
     assert positions(other.level) != positions(first.level)
-    assert other.validated and fidelity(scenario_ir(), simulate(other.level, other.solution.target[0])).valid
+    assert other.validated and fidelity(scenario_ir(), simulate(other.level, other.solution.speed)).valid
 
 
 def test_the_command_line_compiles_it_as_an_installed_plugin(tmp_path, monkeypatch):

@@ -23,8 +23,7 @@ class ScienceBirdsFiles(LevelFiles):
 
     @property
     def solution_class(self):
-        from physc.compiler.task import Solution
-        from physc.domains.angrybirds.shots import BirdShot, ShotsSolution
+        from physc.domains.angrybirds.shots import BirdShot, ShotsSolution, Solution
 
         return (Solution, ShotsSolution, BirdShot)
 

@@ -12,7 +12,7 @@ adequate timing), the shot is timed instead, tried `WAITS` after the game brough
 onto the slingshot.
 
 A task whose solution is one untapped shot of the red bird keeps version 1's record
-(physc.compiler.task.Solution); any other is a `ShotsSolution`, one `BirdShot` per bird.
+(`Solution`); any other is a `ShotsSolution`, one `BirdShot` per bird.
 """
 
 from __future__ import annotations
@@ -25,6 +25,30 @@ from physc.domains.angrybirds.launch import Shot, Shots, shots_of
 
 TAP_SHARES = (0.45, 0.6, 0.75, 0.9)  # of the way to the target, where a candidate taps
 WAITS = (0.5, 1.0, 2.0, 3.0)  # seconds after the bird before comes off the slingshot, when a timed shot is tried
+
+
+@attrs.frozen
+class Solution:
+    """The intended solution of one untapped shot of the red bird (version 1's record): a
+    full-stretch shot."""
+
+    aimed_at: str  # the point of interest, e.g. "rBlock.left, low"
+    target: tuple[float, float]
+    trajectory: str  # "low" | "high"
+    release_angle: float  # degrees
+    # The shot as Phy-Q's agent framework sends it, `env.step([dx, dy, tap_time])` (whole
+    # pixels from the slingshot's reference point), and the release angle the game launches
+    # that at (physc.domains.angrybirds.agent_action); None in task files from before them.
+    agent_action: tuple[int, int, int] | None = None
+    agent_angle: float | None = None
+
+    def __attrs_post_init__(self):
+        """A task file's shot holds finite numbers and a trajectory (ValueError if not)."""
+        numbers = (*self.target, self.release_angle) if isinstance(self.target, tuple) and len(self.target) == 2 else None
+        if numbers is None or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
+            raise ValueError("the solution's target and release angle must be finite numbers")
+        if self.trajectory not in ("low", "high"):
+            raise ValueError(f"the solution's trajectory is 'low' or 'high', not {self.trajectory!r}")
 
 
 @attrs.frozen
@@ -179,8 +203,6 @@ def nudged(action, world, step: int, degrees: float):
 
 def solution(label: str, action, world):
     """The task's record of `action` (module docstring)."""
-    from physc.compiler.task import Solution
-
     if simple(action):
         return Solution(label, action.target, action.trajectory, round(action.release_angle(world), 5))
     labels = label.split("; ")
