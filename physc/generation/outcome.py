@@ -13,7 +13,11 @@ import attrs
 
 @attrs.frozen
 class Parts:
-    """The parts of a task that a satisfied layout gives (see Task)."""
+    """The parts of a task that a satisfied layout gives: each field is the Task's field of the
+    same name (physc.compiler.task.Task), which the pipeline passes on whole. Why a record of its
+    own: the search makes it for one layout, before the layout loop knows which layout the task
+    comes from and what the run cost; `Outcome` carries it with why a layout was given up, and
+    the layout loop's `Generated` with the costs."""
 
     level: object  # the domain's level
     solution: object  # the domain's record of the action (its actions' `solution`)

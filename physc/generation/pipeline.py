@@ -167,29 +167,21 @@ class Pipeline:
         loop = LayoutLoop(self.domain, self.scenario, self.rng, self.settings, self.progress)
         with self.within_budget():
             generated = loop.run(self.placements())
-        result, used = generated.outcome, generated.placed.layout
-        parts = result.parts
+        parts = generated.outcome.parts
+        # The search's Parts are the Task's own fields, passed whole; the rest is what only the
+        # run knows (the scenario, seed, world and engine) and what the layout loop counted.
         return Task(
+            **attrs.asdict(parts, recurse=False),
             scenario=self.scenario.name,
             domain=self.domain.name,
             seed=self.seed,
             world=world_name(self.domain),
             backend=self.domain.backend.name,
             source=self.source,
-            level=parts.level,
-            solution=parts.solution,
-            trace=parts.trace,
-            validated=parts.validated,
-            robustness=parts.robustness,
             fallback=parts.robustness[0] < parts.robustness[1],
             structure=generated.placed.structure,
-            repairs=parts.repairs,
-            obstacles=parts.obstacles,
-            distractors=parts.distractors,
-            acceptance=parts.acceptance,
-            margins=parts.margins,
             layouts_tried=generated.layouts,
-            conjunctions_tried=used.conjunctions_tried,
+            conjunctions_tried=generated.placed.layout.conjunctions_tried,
             simulations=generated.simulations,
             given_up=generated.given_up,
             seconds={k: round(v, 4) for k, v in generated.seconds.items()},

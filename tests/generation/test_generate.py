@@ -118,3 +118,15 @@ def test_a_failure_says_why_its_layouts_were_given_up():
     assert run.status == 3
     assert "within the budget (2 layouts)" in run.stderr and "; given up: 2 × the sequence was not realised" in run.stderr
     assert "in order (never `" in run.stderr  # how far the best simulation got, and where it stopped
+
+
+def test_the_searchs_parts_are_the_tasks_own_fields():
+    """One record from the search to the task: every field of Parts is the Task's field of the
+    same name, passed on whole (physc.generation.pipeline)."""
+    import attrs
+
+    from physc.compiler.task import Task
+    from physc.generation.outcome import Parts
+
+    task_fields = {f.name: f for f in attrs.fields(Task)}
+    assert {f.name for f in attrs.fields(Parts)} <= set(task_fields)
