@@ -77,7 +77,7 @@ def cmd_verify(args) -> int:
                 "failed_readings": list(result.failed),
                 "trace": result.trace,
                 "why": result.why,
-                "agent_action": None if getattr(solution, "agent_action", None) is None else list(solution.agent_action),
+                "sent": domain.actions.sent_record(solution),
             }
         )
     else:
@@ -88,8 +88,9 @@ def cmd_verify(args) -> int:
         for name in result.failed:
             print(f"  fails in the reading: {name}")
         print(f"  realised: {result.trace or '(nothing)'}")
-        if getattr(solution, "agent_action", None) is not None:
-            print(f"  as Phy-Q's agents send it (replayed too): env.step({list(solution.agent_action)}), launched at {solution.agent_angle:g}°")
+        sent = domain.actions.sent_text(solution)
+        if sent is not None:
+            print(f"  {sent}")
     return EXIT_OK if result.passes(replays) else EXIT_INPUT
 
 

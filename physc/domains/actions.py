@@ -83,6 +83,16 @@ class Actions(Part):
         action itself (angrybirds: the drag Phy-Q's agent framework sends); the default: as it is."""
         return solution
 
+    def sent_text(self, solution) -> str | None:
+        """What the target world's players send for `solution`, in words, for `physc verify` to
+        print beside its verdict (angrybirds: Phy-Q's `env.step([dx, dy, tap])` and the angle the
+        game launches it at); None: they send the solution's own action (the default)."""
+        return None
+
+    def sent_record(self, solution):
+        """The same as plain data for `physc verify --format json` (`sent`); None: as recorded."""
+        return None
+
     def sent_action(self, solution):
         """The action `played_as` recorded, as the world plays it (`physc verify` replays it beside
         the solution); None: the solution's own action is what players send (default)."""

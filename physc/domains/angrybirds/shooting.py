@@ -85,3 +85,24 @@ class ScienceBirdsActions(Actions):
         from physc.domains.angrybirds import shots
 
         return shots.action_of(solution)
+
+    @staticmethod
+    def sent_text(solution) -> str | None:
+        """Each shot as Phy-Q's agents send it, which `physc verify` replays too."""
+        from physc.domains.angrybirds.shots import each_shot
+
+        sent = [(s.agent_action, s.agent_angle) for s in each_shot(solution)]
+        if any(action is None for action, _ in sent):
+            return None
+        steps = ", ".join(f"env.step({list(action)}), launched at {angle:g}°" for action, angle in sent)
+        return f"as Phy-Q's agents send it (replayed too): {steps}"
+
+    @staticmethod
+    def sent_record(solution):
+        """Each shot's `[dx, dy, tap in ms]`, as Phy-Q's agents send it (one shot: the list itself)."""
+        from physc.domains.angrybirds.shots import each_shot
+
+        sent = [s.agent_action for s in each_shot(solution)]
+        if any(action is None for action in sent):
+            return None
+        return list(sent[0]) if len(sent) == 1 else [list(a) for a in sent]

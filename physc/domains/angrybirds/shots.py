@@ -213,6 +213,11 @@ def solution(label: str, action, world):
     return ShotsSolution(label, tuple(parts))
 
 
+def each_shot(solution) -> tuple:
+    """The shot records of a task's solution: its BirdShots, or version 1's Solution alone."""
+    return solution.shots if isinstance(solution, ShotsSolution) else (solution,)
+
+
 def action_of(solution, noise=None):
     """The action a recorded solution takes: at its targets, or (`noise`: (rng, σ)) at its
     release angles jittered."""
