@@ -21,7 +21,7 @@ from physc.compiler.stages import StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
-from physc.api.compiling import no_task, pipeline as scenario_pipeline
+from physc.api.compiling import no_task, pipeline
 from physc.commands.options import run_settings
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
@@ -160,14 +160,14 @@ def cmd_compile(args) -> int:
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
         heartbeat = Heartbeat(f"[{index}/{len(selected)}] {ir.name}") if generating and not args.quiet else None
-        pipeline = scenario_pipeline(scenario, ir, domain, args.seed, run_settings(args), progress=None if heartbeat is None else heartbeat.update)
+        generation = pipeline(scenario, ir, domain, args.seed, run_settings(args), progress=None if heartbeat is None else heartbeat.update)
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
             # The picture (a simulation of the solution's paths) is part of the work: within
             # the time budget, and where Ctrl-C stops it safely.
-            with budget.interruptible(), pipeline.within_budget(chosen.name), heartbeat or contextlib.nullcontext():
-                value = chosen.run(Unit(scenario, ir), pipeline)
+            with budget.interruptible(), generation.within_budget(chosen.name), heartbeat or contextlib.nullcontext():
+                value = chosen.run(Unit(scenario, ir), generation)
                 picture = _picture(value, domain, args.png) if args.png else None
         except Infeasible as error:
             failures.append(no_task(error, scenario))
