@@ -17,7 +17,7 @@ from physc.commands.common import (
     check_min_robustness,
     reporter,
 )
-from physc.compiler.stages import StageError, Unit, stage
+from physc.compiler.stages import BY_NAME, StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
@@ -84,8 +84,8 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
     task) needs: refused before any work, at the scenario's `domain` line."""
     from physc.domains.base import STAGE_NEEDS, MissingCapability, require
 
-    picture = ("picture",) if args.png and stage_name in ("layout", "task", "level") else ()
-    verifying = ("replay",) if args.verify_backend and stage_name in ("task", "level") else ()
+    picture = ("picture",) if args.png and BY_NAME[stage_name].drawn else ()
+    verifying = ("replay",) if args.verify_backend and BY_NAME[stage_name].simulates else ()
     asked = f"--emit {stage_name}" + (" --png" if picture else "") + (" --verify-backend" if verifying else "")
     found = []
     for scenario in selected:
@@ -112,8 +112,8 @@ def cmd_compile(args) -> int:
     fmt = args.format or chosen.formats[0]
     if fmt not in chosen.formats:
         raise UsageError(f"the stage '{chosen.name}' can be printed as {' or '.join(chosen.formats)}, not {fmt}")
-    generating = chosen.name in ("task", "level")
-    if args.png and chosen.name not in ("layout", "task", "level"):
+    generating = chosen.simulates
+    if args.png and not chosen.drawn:
         raise UsageError("--png draws a layout or a task: use it with --emit layout, task or level")
     if args.task and not generating:
         raise UsageError("--task writes the generated task: use it with --emit level or task")

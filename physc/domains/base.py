@@ -34,6 +34,7 @@ import abc
 import copy
 from typing import TYPE_CHECKING
 
+from physc.compiler.stages import NEEDS
 from physc.domains.errors import DomainError, LevelError, MissingCapability
 from physc.domains.evaluation import Evaluation
 from physc.domains.level_files import LevelFiles
@@ -64,23 +65,10 @@ DEFAULTS = (
 )  # working defaults
 FILES = ("emit_level", "picture", "read_level", "draw")  # the capabilities that are members of `files`
 
-# What each stage of `physc compile --emit STAGE` asks of the domain; a stage runs
-# the stages before it, so each includes what they need. `picture` is asked for by
-# `--png` of a task or level.
-_LAYOUT_GRAPH = ("layout_rules",)
-_DIMENSION_GRAPHS = _LAYOUT_GRAPH + ("layout_parameters", "concretize")
-_LAYOUT = _DIMENSION_GRAPHS + ("reach_targets", "reachable")
-_TASK = _LAYOUT + ("satisfy", "robustness_replays")  # `--png` adds "picture" to any stage from layout on
-STAGE_NEEDS: dict[str, tuple[str, ...]] = {
-    "ast": (),
-    "scenario": (),
-    "layout-graph": _LAYOUT_GRAPH,
-    "qsr": _LAYOUT_GRAPH,
-    "dimension-graphs": _DIMENSION_GRAPHS,
-    "layout": _LAYOUT,
-    "task": _TASK,
-    "level": _TASK + ("emit_level",),
-}
+# What each stage of `physc compile --emit STAGE` asks of the domain, the stages before it
+# included (physc.compiler.stages, where each stage says what it adds). `picture` is asked for
+# by `--png` of a layout, task or level.
+STAGE_NEEDS: dict[str, tuple[str, ...]] = NEEDS
 
 
 def provides(domain: Domain, hook: str) -> bool:
