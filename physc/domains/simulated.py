@@ -15,14 +15,15 @@ does:
   along, their record in a task file, the random agent's draw), `search`
   (physc.domains.search_hooks: the bodies a new object may take and their physics, the static
   bar that blocks forbidden hits, distractors, the search's settings) and, as every domain,
-  `files` (physc.domains.level_files). A domain with a game of its own (angrybirds) overrides
+  `files` (physc.domains.level_files) and `evaluation` (physc.domains.evaluation: a benchmark's
+  acceptance rule, the agent of accidental solvability). A domain with a game of its own (angrybirds) overrides
   `play` instead of writing `scene` and `rules`, and declares it (`capabilities`).
 
 Everything else is physc's: the search that makes a placed layout a task
 (physc.generation.search, which the layout loop runs for a domain that declares
 `satisfy`), the robustness replays,
-stability, the replays of `physc verify` and the evaluation's measurements
-(intended solvability, the random agent's accidental solvability and AUCCESS).
+stability, the replays of `physc verify` and the evaluation's measurements of intended
+solvability and fidelity.
 """
 
 from __future__ import annotations
@@ -45,6 +46,8 @@ def search_needs(domain: SimulatedDomain) -> tuple[str, ...]:
     """The hooks the search needs that a simulated domain must write (E0703 before any work if it
     lacks one): a domain with a game of its own declares `play` and needs no `scene`."""
     return tuple(h for h in HOOKS if not ("play" in domain.capabilities and h == "scene"))
+
+
 class SimulatedDomain(Domain):
     """The base class of a one-action domain (module docstring): the generation, replay and
     measurement hooks of `Domain` from a few of its own."""

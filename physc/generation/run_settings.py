@@ -2,7 +2,7 @@
 `physc.compile`'s keywords down to the layout loop, the search and the workers of `physc
 generate` and `physc eval`, under one name each (the option `--time-budget` is the field
 `time_budget` everywhere). A job (physc.generation.job.Job) carries one; a stored result says
-which it was made with (`record`)."""
+which it was made with (the job's `recorded`)."""
 
 from __future__ import annotations
 
@@ -36,11 +36,3 @@ class RunSettings:
         """The noisy replays a solution must pass at least in `domain`: `min_robustness`, or all
         of the domain's (at least one)."""
         return self.min_robustness if self.min_robustness is not None else (domain.robustness_replays or 1)
-
-    def record(self) -> dict:
-        """The settings a stored result depends on, by name (a dataset row's and an evaluation
-        record's `settings`)."""
-        return {
-            "time_budget": self.time_budget, "layouts": self.layouts, "min_robustness": self.min_robustness, "validate": self.validate,
-            "acceptance": self.acceptance,
-        }

@@ -84,10 +84,11 @@ def attempts(domain, level, actions: Iterable, until_solved: bool = False) -> li
     attempt; AGENT_DRAWS actions are read at most); with `until_solved`, none after the first
     that solves it."""
     outcomes: list[bool] = []
+    valid = domain.actions.valid
     for action in itertools.islice(actions, AGENT_DRAWS):
         if len(outcomes) == AGENT_ATTEMPTS:
             break
-        if action is None or not domain.actions.valid(level, action):
+        if action is None or not valid(level, action):
             continue
         outcomes.append(domain.playout(level, action, to_end=False).solved)
         if until_solved and outcomes[-1]:

@@ -146,21 +146,19 @@ def inside(bodies: list, pairs, held) -> list:
             below = extent("jar", height)[2]
             out[index[jar_name]] = attrs.evolve(jar, x=thing.x, y=round(bottom + height / 2 + below, 3), size=height)
             moved = jar_name
-        elif thing.shape == "ball" and f"support_{name}" in index:
-            # Upright, and the layout placed the ball on a support of its own (where its path
-            # starts): the jar comes to it, its base where the ball rests, the ball in it.
-            base = thing.y - thing.size + jar_thickness(jar.size) / 2
-            _, ball = held(name, thing.x, base, jar.angle, jar.size, thing.color, jar.color)
-            out[index[jar_name]] = attrs.evolve(jar, x=round(thing.x, 3), y=round(base, 3))
-            out[index[name]] = attrs.evolve(thing, x=ball.x, y=ball.y, size=min(thing.size, ball.size))
-            moved = jar_name
         else:  # upright: the object goes in
+            moved = name
+            if thing.shape == "ball" and f"support_{name}" in index:
+                # The layout placed the ball on a support of its own (where its path starts):
+                # the jar comes to it first, its base where the ball rests.
+                base = thing.y - thing.size + jar_thickness(jar.size) / 2
+                jar = out[index[jar_name]] = attrs.evolve(jar, x=round(thing.x, 3), y=round(base, 3))
+                moved = jar_name
             if thing.shape == "ball":
                 _, ball = held(name, jar.x, jar.y, jar.angle, jar.size, thing.color, jar.color)
                 out[index[name]] = attrs.evolve(thing, x=ball.x, y=ball.y, size=min(thing.size, ball.size))
             else:  # a stick stands on the base, whose top lies `t / 2` above the jar's origin
                 half_t = jar.size / 2 - extent("jar", jar.size)[2]
                 out[index[name]] = attrs.evolve(thing, x=jar.x, y=round(jar.y + half_t + thing.size / 2, 3))
-            moved = name
         out = [b for b in out if b.name != f"support_{moved}"]
     return out
