@@ -23,6 +23,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from physc.simulation.ending import Ending
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "plugins" / "physc-phyre" / "examples" / "phyre"
 TEMPLATES = ("00000", "00002", "00009", "00011", "00021", "00024")
@@ -62,7 +63,7 @@ def judge(path: Path) -> dict:
     action = domain.actions.action_of(task.solution)
     counter = Counter()
     started = time.perf_counter()
-    judged = domain.evaluation.acceptance(task.level, action, lambda a: counter.run(lambda: domain.playout(task.level, a, to_end=False)).solved)
+    judged = domain.evaluation.acceptance(task.level, action, lambda a: counter.run(lambda: domain.playout(task.level, a, ending=Ending.SETTLED)).solved)
     seconds = time.perf_counter() - started
     return {"task": path.name, "seconds": round(seconds, 3), "plays": counter.simulations, "verdict": judged.record() if judged else None}
 

@@ -5,7 +5,7 @@ the files given), plays a set of actions three ways on one core and counts steps
 
 * **full**: the run as the search records it (physc.simulation.run.run: every state, contact
   and separation kept), recognition left out;
-* **playout**: the outcome playout (physc.simulation.run.play_out), played to the end;
+* **playout**: the outcome playout (physc.simulation.run.run_to_outcome), played to the end;
 * **engine alone**: the same worlds, built the same way, stepped as many steps with the
   contact callbacks drained and nothing read: the physical limit here.
 
@@ -25,6 +25,7 @@ import platform
 import random
 import time
 from pathlib import Path
+from physc.simulation.ending import Ending
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT = sorted((ROOT / "tests" / "golden" / "task").glob("*.json")) + sorted((ROOT / "plugins" / "physc-phyre" / "tests" / "data").glob("*.json"))
@@ -62,7 +63,7 @@ def measure(path: Path, count: int) -> dict:
     domain = domain_of(task)
     played = actions(domain, task, count)
     started = time.perf_counter()
-    full = [domain.play(task.level, a, recognise=False) for a in played]
+    full = [domain.play(task.level, a, ending=Ending.OUTCOME) for a in played]
     full_s = time.perf_counter() - started
     started = time.perf_counter()
     outs = [domain.playout(task.level, a) for a in played]

@@ -4,14 +4,17 @@ from __future__ import annotations
 
 import enum
 import json
-from typing import Any
+from typing import Union
 
 import attrs
 
 from physc.diagnostics import Span
 
+# Plain data, as JSON holds it: what every IR value dumps to and a task file reads back from.
+Data = Union[None, bool, int, float, str, list["Data"], dict[str, "Data"]]
 
-def to_data(value: Any) -> Any:
+
+def to_data(value: object) -> Data:
     """Plain data (dicts, lists, strings, numbers) for an IR value.
 
     attrs instances become objects whose first key `node` names their class (a field marked
@@ -44,11 +47,11 @@ def to_data(value: Any) -> Any:
     return value
 
 
-def dumps(value: Any) -> str:
+def dumps(value: object) -> str:
     return json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n"
 
 
-def from_data(data: Any, classes: dict[str, type]) -> Any:
+def from_data(data: Data, classes: dict[str, type]) -> object:
     """The IR value that `to_data` made `data` from, for the attrs classes in `classes` (by
     name, as `node` names them): objects of another node, and fields the class does not have
     (a file written by another version of its domain), are refused (ValueError), rather than

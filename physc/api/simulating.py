@@ -15,6 +15,7 @@ import random
 from physc.api.errors import FileError
 from physc.api.tasks import domain_of, scenario_of
 from physc.compiler.task import Task
+from physc.simulation.ending import Ending
 
 __all__ = ["read_level", "render", "simulate", "verify"]
 
@@ -82,7 +83,7 @@ def simulate(
 def play_to_rest(domain, level, action, scenario=None, seconds: float | None = None):
     """`domain.play` of the level with the action, judged against `scenario`, until everything
     rests as the target world plays it (`whole`), within `seconds` (default: the domain's)."""
-    return domain.play(level, action, scenario, seconds or domain.seconds, whole=True)
+    return domain.play(level, action, scenario, seconds or domain.seconds, ending=Ending.WHOLE)
 
 
 def bound_domain(domain=None, world: str | None = None, backend: str | None = None):

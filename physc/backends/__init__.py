@@ -167,7 +167,7 @@ class EngineWorld(Protocol):
     def listen(self, details: bool) -> None:
         """Whether the contacts begun and ended are reported (`begun`, `ended`) with their
         details; False: only who touches whom is kept (an outcome playout whose rules hear no
-        contacts, physc.simulation.run.play_out)."""
+        contacts, physc.simulation.run.run_to_outcome)."""
         ...
 
 

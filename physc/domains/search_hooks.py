@@ -17,6 +17,11 @@ class SearchHooks(Part):
     """The search's budgets and beams, a physc.generation.settings.SearchSettings (None: physc's
     defaults)."""
 
+    seconds: float | None = None
+    """A play's simulated time at most while searching, each turn's (None: the domain's
+    `seconds`, as every other play): a domain whose plays for the search may stop sooner than
+    its evaluation's says so (angrybirds)."""
+
     trace_scale: float = 1.0
     """Layout lengths per length of the simulation (PHYRE: pixels per metre): how a simulated
     path is read in the placed layout (physc.generation.placing)."""

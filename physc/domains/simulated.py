@@ -16,14 +16,15 @@ does:
   (physc.domains.search_hooks: the bodies a new object may take and their physics, the static
   bar that blocks forbidden hits, distractors, the search's settings) and, as every domain,
   `files` (physc.domains.level_files) and `evaluation` (physc.domains.evaluation: a benchmark's
-  acceptance rule, the agent of accidental solvability). A domain with a game of its own (angrybirds) overrides
-  `play` instead of writing `scene` and `rules`, and declares it (`capabilities`).
+  acceptance rule, the agent of accidental solvability). A domain whose rules are made
+  with its scene (angrybirds: the game keeps the level's lives and birds) writes
+  `simulation(level, action, ending)`, the two at once, instead, and declares it.
 
-Everything else is physc's: the search that makes a placed layout a task
+Everything else is physc's: every play through the generic loop (`play`, `playout`, each
+ending as physc.simulation.ending.Ending says), the search that makes a placed layout a task
 (physc.generation.search, which the layout loop runs for a domain that declares
-`satisfy`), the robustness replays,
-stability, the replays of `physc verify` and the evaluation's measurements of intended
-solvability and fidelity.
+`satisfy`), the robustness replays, stability, the replays of `physc verify` and the
+evaluation's measurements of intended solvability and fidelity.
 """
 
 from __future__ import annotations
@@ -34,7 +35,8 @@ from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-from physc.simulation.scene import Scene, outcome, play_scene
+from physc.simulation.ending import Ending
+from physc.simulation.scene import Scene, play_scene, playout
 from physc.simulation.stability import stable
 from physc.simulation.trace import Playout, Trace
 
@@ -44,8 +46,10 @@ HOOKS = ("level_from_layout", "scene", "actions")
 
 def search_needs(domain: SimulatedDomain) -> tuple[str, ...]:
     """The hooks the search needs that a simulated domain must write (E0703 before any work if it
-    lacks one): a domain with a game of its own declares `play` and needs no `scene`."""
-    return tuple(h for h in HOOKS if not ("play" in domain.capabilities and h == "scene"))
+    lacks one): a domain that writes `simulation` (its scene made with its rules), or `play` (a
+    world with no physics engine of physc's), needs no `scene`."""
+    own = {"simulation", "play"} & domain.capabilities
+    return tuple(h for h in HOOKS if not (own and h == "scene"))
 
 
 class SimulatedDomain(Domain):
@@ -88,8 +92,9 @@ class SimulatedDomain(Domain):
     capabilities = frozenset({"satisfy", "replay", "stability"})
     """physc's search makes its tasks, replays its solutions and measures its levels' stability;
     a subclass adds what it writes (`Domain.capabilities`), and for the search declares
-    `level_from_layout`, `actions`, and `scene` (the generic `play`) or `play` (a game of its
-    own); optionally `distractors` and `random_action` (the evaluation's random agent)."""
+    `level_from_layout`, `actions`, and `scene` (with `rules`), or `simulation` (the two made
+    together), or `play` (a world no physc engine runs); optionally `distractors` and
+    `random_action` (the evaluation's random agent)."""
 
     # ---- what the domain writes ---------------------------------------------------------
     def level_from_layout(self, layout, scenario):
@@ -115,44 +120,46 @@ class SimulatedDomain(Domain):
     their physics, obstacles, distractors, the domain's own local changes, budgets."""
 
     # ---- what physc does with them --------------------------------------------------------
-    def play(self, level, action, scenario=None, seconds: float | None = None, recognise: bool = True, resume=None, whole: bool = False) -> Trace:
-        """`level` played with `action` in the selected backend; judged against `scenario`'s
-        restrictions and declared bounces when one is given; `resume`: a snapshot of an
-        earlier run to go on from (physc.simulation.snapshot), which a domain that overrides
-        `play` passes on to the run loop. `whole`: played as the target world plays it to the
-        end (`physc simulate`), where a domain's play would stop sooner for the search (the
-        generic play always plays all of `seconds`)."""
+    def simulation(self, level, action, ending: Ending) -> tuple[Scene, RunRules]:
+        """A play of `level` with `action` for the generic loop: its scene and its rules, fresh
+        (rules keep a run's state). The default: `scene` and `rules`, plain rules for a `STILL`
+        play. A domain whose rules are made with its scene (angrybirds: the game's objects, lives
+        and birds) writes this instead of the two, and declares `simulation`."""
+        return self.scene(level, action), (RunRules() if ending is Ending.STILL else self.rules(level))
+
+    def play(self, level, action, scenario=None, seconds: float | None = None, ending: Ending = Ending.READ, resume=None) -> Trace:
+        """`level` played with `action` in the selected backend for `seconds` at most (each
+        turn's), ending as `ending` says; its interactions recognised where the ending reads them,
+        and judged against `scenario`'s restrictions and declared bounces when one is given.
+        `resume`: a snapshot of an earlier run to go on from (physc.simulation.snapshot)."""
         restrictions = scenario.restrictions if scenario is not None else ()
         redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
-        return play_scene(
-            self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, self.recogniser, restrictions, redirects, recognise,
-            resume,
-        )
+        scene, rules = self.simulation(level, action, ending)
+        return play_scene(scene, self.backend, rules, seconds or self.seconds, self.recogniser, restrictions, redirects, ending.recognised, resume)
 
-    def playout(self, level, action, seconds: float | None = None, whole: bool = False, to_end: bool = True) -> Playout:
-        """`level` played with `action` to its outcome alone (physc.simulation.run.play_out):
+    def playout(self, level, action, seconds: float | None = None, ending: Ending = Ending.OUTCOME) -> Playout:
+        """`level` played with `action` to its outcome alone (physc.simulation.scene.playout):
         solved, when, what was destroyed and where the bodies end, as `play` would say, without
         recording or recognising what no verdict reads. What acceptance, the random agent, the
-        simulation cache and the agents' environments ask. `whole`: as the target world plays
-        it to the end (a domain whose `play` stops sooner for the search reads it; angrybirds).
-        Without `to_end`, it stops once the outcome is settled (a verdict that reads nothing else)."""
-        return outcome(self.scene(level, action), self.backend, self.rules(level), seconds or self.seconds, to_end)
+        simulation cache and the agents' environments ask. With `Ending.SETTLED`, it stops once
+        the outcome is settled (a verdict that reads nothing else)."""
+        scene, rules = self.simulation(level, action, ending)
+        return playout(scene, self.backend, rules, seconds or self.seconds, ending is not Ending.SETTLED)
 
     def replay(self, level, solution, scenario, rng=None):
         """The solution played in `level`, judged against `scenario`; with `rng`, a noisy replay
-        under the domain's noise model (`actions.noisy`)."""
+        under the domain's noise model (`actions.noisy`, the one the search's replays draw)."""
         action = self.actions.action_of(solution)
         if rng is not None:
             level, action = self.actions.noisy(level, action, rng)
         return self.play(level, action, scenario)
 
     def stability(self, level) -> tuple[bool, float]:
-        """(stable, the largest shift) of `level` left alone for all of `seconds`: under plain
-        rules, which never end a run early (a domain's rules may stop once all is still, and
-        something that starts to tip slowly must not pass for standing). With `still_start`
-        False, "stable" is PHYRE's acceptance of a scene: left alone, it does not solve itself
-        (the shift is still reported)."""
+        """(stable, the largest shift) of `level` left alone for all of `seconds` (`Ending.STILL`:
+        a domain's rules that may stop once all is still must not, as something that starts to tip
+        slowly must not pass for standing). With `still_start` False, "stable" is PHYRE's
+        acceptance of a scene: left alone, it does not solve itself (the shift is still reported)."""
         if self.still_start:
-            return stable(play_scene(self.scene(level, None), self.backend, RunRules(), self.seconds, self.recogniser, recognise=False), self.stable_limit)
-        alone = self.play(level, None, recognise=False)
+            return stable(self.play(level, None, ending=Ending.STILL), self.stable_limit)
+        alone = self.play(level, None, ending=Ending.OUTCOME)
         return not alone.solved, stable(alone, self.stable_limit)[1]

@@ -22,6 +22,7 @@ import numpy as np
 
 from physc.compiler.task import Task
 from physc.envs import sources
+from physc.simulation.ending import Ending
 
 
 class SimulationStatus(enum.IntEnum):
@@ -146,7 +147,7 @@ class ActionSimulator:
         if need_interactions or need_images or need_featurized_objects:
             trace = play_to_rest(domain, level, played, scenario)
         else:
-            trace = domain.playout(level, played, whole=True)
+            trace = domain.playout(level, played, ending=Ending.WHOLE)
         reward, told = self.playing.reward(trace)
         info = {"valid": True, "solved": bool(trace.solved), **told}
         if need_interactions:

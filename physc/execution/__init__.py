@@ -16,9 +16,9 @@ so the same jobs give the same results on every executor and with any number of 
 from __future__ import annotations
 
 import abc
-from typing import Any, Callable, Iterable
+from typing import Callable, Iterable
 
-Keep = Callable[[Any], None]
+Keep = Callable[[object], None]  # called here with each job's result, as it completes
 
 
 class ExecutorError(Exception):

@@ -60,6 +60,11 @@ class Problem:
         return self.scenario.interactions
 
     @property
+    def seconds(self) -> float:
+        """A play's simulated time at most while searching (each turn's)."""
+        return self.domain.search.seconds or self.domain.seconds
+
+    @property
     def parameters(self):
         """The layout's QSR distances and placement area (the domain's)."""
         return self.domain.layout_parameters
@@ -114,7 +119,7 @@ def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | 
     KEPT_SIMULATIONS asked for. The ledger notes how far it got."""
     key = (seconds, layout.objects, action, resume is not None and resume.step)
     options = {} if resume is None else {"resume": resume}
-    trace = ledger.evaluator.kept(key, lambda: problem.domain.play(problem.level_of(layout), action, problem.scenario, seconds, **options))
+    trace = ledger.evaluator.kept(key, lambda: problem.domain.play(problem.level_of(layout), action, problem.scenario, seconds or problem.seconds, **options))
     attempt = Attempt("", action, trace, fidelity(problem.scenario, trace))
     ledger.best = max(ledger.best, attempt.fidelity.matched)
     if ledger.furthest is None or attempt.fidelity.score > ledger.furthest.fidelity.score:
@@ -125,5 +130,5 @@ def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | 
 def replayed(problem: Problem, ledger: Ledger, level, action, label: str = "") -> Attempt:
     """`action` played in `level` once more, judged against the scenario (uncached: a noisy
     replay, a guard's try, the final play)."""
-    trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario))
+    trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario, problem.seconds))
     return Attempt(label, action, trace, fidelity(problem.scenario, trace))

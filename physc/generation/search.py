@@ -38,6 +38,7 @@ from physc.generation.problem import Ledger, Problem, replayed
 from physc.generation.run_settings import RunSettings
 from physc.generation.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.stopped import why_stopped
+from physc.simulation.ending import Ending
 
 
 def satisfy(domain, scenario, layout, rng, run: RunSettings = RunSettings(), accept: int | None = None) -> Outcome:
@@ -147,4 +148,4 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
 def solves(domain, level, action, ledger: Ledger) -> bool:
     """Whether `action` solves `level`: one play of the benchmark's acceptance, counted by the
     search's evaluator within its budget."""
-    return ledger.evaluator.run(lambda: domain.playout(level, action, to_end=False)).solved
+    return ledger.evaluator.run(lambda: domain.playout(level, action, ending=Ending.SETTLED)).solved

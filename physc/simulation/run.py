@@ -17,6 +17,8 @@ hooks per simulator):
   bird's split), for rules that say `arrivals`;
 * `finished`: the run is over before its time (everything at rest, the goal met);
 * `solved`: whether the recorded run met the domain's goal;
+* `completed` / `read`: what the rules add to the trace of their run, and how they name what
+  the recogniser read in it (Science Birds: a split bird's parts are that bird);
 * `resume`: the run continues from a snapshot (physc.simulation.snapshot): the rules'
   state as the events before it leave it (Science Birds: lives, the bird's checks).
 
@@ -34,7 +36,7 @@ import numpy as np
 
 from physc import budget
 from physc.simulation.snapshot import Snapshot
-from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, SeparationRecord
+from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, Interaction, SeparationRecord, Trace
 
 
 class RunRules:
@@ -44,22 +46,22 @@ class RunRules:
     reads_states = True
     """Whether `removals_due` and `finished` read `values` (every dynamic body's state, each
     step). Rules that ask the world what they need instead (World.moving, World.touches) say
-    False, and an outcome playout (`play_out`) then reads no state until the run ends."""
+    False, and an outcome playout (`run_to_outcome`) then reads no state until the run ends."""
 
     arrivals = False
     """Whether bodies join the run after its start (`enter`): the dynamic bodies they will be
     are listed from the start, not yet in the world (their rows NaN until they enter)."""
 
-    def on_start(self, world) -> None:
-        """The run is about to begin in `world`: the dynamic bodies not in it yet are
+    def on_start(self, engine) -> None:
+        """The run is about to begin in `engine`: the dynamic bodies not in it yet are
         `arrivals`' (see `enter`)."""
 
-    def enter(self, world, values: list, alive: set[str], damage: list[DamageRecord], time: float) -> tuple[str, ...]:
-        """The dynamic bodies that join the run now, added to `world` by the rules (for rules
+    def enter(self, engine, values: list, alive: set[str], damage: list[DamageRecord], time: float) -> tuple[str, ...]:
+        """The dynamic bodies that join the run now, added to `engine` by the rules (for rules
         that say `arrivals`; called every step after the removals)."""
         return ()
 
-    def on_contact(self, world, contact: ContactRecord, damage: list[DamageRecord], time: float) -> None:
+    def on_contact(self, engine, contact: ContactRecord, damage: list[DamageRecord], time: float) -> None:
         """A contact began at `time` (append what it damaged to `damage`): the two bodies'
         first, or another pair of their colliders (physc.backends.ContactEvent.first)."""
 
@@ -72,12 +74,12 @@ class RunRules:
         """Why `name` (its state: x, y, angle, vx, vy, ω) leaves now: (cause, by whom), or None."""
         return None
 
-    def on_removed(self, world, name: str, cause: str, alive: set[str], damage: list[DamageRecord], time: float) -> None:
-        """`name` is leaving (still in the world): what its leaving does to the others."""
+    def on_removed(self, engine, name: str, cause: str, alive: set[str], damage: list[DamageRecord], time: float) -> None:
+        """`name` is leaving (still in the engine): what its leaving does to the others."""
 
-    def lingers(self, world, name: str, cause: str) -> float:
+    def lingers(self, engine, name: str, cause: str) -> float:
         """`name` has left the level (`gone`, `on_removed` done): the seconds it stays in the
-        world before it is taken out (0: now), doing there what the rules leave it (they may
+        engine before it is taken out (0: now), doing there what the rules leave it (they may
         change its state or colliders now). It is no longer recorded: its rows are NaN, and
         its contacts count for the rules alone."""
         return 0.0
@@ -102,16 +104,27 @@ class RunRules:
         touching by more than the engine's contacts (PHYRE's two balls)."""
         return None
 
-    def resume(self, world, snapshot: Snapshot) -> None:
+    def resume(self, engine, snapshot: Snapshot) -> None:
         """The run goes on from `snapshot` (after `on_start`): set the state the events
         before it leave (the default: the rules keep none)."""
+
+    def completed(self, trace: Trace) -> Trace:
+        """The trace of the run with what the rules kept while it ran (read once, after the run,
+        before recognition; Science Birds: the decisions another reading of its open points would
+        have made, the bodies that came in). The default adds nothing."""
+        return trace
+
+    def read(self, interactions: tuple[Interaction, ...]) -> tuple[Interaction, ...]:
+        """The interactions recognised in the run, as the scenario names them (Science Birds: what
+        a blue bird's other birds did, its own; a tap that fired a power). The default: as recognised."""
+        return interactions
 
 
 @attrs.frozen
 class Recording:
     """What a run recorded: the states (steps, bodies, 6: x y angle vx vy ω; NaN once
     gone) of the dynamic bodies in `names` order, and the events in time order. An outcome
-    playout's (`play_out`) holds the last step's states alone, and no contacts."""
+    playout's (`run_to_outcome`) holds the last step's states alone, and no contacts."""
 
     states: np.ndarray
     contacts: tuple[ContactRecord, ...]
@@ -126,8 +139,8 @@ class Recording:
         return self.played if self.played is not None else len(self.states)
 
 
-def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None) -> Recording:
-    """Step `world` for `seconds` (or until `rules.finished`), recording the bodies in
+def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None) -> Recording:
+    """Step `engine` for `seconds` (or until `rules.finished`), recording the bodies in
     `dynamic` and every contact, damage and destruction; from `resume`'s step on, if given
     (physc.simulation.snapshot)."""
     index = {name: i for i, name in enumerate(dynamic)}
@@ -135,24 +148,24 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     states = np.full((steps, len(dynamic), 6), np.nan)
     contacts, separations, damage, destructions = [], [], [], []
     alive = set(dynamic)
-    lingering: dict[str, float] = {}  # bodies gone from the level but still in the world → when they leave it
+    lingering: dict[str, float] = {}  # bodies gone from the level but still in the engine → when they leave it
     arrivals = rules.arrivals
     unrecorded: set[str] = set()  # bodies that lingered: their contacts are no longer recorded
     parting: list[tuple[str, str]] = []  # their contacts when they left the level: ended for the record next step, as a removal's are
-    rules.on_start(world)
+    rules.on_start(engine)
     if arrivals:
-        alive &= set(world.names)  # the bodies still to come are not alive yet
+        alive &= set(engine.names)  # the bodies still to come are not alive yet
     first, already = 0, set()
     if resume is not None:
-        first, already = _continued(world, dynamic, rules, resume, states, alive), set(resume.touching)
+        first, already = _continued(engine, dynamic, rules, resume, states, alive), set(resume.touching)
         contacts, separations = list(resume.contacts), list(resume.separations)
         damage, destructions = list(resume.damage), list(resume.destructions)
     for step in range(first, steps):
         budget.check()  # Ctrl-C and the time budget stop a run between steps
-        world.step(dt)
+        engine.step(dt)
         time = (step + 1) * dt
         resumed = set()
-        for event in world.begun():
+        for event in engine.begun():
             pair = frozenset((event.a, event.b))
             if pair in resumed or (event.first and pair in already):
                 already.discard(pair)
@@ -163,20 +176,20 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
             # lingers after it left the level, are heard by the rules alone.
             if event.first and not pair & unrecorded:
                 contacts.append(record)
-            rules.on_contact(world, record, damage, time)
+            rules.on_contact(engine, record, damage, time)
         separations.extend(SeparationRecord(time, a, b) for a, b in parting)
         parting.clear()
-        for a, b in world.ended():
+        for a, b in engine.ended():
             if a not in unrecorded and b not in unrecorded:
                 separations.append(SeparationRecord(time, a, b))
         for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
-            world.remove(name)
+            engine.remove(name)
             del lingering[name]
-        row = _read(world, dynamic, states[step], lingering, index)
+        row = _read(engine, dynamic, states[step], lingering, index)
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
-            values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
-        if arrivals and _entered(world, rules, values, alive, damage, time, row, index):
+            values = _removals(engine, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
+        if arrivals and _entered(engine, rules, values, alive, damage, time, row, index):
             values = row.tolist()
         if rules.finished(values, alive, time):
             states = states[: step + 1]
@@ -184,7 +197,7 @@ def run(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: floa
     return Recording(states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions))
 
 
-def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, to_end: bool = True) -> Recording:
+def run_to_outcome(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, to_end: bool = True) -> Recording:
     """`run` to the outcome, recording only what the rules' verdict reads: the same steps, the
     same hooks in the same order, so the same outcome, damage and destructions, bit for bit
     (the engine's state does not depend on what is read from it). It keeps no states but the
@@ -201,55 +214,55 @@ def play_out(world, dynamic: Sequence[str], rules: RunRules, seconds: float, dt:
     hears = type(rules).on_contact is not RunRules.on_contact
     removes = type(rules).removals_due is not RunRules.removals_due
     reads = rules.reads_states
-    step_world, finished, check = world.step, rules.finished, budget.check
+    step_world, finished, check = engine.step, rules.finished, budget.check
     settled = None if to_end or type(rules).settled is RunRules.settled else rules.settled
     arrivals = rules.arrivals
     end = steps * dt
     row = np.full((len(dynamic), 6), np.nan)
     values = None
-    world.listen(hears)
-    rules.on_start(world)
+    engine.listen(hears)
+    rules.on_start(engine)
     if arrivals:
-        alive &= set(world.names)
+        alive &= set(engine.names)
     step = -1
     for step in range(steps):
         check()
         step_world(dt)
         time = (step + 1) * dt
         if hears:
-            world.ended()  # (drained: only the rules read contacts here)
-            for event in world.begun():
+            engine.ended()  # (drained: only the rules read contacts here)
+            for event in engine.begun():
                 record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
-                rules.on_contact(world, record, damage, time)
+                rules.on_contact(engine, record, damage, time)
         if lingering:
             for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
-                world.remove(name)
+                engine.remove(name)
                 del lingering[name]
         if reads:
-            values = _read(world, dynamic, row, lingering, index).tolist()
+            values = _read(engine, dynamic, row, lingering, index).tolist()
         if removes and rules.removals_due(values, alive, time):
-            values = _removals(world, dynamic, index, rules, row, time, alive, damage, destructions, lingering)
-        if arrivals and _entered(world, rules, values, alive, damage, time, row, index):
+            values = _removals(engine, dynamic, index, rules, row, time, alive, damage, destructions, lingering)
+        if arrivals and _entered(engine, rules, values, alive, damage, time, row, index):
             values = row.tolist() if reads else values
         if finished(values, alive, time) or (settled is not None and settled(time, end)):
             break
-    return Recording(_read(world, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+    return Recording(_read(engine, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
 
 
-def _entered(world, rules: RunRules, values, alive: set, damage: list, time: float, row: np.ndarray, index: dict) -> bool:
+def _entered(engine, rules: RunRules, values, alive: set, damage: list, time: float, row: np.ndarray, index: dict) -> bool:
     """The bodies the rules bring in now (`RunRules.enter`) made alive, their states read into
     `row`; whether any came."""
-    new = rules.enter(world, values, alive, damage, time)
+    new = rules.enter(engine, values, alive, damage, time)
     for name in new:
         alive.add(name)
-        row[index[name]] = world.state(name)
+        row[index[name]] = engine.state(name)
     return bool(new)
 
 
-def _read(world, dynamic: Sequence[str], out: np.ndarray, lingering: dict, index: dict) -> np.ndarray:
-    """Every dynamic body's state into `out` (NaN for the bodies gone from the world, and for
+def _read(engine, dynamic: Sequence[str], out: np.ndarray, lingering: dict, index: dict) -> np.ndarray:
+    """Every dynamic body's state into `out` (NaN for the bodies gone from the engine, and for
     those that linger after leaving the level)."""
-    world.states(dynamic, out=out)
+    engine.states(dynamic, out=out)
     for name in lingering:
         out[index[name]] = np.nan
     return out
@@ -286,23 +299,23 @@ def _removals(
     return row.tolist()
 
 
-def _continued(world, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]) -> int:
-    """`world` (built as at the start) put in `snapshot`'s state: its bodies restored, the
+def _continued(engine, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]) -> int:
+    """`engine` (built as at the start) put in `snapshot`'s state: its bodies restored, the
     ones gone by then removed, the rows before it filled in (a body the snapshot lacks:
     its pose at the start, at rest), the rules resumed. The step to go on from."""
     first = min(snapshot.step, len(states))
     gone = snapshot.gone
-    present = set(world.names)
-    world.assume_touching(tuple(p) for p in snapshot.touching if len(p) == 2 and p <= present and not p & gone)
+    present = set(engine.names)
+    engine.assume_touching(tuple(p) for p in snapshot.touching if len(p) == 2 and p <= present and not p & gone)
     for i, name in enumerate(dynamic):
         if name in snapshot.names:
             states[:first, i] = snapshot.states[:first, snapshot.names.index(name)]
             if name in gone:
-                world.remove(name)
+                engine.remove(name)
                 alive.discard(name)
             else:
-                world.restore(name, snapshot.state(name))
+                engine.restore(name, snapshot.state(name))
         else:
-            states[:first, i] = (*world.state(name)[:3], 0.0, 0.0, 0.0)
-    rules.resume(world, snapshot)
+            states[:first, i] = (*engine.state(name)[:3], 0.0, 0.0, 0.0)
+    rules.resume(engine, snapshot)
     return first

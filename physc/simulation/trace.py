@@ -174,7 +174,7 @@ class Trace(Run):
 
 @attrs.frozen
 class Playout(Run):
-    """What an outcome playout tells of a run (physc.simulation.run.play_out): whether the
+    """What an outcome playout tells of a run (physc.simulation.run.run_to_outcome): whether the
     domain's goal was met and when, how many steps the run lasted, the damage and
     destructions, and the dynamic bodies' states (x y angle vx vy ω; NaN once gone) at its
     end. The same as the full run's Trace in all of these, bit for bit; it has no states

@@ -21,7 +21,7 @@ import pytest
 from conftest import EXAMPLES, run_physc
 
 SF = EXAMPLES / "paper" / "01_SF.phys"
-F = EXAMPLES / "paper" / "05_F.phys"
+F = EXAMPLES / "paper" / "03_SFLB.phys"  # the second scenario: quick, and written as JSON (its obstacle)
 TIMES = ("generation_seconds", "seconds")
 
 
@@ -65,7 +65,7 @@ def wait_for_rows(folder: Path, count: int, process: subprocess.Popen, seconds: 
 
 @pytest.fixture(scope="module")
 def reference(tmp_path_factory):
-    """SF and F, 4 tasks each, made one after another in this process."""
+    """SF and SFLB, 4 tasks each, made one after another in this process."""
     folder = tmp_path_factory.mktemp("reference") / "dataset"
     run = run_physc("generate", SF, F, "--tasks", "4", "--out", folder, "-q")
     assert run.status == 0, run.stderr
@@ -74,18 +74,18 @@ def reference(tmp_path_factory):
 
 def test_a_dataset_is_complete_and_loads_in_pandas(reference):
     files, rows = dataset(reference)
-    assert [(r["scenario"], r["seed"], r["outcome"]) for r in rows] == [("SF", s, "ok") for s in range(4)] + [("F", s, "ok") for s in range(4)]
-    assert {f"SF/{s}.xml" for s in range(4)} | {f"F/{s}.json" for s in range(4)} | {"README.md"} <= set(files)
+    assert [(r["scenario"], r["seed"], r["outcome"]) for r in rows] == [("SF", s, "ok") for s in range(4)] + [("SFLB", s, "ok") for s in range(4)]
+    assert {f"SF/{s}.xml" for s in range(4)} | {f"SFLB/{s}.json" for s in range(4)} | {"README.md"} <= set(files)
     tasks = pd.read_parquet(reference / "manifest.parquet")
     assert list(tasks["seed"]) == [0, 1, 2, 3] * 2 and set(tasks["outcome"]) == {"ok"}
     assert tasks["robustness_passed"].min() >= 4 and tasks["generation_seconds"].gt(0).all()
     assert tasks["solution"][0]["node"] == "Solution" and tasks["settings"][0]["backend"] == "box2d"  # structs, as in JSON Lines
     assert list(tasks["sequence_terms"][0]) == ["hit(bird, pig, any)", "destroy(bird, pig)"] and list(tasks["trace_terms"][0]) == rows[0]["trace"].split(" > ")
     assert tasks["file"][0] == "SF/scenario.phys" and (reference / "SF" / "scenario.phys").read_text().startswith("scenario SF")
-    task = json.loads((reference / "F" / "2.json").read_text())
+    task = json.loads((reference / "SFLB" / "2.json").read_text())
     assert task["seed"] == 2 and task["trace"] == rows[6]["trace"] and "seconds" not in task
     readme = (reference / "README.md").read_text()
-    assert "8 tasks of 2 scenarios: 8 generated" in readme and "| F (Falling) | angrybirds | 4 | 4 | 4 | 0 | 0 |" in readme
+    assert "8 tasks of 2 scenarios: 8 generated" in readme and "| SFLB (Single Force Left Blocked) | angrybirds | 2 | 4 | 4 | 0 | 0 |" in readme
     assert "physc generate" in readme and "pd.read_parquet" in readme and "@inproceedings" in readme
 
 

@@ -288,7 +288,7 @@ class Minimal(SimulatedDomain):
     def level_from_layout(layout, scenario=None) -> Level:
         return Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
 
-    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None, whole: bool = False) -> Trace:
+    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None) -> Trace:
         return simulate(level, action or 0.0)
 
     @staticmethod

@@ -165,3 +165,17 @@ def test_the_interface_is_documented_hook_by_hook():
     assert set(FILES) <= files and not files & public and not evaluation & public
     assert sorted(rows) == sorted(public | {"satisfy"} | files | evaluation)  # the domain's table, its files', its evaluation's
     assert set(FILES) <= set(CAPABILITIES)
+
+
+def test_science_birds_fills_the_hooks_as_any_plugin_does():
+    """Angry Birds writes its game as the scene and rules of a play (`simulation`), not plays,
+    replays or stability tests of its own: every play goes through physc's loop, and its noise
+    model is its actions' alone. The base classes stay narrow (issue 65: SimulatedDomain had 69
+    public members, inherited ones counted)."""
+    from physc.domains.angrybirds import AngryBirds
+    from physc.domains.simulated import SimulatedDomain
+
+    assert not {"play", "playout", "replay", "stability", "scene", "rules"} & set(vars(AngryBirds))
+    assert "simulation" in AngryBirds.capabilities and "simulation" in vars(AngryBirds)
+    assert len([n for n in dir(SimulatedDomain) if not n.startswith("_")]) <= 34
+    assert len([n for n in dir(Domain) if not n.startswith("_")]) <= 20

@@ -124,7 +124,7 @@ class Line(SimulatedDomain):
     def stability(self, level):
         return True, 0.0
 
-    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None, whole=False):
+    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None):
         v, gap = max(action.speed, 1e-6), level.pig - REACH
         meets = v * v - 2 * FRICTION * gap
         met = None if meets < 0 or gap < 0 else (v - math.sqrt(meets)) / FRICTION
@@ -147,7 +147,7 @@ class Line(SimulatedDomain):
             damage = (DamageRecord(met, "pig", strike, LIFE - strike, "ball"),)
             destroyed = (DestructionRecord(met, "pig", "damage", "ball"),) if strike >= LIFE else ()
             trace = Trace(DT, ("ball", "pig"), kinds, states, (contact,), (), damage, destroyed, ("pig",), bool(destroyed), outlines=outlines)
-        if not recognise:
+        if ending is not None and not ending.recognised:
             return trace
         return attrs.evolve(trace, interactions=self.recogniser.recognise(trace, {}))
 

@@ -121,7 +121,7 @@ class Line(SimulatedDomain):
     def stability(self, level):
         return True, 0.0
 
-    def play(self, level, action, scenario=None, seconds=None, recognise=True, resume=None, whole=False):
+    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None):
         """The push's trace, from the formulas of the module docstring."""
         self.plays.append((level, action))
         v, gap = max(action.speed, 1e-6), level.pig - REACH

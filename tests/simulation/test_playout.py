@@ -1,4 +1,4 @@
-"""Outcome playouts (physc.simulation.run.play_out) say what the full run says of the outcome,
+"""Outcome playouts (physc.simulation.run.run_to_outcome) say what the full run says of the outcome,
 bit for bit: on every golden task, its shot and noisy replays of it, in Angry Birds' game."""
 
 from __future__ import annotations
@@ -10,6 +10,7 @@ import pytest
 from conftest import GOLDEN
 
 from physc.api import domain_of, load_task
+from physc.simulation.ending import Ending
 
 TASKS = sorted((GOLDEN / "task").glob("*.json"))
 
@@ -30,8 +31,8 @@ def test_a_playout_of_a_golden_task_is_its_full_run_bit_for_bit(path):
     rng = random.Random(0)
     shots = [domain.actions.action_of(task.solution)] + [domain.actions.noisy(task.level, domain.actions.action_of(task.solution), rng)[1] for _ in range(2)]
     for shot in shots:
-        assert same_outcome(domain.play(task.level, shot, recognise=False), domain.playout(task.level, shot))
-        assert same_outcome(domain.play(task.level, shot, whole=True), domain.playout(task.level, shot, whole=True))
+        assert same_outcome(domain.play(task.level, shot, ending=Ending.OUTCOME), domain.playout(task.level, shot))
+        assert same_outcome(domain.play(task.level, shot, ending=Ending.WHOLE), domain.playout(task.level, shot, ending=Ending.WHOLE))
     assert domain.playout(task.level, shots[0]).solved
 
 

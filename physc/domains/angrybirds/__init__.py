@@ -22,9 +22,22 @@ from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
 from physc.domains.angrybirds.shooting import ScienceBirdsActions
 from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
+from physc.simulation.ending import Ending
 
-REPLAY_SECONDS = 10.0  # a replay's simulated time at most (the evaluation's)
-PLAY_SECONDS = 9.0  # a play's simulated time at most while generating
+PLAY_SECONDS = 10.0  # a play's simulated time at most, each shot's (the evaluation's replays; the paper's stability)
+READ_SETTLE = 0.3  # seconds a play for reading the chain goes on after the last pig goes, once nothing falls
+
+# How the game's run ends for each ending of a play (Game.scene): a play read for the chain goes on
+# READ_SETTLE after the last pig, so that a fall that began while the chain ran lands; an outcome
+# alone ends with the last pig; the whole play and stability do not stop for the pigs, and
+# stability not for rest either.
+ENDINGS = {
+    Ending.READ: {"settle_after_solved": READ_SETTLE},
+    Ending.OUTCOME: {"settle_after_solved": 0.0},
+    Ending.SETTLED: {"settle_after_solved": 0.0},
+    Ending.WHOLE: {},
+    Ending.STILL: {"stop_at_rest": False},
+}
 
 
 class AngryBirds(SimulatedDomain):
@@ -34,7 +47,7 @@ class AngryBirds(SimulatedDomain):
     worlds = WORLDS
     default_world = PHYQ.name
     capabilities = SimulatedDomain.capabilities | {
-        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "play", "actions", "distractors",
+        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "simulation", "actions", "distractors",
         "emit_level", "picture", "read_level", "draw",
     }
     @property
@@ -100,27 +113,11 @@ class AngryBirds(SimulatedDomain):
 
         return Game(level, self.world, self.backend)
 
-    def play(self, level, action, scenario=None, seconds=None, recognise: bool = True, resume=None, whole: bool = False):
-        """The level played with the shot `action` (None: no shot), judged against the
-        scenario's restrictions and declared bounces; from the snapshot `resume`, if given.
-        With `whole`, played out as the game plays it (until everything rests, not stopping
-        soon after the last pig goes: `physc simulate`)."""
-        restrictions = scenario.restrictions if scenario is not None else ()
-        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
+    def simulation(self, level, action, ending):
+        """The level as the game plays it with the shot `action` (None: no shot), the game its
+        rules (game.py), ending as `ending` asks (ENDINGS)."""
         game = self.game(level)
-        if whole:
-            return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects)
-        if not recognise:
-            return game.simulate(action, seconds or self.seconds, settle_after_solved=0.0, resume=resume)
-        return game.play(action, seconds or self.seconds, restrictions=restrictions, redirects=redirects, settle_after_solved=0.3, resume=resume)
-
-    def playout(self, level, action, seconds=None, whole: bool = False, to_end: bool = True):
-        """The shot's outcome alone (physc.simulation.run.play_out), as `play` with `recognise`
-        False (or `whole`) would run it (the game's rules settle nothing before they finish, so
-        `to_end` changes nothing)."""
-        game = self.game(level)
-        settle = {} if whole else {"settle_after_solved": 0.0}
-        return game.simulate(action, seconds or self.seconds, record=False, **settle)
+        return game.scene(action, **ENDINGS[ending]), game
 
     # ---- files, pictures, evaluation ------------------------------------------------------
 
@@ -133,28 +130,6 @@ class AngryBirds(SimulatedDomain):
             return None if angle is None else Shot(angle=angle)
         x, y, trajectory = point
         return Shot(target=(x, y), trajectory=trajectory)
-
-    def replay(self, level, solution, scenario, rng=None):
-        """The solution's shots (or, with `rng`, the evaluation's noise: the recorded release angles
-        jittered, then the objects: noise.py), played with the scenario's restrictions and declared
-        bounces for REPLAY_SECONDS. The same noise as `actions.noisy`, drawn from the task file's
-        record in the order its replays have always drawn it (a verification stays what it was)."""
-        from physc.domains.angrybirds import shots
-        from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
-
-        if rng is None:
-            shot = shots.action_of(solution)
-        else:
-            shot = shots.action_of(solution, (rng, ANGLE_SIGMA))
-            level = jitter(level, rng)
-        return self.play(level, shot, scenario, REPLAY_SECONDS)
-
-    def stability(self, level) -> tuple[bool, float]:
-        """10 s with no action: no object moves more than 0.05 units, nothing is destroyed."""
-        from physc.domains.angrybirds.stability import stability
-
-        return stability(self.game(level))
-
 
 
 DOMAIN = AngryBirds()

@@ -6,30 +6,28 @@ in turn (language version 2)."""
 
 from __future__ import annotations
 
-from physc.domains.angrybirds import REPLAY_SECONDS
 from physc.domains.angrybirds.actions import agent_targets, points_of_interest
-from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot, Shots
 
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 
 
-def accidental(game: Game, solution_target: str | None) -> tuple[float | None, int]:
-    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it,
-    and the number of plays. None when the agent found no play (no point of interest within
-    reach): a fraction of nothing is not 0, and must not pull a mean down."""
+def accidental(domain, level, solution_target: str | None) -> tuple[float | None, int]:
+    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it
+    (each an outcome playout in the domain's world and backend), and the number of plays. None
+    when the agent found no play (no point of interest within reach): a fraction of nothing is
+    not 0, and must not pull a mean down."""
     plays = solved = 0
-    for obj in agent_targets(game.level, solution_target):
+    for obj in agent_targets(level, solution_target):
         points = points_of_interest(obj)
         for name in AGENT_POINTS:
             x, y = points[name]
-            if not game.world.reachable(x, y):
+            if not domain.world.reachable(x, y):
                 continue
             for trajectory in ("low", "high"):
                 plays += 1
                 shot = Shot(target=(x, y), trajectory=trajectory)
-                if len(game.level.birds) > 1:
-                    shot = Shots(tuple(Shot(target=(x, y), trajectory=trajectory, bird="bird" if k == 0 else f"bird{k + 1}") for k in range(len(game.level.birds))))
-                trace = game.simulate(shot, REPLAY_SECONDS, settle_after_solved=0.0)
-                solved += trace.solved
+                if len(level.birds) > 1:
+                    shot = Shots(tuple(Shot(target=(x, y), trajectory=trajectory, bird="bird" if k == 0 else f"bird{k + 1}") for k in range(len(level.birds))))
+                solved += domain.playout(level, shot).solved
     return (solved / plays if plays else None), plays

@@ -15,5 +15,5 @@ class ScienceBirdsEvaluation(Evaluation):
         from physc.domains.angrybirds.agent import accidental
 
         first = self.domain.reach_targets(scenario)
-        fraction, plays = accidental(self.domain.game(level), first[0] if first else None)
+        fraction, plays = accidental(self.domain, level, first[0] if first else None)
         return {"accidental": None if fraction is None else round(fraction, 5), "agent_plays": plays}

@@ -166,12 +166,12 @@ class Flights:
                 out.append(name)
         return out
 
-    def fire(self, world, name: str, time: float) -> list[tuple[BodySpec, tuple[float, float]]]:
+    def fire(self, engine, name: str, time: float) -> list[tuple[BodySpec, tuple[float, float]]]:
         """The tap on `name` now: the bodies its power brings in, each with its velocity (a
         black bird's blast is set for `blasts_due`)."""
         self.tried.add(name)
         b = self.of(name)
-        x, y, _, vx, vy, w = world.state(name)
+        x, y, _, vx, vy, w = engine.state(name)
         if x + 2 * b.radius <= self.rest_x + POWERS.past_slingshot or (name in self.struck and b.power != "blast"):
             return []  # HUD.cs: not past the slingshot, or struck already: the power is lost
         self.tapped.append((time, name))
@@ -179,21 +179,21 @@ class Flights:
             self.killed(name, time)
         speed = math.hypot(vx, vy)
         if b.power == "boost" and speed > 0:
-            push = POWERS.boost / world.mass(name)
-            world.set_velocity(name, vx + push * vx / speed, vy + push * vy / speed, w)
+            push = POWERS.boost / engine.mass(name)
+            engine.set_velocity(name, vx + push * vx / speed, vy + push * vy / speed, w)
         elif b.power == "split":
             heading = math.atan2(vy, vx)
             angles = [heading + math.radians(a) for a in POWERS.split_angles]
             # The bird itself flies on as the middle of the fan (a copy of it, in the game, in
             # the same place at the same speed); the other two come in.
-            world.set_velocity(name, speed * math.cos(angles[1]), speed * math.sin(angles[1]), w)
+            engine.set_velocity(name, speed * math.cos(angles[1]), speed * math.sin(angles[1]), w)
             specs = []
             for clone, angle in zip(self.extras[name], (angles[0], *angles[2:])):
                 specs.append((self.body(clone, (x, y)), (speed * math.cos(angle), speed * math.sin(angle))))
                 self.flying[clone] = self.launched[name] + self.rules.bird_lifetime
             return specs
         elif b.power == "egg":
-            world.set_velocity(name, vx, vy + POWERS.egg_push_up / world.mass(name), w)
+            engine.set_velocity(name, vx, vy + POWERS.egg_push_up / engine.mass(name), w)
             egg = self.extras[name][0]
             self.launched[egg] = time
             self.parent[egg] = name

@@ -21,14 +21,13 @@ from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     PHYQ_CIRCLES,
     extent,
-    shape,
 )
 from physc.domains.angrybirds.flight import FIRST, Flights
 from physc.domains.angrybirds.launch import Shot, shots_of
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import ScienceBirdsWorld
-from physc.simulation.recognise import violations
-from physc.simulation.run import RunRules, play_out, run
+from physc.simulation.run import RunRules
+from physc.simulation.scene import Scene, built, play_scene, playout
 from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, Playout, Trace
 
 BIRD = FIRST  # the first bird's name
@@ -96,12 +95,18 @@ class Game(RunRules):
         spec = BodySpec(obj.name, outline, obj.x, obj.y, mass=mass, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
         return spec, "block", float(catalogue.life[material.name]), material.defence
 
-    def build(self):
-        world = self.backend.create_world(self.world.gravity, self.world.engine)
+    def scene(self, shot: Shot | None = None, stop_at_rest: bool = True, invulnerable: float | None = None, settle_after_solved: float | None = None) -> Scene:
+        """The level as physics (physc.simulation.scene), the first bird of `shot` at the slingshot,
+        flying as the shot sends it; the game, the run's rules, set for a run of it.
+
+        Damage counts from the shot on (the player shoots after the level's first 2 s of
+        invulnerability); with no shot, the first 2 s are invulnerable, as when the level loads.
+        With `stop_at_rest` the run ends once everything has come to rest (and the bird is gone or
+        still); with `settle_after_solved`, that many seconds after the last pig is destroyed, once
+        nothing is falling (a fall that began while the sequence ran is recognised where it lands)."""
         ground_top = self.world.frame.ground_top
         ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, ground_top - 0.5, static=True, friction=self.model.ground_friction)
-        world.add(ground)
-        self.outlines = {GROUND: ground.outline}
+        bodies = [ground]
         self.kinds = {GROUND: "ground"}
         self._depends: list[DependenceRecord] = []  # where another reading of the open points would have dealt other damage
         self.life, self.defence, self.material = {}, {}, {}
@@ -111,41 +116,71 @@ class Game(RunRules):
         self.spent: set[str] = set()  # bodies whose life is used up (destroyed at the end of the step)
         for obj in self.level.objects:
             spec, kind, life, defence = self._spec(obj)
-            world.add(spec)
-            self.outlines[obj.name] = spec.outline
+            bodies.append(spec)
             self.kinds[obj.name] = kind
             self.colliders[obj.name] = len(set(colliders(spec.shape)))
             self.life[obj.name] = life
             self.defence[obj.name] = defence
             self.material[obj.name] = self._material(obj) if kind == "block" else ""
-        return world
+        shots = shots_of(shot)
+        self.flights = flights = self._flights(shots)
+        self.arrivals = flights.several or any(s.tap is not None for s in shots)
+        for name in flights.bodies:
+            self.kinds[name] = flights.kind(name)
+        dynamic = tuple(flights.bodies + [o.name for o in self.level.objects if self.kinds[o.name] != "platform"])
+        self._row = {name: i for i, name in enumerate(dynamic)}
+        velocities = {}
+        if shots:
+            spec, velocity = self._launched(flights.launch_due(0.0))
+            bodies.append(spec)
+            velocities[spec.name] = (*velocity, 0.0)
+        self.outlines = {body.name: body.outline for body in bodies}
+        # This run's settings and state, read by the hooks below.
+        self._invulnerable = invulnerable if invulnerable is not None else 0.0 if shots else self.rules.invulnerable_seconds
+        self._dynamic = dynamic
+        self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
+        self._settle_after_solved, self._solved_at = settle_after_solved, None
+        self._stop_at_rest, self._resting_since = stop_at_rest, None
+        return Scene(
+            tuple(bodies), dict(self.kinds), self.world.gravity, self.world.engine, self.radii(), velocities, self._pigs, rows=dynamic,
+            turns=max(len(shots), 1),
+        )
 
-    def launch(self, world, shot: Shot) -> None:
-        """Put the bird of `shot` alone into `world` (built by `build`) at the slingshot, flying as
-        `shot` sends it (a world stepped by hand; `simulate` launches its shots in turn)."""
+    def build(self):
+        """The level with no shot as a world of the game's backend, for a run stepped by hand."""
+        return built(self.scene(), self.backend)
+
+    def launch(self, engine, shot: Shot) -> None:
+        """Put the bird of `shot` alone into `engine` (built by `build`) at the slingshot, flying as
+        `shot` sends it (an engine world stepped by hand; `simulate` launches its shots in turn)."""
         self.flights = self._flights((shot,))
-        self._launch(world, self.flights.launch_due(0.0))
+        self._launch(engine, self.flights.launch_due(0.0))
         self.kinds[shot.bird] = "bird"
 
     def _flights(self, shots) -> Flights:
         """The birds of a run of `shots`, the level's <Bird> list giving each its kind."""
         return Flights(tuple(shots), self.level.birds, self.rules, self.model, self.world.launch.bird_rest[0])
 
-    def _launch(self, world, k: int) -> str:
-        """Put the `k`th bird into `world` at the slingshot, flying as its shot sends it (from
-        where the game starts it: its own collider's offset); its name."""
+    def _launched(self, k: int) -> tuple[BodySpec, tuple[float, float]]:
+        """The `k`th bird at the slingshot (from where the game starts it: its own collider's
+        offset) and its velocity as its shot sends it."""
         flights = self.flights
         shot, name = flights.shots[k], flights.names[k]
         (x, y), velocity = shot.start(self.world)
         bird, red = flights.of(name), self.world.launch.collider_offset
         origin = (x + bird.offset[0] - red[0], y + bird.offset[1] - red[1]) if bird.prefab != "BirdRed" else (x, y)
-        self._enter(world, flights.body(name, origin), velocity)
-        return name
+        return flights.body(name, origin), velocity
 
-    def _enter(self, world, spec: BodySpec, velocity: tuple[float, float]) -> None:
-        world.add(spec)
+    def _launch(self, engine, k: int) -> str:
+        """Put the `k`th bird into `engine`, flying; its name."""
+        spec, velocity = self._launched(k)
+        self._enter(engine, spec, velocity)
+        return spec.name
+
+    def _enter(self, engine, spec: BodySpec, velocity: tuple[float, float]) -> None:
+        engine.add(spec)
         self.outlines[spec.name] = spec.outline
-        world.set_velocity(spec.name, *velocity)
+        engine.set_velocity(spec.name, *velocity)
 
     # ---- playing ----------------------------------------------------------------------
     def simulate(
@@ -158,62 +193,30 @@ class Game(RunRules):
         resume=None,
         record: bool = True,
     ) -> Trace | Playout:
-        """Run the level for `seconds`, with a shot at t = 0 or none.
-
-        Damage counts from the shot on (the player shoots after the level's first
-        2 s of invulnerability); with no shot, the first 2 s are invulnerable, as
-        when the level loads. With `stop_at_rest` the run ends once everything has
-        come to rest (and the bird is gone or still); with `settle_after_solved`, that
-        many seconds after the last pig is destroyed, once nothing is falling (a fall
-        that began while the sequence ran is recognised where it lands). `resume`: a
-        snapshot to go on from (physc.simulation.snapshot)."""
-        rules = self.rules
-        world = self.build()
-        if invulnerable is None:
-            invulnerable = 0.0 if shot is not None else rules.invulnerable_seconds
-        shots = shots_of(shot)
-        self.flights = flights = self._flights(shots)
-        self.arrivals = flights.several or any(s.tap is not None for s in shots)
-        seconds *= max(len(shots), 1)  # each shot's time
-        for name in flights.bodies:
-            self.kinds[name] = flights.kind(name)
-        dynamic = flights.bodies + [o.name for o in self.level.objects if self.kinds[o.name] != "platform"]
-        self._row = {name: i for i, name in enumerate(dynamic)}
-        if shots:
-            self._launch(world, flights.launch_due(0.0))
-        # This run's settings and state, read by the hooks below.
-        self._invulnerable = invulnerable
-        self._dynamic = dynamic
-        self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
-        self._settle_after_solved, self._solved_at = settle_after_solved, None
-        self._stop_at_rest, self._resting_since = stop_at_rest, None
-        dt = self.world.engine.dt
+        """Run the level for `seconds` (each shot's), with a shot at t = 0 or none (`scene` says
+        what the rest asks); `resume`: a snapshot to go on from (physc.simulation.snapshot).
+        Without `record`, an outcome playout (physc.simulation.scene.playout)."""
+        scene = self.scene(shot, stop_at_rest, invulnerable, settle_after_solved)
         if not record:
             if resume is not None:
                 raise ValueError("an outcome playout starts from the beginning (no snapshot)")
-            recorded = play_out(world, dynamic, self, seconds, dt)
-            return Playout(dt, tuple(dynamic), recorded.states[-1], recorded.steps, recorded.damage, recorded.destructions, self._pigs, self._solved(recorded))
-        recorded = run(world, dynamic, self, seconds, dt, resume)
-        return Trace(
-            dt, tuple(dynamic), dict(self.kinds), recorded.states, recorded.contacts, recorded.separations,
-            recorded.damage, recorded.destructions, self._pigs, self._solved(recorded), depends=tuple(self._depends),
-            outlines=dict(self.outlines), radii=self.radii(), parts=dict(self.flights.parent),
-        )
+            return playout(scene, self.backend, self, seconds)
+        return play_scene(scene, self.backend, self, seconds, self.world.recogniser, recognise=False, resume=resume)
 
-    def _solved(self, recorded) -> bool:
+    def solved(self, recorded) -> bool:
         """Science Birds' goal: every pig destroyed (a level without pigs is never solved)."""
         destroyed = {d.name for d in recorded.destructions}
         return bool(self._pigs) and set(self._pigs) <= destroyed
 
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
-    def on_contact(self, world, contact: ContactRecord, damage: list, time: float) -> None:
+    def on_contact(self, engine, contact: ContactRecord, damage: list, time: float) -> None:
         for name in self._dying.intersection((contact.a, contact.b)):  # OnCollisionEnter2D → DealDamage → Die: it stops again
-            _stop(world, name)
+            _stop(engine, name)
         self.flights.on_contact(contact.a, contact.b, time)
         if time > self._invulnerable:
-            self._damage(world, contact, damage, time)
+            self._damage(engine, contact, damage, time)
 
-    def resume(self, world, snapshot) -> None:
+    def resume(self, engine, snapshot) -> None:
         """The game's state as the events before `snapshot` leave it: every life less its
         damage, whether the bird has struck, when it is next checked, when the last pig went."""
         for record in snapshot.damage:
@@ -232,26 +235,26 @@ class Game(RunRules):
         if self._stop_at_rest:
             self._resting_since = _resting_since(snapshot, self.world.rest_speed)
 
-    def on_removed(self, world, name: str, cause: str, alive: set, damage: list, time: float) -> None:
+    def on_removed(self, engine, name: str, cause: str, alive: set, damage: list, time: float) -> None:
         if self.kinds[name] == "tnt" and cause == "damage":
-            self._explode(world, name, alive, damage, time)
+            self._explode(engine, name, alive, damage, time)
         elif self.kinds[name] in ("bird", "egg"):
             blast = self.flights.blast(name)
             if blast is not None:  # a black bird's or an egg's blast (ABTNT.Explode)
-                self._blast(world, name, blast.radius, blast.power, blast.damage, alive, damage, time)
+                self._blast(engine, name, blast.radius, blast.power, blast.damage, alive, damage, time)
             self.flights.left(name, time)
 
-    def enter(self, world, values: list, alive: set, damage: list, time: float) -> tuple[str, ...]:
+    def enter(self, engine, values: list, alive: set, damage: list, time: float) -> tuple[str, ...]:
         """What comes into the level now: a power's bodies at a tap (flight.py), the next bird."""
         flights, new = self.flights, []
         for name in flights.taps_due(time):
             if name in alive:
-                for spec, velocity in flights.fire(world, name, time):
-                    self._enter(world, spec, velocity)
+                for spec, velocity in flights.fire(engine, name, time):
+                    self._enter(engine, spec, velocity)
                     new.append(spec.name)
         k = flights.launch_due(time)
         if k is not None:
-            new.append(self._launch(world, k))
+            new.append(self._launch(engine, k))
         return tuple(new)
 
     def finished(self, values: list, alive: set, time: float) -> bool:
@@ -278,19 +281,22 @@ class Game(RunRules):
                 self._resting_since = None
         return False
 
-    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, **options) -> Trace:
-        """Simulate, then recognise the interactions and check the restrictions
-        (`redirects`: the declared bounces, see recognise.violations)."""
-        return self.judged(self.simulate(shot, seconds, **options), restrictions, redirects)
+    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, resume=None, **options) -> Trace:
+        """`simulate`, with the interactions recognised and the restrictions checked (`redirects`:
+        the declared bounces, see recognise.violations)."""
+        scene = self.scene(shot, **options)
+        return play_scene(scene, self.backend, self, seconds, self.world.recogniser, restrictions, redirects, resume=resume)
 
-    def judged(self, trace: Trace, restrictions=(), redirects=None) -> Trace:
-        """`trace`, a simulation of this level, with the interactions recognised in it and
-        the restrictions it violates (what `play` adds to `simulate`)."""
-        interactions = self.world.recogniser.recognise(trace, self.radii())
-        flights = getattr(self, "flights", None)
-        if flights is not None and (flights.tapped or flights.parent):
-            interactions = flights.read(interactions)
-        return attrs.evolve(trace, interactions=interactions, violations=violations(interactions, restrictions, redirects))
+    def completed(self, trace: Trace) -> Trace:
+        """The trace with the damage another reading of the open points would have dealt, the
+        birds that came in and the parts of each split bird."""
+        return attrs.evolve(trace, depends=tuple(self._depends), outlines=dict(self.outlines), parts=dict(self.flights.parent))
+
+    def read(self, interactions: tuple) -> tuple:
+        """What a blue bird's other birds and a white bird's egg did, their bird's; each tap that
+        fired a power, `tap(bird)` (flight.py)."""
+        flights = self.flights
+        return flights.read(interactions) if flights.tapped or flights.parent else interactions
 
     def removals_due(self, values: list, alive: set, time: float) -> bool:
         """Whether anything may leave the level this step (what does is `gone`'s to say):
@@ -318,7 +324,7 @@ class Game(RunRules):
         fast = self.world.falling_speed
         return any(v[4] < -fast for v, name in zip(values, dynamic) if self.kinds.get(name) != "bird")
 
-    def lingers(self, world, name: str, cause: str) -> float:
+    def lingers(self, engine, name: str, cause: str) -> float:
         """ABGameObject.Die (`Rules.dying_lingers`): a dying pig or block stops, loses its
         first collider and stays for its prefab's `lifetime`; one left with no collider, or
         whose backend cannot take a collider out, goes at once."""
@@ -329,10 +335,10 @@ class Game(RunRules):
         if stay <= 0:
             return 0.0
         if prefabs.first_collider_enabled(obj.type, self.model.circle_colliders):
-            if self.colliders.get(name, 1) == 1 or not hasattr(world, "disable_collider"):
+            if self.colliders.get(name, 1) == 1 or not hasattr(engine, "disable_collider"):
                 return 0.0  # nothing left to collide with (or no way to take the collider out)
-            world.disable_collider(name, 0)
-        _stop(world, name)
+            engine.disable_collider(name, 0)
+        _stop(engine, name)
         self._dying.add(name)
         return stay
 
@@ -361,8 +367,8 @@ class Game(RunRules):
 
     def radii(self) -> dict[str, float]:
         """The rolling radius of every body that can roll: circles, pigs, the birds."""
-        flights = getattr(self, "flights", None)
-        out = {BIRD: shape("redBird").width / 2} if flights is None else {n: flights.of(n).radius for n in flights.bodies if flights.kind(n) == "bird"}
+        flights = self.flights
+        out = {n: flights.of(n).radius for n in flights.bodies if flights.kind(n) == "bird"}
         for obj in self.level.objects:
             catalogue = BY_PREFAB[obj.type]
             if catalogue.round or catalogue.kind == "pig":
@@ -371,7 +377,7 @@ class Game(RunRules):
         return out
 
     # ---- rules ----------------------------------------------------------------------------
-    def _damage(self, world, contact: ContactRecord, out: list, time: float) -> None:
+    def _damage(self, engine, contact: ContactRecord, out: list, time: float) -> None:
         """The damage rule (damage.py) on both bodies of `contact`, in this world's reading; where
         another reading of the game's open points would deal other damage, a DependenceRecord."""
         rules = self.rules
@@ -383,7 +389,7 @@ class Game(RunRules):
                 continue  # a platform has no ABGameObject: nothing of it is damaged
             other = contact.b if target == contact.a else contact.a
             rv = contact.relative_velocity if target == contact.a else (-contact.relative_velocity[0], -contact.relative_velocity[1])
-            strike = Strike(self._party(world, target), self._party(world, other), speed, rv, self.defence[target], self.material.get(target, ""))
+            strike = Strike(self._party(engine, target), self._party(engine, other), speed, rv, self.defence[target], self.material.get(target, ""))
             amount, attacker, per_speed = strike.dealt(rules)
             least = most = None
             if self._fields and strike.most(rules, self._platform_masses) > 0:
@@ -400,49 +406,49 @@ class Game(RunRules):
                 self._wound(target, amount)
             out.append(DamageRecord(time, target, amount, self.life[target], other, attacker, needed, least, most))
 
-    def _party(self, world, name: str) -> Party:
+    def _party(self, engine, name: str) -> Party:
         """`name` as the damage rule reads it: kind, mass and velocity after the step (a
         platform or the ground: still, and massless here; the rule reads a platform's mass)."""
         kind = self.kinds.get(name, "")
         if kind in ("platform", "ground"):
             return Party(name, kind, 0.0, (0.0, 0.0))
-        _, _, _, vx, vy, _ = world.state(name)
-        return Party(name, kind, world.mass(name), (vx, vy))
+        _, _, _, vx, vy, _ = engine.state(name)
+        return Party(name, kind, engine.mass(name), (vx, vy))
 
     @staticmethod
     def _last_attacker(damage: list, name: str) -> str | None:
         return next((d.by for d in reversed(damage) if d.target == name and d.amount > 0), None)
 
-    def _explode(self, world, name: str, alive: set, damage: list, time: float) -> None:
+    def _explode(self, engine, name: str, alive: set, damage: list, time: float) -> None:
         """A TNT box's blast (TNT.prefab's numbers, `Rules`)."""
         rules = self.rules
-        self._blast(world, name, rules.tnt_radius, rules.tnt_impulse, rules.tnt_damage, alive, damage, time)
+        self._blast(engine, name, rules.tnt_radius, rules.tnt_impulse, rules.tnt_damage, alive, damage, time)
 
-    def _blast(self, world, name: str, radius: float, power: float, amount: float, alive: set, damage: list, time: float) -> None:
+    def _blast(self, engine, name: str, radius: float, power: float, amount: float, alive: set, damage: list, time: float) -> None:
         """ABTNT.Explode where `name` is: every body within `radius` but birds takes damage and
         an impulse away from it, both falling off linearly with the distance."""
-        cx, cy = world.state(name)[:2]
+        cx, cy = engine.state(name)[:2]
         for other in sorted(alive):
             if other == name or self.kinds.get(other) == "bird":
                 continue
-            x, y, _, vx, vy, w = world.state(other)
+            x, y, _, vx, vy, w = engine.state(other)
             distance = math.hypot(x - cx, y - cy)
             share = max(1.0 - distance / radius, 0.0)
             if share <= 0.0 or distance == 0:
                 continue
             # Physics2D.OverlapCircleAll lists colliders: a body with several takes the blast from each.
             hits = self.colliders.get(other, 1)
-            push = hits * power * share / max(world.mass(other), 1e-6)
-            world.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
+            push = hits * power * share / max(engine.mass(other), 1e-6)
+            engine.set_velocity(other, vx + push * (x - cx) / distance, vy + push * (y - cy) / distance, w)
             if other in self.life:
                 dealt = hits * amount * share
                 self._wound(other, dealt)
                 damage.append(DamageRecord(time, other, dealt, self.life[other], name))
 
 
-def _stop(world, name: str) -> None:
+def _stop(engine, name: str) -> None:
     """ABGameObject.Die's `_rigidBody.velocity = Vector2.zero`: the body's motion stopped, its spin kept."""
-    world.set_velocity(name, 0.0, 0.0, world.state(name)[5])
+    engine.set_velocity(name, 0.0, 0.0, engine.state(name)[5])
 
 
 def _resting_since(snapshot, still: float) -> float | None:

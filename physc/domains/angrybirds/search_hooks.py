@@ -10,11 +10,13 @@ from physc.domains.angrybirds.catalogue import PLATFORM_THICKNESS
 from physc.domains.search_hooks import SearchHooks
 
 OBSTACLE_LENGTH = 1.4  # an obstacle platform's length
+SEARCH_SECONDS = 9.0  # a play's simulated time at most while searching (the evaluation's: 10 s)
 
 
 class ScienceBirdsSearch(SearchHooks):
     """Science Birds' hooks of the search, in the bound domain's world."""
 
+    seconds = SEARCH_SECONDS
     blocker = "flatPlatform"
     blocker_length = OBSTACLE_LENGTH
     blocker_thickness = PLATFORM_THICKNESS

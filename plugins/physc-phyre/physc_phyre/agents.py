@@ -30,6 +30,7 @@ from physc.evaluation.agent import calling
 
 from physc_phyre import observation, phyre_format
 from physc_phyre.actions import from_unit
+from physc.simulation.ending import Ending
 
 SPLITS = ("dev", "test")
 STOP = object()  # the agent's actions have run out
@@ -90,7 +91,7 @@ def attempts(domain, level, actions: Iterable, until_solved: bool = False) -> li
             break
         if action is None or not valid(level, action):
             continue
-        outcomes.append(domain.playout(level, action, to_end=False).solved)
+        outcomes.append(domain.playout(level, action, ending=Ending.SETTLED).solved)
         if until_solved and outcomes[-1]:
             break
     return outcomes

@@ -11,6 +11,7 @@ from physc.picture import FORMATS
 
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.task_file import task_json
+from physc.simulation.ending import Ending
 
 
 class PhyreFiles(LevelFiles):
@@ -50,6 +51,6 @@ class PhyreFiles(LevelFiles):
             raise MissingCapability(self.domain.name, (f"picture in {fmt}",), f"--png as {fmt}")
         if isinstance(task, ConcreteLayout):
             return picture(level_from_layout(task, None), f"{task.scenario} (seed {task.seed})", None, None, fmt)
-        trace = self.domain.play(task.level, task.solution, recognise=False)
+        trace = self.domain.play(task.level, task.solution, ending=Ending.OUTCOME)
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return picture(task.level, title, task.solution, trace.paths(threshold=0.5), fmt)

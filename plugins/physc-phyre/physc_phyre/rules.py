@@ -70,14 +70,14 @@ class GoalRules(RunRules):
         touching = level.relation == "TOUCHING"
         return cls(level.goal, {b.name: b.size / PIXELS_PER_METRE for b in level.bodies if b.shape == "ball" and touching})
 
-    def on_start(self, world) -> None:
-        self.world = world
-        self._touches, self._moving = world.touches, world.moving
+    def on_start(self, engine) -> None:
+        self.engine = engine
+        self._touches, self._moving = engine.touches, engine.moving
 
     def touching(self) -> bool:
         green, target = self.goal
         if self.radii:
-            return balls_touch(self.world.state(green), self.world.state(target), *self.radii)
+            return balls_touch(self.engine.state(green), self.engine.state(target), *self.radii)
         return bool(green) and self._touches(green, target)
 
     def finished(self, values, alive: set, time: float) -> bool:
@@ -88,12 +88,12 @@ class GoalRules(RunRules):
         self.still = 0 if self.held or self._moving(alive, STILL_SPEED) else self.still + 1
         return self.still >= STILL_STEPS
 
-    def resume(self, world, snapshot) -> None:
+    def resume(self, engine, snapshot) -> None:
         """Going on from a snapshot: the steps in a row up to it that the goal held. Balls: the
         rows in which they were within reach (a body the snapshot lacks, or a static one, stood
         where it stands now); other bodies: since they last began touching, if they touch then."""
         if self.radii:
-            rows = [snapshot.states[:, snapshot.names.index(n), :2] if n in snapshot.names else [world.state(n)[:2]] * snapshot.step for n in self.goal]
+            rows = [snapshot.states[:, snapshot.names.index(n), :2] if n in snapshot.names else [engine.state(n)[:2]] * snapshot.step for n in self.goal]
             pairs = list(zip(*rows))[::-1]
             self.held = next((k for k, (a, b) in enumerate(pairs) if not balls_touch(a, b, *self.radii)), len(pairs))
             return

@@ -34,6 +34,7 @@ import numpy as np
 
 from physc_phyre.actions import from_unit, placeable
 from physc_phyre.pool import CACHE_SEED, discrete_actions
+from physc.simulation.ending import Ending
 
 FILE_NAME = "simulation_cache.gz"  # simulation_cache.CACHE_FILE_NAME
 FOLDER = "offline_simulation"  # simulation_cache.get_cache_folder: <root>/offline_simulation/<N>
@@ -67,7 +68,7 @@ def status(domain, level, action: np.ndarray) -> int:
     placed = from_unit(action)
     if placed is None or not all(placeable(level, ball) for ball in placed.balls):
         return INVALID
-    return SOLVED if domain.playout(level, placed, to_end=False).solved else NOT_SOLVED
+    return SOLVED if domain.playout(level, placed, ending=Ending.SETTLED).solved else NOT_SOLVED
 
 
 @functools.lru_cache(maxsize=8)

@@ -15,6 +15,7 @@ from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.furniture import COVER_FIT, KINDS, PEG, PEG_SPACING, bodies, geometry, inside
 from physc_phyre.level import held, level_from_layout, outline_box
 from physc_phyre.world import BAR_HEIGHT, PIXELS_PER_METRE
+from physc.simulation.ending import Ending
 
 FLOOR_BAR = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
 
@@ -25,7 +26,7 @@ def placed(concrete: str, x: float, bottom: float, seed: int = 0, heading=None, 
 
 
 def end_of(level: PhyreLevel, name: str):
-    trace = DOMAIN.play(level, None, recognise=False)
+    trace = DOMAIN.play(level, None, ending=Ending.OUTCOME)
     return trace.states[-1, trace.index(name), :3] * (PIXELS_PER_METRE, PIXELS_PER_METRE, 1.0)
 
 

@@ -19,6 +19,7 @@ from physc_phyre import DOMAIN, simulation_cache
 from physc_phyre.actions import from_unit, placeable
 from physc_phyre.cache import main
 from test_phyre_plugin import EXAMPLES, physc
+from physc.simulation.ending import Ending
 
 ACTIONS = 20
 
@@ -107,7 +108,7 @@ def test_the_statuses_are_the_domains(dataset):
             if action is None or not all(placeable(level, ball) for ball in action.balls):  # PHYRE's mapper, then occlusion
                 expected = 0
             else:
-                expected = 1 if DOMAIN.play(level, action, recognise=False).solved else -1
+                expected = 1 if DOMAIN.play(level, action, ending=Ending.OUTCOME).solved else -1
             assert statuses[i] == expected, (row["task_id"], i)
 
 
@@ -121,7 +122,7 @@ def test_two_balls_that_rounding_brings_closer_are_valid_as_in_phyre(dataset):
     first, second = placed.balls
     assert math.hypot(first.x - second.x, first.y - second.y) < first.radius + second.radius + 1
     assert all(placeable(level, ball) for ball in placed.balls)
-    expected = 1 if domain.play(level, placed, recognise=False).solved else -1
+    expected = 1 if domain.play(level, placed, ending=Ending.OUTCOME).solved else -1
     assert simulation_cache.status(domain, level, action) == expected
 
 

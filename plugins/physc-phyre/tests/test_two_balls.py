@@ -11,6 +11,7 @@ import pytest
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody, TwoBallAction, actions, benchmark, folds, phyre_format
 from physc_phyre.level import BallAction
 from physc_phyre.task_file import task_json
+from physc.simulation.ending import Ending
 
 TARGET = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
 LEDGE = SceneBody("ledge", "bar", 128.0, 60.0, 0.0, 60.0, "black", False)
@@ -85,7 +86,7 @@ def test_the_acceptance_rule_is_the_tiers():
 
 def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
     pair = TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12))
-    trace = DOMAIN.play(TWO, pair, recognise=False)
+    trace = DOMAIN.play(TWO, pair, ending=Ending.OUTCOME)
     assert {"first", "second"} <= set(trace.names)
     task = json.loads(task_json(DOMAIN.files.with_solution(TWO, pair)))
     assert task["tier"] == "TWO_BALLS"
