@@ -12,6 +12,7 @@ import physc
 from conftest import EXAMPLES, GOLDEN, run_physc
 
 F = EXAMPLES / "paper" / "05_F.phys"
+SF = EXAMPLES / "paper" / "01_SF.phys"
 
 
 @pytest.fixture(scope="module")
@@ -113,12 +114,12 @@ def test_simulate_and_verify(task):
 
 
 def test_datasets_generate_and_load(tmp_path):
-    dataset = physc.generate(F, tmp_path / "ds", tasks=1, seed=1)
+    dataset = physc.generate(SF, tmp_path / "ds", tasks=1, seed=1)
     assert [row["outcome"] for row in dataset] == ["ok"]
     loaded = physc.load_dataset(tmp_path / "ds")
     assert len(loaded) == 1 and [t.seed for t in loaded.tasks()] == [1]
     assert (tmp_path / "ds" / "manifest.parquet").is_file()
-    on_dask = physc.generate(F, tmp_path / "dask", tasks=1, seed=1, dask_workers=1)
+    on_dask = physc.generate(SF, tmp_path / "dask", tasks=1, seed=1, dask_workers=1)
     assert (tmp_path / "dask" / on_dask.rows[0]["task"]).read_bytes() == (tmp_path / "ds" / dataset.rows[0]["task"]).read_bytes()
 
 

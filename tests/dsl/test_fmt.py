@@ -17,7 +17,7 @@ def fmt(text: str) -> str:
     return format_file(result.file, result.source)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(files)
 def test_parse_of_fmt_is_the_tree(file):
     text = format_file(file)
@@ -27,7 +27,7 @@ def test_parse_of_fmt_is_the_tree(file):
     assert fmt(text) == text
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.data())
 def test_fmt_is_idempotent_and_keeps_comments(data):
     file = data.draw(files)

@@ -89,13 +89,13 @@ def test_a_solution_that_fails_a_reading_gives_the_layout_up():
 
 
 def test_a_chain_that_noise_breaks_names_the_link_and_its_physics():
-    """R seed 1, 40 layouts: a layout realises all four links, but not robustly; the message
+    """R seed 1, 10 layouts: a layout realises all four links, but not robustly; the message
     names the link the failed noisy replays lost most often and what the replay shows about it,
     and the weakest link with its best margin.
     (The damage a struck object is left with: tests/simulation/test_stopped.py.)"""
     from conftest import EXAMPLES, run_physc
 
-    run = run_physc("compile", EXAMPLES / "paper" / "04_R.phys", "--seed", "1", "--layouts", "40", "--color", "never", "-q", "--emit", "task")
+    run = run_physc("compile", EXAMPLES / "paper" / "04_R.phys", "--seed", "1", "--layouts", "10", "--color", "never", "-q", "--emit", "task")
     assert run.status == 3
     assert "the best simulation realised 4 of the 4 interactions in order" in run.stderr
     assert re.search(r"lost `(roll|hit|destroy)\(rBlock, [^`]+` first \(rBlock (moved|struck) [^)]*units/s", run.stderr), run.stderr
