@@ -255,28 +255,22 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
 
 def _definitions(domains: list[str]) -> list[str]:
     """What the metrics mean for the records' domains: each domain's own `measures` text
-    (angrybirds': the paper's definitions)."""
+    (angrybirds': the paper's definitions), wrapped; named by its domain where several are."""
+    import textwrap
+
     from physc.domains import load_domain
 
     lines = []
     for name in domains:
-        if name == "angrybirds":
-            lines += list(ANGRYBIRDS_DEFINITIONS)
-        elif load_domain(name).evaluation.measures:
-            lines.append(f"Definitions ({name}): {load_domain(name).evaluation.measures}")
+        measures = load_domain(name).evaluation.measures
+        if measures:
+            lead = "Definitions: " if len(domains) == 1 else f"Definitions ({name}): "
+            lines += textwrap.wrap(lead + measures, width=DEFINITIONS_WIDTH, break_on_hyphens=False)
     lines.append("Metrics are over the generated tasks; generation ran with the final validation skipped, as in the paper.")
     return lines
 
 
-ANGRYBIRDS_DEFINITIONS = (
-    "Definitions: stability = no object moves more than 0.05 in 10 s without action and nothing is",
-    "destroyed; intended solvability = the recorded solution solves the task (exactly; and the share of",
-    "10 replays with release-angle noise σ 0.1° and block/pig position noise σ 0.005); sequence fidelity =",
-    "the replay realises the declared sequence without breaking a restriction; accidental solvability =",
-    "the paper's AS: the share of the heuristic agent's plays (every dynamic object but the solution's",
-    "target, at its points of interest, both trajectories) that solve the task. A fallback",
-    "(`--min-robustness`) is a task whose solution passed fewer than all of the generator's 6 noisy replays.",
-)
+DEFINITIONS_WIDTH = 100  # characters a line of the definitions holds
 
 
 def plot(summary: dict, metric: str, title: str, paper_key: str | None) -> bytes:
