@@ -23,7 +23,6 @@ import subprocess
 import sys
 import time
 from pathlib import Path
-from physc.simulation.ending import Ending
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "plugins" / "physc-phyre" / "examples" / "phyre"
 TEMPLATES = ("00000", "00002", "00009", "00011", "00021", "00024")
@@ -57,6 +56,7 @@ def make(folder: Path) -> list[Path]:
 
 def judge(path: Path) -> dict:
     from physc.api import domain_of, load_task
+    from physc.simulation.ending import Ending
 
     task = load_task(path)
     domain = domain_of(task)

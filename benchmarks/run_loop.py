@@ -25,7 +25,6 @@ import platform
 import random
 import time
 from pathlib import Path
-from physc.simulation.ending import Ending
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT = sorted((ROOT / "tests" / "golden" / "task").glob("*.json")) + sorted((ROOT / "plugins" / "physc-phyre" / "tests" / "data").glob("*.json"))
@@ -58,6 +57,7 @@ def worlds(domain, level, action):
 
 def measure(path: Path, count: int) -> dict:
     from physc.api import domain_of, load_task
+    from physc.simulation.ending import Ending
 
     task = load_task(path)
     domain = domain_of(task)

@@ -82,7 +82,7 @@ def simulate(
 
 def play_to_rest(domain, level, action, scenario=None, seconds: float | None = None):
     """`domain.play` of the level with the action, judged against `scenario`, until everything
-    rests as the target world plays it (`whole`), within `seconds` (default: the domain's)."""
+    rests as the target world plays it (`Ending.WHOLE`), within `seconds` (default: the domain's)."""
     return domain.play(level, action, scenario, seconds or domain.seconds, ending=Ending.WHOLE)
 
 

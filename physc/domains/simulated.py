@@ -33,9 +33,9 @@ from physc.domains.base import Domain, MissingCapability
 from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
+from physc.simulation.ending import Ending
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-from physc.simulation.ending import Ending
 from physc.simulation.scene import Scene, play_scene, playout
 from physc.simulation.stability import stable
 from physc.simulation.trace import Playout, Trace

@@ -16,6 +16,7 @@ from __future__ import annotations
 import attrs
 
 from physc import budget
+from physc.generation.problem import search_seconds
 from physc.simulation.fidelity import fidelity
 
 RESERVE_SHARE = 0.1  # of the time budget, kept for the replays elsewhere
@@ -62,7 +63,7 @@ def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int 
         try:
             for _, level, action, placed in furthest:
                 for tried in [action] + [a for a in _candidates(there, level, scenario) if a != action]:
-                    found = _judged(there, scenario, there.play(level, tried, scenario), best, total, here)
+                    found = _judged(there, scenario, there.play(level, tried, scenario, search_seconds(there)), best, total, here)
                     if found is not None:
                         return found
                 built = _built(there, scenario, placed, accept)

@@ -27,6 +27,12 @@ from physc.simulation.snapshot import Snapshot
 KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
 
 
+def search_seconds(domain) -> float:
+    """A play's simulated time at most while `domain` is searched (each turn's): its search's
+    `seconds`, else the domain's."""
+    return domain.search.seconds or domain.seconds
+
+
 @attrs.frozen
 class Problem:
     """What one search reads and never changes."""
@@ -62,7 +68,7 @@ class Problem:
     @property
     def seconds(self) -> float:
         """A play's simulated time at most while searching (each turn's)."""
-        return self.domain.search.seconds or self.domain.seconds
+        return search_seconds(self.domain)
 
     @property
     def parameters(self):
@@ -114,7 +120,7 @@ class Ledger:
 
 
 def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | None = None, resume: Snapshot | None = None) -> Attempt:
-    """`action` played in `layout`'s level for `seconds` (default: the domain's), from the
+    """`action` played in `layout`'s level for `seconds` (default: the search's, `Problem.seconds`), from the
     snapshot `resume` if given, judged against the scenario; run once while among the last
     KEPT_SIMULATIONS asked for. The ledger notes how far it got."""
     key = (seconds, layout.objects, action, resume is not None and resume.step)

@@ -37,8 +37,8 @@ from physc.generation.outcome import Outcome, Parts
 from physc.generation.problem import Ledger, Problem, replayed
 from physc.generation.run_settings import RunSettings
 from physc.generation.strengthen import Strong, lost_links, replays, strengthen
-from physc.simulation.stopped import why_stopped
 from physc.simulation.ending import Ending
+from physc.simulation.stopped import why_stopped
 
 
 def satisfy(domain, scenario, layout, rng, run: RunSettings = RunSettings(), accept: int | None = None) -> Outcome:

@@ -1,4 +1,4 @@
-"""The generic run loop: a backend world stepped for some seconds, recorded as a trace.
+"""The generic run loop: an engine world stepped for some seconds, recorded as a trace.
 
 Every domain plays its worlds the same way: step the engine, record the contacts that
 began (with their relative velocity before the collision) and ended, record every
@@ -7,7 +7,7 @@ when the rules say the run is over. What differs is the rules, so they are hooks
 `RunRules` object (Scenic's simulators keep the same split: a generic loop, a few
 hooks per simulator):
 
-* `on_start`: the world is built and about to run (a rule that asks the world who
+* `on_start`: the engine world is built and about to run (a rule that asks it who
   touches whom keeps it);
 * `on_contact`: a contact began (Science Birds: damage);
 * `removals_due` / `gone` / `on_removed`: whether anything may leave this step (cheap,
@@ -269,7 +269,7 @@ def _read(engine, dynamic: Sequence[str], out: np.ndarray, lingering: dict, inde
 
 
 def _removals(
-    world, dynamic, index: dict, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict,
+    engine, dynamic, index: dict, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict,
     recording=None,
 ) -> list:
     """The bodies the rules say leave now taken out (or left to linger), in `dynamic` order: the
@@ -279,20 +279,20 @@ def _removals(
     the contacts to end for the record), which a lingering body joins."""
     row[:] = np.nan
     for name in [n for n in dynamic if n in alive]:
-        state = world.state(name)
+        state = engine.state(name)
         gone = rules.gone(name, state, time, damage)
         if gone:
-            rules.on_removed(world, name, gone[0], alive, damage, time)
+            rules.on_removed(engine, name, gone[0], alive, damage, time)
             alive.discard(name)
-            touched = sorted(world.touching(name))
-            stay = rules.lingers(world, name, gone[0])
+            touched = sorted(engine.touching(name))
+            stay = rules.lingers(engine, name, gone[0])
             if stay > 0:  # its contacts end for the record now, and begin no more
                 if recording is not None:
                     recording[1].extend((name, other) for other in touched)
                     recording[0].add(name)
                 lingering[name] = time + stay
             else:
-                world.remove(name)
+                engine.remove(name)
             destructions.append(DestructionRecord(time, name, gone[0], gone[1], time + stay if stay > 0 else None))
         else:
             row[index[name]] = state

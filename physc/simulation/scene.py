@@ -6,8 +6,8 @@ background, thrown), the rolling radius of the round ones, the velocities the ac
 gives, and which bodies the goal is about. `play_scene` builds that in the backend it is handed
 (the domain's: physc.domains.base.Domain.at), runs the generic loop (physc.simulation.run) with the
 domain's rules, and judges the trace: interactions recognised, restrictions checked.
-Angry Birds' game builds its worlds itself (its rules need the level's own objects);
-a domain written on physc.domains.simulated plays through here.
+Every play of a simulated domain goes through here (physc.domains.simulated: the domain's
+`simulation` gives the scene and its rules; Angry Birds' game makes both).
 """
 
 from __future__ import annotations

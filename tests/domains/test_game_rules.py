@@ -122,7 +122,7 @@ def test_a_dying_object_stops_loses_its_first_collider_and_stays_its_lifetime():
     assert game.lingers(world, "fat", "damage") == 0.0
     # Every contact a dying object begins stops it again (OnCollisionEnter2D → DealDamage → Die).
     world.set_velocity("pig", 0.0, -3.0, 0.0)
-    game._invulnerable, game._bird_struck = 10.0, True  # (the run's state, which `play` sets)
+    game._invulnerable = 10.0  # (the run's state, which `scene` sets)
     game.on_contact(world, ContactRecord(1.0, "pig", GROUND, (0, 0), (0, -1), (0.0, -3.0), (0.0, -3.0), (0.0, 0.0)), [], 1.0)
     assert world.state("pig")[3:5] == pytest.approx((0.0, 0.0))
     # In a run: the pig the bird kills leaves the level at once and the world 0.2 s later.

@@ -41,6 +41,7 @@ from physc.dsl.check import check_file
 from physc.dsl.parser import parse_source
 from physc.dsl.vocabularies import Vocabularies
 from physc.generation.pipeline import Pipeline
+from physc.simulation.ending import Ending
 from physc.simulation.fidelity import fidelity
 from physc.simulation.recognise import Recogniser, approach, side, violations
 from physc.simulation.run import RunRules, run
@@ -288,7 +289,7 @@ class Minimal(SimulatedDomain):
     def level_from_layout(layout, scenario=None) -> Level:
         return Level(tuple(Thing(o.name, o.concrete, o.x, o.y, o.width, o.height) for o in layout.objects))
 
-    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None) -> Trace:
+    def play(self, level, action, scenario=None, seconds=None, ending=Ending.READ, resume=None) -> Trace:
         return simulate(level, action or 0.0)
 
     @staticmethod

@@ -34,6 +34,7 @@ from physc.domains.simulated import SimulatedDomain
 from physc.domains.vocabulary import (
     DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary,
 )
+from physc.simulation.ending import Ending
 from physc.simulation.recognise import Recogniser
 from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, Trace
 from physc.worlds import Incline, World
@@ -124,7 +125,7 @@ class Line(SimulatedDomain):
     def stability(self, level):
         return True, 0.0
 
-    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None):
+    def play(self, level, action, scenario=None, seconds=None, ending=Ending.READ, resume=None):
         v, gap = max(action.speed, 1e-6), level.pig - REACH
         meets = v * v - 2 * FRICTION * gap
         met = None if meets < 0 or gap < 0 else (v - math.sqrt(meets)) / FRICTION
@@ -147,7 +148,7 @@ class Line(SimulatedDomain):
             damage = (DamageRecord(met, "pig", strike, LIFE - strike, "ball"),)
             destroyed = (DestructionRecord(met, "pig", "damage", "ball"),) if strike >= LIFE else ()
             trace = Trace(DT, ("ball", "pig"), kinds, states, (contact,), (), damage, destroyed, ("pig",), bool(destroyed), outlines=outlines)
-        if ending is not None and not ending.recognised:
+        if not ending.recognised:
             return trace
         return attrs.evolve(trace, interactions=self.recogniser.recognise(trace, {}))
 

@@ -27,9 +27,11 @@ class Domain:
     def at(self, name):
         return Domain(name, self.matched, self.weakest)
 
-    def play(self, level, action, scenario):
+    def play(self, level, action, scenario, seconds=None):
         return SimpleNamespace(matched=self.matched[self.world.name])
 
+    seconds = 10.0
+    search = SimpleNamespace(seconds=9.0)  # the search's plays (physc.generation.problem.search_seconds)
     actions = SimpleNamespace(candidates=lambda level, scenario: [])
     capabilities = frozenset()
 

@@ -26,6 +26,7 @@ from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 from physc.generation import search
 from physc.generation.problem import Ledger, Problem
+from physc.simulation.ending import Ending
 from physc.simulation.recognise import Recogniser
 from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, Interaction, Trace
 from physc.worlds import Incline, World
@@ -121,7 +122,7 @@ class Line(SimulatedDomain):
     def stability(self, level):
         return True, 0.0
 
-    def play(self, level, action, scenario=None, seconds=None, ending=None, resume=None):
+    def play(self, level, action, scenario=None, seconds=None, ending=Ending.READ, resume=None):
         """The push's trace, from the formulas of the module docstring."""
         self.plays.append((level, action))
         v, gap = max(action.speed, 1e-6), level.pig - REACH

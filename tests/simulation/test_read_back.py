@@ -9,8 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from physc.api.tasks import load_task, scenario_of
-from physc.domains import load_domain
+from physc.api.tasks import domain_of, load_task, scenario_of
 from physc.simulation.fidelity import fidelity
 
 TASKS = sorted((Path(__file__).parents[1] / "golden" / "task").glob("*.json"))
@@ -20,7 +19,7 @@ TASKS = sorted((Path(__file__).parents[1] / "golden" / "task").glob("*.json"))
 def test_the_solution_reads_back_as_its_sequence(path):
     task = load_task(path)
     scenario = scenario_of(task)
-    domain = load_domain(task.domain).at(task.world or None)
+    domain = domain_of(task)  # in the world and engine the task was made in
     trace = domain.replay(task.level, task.solution, scenario)
     assert trace.sequence() == task.trace
     assert fidelity(scenario, trace).valid, f"{scenario.name}: {trace.sequence()}"

@@ -29,7 +29,7 @@ READ_SETTLE = 0.3  # seconds a play for reading the chain goes on after the last
 
 # How the game's run ends for each ending of a play (Game.scene): a play read for the chain goes on
 # READ_SETTLE after the last pig, so that a fall that began while the chain ran lands; an outcome
-# alone ends with the last pig; the whole play and stability do not stop for the pigs, and
+# alone ends once the last pig goes and nothing falls; the whole play and stability do not stop for the pigs, and
 # stability not for rest either.
 ENDINGS = {
     Ending.READ: {"settle_after_solved": READ_SETTLE},

@@ -1,11 +1,13 @@
-"""Playing a Science Birds level: bodies, the shot, the rules, the trace.
+"""Playing a Science Birds level: its scene and the game's rules as the run loop's hooks.
 
-The game turns a level into backend bodies (catalogue shapes, materials), fires
-the bird, and after every physics step applies the rules of Science Birds to the
-contacts the backend reports: damage from the attacker's mass and the relative
-velocity, destruction at life <= 0, removal of objects leaving the level and of
-birds that have come to rest, success when every pig is destroyed. It records
-everything in a Trace; recognising interactions is physc.simulation.recognise's job.
+The game turns a level into a backend-neutral scene (catalogue shapes, materials, the first
+bird at the slingshot, flying), and after every physics step of physc's run loop
+(physc.simulation.run) applies the rules of Science Birds to the contacts the engine reports:
+damage from the attacker's mass and the relative velocity, destruction at life <= 0, removal of
+objects leaving the level and of birds that have come to rest, the next bird and a bird's
+power, success when every pig is destroyed. The loop records the trace and
+physc.simulation.recognise reads it; the game adds what it kept (`completed`) and names what a
+bird's parts did as the bird's (`read`).
 """
 
 from __future__ import annotations
@@ -51,7 +53,7 @@ class Game(RunRules):
         self._fields, self._combos = readings(points)
         self._settings = tuple(f"rules.{f}" for f in self._fields)
         self._platform_masses = next((p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,))
-        self.flights = self._flights(())  # the birds of a run (`simulate`)
+        self.flights = self._flights(())  # the birds of a run (`scene` makes them)
 
     def _material(self, obj: LevelObject) -> str:
         return obj.material if obj.material in self.model.materials else "wood"
@@ -97,7 +99,8 @@ class Game(RunRules):
 
     def scene(self, shot: Shot | None = None, stop_at_rest: bool = True, invulnerable: float | None = None, settle_after_solved: float | None = None) -> Scene:
         """The level as physics (physc.simulation.scene), the first bird of `shot` at the slingshot,
-        flying as the shot sends it; the game, the run's rules, set for a run of it.
+        flying as the shot sends it; the game, the run's rules, set for one run of it (a scene
+        a run; the game's state is this run's until the next `scene`).
 
         Damage counts from the shot on (the player shoots after the level's first 2 s of
         invulnerability); with no shot, the first 2 s are invulnerable, as when the level loads.
@@ -152,7 +155,9 @@ class Game(RunRules):
 
     def launch(self, engine, shot: Shot) -> None:
         """Put the bird of `shot` alone into `engine` (built by `build`) at the slingshot, flying as
-        `shot` sends it (an engine world stepped by hand; `simulate` launches its shots in turn)."""
+        `shot` sends it, damage counting from now (an engine world stepped by hand; in a run,
+        `scene` places the first bird and `enter` brings in the others)."""
+        self._invulnerable = 0.0
         self.flights = self._flights((shot,))
         self._launch(engine, self.flights.launch_due(0.0))
         self.kinds[shot.bird] = "bird"
@@ -225,7 +230,7 @@ class Game(RunRules):
         self.spent = {name for name, life in self.life.items() if life <= 0} - {d.name for d in snapshot.destructions}
         struck = next((c.time for c in snapshot.contacts if BIRD in (c.a, c.b)), None)
         flights = self.flights
-        if struck is not None and BIRD in flights.flying:  # (a snapshot is of a one-shot play: AngryBirds.resumes)
+        if struck is not None and BIRD in flights.flying:  # (a snapshot is of a one-shot play: actions.resumes)
             flights.strike(BIRD, struck)
             while flights.flying[BIRD] <= snapshot.time + 1e-9 and flights.flying[BIRD] < self.rules.bird_lifetime:
                 flights.checked(BIRD)  # the checks it passed before the cut
@@ -319,7 +324,7 @@ class Game(RunRules):
                 flights.checked(name)
         return False
 
-    def _falling(self, values: list, dynamic: list[str]) -> bool:
+    def _falling(self, values: list, dynamic: tuple[str, ...]) -> bool:
         """Whether a block, pig or TNT (not the bird) is coming down fast."""
         fast = self.world.falling_speed
         return any(v[4] < -fast for v, name in zip(values, dynamic) if self.kinds.get(name) != "bird")

@@ -27,10 +27,10 @@ import attrs
 import numpy as np
 from physc.domains.base import DomainError
 from physc.evaluation.agent import calling
+from physc.simulation.ending import Ending
 
 from physc_phyre import observation, phyre_format
 from physc_phyre.actions import from_unit
-from physc.simulation.ending import Ending
 
 SPLITS = ("dev", "test")
 STOP = object()  # the agent's actions have run out

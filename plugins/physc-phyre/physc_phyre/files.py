@@ -8,10 +8,10 @@ from physc.compiler.concrete_layout import ConcreteLayout
 from physc.domains.base import MissingCapability
 from physc.domains.level_files import LevelFiles
 from physc.picture import FORMATS
+from physc.simulation.ending import Ending
 
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.task_file import task_json
-from physc.simulation.ending import Ending
 
 
 class PhyreFiles(LevelFiles):

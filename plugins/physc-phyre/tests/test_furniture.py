@@ -10,12 +10,12 @@ from pathlib import Path
 
 import pytest
 from physc.compiler.concrete_layout import PlacedObject
+from physc.simulation.ending import Ending
 
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.furniture import COVER_FIT, KINDS, PEG, PEG_SPACING, bodies, geometry, inside
 from physc_phyre.level import held, level_from_layout, outline_box
 from physc_phyre.world import BAR_HEIGHT, PIXELS_PER_METRE
-from physc.simulation.ending import Ending
 
 FLOOR_BAR = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
 
