@@ -211,7 +211,7 @@ class MarginReader:
         speed = abs(contact.relative_velocity[0] * contact.normal[0] + contact.relative_velocity[1] * contact.normal[1])
         parts.append(Margin(text, k, speed - self.recogniser.hit_speed, "units/s", self.recogniser.hit_speed, "approach speed beyond a hit's least"))
         if sides and sides != ALL_SIDES:
-            vx, vy = approach(trace, contact, actor, target)
+            vx, vy = approach(trace, contact, self.where.party(contact, actor), self.where.party(contact, target))
             parts.append(Margin(text, k, side_margin(-vx, -vy, sides), "degrees", 45.0, "from striking another side"))
         return min(parts, key=lambda m: m.share)
 
@@ -342,7 +342,7 @@ class MarginReader:
         hits = [c for c in self.where.contacts(a, b, 0.0) if c.time <= end]
         if hits and sides != ALL_SIDES:
             allowed = ALL_SIDES - sides
-            worst = min(side_margin(*(-v for v in approach(trace, c, a, b)), allowed) for c in hits)
+            worst = min(side_margin(*(-v for v in approach(trace, c, self.where.party(c, a), self.where.party(c, b))), allowed) for c in hits)
             return Margin(text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0)
         gap = self.where.gap(a, b, 0, self.where.row(end) + 1)
         if gap is None:

@@ -48,19 +48,38 @@ class Where:
         c, s = abs(math.cos(angle)), abs(math.sin(angle))
         return w * c + h * s, w * s + h * c
 
+    @functools.cached_property
+    def _parts(self) -> dict[str, tuple[str, ...]]:
+        """Each whole's bodies as the trace names them: itself, then its parts (Trace.parts)."""
+        out: dict[str, list[str]] = {}
+        for part, whole in self.trace.parts.items():
+            out.setdefault(whole, [whole]).append(part)
+        return {whole: tuple(bodies) for whole, bodies in out.items()}
+
+    def bodies(self, name: str) -> tuple[str, ...]:
+        """The bodies that are `name` as the scenario names it: itself and its parts (Science
+        Birds: a blue bird and the two birds its split adds)."""
+        return self._parts.get(name, (name,))
+
+    def party(self, contact, name: str) -> str:
+        """Which of `contact`'s two bodies is (a part of) `name`."""
+        return contact.a if contact.a in self.bodies(name) else contact.b
+
     def gap(self, a: str, b: str, first: int, last: int) -> float | None:
-        """The least distance between the boxes of `a` and `b` over rows first..last (negative:
-        they overlap; None when neither can be placed)."""
+        """The least distance between the boxes of `a` and `b` (of any of their parts) over rows
+        first..last (negative: they overlap; None when neither can be placed)."""
         trace = self.trace
         best = None
+        pairs = [(x, y) for x in self.bodies(a) for y in self.bodies(b)]
         for row in range(max(first, 0), min(last, trace.steps)):
-            pa, pb = self.pose(a, row), self.pose(b, row)
-            if pa is None or pb is None:
-                continue
-            (ax, ay), (bx, by) = self.extents(pa), self.extents(pb)
-            dx, dy = abs(pa[0] - pb[0]) - ax - bx, abs(pa[1] - pb[1]) - ay - by
-            gap = math.hypot(max(dx, 0.0), max(dy, 0.0)) if dx > 0 or dy > 0 else max(dx, dy)
-            best = gap if best is None else min(best, gap)
+            for x, y in pairs:
+                pa, pb = self.pose(x, row), self.pose(y, row)
+                if pa is None or pb is None:
+                    continue
+                (ax, ay), (bx, by) = self.extents(pa), self.extents(pb)
+                dx, dy = abs(pa[0] - pb[0]) - ax - bx, abs(pa[1] - pb[1]) - ay - by
+                gap = math.hypot(max(dx, 0.0), max(dy, 0.0)) if dx > 0 or dy > 0 else max(dx, dy)
+                best = gap if best is None else min(best, gap)
         return best
 
     def size(self, name: str) -> float:
@@ -75,8 +94,13 @@ class Where:
         return min(max(int(round(time / trace.dt)) - 1, 0), trace.steps - 1)
 
     def contacts(self, a: str, b: str, since: float):
+        """The contacts from `since` on between `a` and `b`, their parts' included, in time order."""
         trace = self.trace
-        return [c for c in trace.contacts if {c.a, c.b} == {a, b} and c.time >= since - 1e-9]
+        ones, others = self.bodies(a), self.bodies(b)
+        return [
+            c for c in trace.contacts
+            if c.time >= since - 1e-9 and ((c.a in ones and c.b in others) or (c.b in ones and c.a in others))
+        ]
 
     def spells(self, name: str, since: float, until: float) -> list[tuple[int, int]]:
         """(first row, row after the last) of each spell in which `name` touched nothing, begun in since..until."""

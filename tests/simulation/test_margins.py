@@ -106,3 +106,25 @@ def test_the_weakest_link_prefers_a_failed_one_then_the_smallest_share():
     failed = Margin("b", 1, 5.0, "s", 0.2, "x", held=False)
     assert Margins((held, failed)).weakest is failed
     assert Margins((held, Margin("c", 2, 1.0, "s", 0.2, "x"))).weakest is held and Margins().weakest is None
+
+
+def test_a_hit_by_a_part_of_the_actor_is_measured_on_that_part():
+    """A blue bird's split adds two birds that are the bird as the scenario names it
+    (Trace.parts): the hit one of them makes is read from its contact and its path, not as
+    the gap the bird itself kept (which read -9.6 units for Phy-Q's manoeuvring)."""
+    strike = _strike(3.0, least=3.0)
+    states = np.concatenate([np.full((50, 1, 6), np.nan), strike.states], axis=1)
+    states[:, 0, 0] = -8.0  # the bird itself stays far off, then is gone
+    contact = attrs.evolve(strike.contacts[0], a="bird_2")
+    trace = attrs.evolve(
+        strike, names=("bird", "bird_2", "pig"), kinds={"bird": "bird", "bird_2": "bird", "pig": "pig"},
+        states=np.concatenate([states[:, :1], strike.states[:, :1], strike.states[:, 1:]], axis=1),
+        contacts=(contact,), interactions=(Interaction("hit", ("bird", "pig"), "left", 0.5),),
+        outlines={"bird": (0.0, 0.0, 0.0, 0.2, 0.2), "bird_2": (0.0, 0.0, 0.0, 0.2, 0.2), "pig": (0.0, 0.0, 0.0, 0.2, 0.2)},
+        parts={"bird_2": "bird"},
+    )
+    hit = READER.read(Scenario((Term("hit", ("bird", "pig"), ("left",), "hit(bird, pig, left)"),)), trace).links[0]
+    assert hit.held and hit.unit == "degrees" and hit.value == pytest.approx(45.0)
+    cannot = Term("cannotHit", ("bird", "pig"), ("above",), "cannotHit(bird, pig, above)")
+    kept = READER.read(Scenario((), (cannot,)), trace).links[0]
+    assert kept.unit == "degrees" and kept.value > 0  # from the left: away from the forbidden side
