@@ -314,7 +314,7 @@ class MarginReader:
             before = blow[0].life + blow[0].amount
             worst = sum(d.least if d.least is not None else d.amount for d in blow)
             return Margin(text, k, worst - before, "damage", max(before, 1e-6), f"the blow under the worst reading beyond the {before:.3g} life {target} had left")
-        dealt = [d for d in trace.damage if d.target == target and d.by == attacker and d.time >= since - 1e-9]
+        dealt = [d for d in trace.damage if d.target == target and d.by in self.where.bodies(attacker) and d.time >= since - 1e-9]
         if not dealt:
             return Margin(text, k, -1.0, "of its life", 1.0, f"{attacker} dealt {target} no damage", False)
         left = min(d.life for d in dealt)
