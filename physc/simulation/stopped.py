@@ -30,6 +30,8 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
     actor = declared.objects[0]
     if actor not in trace.names:
         return f"{actor} was gone{after}"
+    if np.isnan(trace.states[:, trace.index(actor), 0]).all():
+        return _never_came(trace, actor, after)
     rows = trace.states[int(since / trace.dt) :, trace.index(actor), :]
     rows = rows[~np.isnan(rows[:, 0])]
     if not len(rows):
@@ -65,6 +67,17 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         if len(gaps):
             return f"{actor} came no nearer than {float(gaps.min()):.2f} units (centre to centre) to {target}{after}, moving at up to {speed:.2f} units/s"
     return f"{actor} moved at up to {speed:.2f} units/s{after}"
+
+
+def _never_came(trace: Trace, actor: str, after: str) -> str:
+    """Why `actor`, a body that joins a run after its start (a later action's: Science Birds'
+    next bird), never came into it: the goal was met first, or the run ended before."""
+    gone = {d.name: d for d in trace.destructions}
+    if trace.solved and trace.goal and all(g in gone for g in trace.goal):
+        last = max((gone[g] for g in trace.goal), key=lambda d: d.time)
+        by = f" by {last.by}" if last.by else ""
+        return f"{actor} never came into the run{after}: the goal was met first ({last.name} destroyed at {last.time:.2f} s{by})"
+    return f"{actor} never came into the run{after}: it ended at {trace.duration:.2f} s before {actor} was due"
 
 
 def _needed(record) -> str:

@@ -34,3 +34,21 @@ def test_a_strike_says_whose_mass_set_the_damage_and_the_speed_that_would_have_d
     assert why.endswith(
         "(0.74 of its life left; with its own mass setting the damage, a strike of 2.38 units/s would have destroyed it)"
     )
+
+
+def test_a_later_bird_that_never_came_says_the_goal_was_met_first():
+    """A second shot waits for the level: when the first shot's pig dies on the ground, the run
+    is over before the next bird comes (Phy-Q's multiple forces), which is not a bird 'gone'."""
+    from physc.dsl.scenario import ScenarioIR, TermIR
+    from physc.simulation.trace import DestructionRecord
+
+    terms = (TermIR("hit", ("bird", "pig"), ("left",), text="hit(bird, pig, left)"), TermIR("hit", ("bird2", "pig"), ("left",), text="hit(bird2, pig, left)"))
+    scenario = ScenarioIR("Two", "", "angrybirds", (), terms, ())
+    states = np.zeros((50, 3, 6))
+    states[:, 1] = np.nan  # bird2: never in the run
+    kinds = {"bird": "bird", "bird2": "bird", "pig": "pig"}
+    solved = Trace(0.02, ("bird", "bird2", "pig"), kinds, states, destructions=(DestructionRecord(0.9, "pig", "damage", "ground"),), goal=("pig",), solved=True)
+    why = why_stopped(scenario, solved, Fidelity(1, 2, (), False, (0.5,)))
+    assert why == "bird2 never came into the run after `hit(bird, pig, left)`: the goal was met first (pig destroyed at 0.90 s by ground)"
+    unsolved = Trace(0.02, ("bird", "bird2", "pig"), kinds, states, goal=("pig",))
+    assert why_stopped(scenario, unsolved, Fidelity(1, 2, (), False, (0.5,))).endswith("it ended at 1.00 s before bird2 was due")
