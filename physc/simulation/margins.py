@@ -25,8 +25,10 @@ weakest link of a chain is the one with the smallest share:
 * touch(a, b): the seconds the touch lasted beyond the recogniser's `touch_time`;
 * cannotHit(a, b, D): the clearance a kept from b while its direct approach lasted (units), or
   the degrees its hits on b were from a forbidden side;
-* every link's actor: the life it has left when it acts, under the worst reading of each blow
-  it took before (DamageRecord.most), where that is less than the link's own margin;
+* every link's actor, and what it acts on: the life each has left when the link happens, under
+  the worst reading of each blow it took before (DamageRecord.most), where that is less than the
+  link's own margin; a link that could not happen because what it acts on was destroyed first by
+  something else: that life, negative (how much the blows exceeded it);
 * cannotFall(a): how far a's longest drop was from being recognised as a fall (share of
   `fall_time` or `fall_height`, whichever it reached less of).
 
@@ -163,11 +165,17 @@ class MarginReader:
             method = getattr(self, declared.name, None)
             margin = method(declared, trace, found[k] if k < len(found) else None, since, found, k) if method else None
             # An actor must outlast the blows before it acts, unless it acts by being destroyed
-            # (an explosive's blast: the recogniser's `explosive` kinds).
-            if margin is not None and k < len(found) and trace.kinds.get(declared.objects[0]) not in self.recogniser.explosive:
-                lasting = self.survival(trace, declared.objects[0], found[k].time, declared.text, k)
-                if lasting is not None and lasting.share < margin.share:
-                    margin = lasting
+            # (an explosive's blast: the recogniser's `explosive` kinds); what it acts on must
+            # outlast the blows before the link (its own blow is the link's).
+            if margin is not None and k < len(found):
+                outlast = [(declared.objects[0], found[k].time)] if trace.kinds.get(declared.objects[0]) not in self.recogniser.explosive else []
+                outlast += [(declared.objects[1], found[k].time - trace.dt / 2)] if len(declared.objects) > 1 else []
+                for name, until in outlast:
+                    lasting = self.survival(trace, name, until, declared.text, k)
+                    if lasting is not None and lasting.share < margin.share:
+                        margin = lasting
+            if k == len(found):
+                margin = self.destroyed_first(trace, declared, since, k) or margin
             if margin is not None:
                 out.append(attrs.evolve(margin, index=k, held=k < len(found) and margin.held))
             elif k == len(found):
@@ -192,6 +200,25 @@ class MarginReader:
         if not math.isfinite(whole):
             return None
         return Margin(text, k, left, "life", max(whole / 2, 1e-6), f"the life {name} has left under the worst reading (scale: half its life)")
+
+    def destroyed_first(self, trace: Trace, declared, since: float, k: int) -> Margin | None:
+        """A link that could not happen because what it acts on was destroyed first, by something
+        other than its actor (Science Birds: the big pig that the first bird's blow knocked off
+        its support to die on the ground, before the second bird's hit): the life it had left
+        under the worst reading of the blows that destroyed it, negative by how much they
+        exceeded it. A failure graded by how far it was from not happening, where a link not
+        realised is a flat -1 that a raising cannot climb."""
+        if len(declared.objects) < 2:
+            return None
+        actor, target = declared.objects[0], declared.objects[1]
+        death = next((d for d in trace.destructions if d.name == target and d.time >= since - 1e-9 and d.by not in self.where.bodies(actor)), None)
+        if death is None:
+            return None
+        lasting = self.survival(trace, target, death.time, declared.text, k)
+        if lasting is None or lasting.value > 0:
+            return None
+        by = f"by {death.by}" if death.by else f"({death.cause})"
+        return attrs.evolve(lasting, held=False, what=f"the life {target} had left under the worst reading when destroyed first {by} (scale: half its life)")
 
     # ---- the terms -------------------------------------------------------------------------
     def hit(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:

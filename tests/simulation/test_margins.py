@@ -128,3 +128,24 @@ def test_a_hit_by_a_part_of_the_actor_is_measured_on_that_part():
     cannot = Term("cannotHit", ("bird", "pig"), ("above",), "cannotHit(bird, pig, above)")
     kept = READER.read(Scenario((), (cannot,)), trace).links[0]
     assert kept.unit == "degrees" and kept.value > 0  # from the left: away from the forbidden side
+
+
+def test_a_link_whose_target_was_destroyed_first_fails_by_how_much_it_was_overkilled():
+    """The second bird's hit cannot happen once the first blow has knocked the pig off to die on
+    the ground: the failure is graded by the life the pig had left under the worst reading (a
+    raising can climb it), where a link not realised is a flat -1."""
+    strike = _strike(3.0, least=3.0)
+    states = np.concatenate([strike.states, np.full((50, 1, 6), np.nan)], axis=1)  # bird2 never comes
+    blows = (DamageRecord(0.5, "pig", 0.4, 0.6, "block", "block", 1.0, 0.4, 0.4), DamageRecord(0.8, "pig", 0.9, -0.3, "ground", "pig", None, 0.7, 1.2))
+    trace = attrs.evolve(
+        strike, names=("block", "pig", "bird2"), kinds={"block": "block", "pig": "pig", "bird2": "bird"}, states=states,
+        damage=blows, destructions=(DestructionRecord(0.8, "pig", "damage", "ground"),), interactions=strike.interactions[:1],
+    )
+    scenario = Scenario((Term("hit", ("block", "pig"), ("left",), "hit(block, pig, left)"), Term("hit", ("bird2", "pig"), ("left",), "hit(bird2, pig, left)")))
+    first, second = READER.read(scenario, trace).links
+    assert first.held
+    assert not second.held and second.unit == "life" and second.value == pytest.approx(1.0 - 0.4 - 1.2)  # the worst reading of each blow
+    assert "destroyed first by ground" in second.what
+    # Destroyed by the link's own actor (a hit from the wrong side that still killed): the link's own margin.
+    own = attrs.evolve(trace, destructions=(DestructionRecord(0.8, "pig", "damage", "bird2"),))
+    assert READER.read(scenario, own).links[1].unit != "life"
