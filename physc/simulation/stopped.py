@@ -14,6 +14,7 @@ import numpy as np
 
 from physc.simulation.fidelity import Declared, Fidelity
 from physc.simulation.trace import Trace
+from physc.simulation.where import Where
 
 STRIKE = 0.2  # s before a hit that count for how fast it struck
 
@@ -41,7 +42,8 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         target = declared.objects[1]
         struck = trace.states[max(int((since - STRIKE) / trace.dt), 0) :, trace.index(actor), 3:5]
         speed = float(np.nanmax(np.hypot(struck[:, 0], struck[:, 1]))) if len(struck) else speed
-        dealt = [d for d in trace.damage if d.target == target and d.by == actor and d.time >= since and d.amount > 0]
+        by = Where(trace).bodies(actor)  # the actor and its parts (a blue bird's split)
+        dealt = [d for d in trace.damage if d.target == target and d.by in by and d.time >= since and d.amount > 0]
         if dealt:
             left = min(d.life for d in dealt)
             return (
