@@ -248,19 +248,21 @@ class MarginReader:
         if mover not in trace.names:
             return None
         index = trace.index(mover)
-        spans = [span for span in self.where.intervals.get(frozenset((mover, surface)), ()) if span[1] >= since - 1e-9]
+        spans = [span for span in self.recogniser.travels_on(trace, self.where.intervals, mover, surface) if span[1] >= since - 1e-9]
         if found is not None:
             spans = [span for span in spans if span[0] - dt <= found.time <= span[1] + dt] or spans
-        best = None
+        best = None  # (seconds, distance) of the travel that did most of the motion
         for span in spans:
             rows, rolling, sliding = self.recogniser.motion(trace, index, span, trace.radii.get(mover))
             frames = rolling if name == "roll" else sliding
-            seconds = float(frames.sum()) * dt
-            best = seconds if best is None else max(best, seconds)
-        need = self.recogniser.motion_time
+            measured = (float(frames.sum()) * dt, self.recogniser.covered(rows, frames))
+            best = measured if best is None else max(best, measured)
+        need, far = self.recogniser.motion_time, self.recogniser.travel
         if best is None:
             return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
-        parts = [Margin(text, k, best - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised")]
+        parts = [Margin(text, k, best[0] - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised")]
+        if far > 0:
+            parts.append(Margin(text, k, best[1] - far, "units", far, f"distance of {GERUND.get(name, name)} beyond the least recognised"))
         after = next((i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None)
         if after is not None and matched[after].name != "hit":
             after = None  # only a meeting has a speed to arrive at

@@ -10,21 +10,27 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
   is the side of b that was struck (the larger component of a's velocity relative
   to b, reversed: of the bodies' centres, see `approach`). Chatter of one pair within
   rehit seconds is one hit.
-* roll(a, s, d): a touches a surface s (a static body of the `surfaces` kinds) while moving at
-  least moving and turning the way it moves, so that −ω·r is within roll_slip of its
-  speed along its heading (ω counter-clockwise: rolling right turns clockwise), for at
-  least motion_time in all; d is the way it moved. A ball sliding with backspin, as a
-  ball struck by a rolling ball does (the hitter's front turns downwards), is not
-  rolling, however fast it spins.
-* slide(a, s, d): the same, but translating while turning at most slide_spin.
-  Rolling and sliding count on a surface's upper side only: the contact normal points
-  up from s into a within max_tilt (60°) of the vertical (the steepest generated slope is
-  40°), so a block pushed along a platform's underside slides on nothing.
+* roll(a, s, d): a round body a travels along a surface s (a static body of the `surfaces`
+  kinds) while moving at least `moving` and turning the way it moves, so that −ω·r is within
+  roll_slip of its speed along its heading (ω counter-clockwise: rolling right turns clockwise),
+  for at least motion_time in all, over at least `travel`; d is the way it moved. A ball
+  sliding with backspin, as a ball struck by a rolling ball does (the hitter's front turns
+  downwards), is not rolling, however fast it spins.
+* slide(a, s, d): the same, but translating while turning at most slide_spin; a body that
+  can roll (round) does not slide where `round_slides` is off (Science Birds: a round body
+  rolls, a block slides, as the language's object grammar types them).
+  A body travels along s while it touches s's upper side (the contact normal points up from s
+  into it within max_tilt (60°) of the vertical, so a block pushed along a platform's
+  underside slides on nothing) and across the hops between two such touches: a break in
+  which it rises no more than hop_rise times its size (a round body's radius, another's
+  smaller half-extent) above where it left s, and drops less than fall_height. With hop_rise
+  0, each touch is a travel of its own.
 * fall(a, b): a touches nothing for at least fall_time while dropping at least
   fall_height; b is the first thing it touches after. A thrown body (the bird)
   is not falling: its flight is not a fall.
-* bounce(a, s, d): a moving object touches a surface s for less than bounce_time
-  and leaves it; d is where its velocity points as it leaves.
+* bounce(a, s, d): a moving object touches a surface s for less than bounce_time and leaves
+  it, not in a hop of a travel along s (it rises more than hop_rise times its size); d is where
+  its velocity points as it leaves.
 * destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
 * explode(a): a body of an explosive kind (Science Birds' TNT) is destroyed by damage: its
   blast is the world's rules' (the blows it deals are destroy(a, …)).
@@ -45,6 +51,7 @@ cannotFall(a) by any fall(a, …).
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
 
 import attrs
 import numpy as np
@@ -77,6 +84,9 @@ class Recogniser:
     max_tilt: float = MAX_TILT
     touch_time: float | None = None  # seconds two goal bodies must touch for touch(a, b); None: never recognised
     explosive: tuple[str, ...] = ()  # kinds whose destruction is explode(a)
+    travel: float = 0.0  # length a roll or slide covers at least (its net displacement)
+    hop_rise: float = 0.0  # a break in a travel along a surface rising at most this × the body's size is a hop
+    round_slides: bool = True  # whether a round body that skids without turning slides
 
     @property
     def upward(self) -> float:
@@ -187,10 +197,49 @@ class Recogniser:
         upward = contact.normal[1] if contact.a == surface else -contact.normal[1]
         return upward >= self.upward
 
+    def travels(self, trace: Trace, intervals) -> Iterator[tuple[str, str, int, list[tuple[float, float]]]]:
+        """(mover, surface, the mover's state index, travel spans) for each dynamic body that
+        touched a surface from above (`on_surfaces`): its touches of that surface, each joined to
+        the next across a hop (`hop`)."""
+        for mover, surface, index, spans in self.on_surfaces(trace, intervals):
+            size = self.size(trace, mover)
+            joined: list[tuple[float, float]] = []
+            for begin, end in sorted(spans):
+                if joined and self.hop(trace, index, joined[-1][1], begin, size):
+                    joined[-1] = (joined[-1][0], end)
+                else:
+                    joined.append((begin, end))
+            yield mover, surface, index, joined
+
+    def travels_on(self, trace: Trace, intervals, mover: str, surface: str) -> list[tuple[float, float]]:
+        """The travel spans of `mover` along `surface` (none if it never touched its upper side)."""
+        return next((spans for m, s, _, spans in self.travels(trace, intervals) if (m, s) == (mover, surface)), [])
+
+    @staticmethod
+    def size(trace: Trace, name: str) -> float:
+        """A body's size for its hops: a round body's radius, another's smaller half-extent."""
+        if trace.radii.get(name):
+            return float(trace.radii[name])
+        outline = trace.outlines.get(name)
+        return min(outline[3], outline[4]) if outline else 0.0
+
+    def hop(self, trace: Trace, index: int, left: float, landed: float, size: float) -> bool:
+        """Whether the break from `left` to `landed` is a hop: the body rose at most hop_rise ×
+        `size` above where it left and dropped less than fall_height."""
+        if self.hop_rise <= 0.0 or landed <= left:
+            return landed <= left and self.hop_rise > 0.0
+        dt = trace.dt
+        first, last = max(int(round(left / dt)) - 1, 0), min(int(round(landed / dt)), trace.steps)
+        heights = trace.states[first:last, index, 1]
+        heights = heights[~np.isnan(heights)]
+        if not len(heights):
+            return False
+        return heights.max() - heights[0] <= self.hop_rise * size and heights[0] - heights[-1] < self.fall_height
+
     def motion(self, trace: Trace, index: int, span, r: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(rows, rolling, sliding) of the body `index` over one contact span with a surface:
-        its state rows, and whether it rolls or slides in each (r: its rolling radius, None
-        for a body that cannot roll)."""
+        """(rows, rolling, sliding) of the body `index` over one travel along a surface: its
+        state rows, and whether it rolls or slides in each (r: its rolling radius, None for a
+        body that cannot roll)."""
         dt = trace.dt
         begin, end = span
         # State row k holds the time (k + 1) · dt.
@@ -205,18 +254,27 @@ class Recogniser:
         else:
             rolling = np.zeros(len(rows), dtype=bool)
         sliding = moving & (np.abs(rows[:, 5]) <= self.slide_spin) & ~rolling
+        if r and not self.round_slides:
+            sliding[:] = False
         return rows, rolling, sliding
+
+    def covered(self, rows: np.ndarray, frames: np.ndarray) -> float:
+        """The net displacement from the first to the last of `frames` (the rows rolling or sliding)."""
+        if not frames.any():
+            return 0.0
+        picked = rows[frames]
+        return float(np.hypot(picked[-1, 0] - picked[0, 0], picked[-1, 1] - picked[0, 1]))
 
     def _motion(self, trace: Trace, intervals, radius) -> list[Interaction]:
         out = []
         dt = trace.dt
-        for mover, surface, index, spans in self.on_surfaces(trace, intervals):
+        for mover, surface, index, spans in self.travels(trace, intervals):
             for begin, end in spans:
                 rows, rolling, sliding = self.motion(trace, index, (begin, end), radius.get(mover))
                 if not len(rows):
                     continue
                 for name, frames in (("roll", rolling), ("slide", sliding)):
-                    if frames.sum() * dt >= self.motion_time:
+                    if frames.sum() * dt >= self.motion_time and self.covered(rows, frames) >= self.travel:
                         first = int(np.argmax(frames))
                         direction = "right" if rows[frames, 3].sum() > 0 else "left"
                         out.append(Interaction(name, (mover, surface), direction, begin + first * dt))
@@ -251,9 +309,13 @@ class Recogniser:
         dt = trace.dt
         for mover, surface, index, spans in self.on_surfaces(trace, intervals):
             pair = frozenset((mover, surface))
-            for begin, end in spans:
+            size = self.size(trace, mover)
+            ordered = sorted(spans)
+            for k, (begin, end) in enumerate(ordered):
                 if end - begin >= self.bounce_time or end >= trace.duration:
                     continue
+                if k + 1 < len(ordered) and self.hop(trace, index, end, ordered[k + 1][0], size):
+                    continue  # a hop of a travel along the surface, not a bounce off it
                 incoming = next((c for c in trace.contacts if c.time == begin and {c.a, c.b} == pair), None)
                 after = int(round(end / dt))
                 if incoming is None or incoming.speed < self.bounce_speed or after >= trace.steps:
