@@ -30,7 +30,8 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
   is not falling: its flight is not a fall.
 * bounce(a, s, d): a moving object touches a surface s for less than bounce_time and leaves
   it, not in a hop of a travel along s (it rises more than hop_rise times its size); d is where
-  its velocity points as it leaves.
+  its velocity points as it leaves. The touch is of s's upper side, or, with bounce_walls, of any
+  side: a wall, a ceiling (Phy-Q's bouncing levels bounce the bird off both).
 * destroy(a, b): b is destroyed by damage, a being what dealt the last blow.
 * explode(a): a body of an explosive kind (Science Birds' TNT) is destroyed by damage: its
   blast is the world's rules' (the blows it deals are destroy(a, …)).
@@ -87,6 +88,7 @@ class Recogniser:
     travel: float = 0.0  # length a roll or slide covers at least (its net displacement)
     hop_rise: float = 0.0  # a break in a travel along a surface rising at most this × the body's size is a hop
     round_slides: bool = True  # whether a round body that skids without turning slides
+    bounce_walls: bool = False  # whether a bounce off a surface's side or underside counts (else its upper side only)
 
     @property
     def upward(self) -> float:
@@ -307,24 +309,40 @@ class Recogniser:
     def _bounces(self, trace: Trace, intervals) -> list[Interaction]:
         out = []
         dt = trace.dt
-        for mover, surface, index, spans in self.on_surfaces(trace, intervals):
+        for mover, surface, index, spans in self._bounced_on(trace, intervals):
             pair = frozenset((mover, surface))
             size = self.size(trace, mover)
             ordered = sorted(spans)
             for k, (begin, end) in enumerate(ordered):
                 if end - begin >= self.bounce_time or end >= trace.duration:
                     continue
-                if k + 1 < len(ordered) and self.hop(trace, index, end, ordered[k + 1][0], size):
-                    continue  # a hop of a travel along the surface, not a bounce off it
                 incoming = next((c for c in trace.contacts if c.time == begin and {c.a, c.b} == pair), None)
+                if incoming is None or incoming.speed < self.bounce_speed:
+                    continue
+                above = self._from_above(incoming, surface)
+                if above and k + 1 < len(ordered) and self.hop(trace, index, end, ordered[k + 1][0], size):
+                    continue  # a hop of a travel along the surface, not a bounce off it
                 after = int(round(end / dt))
-                if incoming is None or incoming.speed < self.bounce_speed or after >= trace.steps:
+                if after >= trace.steps:
                     continue
                 vx, vy = trace.states[after, index, 3:5]
                 if np.isnan(vx):
                     continue
                 out.append(Interaction("bounce", (mover, surface), side(vx, vy), end))
         return out
+
+    def _bounced_on(self, trace: Trace, intervals):
+        """(mover, surface, index, spans) a bounce may come from: the touches of a surface's
+        upper side, or with bounce_walls its every side (a wall, a ceiling, a slope's underside)."""
+        if not self.bounce_walls:
+            yield from self.on_surfaces(trace, intervals)
+            return
+        for pair, spans in intervals.items():
+            names = sorted(pair)
+            surfaces = [n for n in names if trace.kinds.get(n) in self.surfaces]
+            movers = [n for n in names if n in trace.names]
+            if len(surfaces) == 1 and len(movers) == 1:
+                yield movers[0], surfaces[0], trace.index(movers[0]), spans
 
 
 def side(dx: float, dy: float) -> str:

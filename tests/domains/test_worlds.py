@@ -24,7 +24,7 @@ BOX2D = load_backend("box2d")
 def test_the_rolling_world_is_phyq_with_two_settings_changed_and_says_what_they_read():
     assert ROLLING.parent == "phyq" and set(ROLLING.changed) == {
         "bodies.circle_colliders", "bodies.angular_drag",  # its bodies
-        "recogniser.roll_slip", "recogniser.slide_spin", "recogniser.travel", "recogniser.hop_rise", "recogniser.round_slides",  # the paper's words
+        "recogniser.roll_slip", "recogniser.slide_spin", "recogniser.travel", "recogniser.hop_rise", "recogniser.round_slides", "recogniser.bounce_walls",  # the paper's words
     }
     ours = {s.path: s for s in ROLLING.settings()}
     theirs = {s.path: s for s in PHYQ.settings()}

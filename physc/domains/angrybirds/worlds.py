@@ -95,7 +95,7 @@ PHYQ = ScienceBirdsWorld(
         hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.5, slide_spin=1.0, motion_time=0.2, fall_time=0.2,
         fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
         surfaces=("platform", "ground"), background=("ground",), thrown=("bird",), explosive=("tnt",),
-        travel=0.22, hop_rise=1.0, round_slides=False,
+        travel=0.22, hop_rise=1.0, round_slides=False, bounce_walls=True,
     ),
     incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0), ramp=(12.7, 26.8), ramp_length=(5.4, 7.1)),
     sources={
@@ -109,6 +109,7 @@ PHYQ = ScienceBirdsWorld(
         "recogniser.hop_rise": "calibrated on Phy-Q's levels: a hop rises within the body's own size (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.roll_slip": "calibrated on Phy-Q's levels: the spin carries at least half the speed, more rolling than skidding (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.slide_spin": "calibrated on Phy-Q's levels: a slide rocks, a tumble turns (docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.bounce_walls": "Phy-Q's bouncing templates 2_4_1, 2_4_2 and 2_4_4: the bird bounces off walls and ceilings to reach a sheltered pig (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.round_slides": "the object grammar: a round body rolls, a block slides (docs/angrybirds.md, 'What the motion words mean')",
         "incline.ramp": "Phy-Q's roll templates 2_1_3 (rotation 347.3: 12.7°), 2_1_6 and 2_1_9 (333.18: 26.8°)",
         "incline.ramp_length": "Phy-Q's roll templates: Platform scaleX 8.39 (2_1_6, 2_1_9) and 11.10 (2_1_3) × 0.64",
@@ -121,7 +122,7 @@ ROLLING = PHYQ.derive(
     "physc's reading of the paper's unpublished 'adjusted physics parameters' (patches/rolling/); its words are the "
     "paper's: a roll or slide is motion in unbroken contact, with no least travel (docs/angrybirds.md, 'What the motion words mean')",
     bodies=attrs.evolve(PHYQ.bodies, circle_colliders=True, angular_drag=0.05),
-    recogniser=attrs.evolve(PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True),
+    recogniser=attrs.evolve(PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True, bounce_walls=False),
 )
 
 WORLDS = (PHYQ, ROLLING)
