@@ -18,8 +18,9 @@ and the levels are reported:
   *before* it strikes it);
 * the words' edges: single-force solving shots whose destroyer rolled or slid, and falling ones
   whose faller rolled or slid and did not fall;
-* with `--readings`, for each reading of what the game's files leave open, the levels some shot
-  solves and those the other readings solve but it does not.
+* with `--readings`, every single-bird level of the folders (labelled or not) and, for each
+  reading of what the game's files leave open, the levels some shot solves and those that every
+  other reading solves but it does not.
 
 The labels and words: single force 1_1 (none), rolling 2_1 (roll), falling 2_2 (fall), sliding
 2_3 (slide), bouncing 2_4 (bounce), as Phy-Q's README defines its scenarios.
@@ -40,6 +41,7 @@ import numpy as np
 import physc
 from physc.api.simulating import bound_domain
 from physc.simulation.ending import Ending
+from physc.worlds import under_readings
 
 LABELS = {"1_1": ("single force", None), "2_1": ("rolling", "roll"), "2_2": ("falling", "fall"), "2_3": ("sliding", "slide"), "2_4": ("bouncing", "bounce")}
 WORDS = ("roll", "slide", "fall", "bounce", "nothing")
@@ -86,21 +88,33 @@ def travel(trace, mover: str, target: str) -> float | None:
 
 def sweep(path: Path, world: str, step: float, readings: bool) -> dict:
     """Every shot of the sweep on one level in one world: the solving ones with what they read,
-    and (readings) which readings of the open points some shot solves in."""
+    and (readings) in how many shots each reading of the open points solves it. Each shot plays
+    only the readings that can change it (physc.worlds.under_readings); every other reading
+    plays the same run as an explored one that agrees with it on that run's decisive points."""
     domain = bound_domain("angrybirds", world, None)
     level = physc.read_level(path)
     shots, solved_in = [], defaultdict(int)
-    worlds = domain.world.readings() if readings else (domain.world,)
+    own = domain.world
+    every = own.readings() if readings else (own,)
+    points = own.open_points()
     angles = np.round(np.arange(0.0, 85.0 + 1e-9, step), 3)
     for angle in angles:
-        for reading in worlds:
-            trace = domain.at(reading).play(level, physc.Shot(angle=float(angle)), None, domain.seconds, ending=Ending.WHOLE)
-            if not trace.solved:
-                continue
-            solved_in[reading.name] += 1
-            if reading is worlds[0]:
-                shots.append({"angle": float(angle), "sequence": trace.sequence(), "destroyers": destroyers(trace)})
-    return {"level": path.name, "label": label_of(path), "world": world, "shots": shots, "readings": {w.name: solved_in[w.name] for w in worlds}}
+        shot = physc.Shot(angle=float(angle))
+
+        def run(reading, shot=shot):
+            return domain.at(reading).play(level, shot, None, domain.seconds, ending=Ending.WHOLE)
+
+        runs = under_readings(own, run) if readings else [(own, run(own))]
+        explored = [(r.open_values(), t) for r, t in runs]
+        trace = runs[0][1]
+        if trace.solved:
+            shots.append({"angle": float(angle), "sequence": trace.sequence(), "destroyers": destroyers(trace)})
+        for reading in every:
+            values = reading.open_values()
+            played = next(t for v, t in explored if all(values[i] == v[i] for i, p in enumerate(points) if p.setting in t.decisive))
+            solved_in[reading.name] += played.solved
+    return {"level": path.name, "label": label_of(path), "birds": len(level.birds), "world": world, "shots": shots,
+            "readings": {w.name: solved_in[w.name] for w in every}}
 
 
 def reads(shot: dict, word: str | None) -> bool:
@@ -150,8 +164,9 @@ def report(results: list[dict], floors: dict[str, float]) -> str:
                 cells.append(f"{100 * by_shot / len(shots):.0f} % ({by_level})")
             lines.append(f"| {title} | {len(shots)} | " + " | ".join(cells) + " |")
         lines += ["", "Edges: " + "; ".join(_edges(mine)), ""]
-        if any(len(r["readings"]) > 1 for r in mine):
-            lines += _readings(mine)
+        single = [r for r in mine if r["birds"] == 1]
+        if any(len(r["readings"]) > 1 for r in single):
+            lines += [f"Single-bird levels some shot solves, per reading ({len(single)} levels):", ""] + _readings(single)
     return "\n".join(lines)
 
 
@@ -187,7 +202,8 @@ def main() -> None:
     parser.add_argument("--show", action="store_true", help="print each solving shot's sequence")
     parser.add_argument("--json", type=Path, help="write every result here")
     args = parser.parse_args()
-    paths = sorted(p for folder in args.folders for p in folder.rglob("*.xml") if label_of(p))
+    # The words need labels; the readings are weighed on every single-bird level.
+    paths = sorted(p for folder in args.folders for p in folder.rglob("*.xml") if label_of(p) or args.readings)
     results = []
     for world in args.worlds:
         for path in paths:
