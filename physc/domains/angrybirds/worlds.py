@@ -104,7 +104,7 @@ PHYQ = ScienceBirdsWorld(
         "engine.linear_slop": "Physics2DSettings.asset: m_DefaultContactOffset 0.01, halved (Box2D's slop)",
         "engine.max_translation": "Physics2DSettings.asset: m_MaxTranslationSpeed 100 units/s × the step",
         "gravity": "Physics2DSettings.asset m_Gravity 9.81 × the prefabs' gravity scale 0.48",
-        "recogniser": "physc: recognition thresholds in level units (docs/generation.md)",
+        "recogniser": "physc's thresholds in level units, kept by the calibration on Phy-Q's levels (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.travel": "calibrated on Phy-Q's levels: the smallest block's width, SquareTiny 0.22 (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.hop_rise": "calibrated on Phy-Q's levels: a hop rises within the body's own size (docs/angrybirds.md, 'What the motion words mean')",
         "recogniser.roll_slip": "calibrated on Phy-Q's levels: the spin carries at least half the speed, more rolling than skidding (docs/angrybirds.md, 'What the motion words mean')",
