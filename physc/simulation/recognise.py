@@ -43,10 +43,7 @@ the background, which are thrown). Below, in Science Birds' terms and thresholds
 An interaction equal to the one just before it (one roll over two contact
 intervals, a double hit) is reported once.
 
-cannotHit(a, b, D) is violated by a hit(a, b, d) with d in D on a's direct
-approach (before a bounce the scenario declares redirects it, as in the language's
-static checks; an incidental bounce on some platform does not count);
-cannotFall(a) by any fall(a, …).
+Restrictions broken by the interactions are physc.simulation.restrictions'.
 """
 
 from __future__ import annotations
@@ -57,7 +54,7 @@ from collections.abc import Iterator
 import attrs
 import numpy as np
 
-from physc.simulation.trace import ContactRecord, Interaction, Trace, Violation
+from physc.simulation.trace import ContactRecord, Interaction, Trace
 
 MAX_TILT = 60.0  # degrees from the vertical: a surface steeper than this is a wall
 ORDER = {"hit": 0, "bounce": 1, "roll": 2, "slide": 2, "fall": 3, "explode": 4, "destroy": 5, "touch": 6}
@@ -402,25 +399,3 @@ def _touching(trace: Trace, intervals) -> np.ndarray:
                     last = min(int(math.ceil(end / trace.dt)) - 1, trace.steps)
                     touching[first:last, index[name]] = True
     return touching
-
-
-def violations(interactions, restrictions, redirects=None) -> tuple[Violation, ...]:
-    """Restrictions (TermIR-like: name, objects, directions) broken by the interactions.
-
-    `redirects` are the (object, surface) pairs of the bounces the scenario declares:
-    only such a bounce ends an object's direct approach (an incidental bounce on some
-    platform does not lift `cannotHit`). None: every bounce redirects (no scenario)."""
-    out = []
-    redirected_at: dict[str, float] = {}
-    for i in interactions:
-        if i.name == "bounce" and (redirects is None or tuple(i.objects) in redirects):
-            redirected_at.setdefault(i.objects[0], i.time)
-    for restriction in restrictions:
-        for i in interactions:
-            if restriction.name == "cannotHit" and i.name == "hit" and i.objects == tuple(restriction.objects[:2]):
-                direct = i.time < redirected_at.get(i.objects[0], math.inf)
-                if direct and i.direction in restriction.directions:
-                    out.append(Violation(restriction.text or f"cannotHit({', '.join(restriction.objects)})", i))
-            elif restriction.name == "cannotFall" and i.name == "fall" and i.objects[0] == restriction.objects[0]:
-                out.append(Violation(restriction.text or f"cannotFall({restriction.objects[0]})", i))
-    return tuple(sorted(out, key=lambda v: v.interaction.time))

@@ -16,7 +16,8 @@ import attrs
 
 from physc.backends import Backend, BodySpec, EngineWorld
 from physc.backends.settings import EngineSettings
-from physc.simulation.recognise import Recogniser, violations
+from physc.simulation.recognise import Recogniser
+from physc.simulation.restrictions import violations
 from physc.simulation.run import RunRules, run, run_to_outcome
 from physc.simulation.trace import Playout, Trace
 
@@ -76,7 +77,7 @@ def play_scene(
     """`scene` run for `seconds` at most (each turn's) under `rules`, in `backend` (from the
     snapshot `resume`, if given), the trace completed by the rules; with `recognise`, the
     interactions recognised, as the rules read them, and the restrictions (`redirects`: the
-    declared bounces, see physc.simulation.recognise.violations) checked."""
+    declared bounces, see physc.simulation.restrictions) checked."""
     dynamic = scene.dynamic
     recorded = run(built(scene, backend), dynamic, rules, seconds * scene.turns, scene.dt, resume)
     trace = rules.completed(Trace(

@@ -43,7 +43,8 @@ from physc.dsl.vocabularies import Vocabularies
 from physc.generation.pipeline import Pipeline
 from physc.simulation.ending import Ending
 from physc.simulation.fidelity import fidelity
-from physc.simulation.recognise import Recogniser, approach, side, violations
+from physc.simulation.recognise import Recogniser, approach, side
+from physc.simulation.restrictions import violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.stability import stable
 from physc.backends.settings import EngineSettings

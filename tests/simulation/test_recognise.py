@@ -13,7 +13,8 @@ from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
 RECOGNISER = PHYQ.recogniser
-from physc.simulation.recognise import side, violations
+from physc.simulation.recognise import side
+from physc.simulation.restrictions import violations
 from physc.dsl.scenario import TermIR
 from physc.simulation.trace import ContactRecord, Interaction, Trace
 

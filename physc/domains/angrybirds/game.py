@@ -288,7 +288,7 @@ class Game(RunRules):
 
     def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, resume=None, **options) -> Trace:
         """`simulate`, with the interactions recognised and the restrictions checked (`redirects`:
-        the declared bounces, see recognise.violations)."""
+        the declared bounces, see physc.simulation.restrictions)."""
         scene = self.scene(shot, **options)
         return play_scene(scene, self.backend, self, seconds, self.world.recogniser, restrictions, redirects, resume=resume)
 
