@@ -225,8 +225,10 @@ class Recogniser:
     def hop(self, trace: Trace, index: int, left: float, landed: float, size: float) -> bool:
         """Whether the break from `left` to `landed` is a hop: the body rose at most hop_rise ×
         `size` above where it left and dropped less than fall_height."""
-        if self.hop_rise <= 0.0 or landed <= left:
-            return landed <= left and self.hop_rise > 0.0
+        if self.hop_rise <= 0.0:
+            return False  # no hops: every touch is a travel of its own
+        if landed <= left:
+            return True  # no break at all
         dt = trace.dt
         first, last = max(int(round(left / dt)) - 1, 0), min(int(round(landed / dt)), trace.steps)
         heights = trace.states[first:last, index, 1]
