@@ -80,3 +80,15 @@ def test_a_single_force_shot_hits_with_no_motion_word_between():
     trace = played("1_1_2_1", 18)
     seen = before_destroy(trace)
     assert seen[-1] == "destroy(bird, pigSmall1)" and not any(t.startswith(("roll(", "slide(")) for t in seen), seen
+
+
+def test_a_bounce_off_a_wall_counts_in_phyq_as_phyqs_bouncing_levels_mean():
+    # Bouncing 2_4_4: the pig sits in a box; the bird glances off the box's side (platform6,
+    # struck from the left) and comes up under the pig. Read with upper sides only, as the
+    # rolling world's words are, the bounce off the wall is not there.
+    trace = played("2_4_4_1", 30)
+    seen = before_destroy(trace)
+    assert "bounce(bird, platform6, above)" in seen and "hit(bird, pigMedium1, below)" in seen
+    upper = attrs.evolve(PHYQ.recogniser, bounce_walls=False)
+    assert not any(i.text() == "bounce(bird, platform6, above)" for i in upper.recognise(trace, trace.radii))
+    assert PHYQ.recogniser.bounce_walls and not ROLLING.recogniser.bounce_walls
