@@ -65,9 +65,9 @@ from physc.compiler.layout_graph import (
 )
 import attrs
 
+from physc.compiler.sequence import OPPOSITE, falls_between, last_hit_at, last_motion, pushes
 from physc.dsl.scenario import ScenarioIR, TermIR
 
-OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
 SIDES = ("left", "right", "above", "below")
 AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed right, a faller starts above its target or up to its left
 
@@ -197,7 +197,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         elif term.name == "fall":
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
             pushed = None if hit is None else pushes(scenario.interactions, hit, players, flies)
-            moved = _last_motion(scenario.interactions[:position], term.objects[0])
+            moved = last_motion(scenario.interactions[:position], term.objects[0])
             if rules.fall_ahead_after_motion and moved is not None and (hit is None or moved > hit):  # it rolled or slid off
                 pushed = scenario.interactions[moved].directions[0]
             if pushed is not None and tuple(term.directions) == ("above",):
@@ -345,7 +345,7 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
     for mover, why in continuous:
         path = path_of(mover)
         for first, second in zip(path, path[1:]):
-            if _falls_between(scenario.interactions, mover, first, second):
+            if falls_between(scenario.interactions, mover, first, second):
                 continue  # it comes down from one onto the other: they need not meet
             if heading.get(mover, "right") == "right":
                 b.edge(TOUCHING, first, second, ("upperLeft",), why)
@@ -357,48 +357,6 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         nodes = tuple(n for n in nodes if n.name not in players)
         edges = tuple(e for e in edges if e.a not in players and e.b not in players)
     return LayoutGraph(scenario.name, scenario.domain, nodes, edges, tuple(ramps))
-
-
-def _falls_between(interactions, mover: str, first: str, second: str) -> bool:
-    """Whether `mover` falls after it last moves on `first` and before it first moves on `second`."""
-    on = [k for k, t in enumerate(interactions) if t.name in ("roll", "slide") and t.objects == (mover, first)]
-    onto = [k for k, t in enumerate(interactions) if t.name in ("roll", "slide") and t.objects == (mover, second)]
-    if not onto:
-        return False
-    start = on[-1] if on else -1
-    return any(t.name == "fall" and t.objects[0] == mover for t in interactions[start + 1 : onto[0]])
-
-
-def pushes(interactions, position: int, players: set[str], heading: str | None = "right") -> str | None:
-    """The way (left or right) that the hit `interactions[position]` pushes its target, if
-    known: away from the one side it is declared from (from the left: to the right). A hit
-    declared otherwise (`left ∨ above`, `any`) pushes the way its actor flies, if that is
-    known: the player's object flies `heading` until it has bounced (Angry Birds' bird,
-    launched from the slingshot at the left edge of the level, to the right)."""
-    hit, before = interactions[position], interactions[:position]
-    if len(hit.directions) == 1 and hit.directions[0] in ("left", "right"):
-        return OPPOSITE[hit.directions[0]]
-    actor = hit.objects[0]
-    if heading is not None and actor in players and not any(t.name == "bounce" and t.objects[0] == actor for t in before):
-        return heading
-    return None
-
-
-def last_hit_at(interactions, name: str) -> int | None:
-    """The position of the last declared hit on `name` among `interactions` (those before
-    some point)."""
-    return next((i for i in reversed(range(len(interactions))) if interactions[i].name == "hit" and interactions[i].objects[1] == name), None)
-
-
-def last_hit_on(interactions, name: str) -> TermIR | None:
-    """The last declared hit on `name` among `interactions` (those before some point)."""
-    at = last_hit_at(interactions, name)
-    return None if at is None else interactions[at]
-
-
-def _last_motion(interactions, name: str) -> int | None:
-    """The position of the last roll or slide of `name` among `interactions`."""
-    return next((i for i in reversed(range(len(interactions))) if interactions[i].name in ("roll", "slide") and interactions[i].objects[0] == name), None)
 
 
 def _push_off(direction: str) -> tuple[str, ...]:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.layout_rules import pushes
+from physc.compiler.sequence import pushes
 from physc.generation import placing
 from physc.generation.attempt import Attempt
 from physc.generation.evaluator import Evaluator
@@ -85,7 +85,7 @@ class Problem:
 
     def pushed_by(self, k: int) -> str | None:
         """The way ("left" or "right") the hit `interactions[k]` pushes its target, if known
-        (physc.compiler.layout_rules.pushes, with the domain's heading of the player's object)."""
+        (physc.compiler.sequence.pushes, with the domain's heading of the player's object)."""
         pushed = pushes(self.interactions, k, self.players, self.domain.layout_rules.player_heading)
         return pushed if pushed in ("left", "right") else None
 

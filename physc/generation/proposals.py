@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import attrs
 
-from physc.compiler.layout_rules import last_hit_at, last_hit_on
+from physc.compiler.sequence import last_hit_at, last_hit_on
 from physc.generation import choosing, placing
 from physc.generation.problem import Problem
 from physc.generation.stages import prefix

@@ -57,7 +57,7 @@ from __future__ import annotations
 
 from physc.compiler.layout_graph import LayoutGraph
 from physc.domains.angrybirds.catalogue import MATERIAL
-from physc.compiler.layout_rules import last_hit_on
+from physc.compiler.sequence import last_hit_on
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
