@@ -1,6 +1,6 @@
 """The Science Birds level's frame: its bounds, the ground, the slingshot, where objects go.
 
-Facts from shared/design/sciencebirds-facts.md: a `width="2"` level spans x in
+Facts cited in docs/angrybirds.md ("Level files", "The frame"): a `width="2"` level spans x in
 [-17.5, 17.5] (objects beyond are destroyed, ABGameWorld.cs); the ground's top is at
 y = -3.5; the slingshot stands at (-12, -2.5). A world holds one `Frame`
 (physc.domains.angrybirds.worlds).
@@ -27,6 +27,6 @@ class Frame:
 
     left: float = attrs.field(default=-17.5, metadata={"source": "ABGameWorld.cs: objects beyond ±17.5 are destroyed"})
     right: float = attrs.field(default=17.5, metadata={"source": "ABGameWorld.cs: objects beyond ±17.5 are destroyed"})
-    ground_top: float = attrs.field(default=-3.5, metadata={"source": "Phy-Q levels' ground (sciencebirds-facts §1)"})
-    slingshot: tuple[float, float] = attrs.field(default=(-12.0, -2.5), metadata={"source": "Phy-Q levels' slingshot (sciencebirds-facts §1)"})
+    ground_top: float = attrs.field(default=-3.5, metadata={"source": "Phy-Q's generator: GROUND_LEVEL -3.5 (docs/angrybirds.md, 'Level files')"})
+    slingshot: tuple[float, float] = attrs.field(default=(-12.0, -2.5), metadata={"source": "Phy-Q's templates: <Slingshot x=-12.0 y=-2.5> (docs/angrybirds.md, 'Level files')"})
     placement: Area = attrs.field(factory=Area)

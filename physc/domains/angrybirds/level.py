@@ -1,4 +1,4 @@
-"""A Science Birds level, as its XML file says it (shared/design/sciencebirds-facts.md §1).
+"""A Science Birds level, as its XML file says it (docs/angrybirds.md, "Level files").
 
 The model keeps what a file says and nothing else: an attribute that is absent
 stays `None` (so `material=""` and no material at all are told apart), and
