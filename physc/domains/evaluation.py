@@ -23,7 +23,8 @@ class Verdict(Protocol):
 
     @property
     def reason(self) -> str:
-        """Why the task is not kept, in a few words ("" when it is)."""
+        """Why the task is not kept, in a few words ("" when it is): the search gives the
+        layout up under these words (PHYRE's: "random actions solve it too often (TRIVIAL)")."""
 
     simulations: int  # the plays the verdict cost
 

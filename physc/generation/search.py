@@ -95,8 +95,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     accepting = time.perf_counter()
     judged = domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)) if problem.run.acceptance else None
     if judged is not None and not judged.accepted:
-        why = {"unstable": settings.UNSTABLE_SOLUTION, "trivial": settings.TRIVIAL, "solvable": settings.SOLVABLE, "undecided": settings.UNDECIDED}
-        return given_up(problem, ledger, why.get(judged.reason, settings.NOT_GOOD))
+        return given_up(problem, ledger, judged.reason or settings.NOT_ACCEPTED)  # the benchmark's own words
     solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
     steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ()) + contrasted
     parts = Parts(

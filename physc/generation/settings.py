@@ -23,11 +23,7 @@ CONTRAST_UNAIMED = "a contrast's counterpart is not what the player acts on"
 UNSTABLE = "the level did not stand"
 NOT_VALIDATED = "validation failed"
 INVALID_ACTION = "the solution is not a valid action in the finished level"
-TRIVIAL = "random actions solve it too often (TRIVIAL)"
-NOT_GOOD = "random actions do not solve it (not GOOD_STABLE)"
-UNSTABLE_SOLUTION = "the solution's neighbours do not all solve it"
-SOLVABLE = "an easier tier's random actions solve it (GOOD_STABLE there)"
-UNDECIDED = "an easier tier's random actions did not show it unsolvable within the chunks allowed"
+NOT_ACCEPTED = "the benchmark's acceptance rule did not keep it"  # where its verdict gives no words (Verdict.reason)
 
 
 @attrs.frozen

@@ -106,6 +106,16 @@ class TierResult:
         }
 
 
+# Why a task is not kept, in PHYRE's terms: the phrases a search gives its layout up with.
+REASONS = {
+    "unstable": "the solution's neighbours do not all solve it",
+    "solvable": "an easier tier's random actions solve it (GOOD_STABLE there)",
+    "undecided": "an easier tier's random actions did not show it unsolvable within the chunks allowed",
+    "trivial": "random actions solve it too often (TRIVIAL)",
+    "not_good": "random actions do not solve it (not GOOD_STABLE)",
+}
+
+
 @attrs.frozen
 class Verdict:
     """The rule's verdict on a task: its own tier's evaluation, those of the tiers it must not
@@ -130,8 +140,16 @@ class Verdict:
 
     @property
     def reason(self) -> str:
-        """Why the task is not kept ('' when it is): unstable, solvable, undecided (an easier
-        tier's rule did not decide within its chunks), trivial, not_good."""
+        """Why the task is not kept, in the words the search's ledger records it under ('' when
+        it is kept): REASONS' unstable, solvable, undecided (an easier tier's rule did not
+        decide within its chunks), trivial or not_good."""
+        if self.accepted:
+            return ""
+        return REASONS[self.why]
+
+    @property
+    def why(self) -> str:
+        """The key of `reason` in REASONS ('' when the task is kept)."""
         if self.accepted:
             return ""
         if not self.solution_stable:

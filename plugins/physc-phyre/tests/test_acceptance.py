@@ -145,20 +145,20 @@ def test_a_task_solvable_in_an_easier_tier_is_rejected_before_its_own_is_judged(
     """PHYRE's `reject_ball_solvable`: a two-ball task one ball solves (GOOD_STABLE) is dropped."""
     two_balls = World(0.02, seed=1)
     verdict = judged_in_two_tiers(World(0.02), two_balls)
-    assert not verdict.accepted and verdict.reason == "solvable" and verdict.main is None
+    assert not verdict.accepted and verdict.why == "solvable" and verdict.main is None
     assert verdict.record()["unsolvable_in"][0]["tier"] == "ball" and two_balls.plays == 0
     kept = judged_in_two_tiers(World(0.0), World(0.02, seed=1))  # one ball never solves it: BAD_STABLE
     assert kept.accepted and not kept.excluded[0].answer and kept.main.tier == "two_balls"
     assert kept.excluded[0].chunks == 15 and "BAD_STABLE" in kept.excluded[0].flags
     # Not shown unsolvable with one ball within the chunks allowed: not kept (PHYRE would draw on)
     undecided = judged_in_two_tiers(World(0.0), World(0.02, seed=1), ball_chunks=4)
-    assert not undecided.accepted and undecided.reason == "undecided" and undecided.main is None
+    assert not undecided.accepted and undecided.why == "undecided" and undecided.main is None
 
 
 def test_an_unstable_intended_solution_is_rejected_without_drawing():
     world = World(0.02, stable=0.005)
     verdict = judge(SMALL, 0.01, lambda r, chunk: world.pool(chunk), world.valid, world.solves, world.neighbours)
-    assert not verdict.accepted and verdict.reason == "unstable" and verdict.simulations == 1  # its first neighbour fails
+    assert not verdict.accepted and verdict.why == "unstable" and verdict.simulations == 1  # its first neighbour fails
 
 
 def test_the_record_holds_the_counts_and_their_bounds():
