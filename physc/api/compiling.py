@@ -14,8 +14,9 @@ from pathlib import Path
 
 from physc.api.errors import NoTask, ScenarioError
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
-from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
+from physc.compiler.task import Task
 from physc.diagnostics import Diagnostic, Label
+from physc.generation.run_settings import RunSettings, overridden
 
 __all__ = ["check", "compile", "scenarios"]
 
@@ -98,8 +99,6 @@ def pipeline(scenario_ast, ir, domain, seed: int = 0, settings=None, progress=No
     from physc.dsl import ast
     from physc.dsl.fmt import format_file
     from physc.generation.pipeline import Pipeline
-    from physc.generation.run_settings import RunSettings
-
     return Pipeline(domain, ir, seed, settings or RunSettings(), format_file(ast.File((scenario_ast,))), progress)
 
 
@@ -135,20 +134,17 @@ def compile(  # noqa: A001 - the library's verb is the command's
     seed: int = 0,
     world: str | None = None,
     backend: str | None = None,
-    time_budget: float = TIME_BUDGET,
-    layouts: int = LAYOUT_BUDGET,
-    clause_budget: int = CLAUSE_BUDGET,
-    validate: bool = True,
-    acceptance: bool = True,
-    min_robustness: int | None = MIN_ROBUSTNESS,
-    verify_backend: str | None = None,
+    settings: RunSettings | None = None,
     progress=None,
+    **overrides,
 ) -> Task:
     """The task of a scenario (`physc compile FILE -s NAME --seed S`): `source` is a .phys
     path or a scenario's text, `scenario` the name of one of its scenarios (None: its only
     one). `world` and `backend` name where the task is made (None: the domain's default world,
-    and box2d); the other keywords are `physc compile`'s options of the same names.
-    `progress`, if given, is called with a short text as the search advances.
+    and box2d). `settings` is the run's RunSettings (None: the defaults), and any of its fields
+    given as a keyword overrides it (`time_budget=60`, `min_robustness=4`: `physc compile`'s
+    options of the same names). `progress`, if given, is called with a short text as the
+    search advances.
 
     Raises ScenarioError for a scenario with errors, NoTask when no task comes of it within
     the budgets, physc.domains.base.DomainError (a PhyscError's sibling, with a code) for a
@@ -157,16 +153,11 @@ def compile(  # noqa: A001 - the library's verb is the command's
     from physc.domains import bound, load_domain
     from physc.domains.base import STAGE_NEEDS, require
 
+    settings = overridden(settings, "compile", **overrides)
     scenario_ast, ir, _ = selected(source, scenario)
     domain = bound(load_domain(ir.domain), world, backend)
-    check_min_robustness(min_robustness, domain)
-    require(domain, STAGE_NEEDS["task"] + (("replay",) if verify_backend else ()), "compile")
-    from physc.generation.run_settings import RunSettings
-
-    settings = RunSettings(
-        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=validate,
-        acceptance=acceptance, verify_backend=verify_backend,
-    )
+    check_min_robustness(settings.min_robustness, domain)
+    require(domain, STAGE_NEEDS["task"] + (("replay",) if settings.verify_backend else ()), "compile")
     run = pipeline(scenario_ast, ir, domain, seed, settings, progress)
     try:
         with run.within_budget("task"):

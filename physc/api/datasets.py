@@ -16,8 +16,8 @@ from pathlib import Path
 import attrs
 
 from physc.api.errors import FileError, ScenarioError
-from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, Task
-from physc.generation.run_settings import RunSettings
+from physc.compiler.task import Task
+from physc.generation.run_settings import RunSettings, overridden
 
 __all__ = ["Dataset", "Evaluation", "evaluate", "generate", "load_dataset"]
 
@@ -139,17 +139,12 @@ def generate(
     jobs: int = 1,
     world: str | None = None,
     backend: str | None = None,
-    time_budget: float = TIME_BUDGET,
-    layouts: int = LAYOUT_BUDGET,
-    clause_budget: int = CLAUSE_BUDGET,
-    min_robustness: int | None = MIN_ROBUSTNESS,
-    verify_backend: str | None = None,
-    acceptance: bool = True,
-    validate: bool = True,
+    settings: RunSettings | None = None,
     png: bool = False,
     accidental: bool = False,
     dask_workers: int | None = None,
     scheduler: str | None = None,
+    **overrides,
 ) -> Dataset:
     """`physc generate FILES --tasks N --out OUT`: `tasks` tasks (seeds `seed` …) of every
     scenario of `files` (or of `scenarios`), into the folder `out`: on `jobs` local processes,
@@ -159,12 +154,9 @@ def generate(
     from physc.dataset.build import build
     from physc.execution import executor_for
 
-    settings = RunSettings(
-        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=validate,
-        acceptance=acceptance, verify_backend=verify_backend,
-    )
+    settings = overridden(settings, "generate", **overrides)
     made = _jobs(
-        files, tasks, seed, scenarios, generation_needs(png, verify_backend), picture=png, accidental=accidental, **job_settings(world, backend, settings),
+        files, tasks, seed, scenarios, generation_needs(png, settings.verify_backend), picture=png, accidental=accidental, **job_settings(world, backend, settings),
     )
     problem = clashes(made)
     if problem:
@@ -194,14 +186,10 @@ def evaluate(
     jobs: int = 1,
     world: str | None = None,
     backend: str | None = None,
-    time_budget: float = TIME_BUDGET,
-    layouts: int = LAYOUT_BUDGET,
-    clause_budget: int = CLAUSE_BUDGET,
-    min_robustness: int | None = MIN_ROBUSTNESS,
-    verify_backend: str | None = None,
-    acceptance: bool = True,
+    settings: RunSettings | None = None,
     dask_workers: int | None = None,
     scheduler: str | None = None,
+    **overrides,
 ) -> Evaluation:
     """`physc eval FILES --tasks N --out OUT`: generate and measure `tasks` tasks of every
     scenario (stability, intended and accidental solvability, fidelity, cost), resuming the
@@ -213,10 +201,7 @@ def evaluate(
     from physc.evaluation.run import run
     from physc.execution import executor_for
 
-    settings = RunSettings(
-        time_budget=time_budget, layouts=layouts, clause_budget=clause_budget, min_robustness=min_robustness, validate=False,
-        acceptance=acceptance, verify_backend=verify_backend,
-    )
+    settings = attrs.evolve(overridden(settings, "evaluate", **overrides), validate=False)  # the paper's evaluation skips it
     made = _jobs(files, tasks, seed, scenarios, evaluation_needs(), **job_settings(world, backend, settings))
     started = time.perf_counter()
     with executor_for(jobs, scheduler, dask_workers) as executor:

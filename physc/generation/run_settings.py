@@ -36,3 +36,13 @@ class RunSettings:
         """The noisy replays a solution must pass at least in `domain`: `min_robustness`, or all
         of the domain's (at least one)."""
         return self.min_robustness if self.min_robustness is not None else (domain.robustness_replays or 1)
+
+
+def overridden(settings: RunSettings | None, caller: str, **overrides) -> RunSettings:
+    """`settings` (None: the defaults) with fields replaced by keyword, as the API's functions
+    take them (`physc.compile(path, time_budget=60)`); a name that is no field is a TypeError,
+    worded as Python words one for a keyword `caller` does not take."""
+    unknown = sorted(set(overrides) - set(attrs.fields_dict(RunSettings)))
+    if unknown:
+        raise TypeError(f"{caller}() got an unexpected keyword argument {unknown[0]!r}")
+    return attrs.evolve(settings if settings is not None else RunSettings(), **overrides)
