@@ -24,9 +24,12 @@ import numpy as np
 
 from physc import budget
 from physc.generation.attempt import Attempt, reaches
+from physc.generation.coordinates import Coordinates, weak_parts
 from physc.generation.problem import Ledger, Problem, replayed, simulate
+from physc.generation.raising import Candidate, climb
 from physc.generation.snapshots import snapshot
 from physc.generation.stages import ChainStage, prefix
+from physc.generation.variants import variants
 from physc.simulation.margins import Margin, Margins
 
 
@@ -58,8 +61,6 @@ def score(margins: Margins, end: int, matched: int) -> float:
 
 def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None:
     """The stages from `problem.plan[i]` on, depth first (module docstring)."""
-    from physc.generation.variants import variants
-
     if i == len(problem.plan):
         return parent
     stage = problem.plan[i]
@@ -111,9 +112,6 @@ def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: ChainStag
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
     raise the stage's strength; the first strong candidate, else the strongest that realises
     the stage, as a node; None when none realises it."""
-    from physc.generation.coordinates import Coordinates, weak_parts
-    from physc.generation.raising import Candidate, climb
-
     margins = problem.domain.margins(problem.scenario, attempt.trace, stage.end)
     weakest = margins.weakest
     interactions = problem.interactions
