@@ -179,14 +179,21 @@ class Recogniser:
         normals = {}
         for c in trace.contacts:
             normals.setdefault((frozenset((c.a, c.b)), c.time), c)
+        for mover, surface, spans in self._touching_surfaces(trace, intervals):
+            pair = frozenset((mover, surface))
+            above = [span for span in spans if self._from_above(normals.get((pair, span[0])), surface)]
+            if above:
+                yield mover, surface, trace.index(mover), above
+
+    def _touching_surfaces(self, trace: Trace, intervals):
+        """(mover, surface, contact spans) for each pair of one dynamic body and one static
+        surface (of the `surfaces` kinds) that touched, on any side."""
         for pair, spans in intervals.items():
             names = sorted(pair)
             surfaces = [n for n in names if trace.kinds.get(n) in self.surfaces]
             movers = [n for n in names if n in trace.names]
             if len(surfaces) == 1 and len(movers) == 1:
-                above = [span for span in spans if self._from_above(normals.get((pair, span[0])), surfaces[0])]
-                if above:
-                    yield movers[0], surfaces[0], trace.index(movers[0]), above
+                yield movers[0], surfaces[0], spans
 
     def _from_above(self, contact: ContactRecord | None, surface: str) -> bool:
         """Whether the contact's normal, turned to point from the surface into the other body,
@@ -201,18 +208,31 @@ class Recogniser:
         touched a surface from above (`on_surfaces`): its touches of that surface, each joined to
         the next across a hop (`hop`)."""
         for mover, surface, index, spans in self.on_surfaces(trace, intervals):
-            size = self.size(trace, mover)
-            joined: list[tuple[float, float]] = []
-            for begin, end in sorted(spans):
-                if joined and self.hop(trace, index, joined[-1][1], begin, size):
-                    joined[-1] = (joined[-1][0], end)
-                else:
-                    joined.append((begin, end))
-            yield mover, surface, index, joined
+            yield mover, surface, index, self._joined(trace, index, self.size(trace, mover), spans)
 
     def travels_on(self, trace: Trace, intervals, mover: str, surface: str) -> list[tuple[float, float]]:
-        """The travel spans of `mover` along `surface` (none if it never touched its upper side)."""
-        return next((spans for m, s, _, spans in self.travels(trace, intervals) if (m, s) == (mover, surface)), [])
+        """The travel spans of `mover` along `surface` (none if it never touched its upper
+        side): `travels` of that one pair, without reading the others."""
+        if mover not in trace.names or trace.kinds.get(surface) not in self.surfaces:
+            return []
+        pair = frozenset((mover, surface))
+        firsts: dict[float, ContactRecord] = {}
+        for c in trace.contacts:
+            if {c.a, c.b} == pair:
+                firsts.setdefault(c.time, c)
+        above = [span for span in intervals.get(pair, ()) if self._from_above(firsts.get(span[0]), surface)]
+        index = trace.index(mover)
+        return self._joined(trace, index, self.size(trace, mover), above)
+
+    def _joined(self, trace: Trace, index: int, size: float, spans) -> list[tuple[float, float]]:
+        """Touches of one surface, each joined to the next across a hop."""
+        joined: list[tuple[float, float]] = []
+        for begin, end in sorted(spans):
+            if joined and self.hop(trace, index, joined[-1][1], begin, size):
+                joined[-1] = (joined[-1][0], end)
+            else:
+                joined.append((begin, end))
+        return joined
 
     @staticmethod
     def size(trace: Trace, name: str) -> float:
@@ -336,12 +356,8 @@ class Recogniser:
         if not self.bounce_walls:
             yield from self.on_surfaces(trace, intervals)
             return
-        for pair, spans in intervals.items():
-            names = sorted(pair)
-            surfaces = [n for n in names if trace.kinds.get(n) in self.surfaces]
-            movers = [n for n in names if n in trace.names]
-            if len(surfaces) == 1 and len(movers) == 1:
-                yield movers[0], surfaces[0], trace.index(movers[0]), spans
+        for mover, surface, spans in self._touching_surfaces(trace, intervals):
+            yield mover, surface, trace.index(mover), spans
 
 
 def side(dx: float, dy: float) -> str:
