@@ -26,9 +26,30 @@ __version__ = "0.1.0"
 # Each exported name → the module that defines it.
 _EXPORTS = {
     **dict.fromkeys(
-        ("check", "compile", "scenarios", "load_task", "save_task", "save_level", "level_text", "render", "domain_of", "scenario_of",
-         "read_level", "simulate", "verify", "generate", "load_dataset", "evaluate", "Dataset", "Evaluation", "PhyscError",
-         "ScenarioError", "NoTask", "FileError"),
+        (
+            "check",
+            "compile",
+            "scenarios",
+            "load_task",
+            "save_task",
+            "save_level",
+            "level_text",
+            "render",
+            "domain_of",
+            "scenario_of",
+            "read_level",
+            "simulate",
+            "verify",
+            "generate",
+            "load_dataset",
+            "evaluate",
+            "Dataset",
+            "Evaluation",
+            "PhyscError",
+            "ScenarioError",
+            "NoTask",
+            "FileError",
+        ),
         "physc.api",
     ),
     "Task": "physc.compiler.task",
@@ -42,6 +63,7 @@ _EXPORTS = {
 }
 
 __all__ = ["__version__", *sorted(_EXPORTS)]
+
 
 def __getattr__(name: str):
     module = _EXPORTS.get(name)

@@ -12,15 +12,15 @@ import argparse
 import os
 import sys
 import traceback
-from typing import Sequence
+from collections.abc import Sequence
 
 from physc import __version__, budget
 from physc.commands import arguments
 from physc.commands.common import (
     EXIT_INTERNAL,
-    EXIT_STATUSES,
     EXIT_INTERRUPTED,
     EXIT_OK,
+    EXIT_STATUSES,
     EXIT_USAGE,
     Parser,
     UsageError,
@@ -28,11 +28,11 @@ from physc.commands.common import (
 )
 from physc.commands.completion import add_command as add_completion_command
 from physc.commands.evaluate import add_command as add_eval_command
-from physc.commands.verify import add_command as add_verify_command
 from physc.commands.generate import add_command as add_generate_command
 from physc.commands.lsp import add_command as add_lsp_command
-from physc.commands.play import add_commands as add_play_commands
 from physc.commands.options import add_generation, add_target
+from physc.commands.play import add_commands as add_play_commands
+from physc.commands.verify import add_command as add_verify_command
 from physc.compiler.stages import STAGES
 from physc.diagnostics import safe
 
@@ -67,11 +67,27 @@ def build_parser() -> argparse.ArgumentParser:
     top.add_argument("--no-color", dest="color", action="store_const", const="never", help="the same as --color never")
     top.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
     common = argparse.ArgumentParser(add_help=False)
-    common.add_argument("--color", choices=("auto", "always", "never"), default=argparse.SUPPRESS, help="colour diagnostics")
-    common.add_argument("--no-color", dest="color", action="store_const", const="never", default=argparse.SUPPRESS, help="the same as --color never")
-    common.add_argument("--traceback", action="store_true", default=argparse.SUPPRESS, help="show Python tracebacks of internal errors")
+    common.add_argument(
+        "--color", choices=("auto", "always", "never"), default=argparse.SUPPRESS, help="colour diagnostics"
+    )
+    common.add_argument(
+        "--no-color",
+        dest="color",
+        action="store_const",
+        const="never",
+        default=argparse.SUPPRESS,
+        help="the same as --color never",
+    )
+    common.add_argument(
+        "--traceback", action="store_true", default=argparse.SUPPRESS, help="show Python tracebacks of internal errors"
+    )
 
-    parser = Parser(prog="physc", description="Compile physical scenarios (.phys) into physics tasks.", epilog=EXIT_STATUSES, parents=[top])
+    parser = Parser(
+        prog="physc",
+        description="Compile physical scenarios (.phys) into physics tasks.",
+        epilog=EXIT_STATUSES,
+        parents=[top],
+    )
     parser.add_argument("-V", "--version", action="version", version=f"physc {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
 
@@ -90,20 +106,32 @@ def build_parser() -> argparse.ArgumentParser:
     fmt.set_defaults(run=command("physc.commands.fmt", "cmd_fmt"))
 
     stage_names = ", ".join(s.name for s in STAGES)
-    compile_ = commands.add_parser("compile", parents=[common], help="generate a task from a scenario (or print a stage with --emit)")
+    compile_ = commands.add_parser(
+        "compile", parents=[common], help="generate a task from a scenario (or print a stage with --emit)"
+    )
     compile_.add_argument("file", metavar="FILE")
     compile_.add_argument(
         "-s", "--scenario", action="append", metavar="NAME", help="a scenario of the file (repeatable; default all)"
     )
-    compile_.add_argument("--emit", metavar="STAGE", default="level", help=f"the stage to print (default level): {stage_names}")
-    compile_.add_argument("-o", "--output", metavar="PATH", help="write the output here instead of stdout (a folder for several scenarios)")
-    compile_.add_argument("--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings")
+    compile_.add_argument(
+        "--emit", metavar="STAGE", default="level", help=f"the stage to print (default level): {stage_names}"
+    )
+    compile_.add_argument(
+        "-o",
+        "--output",
+        metavar="PATH",
+        help="write the output here instead of stdout (a folder for several scenarios)",
+    )
+    compile_.add_argument(
+        "--task", metavar="PATH", help="also write the task as JSON: scenario, seed, level, solution, trace, timings"
+    )
     add_generation(compile_)
     add_target(compile_)
     compile_.add_argument("-q", "--quiet", action="store_true", help="no progress on stderr")
     compile_.add_argument("--seed", type=arguments.seed, default=0, metavar="N", help="the random seed (default 0)")
     compile_.add_argument(
-        "--format", choices=("json", "dot", "xml"),
+        "--format",
+        choices=("json", "dot", "xml"),
         help="the printed stage's format: by default its own (a level: the domain's level file; the other stages: json); dot (Graphviz) for graph stages",
     )
     compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")
@@ -118,15 +146,29 @@ def build_parser() -> argparse.ArgumentParser:
     add_completion_command(commands, common)
     commands.choices["completion"].set_defaults(root=parser)  # the completion script is made from this parser
 
-    backends = commands.add_parser("backends", parents=[common], help="list installed physics engines, their versions and what each honours")
+    backends = commands.add_parser(
+        "backends", parents=[common], help="list installed physics engines, their versions and what each honours"
+    )
     backends.add_argument("name", nargs="*", help="only these backends")
-    backends.add_argument("-v", "--verbose", action="store_true", help="say, setting by setting, what each engine does with a world's engine settings")
+    backends.add_argument(
+        "-v",
+        "--verbose",
+        action="store_true",
+        help="say, setting by setting, what each engine does with a world's engine settings",
+    )
     add_format(backends, "the engines")
     backends.set_defaults(run=command("physc.commands.backends", "cmd_backends"))
 
-    worlds = commands.add_parser("worlds", parents=[common], help="list each domain's worlds; -v: every setting and where it comes from")
+    worlds = commands.add_parser(
+        "worlds", parents=[common], help="list each domain's worlds; -v: every setting and where it comes from"
+    )
     worlds.add_argument("name", nargs="*", help="only these domains")
-    worlds.add_argument("-v", "--verbose", action="store_true", help="every setting of each world, with the file it is read from (a variant's changes: its reading)")
+    worlds.add_argument(
+        "-v",
+        "--verbose",
+        action="store_true",
+        help="every setting of each world, with the file it is read from (a variant's changes: its reading)",
+    )
     add_format(worlds, "the worlds")
     worlds.set_defaults(run=command("physc.commands.worlds", "cmd_worlds"))
 

@@ -21,7 +21,7 @@ import bisect
 import enum
 import re
 import unicodedata
-from typing import Iterable
+from collections.abc import Iterable
 
 import attrs
 
@@ -118,7 +118,7 @@ class Fix:
     edits: tuple[Edit, ...]
 
     @classmethod
-    def replace(cls, span: Span, text: str, title: str | None = None) -> "Fix":
+    def replace(cls, span: Span, text: str, title: str | None = None) -> Fix:
         return cls(title or f"replace with '{text}'", (Edit(span, text),))
 
 

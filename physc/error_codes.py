@@ -41,7 +41,7 @@ _CODES = [
     ErrorCode("E0102", "error", "a token where the grammar does not allow it"),
     ErrorCode("E0103", "error", "the input ends inside an unfinished construct"),
     ErrorCode("E0104", "error", "a string is not closed on its line"),
-    ErrorCode("E0105", "error", "an escape sequence in a string other than \\\" or \\\\"),
+    ErrorCode("E0105", "error", 'an escape sequence in a string other than \\" or \\\\'),
     ErrorCode("E0106", "error", "two restrictions on one line without a separator"),
     ErrorCode("E0201", "error", "a term that the domain does not define"),
     ErrorCode("E0202", "error", "a term with the wrong number of arguments"),

@@ -149,7 +149,7 @@ def write_atomic(path: str | os.PathLike, data: str | bytes) -> None:
         if descriptor is not None:
             view = memoryview(payload)
             while view:
-                view = view[os.write(descriptor, view):]
+                view = view[os.write(descriptor, view) :]
             return
         target = Path(os.path.realpath(path))
         if _in_place(target):

@@ -66,7 +66,9 @@ def from_data(data: Data, classes: dict[str, type]) -> object:
         known = {field.name for field in attrs.fields(cls)}
         unknown = sorted(set(data) - known - {"node"})
         if unknown:
-            raise ValueError(f"a '{data['node']}' has no field {', '.join(repr(k) for k in unknown)} (a file written by another version of its domain?)")
+            raise ValueError(
+                f"a '{data['node']}' has no field {', '.join(repr(k) for k in unknown)} (a file written by another version of its domain?)"
+            )
         return cls(**{k: from_data(v, classes) for k, v in data.items() if k != "node"})
     if isinstance(data, list):
         return tuple(from_data(v, classes) for v in data)

@@ -89,7 +89,9 @@ class World:
     def derive(self, name: str, description: str, reading: str, **changes) -> World:
         """A variant of this world: `changes` by setting (a whole part, e.g. `bodies=`);
         `reading` says what the changes are a reading of (the source of each changed setting)."""
-        variant = attrs.evolve(self, name=name, description=description, parent=self.name, reading=reading, changed=(), **changes)
+        variant = attrs.evolve(
+            self, name=name, description=description, parent=self.name, reading=reading, changed=(), **changes
+        )
         ours = dict(_walk(self, "", self.sources))
         changed = tuple(s.path for s in variant.settings() if ours.get(s.path, _MISSING) != s.value)
         return attrs.evolve(variant, changed=changed)
@@ -115,7 +117,10 @@ class World:
             world = _set(world, point.setting, value)
         changed = [point.describe(value) for point, value, mine in zip(points, values, own) if value != mine]
         return attrs.evolve(
-            world, name=f"{self.name}, {', '.join(changed)}", parent=self.name, reading="a reading of what the world's files leave open",
+            world,
+            name=f"{self.name}, {', '.join(changed)}",
+            parent=self.name,
+            reading="a reading of what the world's files leave open",
             changed=tuple(point.setting for point, value, mine in zip(points, values, own) if value != mine),
         )
 
@@ -125,7 +130,9 @@ class World:
         (`under_readings` runs just those). A world whose files leave nothing open: itself."""
         points = self.open_points()
         own = self.open_values()
-        combos = itertools.product(*(sorted(p.readings, key=lambda v, mine=mine: v != mine) for p, mine in zip(points, own)))
+        combos = itertools.product(
+            *(sorted(p.readings, key=lambda v, mine=mine: v != mine) for p, mine in zip(points, own))
+        )
         return tuple(self.read_as(values) for values in combos)
 
     def settings(self) -> list[Setting]:
@@ -142,7 +149,9 @@ class World:
 _MISSING = object()
 
 
-def under_readings(world: World, run: Callable[[World], Trace], settled: Callable[[Trace], float] | None = None) -> list[tuple[World, Trace]]:
+def under_readings(
+    world: World, run: Callable[[World], Trace], settled: Callable[[Trace], float] | None = None
+) -> list[tuple[World, Trace]]:
     """(reading, its trace) for every reading of `world`'s open points that can make `run`
     (a play of one level and action in a given reading) go another way, `world` itself first.
 
@@ -196,7 +205,9 @@ def _source(path: str, field_source: str, sources: Mapping[str, str]) -> str:
     return field_source
 
 
-def _walk_sourced(value, prefix: str, sources: Mapping[str, str], inherited: str = "") -> Iterator[tuple[str, object, str]]:
+def _walk_sourced(
+    value, prefix: str, sources: Mapping[str, str], inherited: str = ""
+) -> Iterator[tuple[str, object, str]]:
     for field in attrs.fields(type(value)):
         if field.metadata.get("meta"):
             continue

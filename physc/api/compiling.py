@@ -71,11 +71,18 @@ def selected(source: str | os.PathLike, scenario: str | None):
         raise ScenarioError(analysis.diagnostics, analysis.source, analysis.path)
     names = [s.name.text for s in analysis.file.scenarios]
     if scenario is None and len(names) != 1:
-        raise ScenarioError((), analysis.source, analysis.path, f"{analysis.path} holds {len(names)} scenarios ({', '.join(names)}): name one")
+        raise ScenarioError(
+            (),
+            analysis.source,
+            analysis.path,
+            f"{analysis.path} holds {len(names)} scenarios ({', '.join(names)}): name one",
+        )
     name = scenario if scenario is not None else names[0]
     if name not in names:
         hint = did_you_mean(name, names) or "scenarios: " + ", ".join(names)
-        raise ScenarioError((), analysis.source, analysis.path, f"{analysis.path} has no scenario named '{name}'; {hint}")
+        raise ScenarioError(
+            (), analysis.source, analysis.path, f"{analysis.path} has no scenario named '{name}'; {hint}"
+        )
     ast_node = next(s for s in analysis.file.scenarios if s.name.text == name)
     own = [d for d in analysis.diagnostics if d.span is None or ast_node.span.start <= d.span.start < ast_node.span.end]
     if any(d.is_error for d in own):
@@ -89,7 +96,9 @@ def check_min_robustness(value: int | None, domain, name: str = "min_robustness"
     counts the domain's replays: from 1 to their number (ValueError otherwise)."""
     replays = domain.robustness_replays
     if value is not None and replays is not None and not 1 <= value <= replays:
-        raise ValueError(f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}")
+        raise ValueError(
+            f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}"
+        )
 
 
 def pipeline(scenario_ast, ir, domain, seed: int = 0, settings=None, progress=None):
@@ -99,6 +108,7 @@ def pipeline(scenario_ast, ir, domain, seed: int = 0, settings=None, progress=No
     from physc.dsl import ast
     from physc.dsl.fmt import format_file
     from physc.generation.pipeline import Pipeline
+
     return Pipeline(domain, ir, seed, settings or RunSettings(), format_file(ast.File((scenario_ast,))), progress)
 
 
@@ -113,7 +123,9 @@ def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
                 notes.append(Label(scenario_ast.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
     codes = {Exhausted.SIZE: "E0803", Exhausted.VERSION: "E0804"}
     code = codes.get(error.budget, "E0802" if error.budget else "E0801")
-    tried = f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
+    tried = (
+        f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
+    )
     if error.conflicts:
         help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
     else:

@@ -66,7 +66,14 @@ def load_dataset(folder: str | os.PathLike) -> Dataset:
     return Dataset(root, tuple(rows))
 
 
-def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: Sequence[str] | None, needs: tuple[str, ...], **settings):
+def _jobs(
+    files: Sequence[str | os.PathLike],
+    tasks: int,
+    seed: int,
+    scenarios: Sequence[str] | None,
+    needs: tuple[str, ...],
+    **settings,
+):
     """The jobs of `files` (ScenarioError for files with errors, or a scenario not there;
     physc.domains.base.MissingCapability for a domain that lacks a hook in `needs`)."""
     from physc.api.compiling import check_min_robustness
@@ -83,7 +90,9 @@ def _jobs(files: Sequence[str | os.PathLike], tasks: int, seed: int, scenarios: 
     if scenarios:
         missing = sorted(set(scenarios) - {job.scenario for job in jobs})
         if missing:
-            raise ScenarioError((), None, ", ".join(map(os.fspath, files)), f"no scenario named {', '.join(missing)} in the files")
+            raise ScenarioError(
+                (), None, ", ".join(map(os.fspath, files)), f"no scenario named {', '.join(missing)} in the files"
+            )
         jobs = [job for job in jobs if job.scenario in scenarios]
     for name in sorted({job.domain for job in jobs}):
         domain = load_domain(name)
@@ -156,7 +165,14 @@ def generate(
 
     settings = overridden(settings, "generate", **overrides)
     made = _jobs(
-        files, tasks, seed, scenarios, generation_needs(png, settings.verify_backend), picture=png, accidental=accidental, **job_settings(world, backend, settings),
+        files,
+        tasks,
+        seed,
+        scenarios,
+        generation_needs(png, settings.verify_backend),
+        picture=png,
+        accidental=accidental,
+        **job_settings(world, backend, settings),
     )
     problem = clashes(made)
     if problem:
@@ -201,7 +217,9 @@ def evaluate(
     from physc.evaluation.run import run
     from physc.execution import executor_for
 
-    settings = attrs.evolve(overridden(settings, "evaluate", **overrides), validate=False)  # the paper's evaluation skips it
+    settings = attrs.evolve(
+        overridden(settings, "evaluate", **overrides), validate=False
+    )  # the paper's evaluation skips it
     made = _jobs(files, tasks, seed, scenarios, evaluation_needs(), **job_settings(world, backend, settings))
     started = time.perf_counter()
     with executor_for(jobs, scheduler, dask_workers) as executor:

@@ -15,7 +15,9 @@ class ScenarioError(PhyscError):
     """The scenario text has errors (`physc check`'s diagnostics): `diagnostics` holds them all
     (errors and warnings), and the message is their text as `physc check` prints it."""
 
-    def __init__(self, diagnostics: tuple[Diagnostic, ...], source: SourceText | None, name: str, message: str | None = None):
+    def __init__(
+        self, diagnostics: tuple[Diagnostic, ...], source: SourceText | None, name: str, message: str | None = None
+    ):
         self.diagnostics = tuple(diagnostics)
         self.source = source
         self.name = name

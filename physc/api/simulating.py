@@ -108,7 +108,8 @@ def verify(task: Task, *, world: str | None = None, backend: str | None = None, 
     times under the domain's noise (None: the domain's own number, 6 in angrybirds). Returns
     physc.generation.verify.Verification: `solved`, `realised`, `noisy_passed`, `trace`, `why`,
     and `passes(n)`."""
-    from physc.generation.verify import noisy_replays, verify as replay
+    from physc.generation.verify import noisy_replays
+    from physc.generation.verify import verify as replay
 
     domain = domain_of(task, world, backend)
     count = noisy_replays(domain) if replays is None else replays
@@ -116,7 +117,14 @@ def verify(task: Task, *, world: str | None = None, backend: str | None = None, 
 
 
 def render(
-    task, action=None, *, fmt: str = "png", title: str | None = None, domain=None, world: str | None = None, backend: str | None = None,
+    task,
+    action=None,
+    *,
+    fmt: str = "png",
+    title: str | None = None,
+    domain=None,
+    world: str | None = None,
+    backend: str | None = None,
 ) -> bytes:
     """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
     notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
@@ -127,7 +135,9 @@ def render(
         if action is None and title is None:
             return played.files.picture(task, fmt)
         paths = simulate(task, action if action is not None else task.solution, world=world, backend=backend).paths()
-        return played.files.draw(task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt)
+        return played.files.draw(
+            task.level, title if title is not None else f"{task.scenario} (seed {task.seed})", paths, fmt
+        )
     played = bound_domain(domain, world, backend)
     paths = {} if action is None else simulate(task, action, domain=played).paths()
     return played.files.draw(task, title or "", paths, fmt)

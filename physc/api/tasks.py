@@ -56,7 +56,9 @@ def task_parts(task: dict, path: str):
     except DomainError as error:
         raise FileError(f"{path}: {error.message}") from None
     if not domain.files.level_classes:
-        raise FileError(f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)")
+        raise FileError(
+            f"{path}: the domain '{domain.name}' cannot read its levels back from a task file (it has no level_classes)"
+        )
     analysis = analyze_text(f"{path} (source)", str(task["source"]), INSTALLED)
     scenario = next((s for s in analysis.scenarios if s.name == task["scenario"]), None)
     if scenario is None or any(d.is_error for d in analysis.diagnostics):
@@ -77,7 +79,9 @@ def _solution(solution, kind: tuple[type, ...]):
     """The task file's solution, if it is one of the domain's classes `kind` (ValueError if not;
     each class checks its own fields when it is made)."""
     if not kind or not isinstance(solution, kind):
-        raise ValueError(f"the solution is not a {' or a '.join(k.__name__ for k in kind) or 'record this domain reads'}")
+        raise ValueError(
+            f"the solution is not a {' or a '.join(k.__name__ for k in kind) or 'record this domain reads'}"
+        )
     return solution
 
 
@@ -91,7 +95,9 @@ def load_task(path: str | os.PathLike) -> Task:
     fields = {f.name for f in attrs.fields(Task)}
     unknown = sorted(set(data) - fields - {"node"})
     if unknown:
-        raise FileError(f"{os.fspath(path)}: a task has no field {', '.join(map(repr, unknown))} (a file of another physc version?)")
+        raise FileError(
+            f"{os.fspath(path)}: a task has no field {', '.join(map(repr, unknown))} (a file of another physc version?)"
+        )
     values = {k: v for k, v in data.items() if k in fields}
     values.update(level=level, solution=solution, seconds=data.get("seconds") or {})
     for name in ("robustness", "repairs", "obstacles", "distractors"):

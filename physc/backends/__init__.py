@@ -35,7 +35,9 @@ class Circle:
 
 @attrs.frozen
 class Polygon:
-    points: tuple[tuple[float, float], ...]  # convex, counter-clockwise, about the body's origin (x, y); the mass sits at their centroid
+    points: tuple[
+        tuple[float, float], ...
+    ]  # convex, counter-clockwise, about the body's origin (x, y); the mass sits at their centroid
 
 
 @attrs.frozen
@@ -90,7 +92,9 @@ class BodySpec:
     gravity_scale: float = 1.0  # relative to the world's gravity
     angular_damping: float = 0.0  # Box2D-style: ω ← ω / (1 + dt · damping) each step
     continuous: bool = False  # swept against moving bodies too (Box2D's bullet; Unity's Continuous detection)
-    group: str = ""  # bodies of one named group never collide with each other (Unity's layer matrix; Box2D's negative group)
+    group: str = (
+        ""  # bodies of one named group never collide with each other (Unity's layer matrix; Box2D's negative group)
+    )
 
     @property
     def outline(self) -> tuple[float, float, float, float, float]:
@@ -141,11 +145,13 @@ class EngineWorld(Protocol):
         written into `out` (shape (len(names), 6)) if given: the game reads the whole world
         once per step through this, into the trace's row for the step."""
         ...
+
     def set_velocity(self, name: str, vx: float, vy: float, angular: float = 0.0) -> None: ...
     def restore(self, name: str, state: tuple[float, float, float, float, float, float]) -> None:
         """Put a body back in `state` (x, y, angle, vx, vy, ω, as `state` reads it) and wake
         it: a run continued from a snapshot (physc.simulation.snapshot)."""
         ...
+
     def mass(self, name: str) -> float: ...
     def disable_collider(self, name: str, collider: int) -> None:
         """Take the parts of `name`'s collider `collider` (Compound.colliders) out of the
@@ -153,17 +159,20 @@ class EngineWorld(Protocol):
         `Collider2D.enabled = false` on an auto-mass body). Optional: a backend without it
         leaves a world's rules to take the whole body out instead."""
         ...
+
     def begun(self) -> list[ContactEvent]: ...
     def ended(self) -> list[tuple[str, str]]: ...
     def touching(self, name: str) -> set[str]: ...
     def touches(self, a: str, b: str) -> bool:
         """Whether `a` and `b` touch now (`b in touching(a)`, without a copy: rules ask it every step)."""
         ...
+
     def moving(self, names: Sequence[str], speed: float) -> bool:
         """Whether any of the bodies `names` still in the world moves faster than `speed` by
         |vx| + |vy| + |ω| (a sleeping body does not move): what rules that end a run once all
         is still ask every step instead of reading every state."""
         ...
+
     def listen(self, details: bool) -> None:
         """Whether the contacts begun and ended are reported (`begun`, `ended`) with their
         details; False: only who touches whom is kept (an outcome playout whose rules hear no
@@ -245,7 +254,9 @@ class ContactLog:
     def _gone(self, name: str) -> None:
         """`name` left the world: it touches nothing any more."""
         self._part_contacts = {pair: n for pair, n in self._part_contacts.items() if name not in pair}
-        self._collider_contacts = {pair: n for pair, n in self._collider_contacts.items() if name not in (pair[0][0], pair[1][0])}
+        self._collider_contacts = {
+            pair: n for pair, n in self._collider_contacts.items() if name not in (pair[0][0], pair[1][0])
+        }
         for other in self._touching.pop(name, ()):
             self._touching.get(other, set()).discard(name)
 
@@ -313,4 +324,6 @@ def load_backend(name: str = DEFAULT_BACKEND) -> Backend:
     try:
         return installed[name].load()
     except Exception as error:  # a broken third-party plugin must not crash physc
-        raise BackendError(f"the plugin of backend '{name}' ({installed[name].value}) fails to load: {error}") from error
+        raise BackendError(
+            f"the plugin of backend '{name}' ({installed[name].value}) fails to load: {error}"
+        ) from error

@@ -43,7 +43,9 @@ def is_convex(points: Sequence[Point]) -> bool:
     return True
 
 
-def convex_parts(outline: Sequence[Point], holes: Sequence[Sequence[Point]] = (), max_corners: int = MAX_CORNERS) -> tuple[tuple[Point, ...], ...]:
+def convex_parts(
+    outline: Sequence[Point], holes: Sequence[Sequence[Point]] = (), max_corners: int = MAX_CORNERS
+) -> tuple[tuple[Point, ...], ...]:
     """`outline` less its `holes` as convex counter-clockwise parts of at most `max_corners`
     corners each (the outline itself when it already is one)."""
     outer = counter_clockwise(outline)
@@ -110,7 +112,11 @@ def hull(points: Sequence[Point]) -> tuple[Point, ...]:
     def half(sequence):
         out: list[Point] = []
         for p in sequence:
-            while len(out) >= 2 and (out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0]) <= EPSILON:
+            while (
+                len(out) >= 2
+                and (out[-1][0] - out[-2][0]) * (p[1] - out[-2][1]) - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])
+                <= EPSILON
+            ):
                 out.pop()
             out.append(p)
         return out

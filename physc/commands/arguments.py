@@ -48,7 +48,9 @@ def time_budget(text: str) -> float:
     """Wall-clock seconds per task: more than 0 and at most a week."""
     value = _finite(text)
     if not 0 < value <= MAX_TIME_BUDGET:
-        raise argparse.ArgumentTypeError(f"takes seconds more than 0 and at most {MAX_TIME_BUDGET:g} (a week), not {text}")
+        raise argparse.ArgumentTypeError(
+            f"takes seconds more than 0 and at most {MAX_TIME_BUDGET:g} (a week), not {text}"
+        )
     return value
 
 
@@ -115,7 +117,9 @@ def shot(text: str) -> tuple[float, float, str]:
     for part in parts[:2]:
         value = _finite(part)
         if abs(value) > MAX_COORDINATE:
-            raise argparse.ArgumentTypeError(f"takes coordinates from -{MAX_COORDINATE:g} to {MAX_COORDINATE:g}, not {part}")
+            raise argparse.ArgumentTypeError(
+                f"takes coordinates from -{MAX_COORDINATE:g} to {MAX_COORDINATE:g}, not {part}"
+            )
         point.append(value)
     return point[0], point[1], trajectory
 

@@ -26,8 +26,11 @@ def describe(name: str) -> dict:
     except BackendError as error:
         return entry | {"installed": False, "error": str(error)}
     return entry | {
-        "installed": True, "description": backend.description, "package": backend.package or None,
-        "version": _version(backend.package), "honours": dict(backend.honours),
+        "installed": True,
+        "description": backend.description,
+        "package": backend.package or None,
+        "version": _version(backend.package),
+        "honours": dict(backend.honours),
     }
 
 
@@ -46,7 +49,9 @@ def cmd_backends(args) -> int:
         if not entry["installed"]:
             print(f"{entry['name']}{mark}: not usable: {entry['error']}")
             continue
-        engine = f"{entry['package']} {entry['version']}" if entry["version"] else (entry["package"] or "version unknown")
+        engine = (
+            f"{entry['package']} {entry['version']}" if entry["version"] else (entry["package"] or "version unknown")
+        )
         print(f"{entry['name']}{mark}: {engine}: {entry['description']}")
         if args.verbose:
             for setting, how in entry["honours"].items():

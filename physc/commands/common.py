@@ -3,15 +3,14 @@
 from __future__ import annotations
 
 import argparse
-import re
 import os
+import re
 import sys
-from typing import Sequence
+from collections.abc import Sequence
 
 from physc import diagnostics
-from physc.exits import EXIT_INFEASIBLE, EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_STATUSES, EXIT_USAGE  # noqa: F401
 from physc.diagnostics import Diagnostic
-
+from physc.exits import EXIT_INFEASIBLE, EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_STATUSES, EXIT_USAGE  # noqa: F401
 
 
 class UsageError(Exception):
@@ -67,7 +66,9 @@ def add_format(parser, what: str = "the result") -> None:
     """--format text|json, the one spelling of machine-readable output in every command: text
     for people (the default), json on stdout for programs. `--json` is kept, hidden, for
     scripts written before the spelling was one."""
-    parser.add_argument("--format", choices=("text", "json"), default="text", help=f"{what} as text (default) or as JSON on stdout")
+    parser.add_argument(
+        "--format", choices=("text", "json"), default="text", help=f"{what} as text (default) or as JSON on stdout"
+    )
     parser.add_argument("--json", dest="format", action="store_const", const="json", help=argparse.SUPPRESS)
 
 
@@ -105,4 +106,6 @@ def chosen(asked: Sequence[str], installed: Sequence[str], kind: str) -> list[st
 def check_backends(args) -> None:
     """--verify-backend must name another engine than the one that simulates."""
     if getattr(args, "verify_backend", None) and args.verify_backend == args.backend:
-        raise UsageError(f"--verify-backend {args.verify_backend} is the engine that already simulates (--backend): name another one")
+        raise UsageError(
+            f"--verify-backend {args.verify_backend} is the engine that already simulates (--backend): name another one"
+        )

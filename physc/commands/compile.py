@@ -8,7 +8,7 @@ import os
 import sys
 
 from physc import budget, diagnostics
-from physc.commands.progress import Heartbeat
+from physc.api.compiling import no_task, pipeline
 from physc.commands.common import (
     EXIT_INFEASIBLE,
     EXIT_OK,
@@ -17,15 +17,14 @@ from physc.commands.common import (
     check_min_robustness,
     reporter,
 )
+from physc.commands.options import run_settings
+from physc.commands.progress import Heartbeat
 from physc.compiler.stages import BY_NAME, StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
-from physc.api.compiling import no_task, pipeline
-from physc.commands.options import run_settings
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
-
 
 FILE_SUFFIXES = {"-o": (".xml", ".json", ".dot"), "--task": (".json",), "--png": (".png", ".svg")}
 
@@ -47,7 +46,9 @@ def _check_outputs(args, many: bool, level_files: bool) -> None:
         if path is None:
             continue
         folder = many and (option != "-o" or level_files)
-        if folder and (os.path.isfile(path) or (not os.path.exists(path) and path.lower().endswith(FILE_SUFFIXES[option]))):
+        if folder and (
+            os.path.isfile(path) or (not os.path.exists(path) and path.lower().endswith(FILE_SUFFIXES[option]))
+        ):
             raise UsageError(
                 f"several scenarios make several files: {option} must name a folder (each file is named after its "
                 f"scenario), not the file '{path}'; or choose one scenario with -s NAME"
@@ -160,7 +161,14 @@ def cmd_compile(args) -> int:
         ir = checked[scenario.name.text]
         domain = domains[ir.domain]
         heartbeat = Heartbeat(f"[{index}/{len(selected)}] {ir.name}") if generating and not args.quiet else None
-        generation = pipeline(scenario, ir, domain, args.seed, run_settings(args), progress=None if heartbeat is None else heartbeat.update)
+        generation = pipeline(
+            scenario,
+            ir,
+            domain,
+            args.seed,
+            run_settings(args),
+            progress=None if heartbeat is None else heartbeat.update,
+        )
         if generating and not args.quiet:
             print(f"[{index}/{len(selected)}] {ir.name} (seed {args.seed}): generating…", file=sys.stderr, flush=True)
         try:
@@ -189,7 +197,10 @@ def cmd_compile(args) -> int:
         if picture is not None:
             write_atomic(_destination(args.png, many, ir.name, _picture_format(args.png)), picture)
         if args.task:
-            write_atomic(_destination(args.task, many, ir.name, "json"), json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n")
+            write_atomic(
+                _destination(args.task, many, ir.name, "json"),
+                json.dumps(to_data(value), indent=2, ensure_ascii=False) + "\n",
+            )
     if failures or refused:
         report(args.file, analysis.source, failures + refused)
     done = diagnostics.exit_status(refused) if refused else EXIT_INFEASIBLE if failures else EXIT_OK

@@ -30,7 +30,9 @@ def _mark_files(parser, shtab) -> None:
 
 def add_command(commands, common) -> None:
     parser = commands.add_parser(
-        "completion", parents=[common], help="print the shell completion script (bash, zsh, tcsh, fish, powershell)",
+        "completion",
+        parents=[common],
+        help="print the shell completion script (bash, zsh, tcsh, fish, powershell)",
         description="Print physc's completion script for SHELL. bash: `physc completion bash > ~/.local/share/bash-completion/completions/physc`; "
         "zsh: `physc completion zsh > ~/.zfunc/_physc` (with ~/.zfunc in $fpath).",
     )

@@ -21,7 +21,9 @@ def cmd_domains(args) -> int:
     if args.format == "json":
         from physc.serialize import to_data
 
-        print_json([{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded])
+        print_json(
+            [{"name": d.name, "description": d.description, "vocabulary": to_data(d.vocabulary)} for d in loaded]
+        )
         return EXIT_OK
     if not loaded:
         print("no domains installed (physc.domains entry points)")
@@ -48,7 +50,9 @@ def _describe_domain(domain) -> str:
     lines.append(f"  static objects: {', '.join(statics)}")
     materials = vocabulary.materials(every=False)
     if materials:
-        lines.append(f"  materials: {', '.join(materials)} (a declaration may name them: `name: term({' | '.join(materials[:2])})`)")
+        lines.append(
+            f"  materials: {', '.join(materials)} (a declaration may name them: `name: term({' | '.join(materials[:2])})`)"
+        )
     aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
     lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))
     rule = f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""

@@ -12,9 +12,9 @@ from physc.commands.progress import Progress
 from physc.commands.running import (
     add_executor,
     check_batch,
+    command_arguments,
     executor_from,
     refused_domains,
-    command_arguments,
     reproducing_command,
     selected_jobs,
 )
@@ -32,7 +32,12 @@ def cmd_generate(args) -> int:
 
     check_batch(args)
     jobs, problems = jobs_for(
-        args.files, args.tasks, args.seed, **generation_settings(args), picture=args.png, accidental=args.accidental,
+        args.files,
+        args.tasks,
+        args.seed,
+        **generation_settings(args),
+        picture=args.png,
+        accidental=args.accidental,
     )
     jobs, status = selected_jobs(args, jobs, problems)
     if status is not None:
@@ -43,36 +48,53 @@ def cmd_generate(args) -> int:
     status = refused_domains(args, jobs, generation_needs(args.png, args.verify_backend), "physc generate")
     if status is not None:
         return status
-    command = reproducing_command("generate", command_arguments("generate", [*args.files, "--tasks", str(args.tasks), "--out", args.out]))
+    command = reproducing_command(
+        "generate", command_arguments("generate", [*args.files, "--tasks", str(args.tasks), "--out", args.out])
+    )
     from physc.domains.base import DomainError
 
     with executor_from(args) as executor:
         try:
             rows = build(jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command)
         except DomainError as error:  # the domain's own benchmark files refused (the tasks are kept)
-            raise UsageError(f"the tasks are in {args.out}, but not the domain's own benchmark files: {error.message}") from None
+            raise UsageError(
+                f"the tasks are in {args.out}, but not the domain's own benchmark files: {error.message}"
+            ) from None
     made = sum(row["outcome"] != NO_TASK for row in rows)
     if args.format == "json":
         print_json(
             {
-                "dataset": args.out, "generated": made, "tasks": len(rows),
+                "dataset": args.out,
+                "generated": made,
+                "tasks": len(rows),
                 "rows": [{"scenario": row["scenario"], "seed": row["seed"], "outcome": row["outcome"]} for row in rows],
             }
         )
     elif not args.quiet:
-        print(f"{made} of {len(rows)} tasks generated; dataset in {args.out} (README.md, manifest.parquet)", file=sys.stderr)
+        print(
+            f"{made} of {len(rows)} tasks generated; dataset in {args.out} (README.md, manifest.parquet)",
+            file=sys.stderr,
+        )
     return EXIT_OK if made else EXIT_INFEASIBLE
 
 
 def add_command(commands, common) -> None:
-    parser = commands.add_parser("generate", parents=[common], help="generate a dataset of tasks (locally or on a Dask cluster)")
+    parser = commands.add_parser(
+        "generate", parents=[common], help="generate a dataset of tasks (locally or on a Dask cluster)"
+    )
     parser.add_argument("files", nargs="+", metavar="FILE", help=".phys files; every scenario of each gets tasks")
     parser.add_argument("-s", "--scenario", action="append", metavar="NAME", help="only these scenarios (repeatable)")
-    parser.add_argument("--tasks", type=arguments.tasks, default=100, metavar="N", help="tasks per scenario (default 100)")
-    parser.add_argument("--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)")
+    parser.add_argument(
+        "--tasks", type=arguments.tasks, default=100, metavar="N", help="tasks per scenario (default 100)"
+    )
+    parser.add_argument(
+        "--seed", type=arguments.seed, default=0, metavar="S", help="seed of the first task (task i uses S + i)"
+    )
     parser.add_argument("--out", required=True, metavar="DIR", help="the dataset folder; a rerun resumes")
     parser.add_argument("--png", action="store_true", help="also draw each task (<seed>.png)")
-    parser.add_argument("--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)")
+    parser.add_argument(
+        "--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)"
+    )
     add_generation(parser)
     add_target(parser)
     add_executor(parser)

@@ -16,7 +16,9 @@ def cmd_lsp(args) -> int:
     try:
         from physc.lsp.server import serve
     except ImportError as error:
-        raise UsageError(f"the language server needs the 'lsp' extra ({error.name} is missing): pip install -e '.[lsp]' in physc's checkout") from error
+        raise UsageError(
+            f"the language server needs the 'lsp' extra ({error.name} is missing): pip install -e '.[lsp]' in physc's checkout"
+        ) from error
     if args.log_file:
         try:
             open(args.log_file, "a", encoding="utf-8").close()

@@ -19,16 +19,26 @@ def add_target(parser, verify: bool = True, replay: bool = False) -> None:
     default = None if replay else DEFAULT_BACKEND
     where = "the task's world" if replay else "the domain's default world; physc worlds lists them"
     parser.add_argument(
-        "--world", type=arguments.world, metavar="NAME", help=f"the world that is simulated: its engine settings, bodies and rules (default {where})"
+        "--world",
+        type=arguments.world,
+        metavar="NAME",
+        help=f"the world that is simulated: its engine settings, bodies and rules (default {where})",
     )
     parser.add_argument(
-        "--backend", type=arguments.backend, default=default, metavar="NAME",
-        help="the physics engine that simulates (default " + ("the task's, else " if replay else "") + f"{DEFAULT_BACKEND}, the game's; "
+        "--backend",
+        type=arguments.backend,
+        default=default,
+        metavar="NAME",
+        help="the physics engine that simulates (default "
+        + ("the task's, else " if replay else "")
+        + f"{DEFAULT_BACKEND}, the game's; "
         "pymunk and bullet are built in too: physc backends)",
     )
     if verify:
         parser.add_argument(
-            "--verify-backend", type=arguments.backend, metavar="NAME",
+            "--verify-backend",
+            type=arguments.backend,
+            metavar="NAME",
             help="a second physics backend (e.g. bullet) in which the task's solution must also solve the level and "
             "realise the sequence, in its noisy replays too",
         )
@@ -38,27 +48,46 @@ def add_generation(parser, validate: bool = True) -> None:
     """The budgets and rules of making a task; with `validate`, --no-validate (eval never
     validates, as the paper's evaluation)."""
     parser.add_argument(
-        "--layouts", type=arguments.count, default=LAYOUT_BUDGET, metavar="N", help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})"
+        "--layouts",
+        type=arguments.count,
+        default=LAYOUT_BUDGET,
+        metavar="N",
+        help=f"layouts simulation may try per task (default {LAYOUT_BUDGET})",
     )
     parser.add_argument(
-        "--time-budget", type=arguments.time_budget, default=TIME_BUDGET, metavar="S", help=f"seconds per task at most (default {TIME_BUDGET:g})"
+        "--time-budget",
+        type=arguments.time_budget,
+        default=TIME_BUDGET,
+        metavar="S",
+        help=f"seconds per task at most (default {TIME_BUDGET:g})",
     )
     parser.add_argument(
-        "--min-robustness", type=arguments.count, default=MIN_ROBUSTNESS, metavar="K",
+        "--min-robustness",
+        type=arguments.count,
+        default=MIN_ROBUSTNESS,
+        metavar="K",
         help="make fallbacks: when no layout within the budget gives a solution that passes every noisy replay of "
         "the generator (6 in angrybirds), use the most robust one that passes at least K of them, and K of physc "
         "verify's (default: none; a task must pass all); the task JSON and the manifest mark a fallback",
     )
     parser.add_argument(
-        "--no-acceptance", action="store_true",
+        "--no-acceptance",
+        action="store_true",
         help="keep tasks without the domain's acceptance rule (PHYRE's GOOD_STABLE, not TRIVIAL): quicker, for drafts",
     )
     parser.add_argument(
-        "--clause-budget", "--budget", dest="clause_budget", type=arguments.count, default=CLAUSE_BUDGET, metavar="N",
+        "--clause-budget",
+        "--budget",
+        dest="clause_budget",
+        type=arguments.count,
+        default=CLAUSE_BUDGET,
+        metavar="N",
         help=f"clause choices the layout search may try per shape draw (default {CLAUSE_BUDGET}; --budget is its old name)",
     )
     if validate:
-        parser.add_argument("--no-validate", action="store_true", help="skip the final validation of each generated task")
+        parser.add_argument(
+            "--no-validate", action="store_true", help="skip the final validation of each generated task"
+        )
 
 
 def run_settings(args, validate: bool | None = None):
@@ -68,8 +97,12 @@ def run_settings(args, validate: bool | None = None):
     from physc.generation.run_settings import RunSettings
 
     return RunSettings(
-        time_budget=args.time_budget, layouts=args.layouts, clause_budget=args.clause_budget, min_robustness=args.min_robustness,
-        validate=(not args.no_validate) if validate is None else validate, acceptance=not args.no_acceptance,
+        time_budget=args.time_budget,
+        layouts=args.layouts,
+        clause_budget=args.clause_budget,
+        min_robustness=args.min_robustness,
+        validate=(not args.no_validate) if validate is None else validate,
+        acceptance=not args.no_acceptance,
         verify_backend=args.verify_backend,
     )
 
@@ -91,7 +124,13 @@ def replaying(domain, recorded: dict, args, command: str):
 
     made_world, made_backend = recorded.get("world") or None, recorded.get("backend") or None
     bound = domain.at(args.world or made_world, args.backend or made_backend)
-    for what, made, now, flag in (("world", made_world, bound.world.name, "--world"), ("engine", made_backend, bound.backend.name, "--backend")):
+    for what, made, now, flag in (
+        ("world", made_world, bound.world.name, "--world"),
+        ("engine", made_backend, bound.backend.name, "--backend"),
+    ):
         if made and made != now:
-            print(f"physc {command}: note: the task was made in the {what} '{made}'; replaying it in '{now}' ({flag})", file=sys.stderr)
+            print(
+                f"physc {command}: note: the task was made in the {what} '{made}'; replaying it in '{now}' ({flag})",
+                file=sys.stderr,
+            )
     return bound

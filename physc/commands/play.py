@@ -12,7 +12,6 @@ paths of the objects that moved.
 
 from __future__ import annotations
 
-
 from physc import budget
 from physc.commands import arguments
 from physc.commands.common import EXIT_OK, UsageError, add_format, plural, print_json, reporter
@@ -45,7 +44,9 @@ def _domain(args, level=None):
 
     recorded = read_task(args.task)
     if recorded.get("domain") != LEVEL_DOMAIN:
-        raise UsageError(f"{args.task} is a task of the domain '{recorded.get('domain')}', not of {LEVEL_DOMAIN}'s levels")
+        raise UsageError(
+            f"{args.task} is a task of the domain '{recorded.get('domain')}', not of {LEVEL_DOMAIN}'s levels"
+        )
     return _noted(replaying(domain, recorded, args, args.command), named, args)
 
 
@@ -55,7 +56,10 @@ def _noted(bound, named: str | None, args):
     import sys
 
     if named and named != bound.world.name:
-        print(f"physc {args.command}: note: the level was made for the world '{named}'; playing it in '{bound.world.name}'", file=sys.stderr)
+        print(
+            f"physc {args.command}: note: the level was made for the world '{named}'; playing it in '{bound.world.name}'",
+            file=sys.stderr,
+        )
     return bound
 
 
@@ -80,7 +84,9 @@ def load_level(args, domain):
     try:
         return domain.files.read_level(data), 0
     except LevelError as error:
-        source = SourceText(args.level, domain.files.level_text(data))  # as the level was read, so that lines and columns match
+        source = SourceText(
+            args.level, domain.files.level_text(data)
+        )  # as the level was read, so that lines and columns match
         span = None
         if error.line is not None and error.line <= source.line_count:
             start = source.offset(error.line, error.column or 1)
@@ -137,7 +143,7 @@ def _play(args, task=None):
         else:
             scenario = None  # another level: its objects have other names
     if shot is not None and not level.has_birds:
-        help_text = "add <Bird type=\"BirdRed\" /> inside <Birds>, or play the level without --shot and --angle"
+        help_text = 'add <Bird type="BirdRed" /> inside <Birds>, or play the level without --shot and --angle'
         return None, None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
@@ -169,12 +175,21 @@ def cmd_simulate(args) -> int:
                 "pigs": pigs,
                 "pigs_destroyed": [d.name for d in destroyed],
                 "solved": trace.solved,
-                "destroyed": [{"name": d.name, "cause": d.cause, "by": d.by, "time": round(d.time, 4)} for d in trace.destructions],
+                "destroyed": [
+                    {"name": d.name, "cause": d.cause, "by": d.by, "time": round(d.time, 4)} for d in trace.destructions
+                ],
             }
         )
         return EXIT_OK
-    what = "no shot" if shot is None else f"shot {shot.text()}" + ("" if _angle(shot, domain) is None else f" (release angle {_angle(shot, domain):.2f}°)")
-    print(f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}; world {domain.world.name}")
+    what = (
+        "no shot"
+        if shot is None
+        else f"shot {shot.text()}"
+        + ("" if _angle(shot, domain) is None else f" (release angle {_angle(shot, domain):.2f}°)")
+    )
+    print(
+        f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}; world {domain.world.name}"
+    )
     verdict = "solved" if trace.solved else "not solved"
     print(f"after {trace.duration:.2f} s: {len(destroyed)} of {plural(len(pigs), 'pig')} destroyed: {verdict}")
     for d in trace.destructions:
@@ -213,7 +228,12 @@ def cmd_trace(args) -> int:
                 "shot": shot.text() if shot else None,
                 "solved": trace.solved,
                 "interactions": [
-                    {"term": i.text(), "time": round(i.time, 4), "margin": by_time[id(i)].record() if id(i) in by_time else None} for i in trace.interactions
+                    {
+                        "term": i.text(),
+                        "time": round(i.time, 4),
+                        "margin": by_time[id(i)].record() if id(i) in by_time else None,
+                    }
+                    for i in trace.interactions
                 ],
                 "restrictions": [m.record() for m in restrictions],
                 "weakest": None if weakest is None else weakest.record(),
@@ -230,7 +250,10 @@ def cmd_trace(args) -> int:
     for m in restrictions:
         print(f"# {m.term}: {'kept' if m.held else 'broken'}, margin {m.value:+.3g} {m.unit} ({m.what})")
     if weakest is not None:
-        print(f"# weakest link: {weakest.text()}" + ("" if scenario is not None else " (of what happened; --task judges the declared sequence)"))
+        print(
+            f"# weakest link: {weakest.text()}"
+            + ("" if scenario is not None else " (of what happened; --task judges the declared sequence)")
+        )
     return EXIT_OK
 
 
@@ -259,23 +282,39 @@ def add_commands(commands, common) -> None:
     def level_arguments(parser):
         parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
         shot = parser.add_mutually_exclusive_group()
-        shot.add_argument("--shot", type=arguments.shot, metavar="X,Y[,low|high]", help="shoot at a target point, on the low (default) or high trajectory (a negative X as it is: --shot -9,0.5)")
+        shot.add_argument(
+            "--shot",
+            type=arguments.shot,
+            metavar="X,Y[,low|high]",
+            help="shoot at a target point, on the low (default) or high trajectory (a negative X as it is: --shot -9,0.5)",
+        )
         shot.add_argument("--angle", type=arguments.angle, metavar="DEG", help="shoot at a release angle (degrees)")
         parser.add_argument(
-            "--seconds", type=arguments.seconds, default=10.0, metavar="S",
+            "--seconds",
+            type=arguments.seconds,
+            default=10.0,
+            metavar="S",
             help=f"simulated time at most (default 10, at most {arguments.MAX_SECONDS:g})",
         )
         parser.add_argument(
-            "--task", metavar="TASK.json", help="the level's task file (`physc compile --task`): the level is played in its world and engine unless --world or --backend says otherwise",
+            "--task",
+            metavar="TASK.json",
+            help="the level's task file (`physc compile --task`): the level is played in its world and engine unless --world or --backend says otherwise",
         )
         add_target(parser, verify=False, replay=True)
 
-    simulate = commands.add_parser("simulate", parents=[common], help="play a level (with a shot or none) and say what happened")
+    simulate = commands.add_parser(
+        "simulate", parents=[common], help="play a level (with a shot or none) and say what happened"
+    )
     level_arguments(simulate)
     add_format(simulate, "what happened")
     simulate.set_defaults(run=cmd_simulate)
 
-    trace = commands.add_parser("trace", parents=[common], help="the interactions a shot causes, in .phys syntax, each with its margin (how far it was from failing)")
+    trace = commands.add_parser(
+        "trace",
+        parents=[common],
+        help="the interactions a shot causes, in .phys syntax, each with its margin (how far it was from failing)",
+    )
     level_arguments(trace)
     add_format(trace, "the interactions")
     trace.set_defaults(run=cmd_trace)

@@ -41,11 +41,26 @@ class Progress:
             if done:
                 self._line(f"resuming: {done} of {total} tasks already done")
             return
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress as Bar, TextColumn, TimeElapsedColumn, TimeRemainingColumn
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            TextColumn,
+            TimeElapsedColumn,
+            TimeRemainingColumn,
+        )
+        from rich.progress import (
+            Progress as Bar,
+        )
 
         self.bar = Bar(
-            TextColumn(f"[bold]{self.label}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(), TimeRemainingColumn(),
-            TextColumn("{task.description}"), console=console, transient=False,
+            TextColumn(f"[bold]{self.label}"),
+            BarColumn(),
+            MofNCompleteColumn(),
+            TimeElapsedColumn(),
+            TimeRemainingColumn(),
+            TextColumn("{task.description}"),
+            console=console,
+            transient=False,
         )
         self.bar.start()
         self.task = self.bar.add_task("", total=total, completed=done)
@@ -91,7 +106,7 @@ class Heartbeat:
         while not self._stopped.wait(self.every):
             print(f"{self.prefix}: {time.monotonic() - started:.0f} s; {self.state}", file=sys.stderr, flush=True)
 
-    def __enter__(self) -> "Heartbeat":
+    def __enter__(self) -> Heartbeat:
         self._thread.start()
         return self
 

@@ -14,9 +14,24 @@ from physc.files import check_output
 
 def add_executor(parser) -> None:
     where = parser.add_mutually_exclusive_group()
-    where.add_argument("--jobs", type=arguments.jobs, default=1, metavar="N", help="local processes (default 1); results do not depend on it")
-    where.add_argument("--scheduler", metavar="ADDRESS", help="run on an existing Dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install -e '.[dask]')")
-    where.add_argument("--dask-workers", type=arguments.jobs, metavar="N", help="start a Dask cluster of N worker processes here (needs the dask extra: pip install -e '.[dask]')")
+    where.add_argument(
+        "--jobs",
+        type=arguments.jobs,
+        default=1,
+        metavar="N",
+        help="local processes (default 1); results do not depend on it",
+    )
+    where.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="run on an existing Dask cluster, e.g. tcp://host:8786 (needs the dask extra: pip install -e '.[dask]')",
+    )
+    where.add_argument(
+        "--dask-workers",
+        type=arguments.jobs,
+        metavar="N",
+        help="start a Dask cluster of N worker processes here (needs the dask extra: pip install -e '.[dask]')",
+    )
 
 
 def check_batch(args) -> None:
@@ -73,7 +88,15 @@ def executor_from(args) -> Executor:
 # Options that change where and how visibly a run goes, not what it makes: left out of the command
 # a dataset's README records, so that the README is the same on any executor.
 _WHERE = {
-    "--jobs": 1, "--scheduler": 1, "--dask-workers": 1, "--color": 1, "-q": 0, "--quiet": 0, "--traceback": 0, "--format": 1, "--json": 0,
+    "--jobs": 1,
+    "--scheduler": 1,
+    "--dask-workers": 1,
+    "--color": 1,
+    "-q": 0,
+    "--quiet": 0,
+    "--traceback": 0,
+    "--format": 1,
+    "--json": 0,
 }
 
 

@@ -15,6 +15,7 @@ from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, p
 from physc.diagnostics import safe
 from physc.files import read_input
 
+
 def read_task(path: str) -> dict:
     """A task file's JSON (physc.api.tasks.read_task), a usage error when it is not one."""
     from physc.api.errors import FileError
@@ -32,11 +33,10 @@ def _normalised(text: str) -> str:
 
 
 def cmd_verify(args) -> int:
-    from physc.commands.options import replaying
-    from physc.generation.verify import noisy_replays, verify
-
     from physc.api.errors import FileError
     from physc.api.tasks import task_parts
+    from physc.commands.options import replaying
+    from physc.generation.verify import noisy_replays, verify
 
     task = read_task(args.task)
     try:
@@ -82,7 +82,9 @@ def cmd_verify(args) -> int:
         )
     else:
         verdict = "passes" if result.passes(replays) else "fails"
-        print(f"{safe(args.level)}: scenario {scenario.name}, solution {solution.aimed_at}: {verdict} {result.summary()}")
+        print(
+            f"{safe(args.level)}: scenario {scenario.name}, solution {solution.aimed_at}: {verdict} {result.summary()}"
+        )
         if result.why:
             print(f"  why: {result.why}")
         for name in result.failed:
@@ -99,13 +101,17 @@ def add_command(commands, common) -> None:
     from physc.commands.options import add_target
 
     parser = commands.add_parser(
-        "verify", parents=[common], help="replay a task's solution (in any backend): does it solve the level and realise the sequence?"
+        "verify",
+        parents=[common],
+        help="replay a task's solution (in any backend): does it solve the level and realise the sequence?",
     )
     parser.add_argument("level", metavar="LEVEL", help="the task's level file ('-' reads standard input)")
     parser.add_argument("--task", required=True, metavar="TASK.json", help="the task file `physc compile --task` wrote")
     add_target(parser, verify=False, replay=True)
     parser.add_argument(
-        "--replays", type=arguments.replays, metavar="N",
+        "--replays",
+        type=arguments.replays,
+        metavar="N",
         help="noisy replays that must realise the sequence too (default: the domain's, 6 in angrybirds; 0: none)",
     )
     add_format(parser, "the verdict")

@@ -13,7 +13,12 @@ def _value(value) -> str:
     if isinstance(value, dict):
         return "{" + ", ".join(f"{k or '(none)'}: {_value(v)}" for k, v in value.items()) + "}"
     if hasattr(value, "__attrs_attrs__"):
-        return type(value).__name__ + "(" + ", ".join(f"{a.name}={_value(getattr(value, a.name))}" for a in value.__attrs_attrs__) + ")"
+        return (
+            type(value).__name__
+            + "("
+            + ", ".join(f"{a.name}={_value(getattr(value, a.name))}" for a in value.__attrs_attrs__)
+            + ")"
+        )
     return str(value)
 
 
@@ -36,14 +41,22 @@ def cmd_worlds(args) -> int:
         default = domain.world.name if domain.worlds else None
         for world in domain.worlds:
             entry = {
-                "domain": name, "world": world.name, "default": world.name == default, "description": world.description,
-                "derived_from": world.parent, "reading": world.reading or None, "changes": list(world.changed),
+                "domain": name,
+                "world": world.name,
+                "default": world.name == default,
+                "description": world.description,
+                "derived_from": world.parent,
+                "reading": world.reading or None,
+                "changes": list(world.changed),
             }
             entry["open_points"] = [
-                {"setting": p.setting, "readings": _json(p.readings), "question": p.question, "source": p.source} for p in world.open_points()
+                {"setting": p.setting, "readings": _json(p.readings), "question": p.question, "source": p.source}
+                for p in world.open_points()
             ]
             if args.verbose:
-                entry["settings"] = [{"setting": s.path, "value": _json(s.value), "source": s.source} for s in world.settings()]
+                entry["settings"] = [
+                    {"setting": s.path, "value": _json(s.value), "source": s.source} for s in world.settings()
+                ]
             listing.append((world, entry))
     if args.format == "json":
         print_json([entry for _, entry in listing])
@@ -54,12 +67,16 @@ def cmd_worlds(args) -> int:
         settings = world.settings()
         if world.parent:
             values = {s.path: s.value for s in settings}
-            print(f"  derived from {world.parent}: " + ", ".join(f"{path} = {_value(values[path])}" for path in world.changed))
+            print(
+                f"  derived from {world.parent}: "
+                + ", ".join(f"{path} = {_value(values[path])}" for path in world.changed)
+            )
         points = world.open_points()
         if points:
-            print(f"  open in its files ({len(world.readings())} readings; a task must hold under each): " + "; ".join(
-                f"{p.setting} {' or '.join(_value(v) for v in p.readings)}" for p in points
-            ))
+            print(
+                f"  open in its files ({len(world.readings())} readings; a task must hold under each): "
+                + "; ".join(f"{p.setting} {' or '.join(_value(v) for v in p.readings)}" for p in points)
+            )
         if args.verbose:
             width = max(len(s.path) for s in settings)
             for s in settings:

@@ -80,7 +80,9 @@ def resolve(body: Body, axis: str, feature: str) -> tuple[str, float]:
 
 
 def atom_constraints(atom: Atom, a: Body, b: Body, parameters: LayoutParameters, reason: str) -> list[Constraint]:
-    left, right = ((b, atom.feature_b), (a, atom.feature_a)) if atom.swapped else ((a, atom.feature_a), (b, atom.feature_b))
+    left, right = (
+        ((b, atom.feature_b), (a, atom.feature_a)) if atom.swapped else ((a, atom.feature_a), (b, atom.feature_b))
+    )
     node_l, const_l = resolve(left[0], atom.axis, left[1])
     node_r, const_r = resolve(right[0], atom.axis, right[1])
     gap = parameters.gap(atom.gap)

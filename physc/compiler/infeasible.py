@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # the CLI imports this module; networkx is not needed to name the type
     from physc.compiler.layout_graph import LayoutEdge
 
+
 class Exhausted(enum.Enum):
     """What ran out before a task was found (`Infeasible.budget`); the value is the option
     that sets it, where there is one."""
@@ -27,7 +28,14 @@ class Infeasible(Exception):
     ran out first (`budget` says what: an Exhausted). `conflicts` are the
     layout edges that cannot hold together, each with the source terms it comes from."""
 
-    def __init__(self, stage: str, message: str, conflicts: tuple[LayoutEdge, ...] = (), tried: int = 0, budget: Exhausted | None = None):
+    def __init__(
+        self,
+        stage: str,
+        message: str,
+        conflicts: tuple[LayoutEdge, ...] = (),
+        tried: int = 0,
+        budget: Exhausted | None = None,
+    ):
         super().__init__(message)
         self.stage = stage
         self.message = message

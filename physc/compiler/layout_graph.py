@@ -76,7 +76,9 @@ class LayoutGraph:
     domain: str
     nodes: tuple[LayoutNode, ...]
     edges: tuple[LayoutEdge, ...]
-    ramps: tuple[str, ...] = ()  # the surfaces the ramp structure made inclined (physc.compiler.layout_rules, "Structures")
+    ramps: tuple[
+        str, ...
+    ] = ()  # the surfaces the ramp structure made inclined (physc.compiler.layout_rules, "Structures")
 
     def node(self, name: str) -> LayoutNode:
         return next(n for n in self.nodes if n.name == name)

@@ -48,6 +48,8 @@ them all (physc.generation.pipeline), and simulation decides.
 
 from __future__ import annotations
 
+import attrs
+
 from physc.compiler.layout_graph import (
     IN_DIRECTION,
     LIES_ON_PATH,
@@ -63,8 +65,6 @@ from physc.compiler.layout_graph import (
     LayoutNode,
     Provenance,
 )
-import attrs
-
 from physc.compiler.sequence import OPPOSITE, falls_between, last_hit_at, last_motion, pushes
 from physc.dsl.scenario import ScenarioIR, TermIR
 
@@ -198,7 +198,9 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
             hit = last_hit_at(scenario.interactions[:position], term.objects[0])
             pushed = None if hit is None else pushes(scenario.interactions, hit, players, flies)
             moved = last_motion(scenario.interactions[:position], term.objects[0])
-            if rules.fall_ahead_after_motion and moved is not None and (hit is None or moved > hit):  # it rolled or slid off
+            if (
+                rules.fall_ahead_after_motion and moved is not None and (hit is None or moved > hit)
+            ):  # it rolled or slid off
                 pushed = scenario.interactions[moved].directions[0]
             if pushed is not None and tuple(term.directions) == ("above",):
                 # Pushed off sideways, it comes down ahead: it is not beyond its target the other way.
@@ -212,7 +214,13 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
     for term in scenario.restrictions:
         if term.name == "cannotHit":
             values = ("all",) if set(term.directions) == set(SIDES) else term.directions
-            b.edge(PATH_OBSTRUCTED, term.objects[0], term.objects[1], values, Provenance("restriction", term.text, term.span))
+            b.edge(
+                PATH_OBSTRUCTED,
+                term.objects[0],
+                term.objects[1],
+                values,
+                Provenance("restriction", term.text, term.span),
+            )
 
     # 2. Motion along surfaces: who rolls or slides on what, towards where.
     surfaces: dict[str, list[str]] = {}
@@ -233,7 +241,13 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
     for term in scenario.restrictions:
         if term.name == "on" and term.objects[0] in dynamic and term.objects[0] not in support:
             top, below = term.objects
-            b.edge(ON_LOCATION, top, below, ("over",), Provenance("support", f"{top} rests on {below}: {term.text}", term.span))
+            b.edge(
+                ON_LOCATION,
+                top,
+                below,
+                ("over",),
+                Provenance("support", f"{top} rests on {below}: {term.text}", term.span),
+            )
             support[top] = below
     paths: dict[str, list[str]] = {}
     falls = {t.objects[0] for t in scenario.interactions if t.name == "fall"}
@@ -251,13 +265,23 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
         why = _interaction_provenance(term)
         last = path_of(actor)[-1] if path_of(actor) else None
         if (
-            structure == "ramp" and sideways and last in surfaces.get(actor, ()) and not b.is_ground(last)
-            and rules.inclined in b.nodes[last].concrete and last not in support.values()
+            structure == "ramp"
+            and sideways
+            and last in surfaces.get(actor, ())
+            and not b.is_ground(last)
+            and rules.inclined in b.nodes[last].concrete
+            and last not in support.values()
         ):
             # The ramp: the mover comes down its surface; the target rests at the foot, on a
             # support of its own facing the ramp, which the mover's path continues onto.
             own = b.support_node(target, (FLAT,))
-            b.edge(ON_LOCATION, target, own, (OPPOSITE[heading[actor]],), Provenance("support", f"{target} rests at the foot of the ramp {last}: {term.text}", term.span))
+            b.edge(
+                ON_LOCATION,
+                target,
+                own,
+                (OPPOSITE[heading[actor]],),
+                Provenance("support", f"{target} rests at the foot of the ramp {last}: {term.text}", term.span),
+            )
             support[target] = own
             ramps.append(last)
             paths[actor].append(own)
@@ -269,23 +293,43 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
                 # It goes on along the same surface: it rests in its middle, ahead of its
                 # hitter and with room ahead of it.
                 where = ("centre",)
-            b.edge(ON_LOCATION, target, rest, where, Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span))
+            b.edge(
+                ON_LOCATION,
+                target,
+                rest,
+                where,
+                Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span),
+            )
             support[target] = rest
         elif target in surfaces and b.is_ground(surfaces[target][0]):
             ground = surfaces[target][0]  # it moves along the ground first: it rests on it, anywhere
-            b.edge(ON_LOCATION, target, ground, ("left", "centre", "right"), Provenance("support", f"{target} rests on the ground it moves along", term.span))
+            b.edge(
+                ON_LOCATION,
+                target,
+                ground,
+                ("left", "centre", "right"),
+                Provenance("support", f"{target} rests on the ground it moves along", term.span),
+            )
             support[target] = ground
         elif target in surfaces:
             first = moved_on[target]
             own = b.support_node(target, (FLAT,))
             toward = heading[target]
-            b.edge(ON_LOCATION, target, own, (toward,), Provenance("support", f"{target} starts beside the surface it moves on: {first.text}", first.span))
+            b.edge(
+                ON_LOCATION,
+                target,
+                own,
+                (toward,),
+                Provenance("support", f"{target} starts beside the surface it moves on: {first.text}", first.span),
+            )
             support[target] = own
         else:
             own = b.support_node(target, (FLAT,) if target in falls else anywhere)
             if target in falls:
                 pushed = pushes(scenario.interactions, position, players, flies)
-                locations = (pushed,) if pushed else tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
+                locations = (
+                    (pushed,) if pushed else tuple(dict.fromkeys(loc for d in term.directions for loc in _push_off(d)))
+                )
                 text = f"{target} rests where it can be pushed off to fall: {term.text}"
             else:
                 locations = ("left", "centre", "right")
@@ -304,22 +348,50 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
     for term in scenario.interactions:
         if term.name == "explode":
             exploded.add(term.objects[0])
-        elif term.name == "destroy" and term.objects[0] in exploded and term.objects[1] in dynamic and term.objects[1] not in support:
+        elif (
+            term.name == "destroy"
+            and term.objects[0] in exploded
+            and term.objects[1] in dynamic
+            and term.objects[1] not in support
+        ):
             source, target = term.objects
             if source in support:
-                b.edge(ON_LOCATION, target, support[source], ("left", "centre", "right"), Provenance("support", f"{target} lies within the blast of {source}: {term.text}", term.span))
+                b.edge(
+                    ON_LOCATION,
+                    target,
+                    support[source],
+                    ("left", "centre", "right"),
+                    Provenance("support", f"{target} lies within the blast of {source}: {term.text}", term.span),
+                )
                 support[target] = support[source]
     # A contrast (version 2: contrast(a, b)) rests on its counterpart's support, as it does.
     for term in scenario.restrictions:
-        if term.name == "contrast" and term.objects[0] in dynamic and term.objects[0] not in support and term.objects[1] in support:
+        if (
+            term.name == "contrast"
+            and term.objects[0] in dynamic
+            and term.objects[0] not in support
+            and term.objects[1] in support
+        ):
             contrast, counterpart = term.objects
-            b.edge(ON_LOCATION, contrast, support[counterpart], ("left", "centre", "right"), Provenance("support", f"{contrast} rests as {counterpart} does: {term.text}", term.span))
+            b.edge(
+                ON_LOCATION,
+                contrast,
+                support[counterpart],
+                ("left", "centre", "right"),
+                Provenance("support", f"{contrast} rests as {counterpart} does: {term.text}", term.span),
+            )
             support[contrast] = support[counterpart]
     # Dynamic objects that nothing hits (they never move) still need a support.
     for name in dynamic:
         if name not in support:
             own = b.support_node(name, anywhere)
-            b.edge(ON_LOCATION, name, own, ("left", "centre", "right"), Provenance("support", f"{name} rests on a support", None))
+            b.edge(
+                ON_LOCATION,
+                name,
+                own,
+                ("left", "centre", "right"),
+                Provenance("support", f"{name} rests on a support", None),
+            )
             support[name] = own
     # A mover that rests on the surface it rolls or slides along (set moving by one that came
     # along the same surface) starts on it, not beside it: its motion's inDirection is its
@@ -334,7 +406,11 @@ def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> 
             b.nodes[ramp] = attrs.evolve(b.nodes[ramp], concrete=(rules.inclined,))
 
     # 4. cannotFall (and, with continuous_paths, every path): consecutive platforms of the path touch.
-    continuous = [(t.objects[0], Provenance("restriction", t.text, t.span)) for t in scenario.restrictions if t.name == "cannotFall"]
+    continuous = [
+        (t.objects[0], Provenance("restriction", t.text, t.span))
+        for t in scenario.restrictions
+        if t.name == "cannotFall"
+    ]
     if rules.continuous_paths:
         covered = {mover for mover, _ in continuous}
         continuous += [

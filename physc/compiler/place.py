@@ -19,7 +19,6 @@ search moves on to the next conjunction.
 from __future__ import annotations
 
 import itertools
-
 import random
 
 from physc.compiler.concrete_layout import (
@@ -76,7 +75,9 @@ class Place:
                 options = list(SEPARATIONS)
                 rng.shuffle(options)
                 for relation in options:
-                    constraints = relation_constraints(relation, by_name[a], by_name[b], parameters, "placement keeps them apart")
+                    constraints = relation_constraints(
+                        relation, by_name[a], by_name[b], parameters, "placement keeps them apart"
+                    )
                     try:
                         updated = {axis: system.copy() for axis, system in systems.items()}
                         for c in constraints:

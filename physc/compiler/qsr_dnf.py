@@ -9,7 +9,7 @@ lexicographic over clause alternatives that the seed has shuffled once per claus
 from __future__ import annotations
 
 import math
-from typing import Iterator
+from collections.abc import Iterator
 
 import attrs
 
@@ -67,6 +67,7 @@ class QsrDnf:
 
     def conjunctions(self) -> Iterator[tuple[str, ...]]:
         """All conjunctions, lazily, in the seeded order."""
+
         def walk(depth, prefix):
             if depth == len(self.clauses):
                 yield tuple(prefix)

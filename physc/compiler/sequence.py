@@ -32,7 +32,11 @@ def pushes(interactions, position: int, players: set[str], heading: str | None =
     if len(hit.directions) == 1 and hit.directions[0] in ("left", "right"):
         return OPPOSITE[hit.directions[0]]
     actor = hit.objects[0]
-    if heading is not None and actor in players and not any(t.name == "bounce" and t.objects[0] == actor for t in before):
+    if (
+        heading is not None
+        and actor in players
+        and not any(t.name == "bounce" and t.objects[0] == actor for t in before)
+    ):
         return heading
     return None
 
@@ -40,7 +44,14 @@ def pushes(interactions, position: int, players: set[str], heading: str | None =
 def last_hit_at(interactions, name: str) -> int | None:
     """The position of the last declared hit on `name` among `interactions` (those before
     some point)."""
-    return next((i for i in reversed(range(len(interactions))) if interactions[i].name == "hit" and interactions[i].objects[1] == name), None)
+    return next(
+        (
+            i
+            for i in reversed(range(len(interactions)))
+            if interactions[i].name == "hit" and interactions[i].objects[1] == name
+        ),
+        None,
+    )
 
 
 def last_hit_on(interactions, name: str) -> TermIR | None:
@@ -51,4 +62,11 @@ def last_hit_on(interactions, name: str) -> TermIR | None:
 
 def last_motion(interactions, name: str) -> int | None:
     """The position of the last roll or slide of `name` among `interactions`."""
-    return next((i for i in reversed(range(len(interactions))) if interactions[i].name in ("roll", "slide") and interactions[i].objects[0] == name), None)
+    return next(
+        (
+            i
+            for i in reversed(range(len(interactions)))
+            if interactions[i].name in ("roll", "slide") and interactions[i].objects[0] == name
+        ),
+        None,
+    )

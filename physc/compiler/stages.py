@@ -8,7 +8,8 @@ this version of physc has `run = None`; asking for it is a usage error with a cl
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Protocol
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Protocol
 
 import attrs
 
@@ -81,22 +82,33 @@ STAGES: tuple[Stage, ...] = (
         ("layout_parameters", "concretize"),
     ),
     Stage(
-        "layout", "the concrete layout: objects, materials, poses (place)", lambda _, pipeline: pipeline.placed.layout,
-        needs=("reach_targets", "reachable"), drawn=True,
+        "layout",
+        "the concrete layout: objects, materials, poses (place)",
+        lambda _, pipeline: pipeline.placed.layout,
+        needs=("reach_targets", "reachable"),
+        drawn=True,
     ),
     Stage(
-        "task", "the generated task: level, solution, trace, how it was made (JSON)", lambda _, pipeline: pipeline.task,
-        needs=("satisfy", "robustness_replays"), drawn=True,  # `--png` adds "picture" to a drawn stage
+        "task",
+        "the generated task: level, solution, trace, how it was made (JSON)",
+        lambda _, pipeline: pipeline.task,
+        needs=("satisfy", "robustness_replays"),
+        drawn=True,  # `--png` adds "picture" to a drawn stage
     ),
     Stage(
-        "level", "the generated task as a level file of the domain (Science Birds XML)", lambda _, pipeline: pipeline.task, ("xml",),
-        needs=("emit_level",), drawn=True,
+        "level",
+        "the generated task as a level file of the domain (Science Birds XML)",
+        lambda _, pipeline: pipeline.task,
+        ("xml",),
+        needs=("emit_level",),
+        drawn=True,
     ),
 )
 BY_NAME = {stage.name: stage for stage in STAGES}
 # What each stage asks of a domain, the stages before it included (it runs them).
 NEEDS: dict[str, tuple[str, ...]] = {
-    stage.name: tuple(dict.fromkeys(hook for before in STAGES[: k + 1] for hook in before.needs)) for k, stage in enumerate(STAGES)
+    stage.name: tuple(dict.fromkeys(hook for before in STAGES[: k + 1] for hook in before.needs))
+    for k, stage in enumerate(STAGES)
 }
 
 

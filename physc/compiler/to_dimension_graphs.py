@@ -15,8 +15,9 @@ layout edges that cannot hold together, which is reported with its source terms.
 from __future__ import annotations
 
 import random
-from typing import Iterator
+from collections.abc import Iterator
 
+from physc import budget
 from physc.compiler.concrete_layout import Body, ChosenRelation
 from physc.compiler.difference import DifferenceSystem, Inconsistent
 from physc.compiler.dimension_graphs import (
@@ -27,10 +28,9 @@ from physc.compiler.dimension_graphs import (
     new_systems,
     relation_constraints,
 )
-from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
-from physc.compiler.task import CLAUSE_BUDGET
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
+from physc.compiler.task import CLAUSE_BUDGET
 
 # The most interactions the search takes. Its memory grows with the square of the bodies
 # times the depth (a copy of both axes' distance matrices per clause on the path) and each
@@ -124,7 +124,9 @@ class ToDimensionGraphs:
                         scenario=dnf.scenario,
                         seed=dnf.seed,
                         bodies=tuple(bodies.values()),
-                        conjunction=tuple(ChosenRelation(r, c.a, c.b, c.edge.text(), tuple(c.relations)) for c, r, _ in chosen),
+                        conjunction=tuple(
+                            ChosenRelation(r, c.a, c.b, c.edge.text(), tuple(c.relations)) for c, r, _ in chosen
+                        ),
                         constraints=tuple(base) + tuple(k for _, _, cs in chosen for k in cs),
                         conjunctions_tried=tried,
                         conjunctions_rejected=rejected,
@@ -147,7 +149,9 @@ class ToDimensionGraphs:
                 tried=tried,
             )
         if misfits == SHAPE_DRAWS:
-            raise Infeasible(self.name, f"the objects' shapes, drawn {SHAPE_DRAWS} times, never fit the placement area", tried=tried)
+            raise Infeasible(
+                self.name, f"the objects' shapes, drawn {SHAPE_DRAWS} times, never fit the placement area", tried=tried
+            )
         conflicts = self.explain(dnf, bodies)
         raise Infeasible(
             self.name,

@@ -13,10 +13,10 @@ from pathlib import Path
 from physc import budget
 from physc.dataset import manifest, readme
 from physc.dataset.job import make, scenario_file
-from physc.generation.job import Job
 from physc.domains import load_domain
 from physc.execution import Executor
 from physc.files import OutputError, ensure_folder, write_atomic
+from physc.generation.job import Job
 
 README = "README.md"
 
@@ -33,20 +33,28 @@ def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
     the tasks generated."""
     files: dict[str, bytes] = {}
     for name in dict.fromkeys(row["domain"] for row in rows):
-        tasks = [(row, (folder / row["level"]).read_text(encoding="utf-8")) for row in rows if row["domain"] == name and row.get("level")]
+        tasks = [
+            (row, (folder / row["level"]).read_text(encoding="utf-8"))
+            for row in rows
+            if row["domain"] == name and row.get("level")
+        ]
         if tasks:
             files.update(load_domain(name).files.benchmark_files(tasks))
     return files
 
 
-def build(jobs: list[Job], folder: Path, executor: Executor, progress=None, command: str = "physc generate …") -> list[dict]:
+def build(
+    jobs: list[Job], folder: Path, executor: Executor, progress=None, command: str = "physc generate …"
+) -> list[dict]:
     """Make the dataset of `jobs` in `folder`; every job's row, in the order of `jobs`."""
     folder = ensure_folder(folder)
     rows = manifest.read(folder)
     todo = [job for job in jobs if not _finished(folder, job, rows.get(job.key))]
     if rows:  # written whole first, so that a torn last line of a killed run cannot stay in the middle
         manifest.write_jsonl(folder, [rows[k] for k in sorted(rows)])
-    for scenario, source in {job.scenario: job.source for job in jobs}.items():  # each scenario as written, beside its tasks
+    for scenario, source in {
+        job.scenario: job.source for job in jobs
+    }.items():  # each scenario as written, beside its tasks
         ensure_folder(folder / scenario)
         copy = folder / scenario_file(scenario)
         if not copy.is_file() or copy.read_text(encoding="utf-8") != source:

@@ -12,10 +12,10 @@ import random
 import time
 
 from physc.compiler.infeasible import Infeasible
-from physc.domains.base import DomainError
-from physc.generation.pipeline import Pipeline
 from physc.dataset.manifest import terms
+from physc.domains.base import DomainError
 from physc.generation.job import Job
+from physc.generation.pipeline import Pipeline
 from physc.serialize import to_data
 
 OK, FALLBACK, NO_TASK = "ok", "fallback", "no task"  # a row's outcome
@@ -30,17 +30,28 @@ def scenario_file(scenario: str) -> str:
 def file_names(job: Job, level_suffix: str) -> dict[str, str]:
     """The task's files, relative to the dataset folder: level, task and picture."""
     level = f"{job.seed}.level.json" if level_suffix == "json" else f"{job.seed}.{level_suffix}"
-    return {"level": f"{job.scenario}/{level}", "task": f"{job.scenario}/{job.seed}.json", "picture": f"{job.scenario}/{job.seed}.png"}
+    return {
+        "level": f"{job.scenario}/{level}",
+        "task": f"{job.scenario}/{job.seed}.json",
+        "picture": f"{job.scenario}/{job.seed}.png",
+    }
 
 
 def make(job: Job) -> dict:
     """Make one task (in a worker): {"row": its manifest row, "files": {relative path: contents}}."""
     scenario, domain = job.target()
     row = {
-        "file": scenario_file(job.scenario), "scenario": job.scenario, "seed": job.seed, "domain": scenario.domain,
-        "world": domain.world.name, "backend": domain.backend.name, "title": scenario.title,
-        "interactions": len(scenario.interactions), "sequence": " > ".join(t.text for t in scenario.interactions),
-        "sequence_terms": [t.text for t in scenario.interactions], "settings": job.recorded,
+        "file": scenario_file(job.scenario),
+        "scenario": job.scenario,
+        "seed": job.seed,
+        "domain": scenario.domain,
+        "world": domain.world.name,
+        "backend": domain.backend.name,
+        "title": scenario.title,
+        "interactions": len(scenario.interactions),
+        "sequence": " > ".join(t.text for t in scenario.interactions),
+        "sequence_terms": [t.text for t in scenario.interactions],
+        "settings": job.recorded,
     }
     started = time.perf_counter()
     try:
@@ -48,22 +59,37 @@ def make(job: Job) -> dict:
         with run.within_budget():  # the picture is part of the task's work, within its one budget
             task = run.task
             picture = domain.files.picture(task, "png") if job.picture else None
-    except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
+    except (
+        Infeasible,
+        DomainError,
+    ) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         row.update(outcome=NO_TASK, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return {"row": row, "files": {}}
     seconds = round(time.perf_counter() - started, 4)
     names = file_names(job, domain.files.level_suffix)
     data = to_data(task)
     data.pop("seconds", None)  # times are the manifest's: the task file's bytes depend on its seed only
-    files = {names["level"]: domain.files.emit_level(task.level), names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n"}
+    files = {
+        names["level"]: domain.files.emit_level(task.level),
+        names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n",
+    }
     if picture is not None:
         files[names["picture"]] = picture
     passed, run = task.robustness
     row.update(
-        outcome=OK if passed >= run else FALLBACK, reason=None,
-        level=names["level"], task=names["task"], picture=names["picture"] if picture is not None else None,
-        solution=to_data(task.solution), trace=task.trace, trace_terms=terms(task.trace), robustness_passed=passed, robustness_run=run,
-        validated=task.validated, layouts_tried=task.layouts_tried, simulations=task.simulations,
+        outcome=OK if passed >= run else FALLBACK,
+        reason=None,
+        level=names["level"],
+        task=names["task"],
+        picture=names["picture"] if picture is not None else None,
+        solution=to_data(task.solution),
+        trace=task.trace,
+        trace_terms=terms(task.trace),
+        robustness_passed=passed,
+        robustness_run=run,
+        validated=task.validated,
+        layouts_tried=task.layouts_tried,
+        simulations=task.simulations,
     )
     if job.accidental:
         rng = random.Random(f"physc-generate/{job.scenario}/{job.seed}")

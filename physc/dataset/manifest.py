@@ -25,21 +25,62 @@ PARQUET = "manifest.parquet"
 # of fixed fields, so that datasets made with other settings, or whose tasks passed other
 # stages, have the same schema and combine).
 COLUMNS = [
-    ("file", "string"), ("scenario", "string"), ("seed", "int64"), ("domain", "string"), ("world", "string"), ("backend", "string"), ("title", "string"),
-    ("interactions", "int32"), ("sequence", "string"), ("sequence_terms", "terms"), ("outcome", "string"), ("reason", "string"),
-    ("level", "string"), ("task", "string"), ("picture", "string"), ("solution", "struct"), ("trace", "string"),
-    ("trace_terms", "terms"), ("robustness_passed", "int32"), ("robustness_run", "int32"), ("validated", "bool_"),
-    ("layouts_tried", "int32"), ("simulations", "int64"), ("accidental", "float64"), ("agent_plays", "int32"),
-    ("auccess", "float64"), ("generation_seconds", "float64"), ("seconds", "seconds"), ("settings", "settings"),
+    ("file", "string"),
+    ("scenario", "string"),
+    ("seed", "int64"),
+    ("domain", "string"),
+    ("world", "string"),
+    ("backend", "string"),
+    ("title", "string"),
+    ("interactions", "int32"),
+    ("sequence", "string"),
+    ("sequence_terms", "terms"),
+    ("outcome", "string"),
+    ("reason", "string"),
+    ("level", "string"),
+    ("task", "string"),
+    ("picture", "string"),
+    ("solution", "struct"),
+    ("trace", "string"),
+    ("trace_terms", "terms"),
+    ("robustness_passed", "int32"),
+    ("robustness_run", "int32"),
+    ("validated", "bool_"),
+    ("layouts_tried", "int32"),
+    ("simulations", "int64"),
+    ("accidental", "float64"),
+    ("agent_plays", "int32"),
+    ("auccess", "float64"),
+    ("generation_seconds", "float64"),
+    ("seconds", "seconds"),
+    ("settings", "settings"),
 ]
 # A job's settings (physc.generation.job.Job.recorded), each field typed whether or not a run set it.
 SETTINGS = (
-    ("acceptance", "bool_"), ("accidental", "bool_"), ("backend", "string"), ("clause_budget", "int64"), ("code", "string"), ("layouts", "int64"),
-    ("min_robustness", "int64"), ("physc", "string"), ("picture", "bool_"), ("scenario", "string"), ("time_budget", "float64"),
-    ("validate", "bool_"), ("verify_backend", "string"), ("world", "string"),
+    ("acceptance", "bool_"),
+    ("accidental", "bool_"),
+    ("backend", "string"),
+    ("clause_budget", "int64"),
+    ("code", "string"),
+    ("layouts", "int64"),
+    ("min_robustness", "int64"),
+    ("physc", "string"),
+    ("picture", "bool_"),
+    ("scenario", "string"),
+    ("time_budget", "float64"),
+    ("validate", "bool_"),
+    ("verify_backend", "string"),
+    ("world", "string"),
 )
 # The seconds of the generation's stages (physc.generation.layout_loop; a stage a task did not pass: null).
-SECONDS = (("accept", "float64"), ("distract", "float64"), ("layout", "float64"), ("satisfy", "float64"), ("total", "float64"), ("validate", "float64"))
+SECONDS = (
+    ("accept", "float64"),
+    ("distract", "float64"),
+    ("layout", "float64"),
+    ("satisfy", "float64"),
+    ("total", "float64"),
+    ("validate", "float64"),
+)
 
 
 NAMES = {name for name, _ in COLUMNS}
@@ -108,12 +149,22 @@ def write_parquet(folder: Path, rows: list[dict]) -> None:
         values = [row.get(name) for row in rows]
         if kind in FIXED:
             fields = FIXED[kind]
-            arrays.append(pa.array([None if v is None else {f: v.get(f) for f, _ in fields} for v in values], _struct(fields)))
+            arrays.append(
+                pa.array([None if v is None else {f: v.get(f) for f, _ in fields} for v in values], _struct(fields))
+            )
         elif kind == "struct":  # the fields' order sorted, so the type depends on the rows alone
             try:
                 arrays.append(pa.array([_sorted(v) for v in values]))
-            except (pa.ArrowInvalid, pa.ArrowTypeError):  # a field whose type differs between rows (a plugin's): JSON text
-                arrays.append(pa.array([None if v is None else json.dumps(v, sort_keys=True, ensure_ascii=False) for v in values], pa.string()))
+            except (
+                pa.ArrowInvalid,
+                pa.ArrowTypeError,
+            ):  # a field whose type differs between rows (a plugin's): JSON text
+                arrays.append(
+                    pa.array(
+                        [None if v is None else json.dumps(v, sort_keys=True, ensure_ascii=False) for v in values],
+                        pa.string(),
+                    )
+                )
         else:
             arrays.append(pa.array(values, type=pa.list_(pa.string()) if kind == "terms" else getattr(pa, kind)()))
     table = pa.Table.from_arrays(arrays, names=[name for name, _ in COLUMNS])

@@ -41,7 +41,9 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
         fallbacks=sum(r["outcome"] == FALLBACK for r in rows),
         missing=len(rows) - len(made),
         scenarios=scenarios,
-        backends=", ".join(sorted({j.backend for j in jobs} | {j.settings.verify_backend for j in jobs if j.settings.verify_backend})),
+        backends=", ".join(
+            sorted({j.backend for j in jobs} | {j.settings.verify_backend for j in jobs if j.settings.verify_backend})
+        ),
         worlds=_worlds(jobs),
         validated=all(j.settings.validate for j in jobs),
         accidental=all(j.accidental for j in jobs),
@@ -94,7 +96,8 @@ def _scenario(name: str, pairs: list) -> dict:
         "source": job.source,  # as written, in block form
         "first_seed": min(j.seed for j, _ in pairs),
         "last_seed": max(j.seed for j, _ in pairs),
-        "robustness": ", ".join(f"{k} × {v}" for k, v in sorted(robustness.items(), key=lambda kv: (-kv[1], kv[0]))) or "none generated",
+        "robustness": ", ".join(f"{k} × {v}" for k, v in sorted(robustness.items(), key=lambda kv: (-kv[1], kv[0])))
+        or "none generated",
         "reasons": "; ".join(f"{v} × {k}" for k, v in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0]))),
     }
 

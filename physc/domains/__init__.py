@@ -16,7 +16,17 @@ from physc.domains.base import Domain, DomainError, MissingCapability
 from physc.domains.vocabulary import Vocabulary
 from physc.suggest import asking, closest
 
-__all__ = ["DEFAULT_DOMAIN", "ENTRY_POINT_GROUP", "Domain", "DomainError", "MissingCapability", "bound", "installed_domains", "load_domain", "world_name"]
+__all__ = [
+    "DEFAULT_DOMAIN",
+    "ENTRY_POINT_GROUP",
+    "Domain",
+    "DomainError",
+    "MissingCapability",
+    "bound",
+    "installed_domains",
+    "load_domain",
+    "world_name",
+]
 
 ENTRY_POINT_GROUP = "physc.domains"
 DEFAULT_DOMAIN = "angrybirds"

@@ -43,25 +43,55 @@ from physc.domains.vocabulary import Vocabulary
 
 if TYPE_CHECKING:
     from physc.backends import Backend
-    from physc.worlds import World
     from physc.compiler.concrete_layout import Body
     from physc.compiler.dimension_graphs import LayoutParameters
     from physc.compiler.layout_graph import LayoutGraph
     from physc.compiler.layout_rules import LayoutRules
     from physc.domains.playing import Playing
     from physc.dsl.scenario import ScenarioIR
+    from physc.worlds import World
 
 __all__ = [
-    "CAPABILITIES", "DEFAULTS", "REQUIRED", "STAGE_NEEDS", "Domain", "DomainError", "LevelError", "MissingCapability", "missing", "provides", "require",
-    "solution_classes", "FILES",
+    "CAPABILITIES",
+    "DEFAULTS",
+    "REQUIRED",
+    "STAGE_NEEDS",
+    "Domain",
+    "DomainError",
+    "LevelError",
+    "MissingCapability",
+    "missing",
+    "provides",
+    "require",
+    "solution_classes",
+    "FILES",
 ]
 
 REQUIRED = ("name", "description", "vocabulary")  # what every domain must say
 CAPABILITIES = (
-    "layout_rules", "layout_parameters", "concretize", "satisfy", "emit_level", "picture", "replay", "stability", "read_level", "draw",
+    "layout_rules",
+    "layout_parameters",
+    "concretize",
+    "satisfy",
+    "emit_level",
+    "picture",
+    "replay",
+    "stability",
+    "read_level",
+    "draw",
 )  # no default
 DEFAULTS = (
-    "reach_targets", "reachable", "robustness_replays", "worlds", "default_world", "at", "world", "backend", "playing", "files", "evaluation",
+    "reach_targets",
+    "reachable",
+    "robustness_replays",
+    "worlds",
+    "default_world",
+    "at",
+    "world",
+    "backend",
+    "playing",
+    "files",
+    "evaluation",
 )  # working defaults
 FILES = ("emit_level", "picture", "read_level", "draw")  # the capabilities that are members of `files`
 
@@ -236,4 +266,3 @@ class Domain(abc.ABC):
         trajectories). Default: everywhere, a player without a limited reach; placement
         asks it only about `reach_targets`."""
         return True
-

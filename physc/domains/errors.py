@@ -20,7 +20,9 @@ class LevelError(Exception):
     """An unusable level file (`LevelFiles.read_level`): `code` is a physc diagnostic code, `line`
     and `column` 1-based or None."""
 
-    def __init__(self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None):
+    def __init__(
+        self, code: str, message: str, line: int | None = None, column: int | None = None, help: str | None = None
+    ):
         super().__init__(message)
         self.code = code
         self.message = message
@@ -29,7 +31,9 @@ class LevelError(Exception):
         self.help = help
 
     def __str__(self) -> str:
-        where = "" if self.line is None else f"line {self.line}" + ("" if self.column is None else f":{self.column}") + ": "
+        where = (
+            "" if self.line is None else f"line {self.line}" + ("" if self.column is None else f":{self.column}") + ": "
+        )
         return where + self.message
 
 
@@ -42,7 +46,7 @@ class MissingCapability(DomainError):
             "E0703",
             f"the domain '{domain}' cannot do what {asked} needs: it has no {names}",
             "its vocabulary alone serves `physc check` and `--emit ast` or `scenario`; what each hook does is in "
-            "docs/plugins.md, \"The domain interface\"",
+            'docs/plugins.md, "The domain interface"',
         )
         self.domain = domain
         self.hooks = hooks

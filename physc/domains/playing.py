@@ -23,11 +23,16 @@ def states_at(trace, step: int) -> dict[str, tuple[float, float, float] | None]:
 
     if isinstance(trace, Playout):
         if step < trace.steps - 1:
-            raise ValueError(f"an outcome playout keeps the states of its last step ({trace.steps - 1}) alone, not of step {step}")
+            raise ValueError(
+                f"an outcome playout keeps the states of its last step ({trace.steps - 1}) alone, not of step {step}"
+            )
         row = trace.final
     else:
         row = trace.states[min(step, trace.steps - 1)]
-    return {name: (None if np.isnan(row[i, 0]) else (float(row[i, 0]), float(row[i, 1]), float(row[i, 2]))) for i, name in enumerate(trace.names)}
+    return {
+        name: (None if np.isnan(row[i, 0]) else (float(row[i, 0]), float(row[i, 1]), float(row[i, 2])))
+        for i, name in enumerate(trace.names)
+    }
 
 
 def seen_features(env, observation) -> np.ndarray:

@@ -29,8 +29,8 @@ evaluation's measurements of intended solvability and fidelity.
 
 from __future__ import annotations
 
-from physc.domains.base import Domain, MissingCapability
 from physc.domains.actions import Actions
+from physc.domains.base import Domain, MissingCapability
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.simulation.ending import Ending
@@ -127,15 +127,29 @@ class SimulatedDomain(Domain):
         and birds) writes this instead of the two, and declares `simulation`."""
         return self.scene(level, action), (RunRules() if ending is Ending.STILL else self.rules(level))
 
-    def play(self, level, action, scenario=None, seconds: float | None = None, ending: Ending = Ending.READ, resume=None) -> Trace:
+    def play(
+        self, level, action, scenario=None, seconds: float | None = None, ending: Ending = Ending.READ, resume=None
+    ) -> Trace:
         """`level` played with `action` in the selected backend for `seconds` at most (each
         turn's), ending as `ending` says; its interactions recognised where the ending reads them,
         and judged against `scenario`'s restrictions and declared bounces when one is given.
         `resume`: a snapshot of an earlier run to go on from (physc.simulation.snapshot)."""
         restrictions = scenario.restrictions if scenario is not None else ()
-        redirects = {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
+        redirects = (
+            {tuple(t.objects) for t in scenario.interactions if t.name == "bounce"} if scenario is not None else None
+        )
         scene, rules = self.simulation(level, action, ending)
-        return play_scene(scene, self.backend, rules, seconds or self.seconds, self.recogniser, restrictions, redirects, ending.recognised, resume)
+        return play_scene(
+            scene,
+            self.backend,
+            rules,
+            seconds or self.seconds,
+            self.recogniser,
+            restrictions,
+            redirects,
+            ending.recognised,
+            resume,
+        )
 
     def playout(self, level, action, seconds: float | None = None, ending: Ending = Ending.OUTCOME) -> Playout:
         """`level` played with `action` to its outcome alone (physc.simulation.scene.playout):

@@ -19,18 +19,40 @@ from __future__ import annotations
 
 # A vocabulary's classes and its kinds are the front end's (physc.dsl.vocabularies: it reads them,
 # and the domains import it); a plugin imports them from here, with the paper's terms.
-from physc.dsl.vocabularies import DIRECTION, INTERACTION, OBJECT, RESTRICTION, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
+from physc.dsl.vocabularies import (
+    DIRECTION,
+    INTERACTION,
+    OBJECT,
+    RESTRICTION,
+    ConcreteObject,
+    ObjectTerm,
+    Parameter,
+    TermSignature,
+    Vocabulary,
+)
 
 __all__ = (
-    "DIRECTION", "INTERACTION", "OBJECT", "RESTRICTION", "SIDES", "ConcreteObject", "ObjectTerm", "Parameter", "TermSignature", "Vocabulary",
-    "paper_terms", "structure_terms",
+    "DIRECTION",
+    "INTERACTION",
+    "OBJECT",
+    "RESTRICTION",
+    "SIDES",
+    "ConcreteObject",
+    "ObjectTerm",
+    "Parameter",
+    "TermSignature",
+    "Vocabulary",
+    "paper_terms",
+    "structure_terms",
 )
 
 
 SIDES = ("left", "right", "above", "below")
 
 
-def paper_terms(rollable: str, slidable: str, surface: str) -> tuple[dict[str, TermSignature], tuple[TermSignature, ...]]:
+def paper_terms(
+    rollable: str, slidable: str, surface: str
+) -> tuple[dict[str, TermSignature], tuple[TermSignature, ...]]:
     """The paper's interaction terms (hit, roll, fall, slide, bounce, by name) and its
     restrictions (cannotHit, cannotFall), with the object terms a domain calls rollable,
     slidable and a surface. Recognition (physc.simulation.recognise) and the layout rules
@@ -42,27 +64,64 @@ def paper_terms(rollable: str, slidable: str, surface: str) -> tuple[dict[str, T
     hit_directions = SIDES + ("any",)
     along = ("left", "right")
     interactions = (
-        TermSignature("hit", INTERACTION, (actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=hit_directions)), "a collides with b from direction d of b"),
-        TermSignature("roll", INTERACTION, (actor(rollable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)), "a rolls on b towards d"),
         TermSignature(
-            "fall", INTERACTION,
-            (actor(), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",))),
+            "hit",
+            INTERACTION,
+            (actor(), Parameter("b", OBJECT, moves=True), Parameter("d", DIRECTION, directions=hit_directions)),
+            "a collides with b from direction d of b",
+        ),
+        TermSignature(
+            "roll",
+            INTERACTION,
+            (actor(rollable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)),
+            "a rolls on b towards d",
+        ),
+        TermSignature(
+            "fall",
+            INTERACTION,
+            (
+                actor(),
+                Parameter("b", OBJECT),
+                Parameter("d", DIRECTION, directions=("above", "left", "right"), default=("above",)),
+            ),
             "a falls towards b (a starts far from b in direction d of b)",
         ),
-        TermSignature("slide", INTERACTION, (actor(slidable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)), "a slides on b towards d"),
         TermSignature(
-            "bounce", INTERACTION,
-            (Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=SIDES)),
+            "slide",
+            INTERACTION,
+            (actor(slidable), Parameter("b", OBJECT, fits=surface), Parameter("d", DIRECTION, directions=along)),
+            "a slides on b towards d",
+        ),
+        TermSignature(
+            "bounce",
+            INTERACTION,
+            (
+                Parameter("a", OBJECT, dynamic=True, acts=True, redirects=True),
+                Parameter("b", OBJECT, fits=surface),
+                Parameter("d", DIRECTION, directions=SIDES),
+            ),
             "a bounces off b towards d (where a goes after the bounce)",
         ),
     )
     restrictions = (
         TermSignature(
-            "cannotHit", RESTRICTION,
-            (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT), Parameter("d", DIRECTION, directions=hit_directions)),
-            "during the solution, a must not collide with b from d", narrows="hit",
+            "cannotHit",
+            RESTRICTION,
+            (
+                Parameter("a", OBJECT, dynamic=True),
+                Parameter("b", OBJECT),
+                Parameter("d", DIRECTION, directions=hit_directions),
+            ),
+            "during the solution, a must not collide with b from d",
+            narrows="hit",
         ),
-        TermSignature("cannotFall", RESTRICTION, (Parameter("a", OBJECT, dynamic=True),), "during the solution, a must not fall", forbids="fall"),
+        TermSignature(
+            "cannotFall",
+            RESTRICTION,
+            (Parameter("a", OBJECT, dynamic=True),),
+            "during the solution, a must not fall",
+            forbids="fall",
+        ),
     )
     return {t.name: t for t in interactions}, restrictions
 

@@ -14,10 +14,18 @@ from physc.diagnostics import Diagnostic, Fix, Label, Span
 from physc.dsl import ast
 from physc.dsl.fixes import Advice, Use, replacements, suggestion
 from physc.dsl.fmt import format_term
-from physc.dsl.objects import ObjectChecks, KnownObject
+from physc.dsl.objects import KnownObject, ObjectChecks
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
 from physc.dsl.sequence import SequenceChecks
-from physc.dsl.vocabularies import DIRECTION, INTERACTION, RESTRICTION, TermSignature, Vocabularies, Vocabulary, VocabularyError
+from physc.dsl.vocabularies import (
+    DIRECTION,
+    INTERACTION,
+    RESTRICTION,
+    TermSignature,
+    Vocabularies,
+    Vocabulary,
+    VocabularyError,
+)
 from physc.gc_pause import gc_paused
 
 
@@ -112,7 +120,9 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
         the error is about (where `advice.before` goes)."""
         self.error(code, message, span, help=advice.text, fixes=self.fixes(advice, span, term))
 
-    def fixes(self, advice: Advice, span: Span, term: ast.Term | None = None, declaration: Span | None = None) -> tuple[Fix, ...]:
+    def fixes(
+        self, advice: Advice, span: Span, term: ast.Term | None = None, declaration: Span | None = None
+    ) -> tuple[Fix, ...]:
         interactions = self.scenario.interactions
         return advice.fixes(span, term, declaration, interactions[-1] if interactions else None)
 
@@ -146,8 +156,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             expected = str(total) if required == total else f"{required} or {total}"
             self.error(
                 "E0202",
-                f"'{signature.name}' takes {expected} arguments, but {given} "
-                f"{'was' if given == 1 else 'were'} given",
+                f"'{signature.name}' takes {expected} arguments, but {given} {'was' if given == 1 else 'were'} given",
                 term.span,
                 help=f"write {signature.usage()}",
             )
@@ -164,8 +173,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             if len(argument.alternatives) > 1:
                 self.error(
                     "E0207",
-                    f"the argument '{parameter.name}' of '{signature.name}' is an object "
-                    "and cannot have alternatives",
+                    f"the argument '{parameter.name}' of '{signature.name}' is an object and cannot have alternatives",
                     argument.span,
                     help="alternatives (a | b) are for directions; name one object",
                 )
@@ -174,8 +182,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             if name.text in vocabulary.directions and name.text not in self.objects:
                 self.error(
                     "E0204",
-                    f"'{signature.name}' expects an object as '{parameter.name}', "
-                    f"but '{name.text}' is a direction",
+                    f"'{signature.name}' expects an object as '{parameter.name}', but '{name.text}' is a direction",
                     name.span,
                     help=f"write {signature.usage()}",
                 )
@@ -206,8 +213,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
                 if self.is_object_word(name.text):
                     self.error(
                         "E0205",
-                        f"'{signature.name}' expects a direction as '{parameter.name}', "
-                        f"but '{name.text}' is an object",
+                        f"'{signature.name}' expects a direction as '{parameter.name}', but '{name.text}' is an object",
                         name.span,
                         help=f"write {signature.usage()}",
                     )
@@ -274,9 +280,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
                 for o in self.objects.values()
                 if o.used
             ),
-            interactions=tuple(
-                self._term_ir(r, narrowed[i]) for i, r in enumerate(interactions)
-            ),
+            interactions=tuple(self._term_ir(r, narrowed[i]) for i, r in enumerate(interactions)),
             # A restriction says what may not happen: said twice, it says it once (and a
             # thousand copies must not cost the simulation a thousand tests).
             restrictions=tuple(dict.fromkeys(self._term_ir(r, r.directions) for r in restrictions)),
@@ -298,7 +302,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
                     "W0302",
                     f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} in this domain and gives no task for this scenario",
                     extra.span,
-                    help=f"the domain's actions place at most {count(most)} (docs/language.md, \"Static checks\"): name fewer, or keep the scenario for another domain",
+                    help=f'the domain\'s actions place at most {count(most)} (docs/language.md, "Static checks"): name fewer, or keep the scenario for another domain',
                 )
             )
 

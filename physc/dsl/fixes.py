@@ -10,7 +10,7 @@ vocabulary's object terms.
 
 from __future__ import annotations
 
-from typing import Callable, Container, Sequence
+from collections.abc import Callable, Container, Sequence
 
 import attrs
 
@@ -43,10 +43,14 @@ class Advice:
             fixes.append(Fix.replace(span, self.other, f"use `{self.other}` here"))
         if self.before and term is not None:
             written = _beside(term, self.before)
-            fixes.append(Fix(f"insert `{self.before}` before it", (Edit((term.outer or term.span).first(0), f"{written} > "),)))
+            fixes.append(
+                Fix(f"insert `{self.before}` before it", (Edit((term.outer or term.span).first(0), f"{written} > "),))
+            )
         if self.after and last is not None:
             added = "".join(f" > {_beside(last, t)}" for t in self.after)
-            fixes.append(Fix(f"add `> {' > '.join(self.after)}` at the end", (Edit((last.outer or last.span).last(0), added),)))
+            fixes.append(
+                Fix(f"add `> {' > '.join(self.after)}` at the end", (Edit((last.outer or last.span).last(0), added),))
+            )
         return tuple(fixes)
 
 
@@ -62,9 +66,10 @@ def replacements(name, found, uses: tuple[Span, ...] = ()) -> tuple[Fix, ...]:
 
 
 def suggestion(name, candidates) -> tuple[str | None, tuple[Fix, ...]]:
-    """"did you mean …?" for a misspelt name (an ast.Name), and its quick fixes."""
+    """ "did you mean …?" for a misspelt name (an ast.Name), and its quick fixes."""
     found = closest(name.text, candidates)
     return asking(found), replacements(name, found)
+
 
 Fresh = Callable[[str], str]  # a name for a new object, from a base such as `surface`
 
@@ -92,9 +97,7 @@ def _admits(vocabulary: Vocabulary, parameter: Parameter, concrete: str) -> bool
 
 def allowed_concrete(vocabulary: Vocabulary, uses: Sequence[Use]) -> tuple[str, ...]:
     """The concrete objects that satisfy every use at once (in the vocabulary's order)."""
-    return tuple(
-        c.name for c in vocabulary.concrete_objects if all(_admits(vocabulary, p, c.name) for _, p in uses)
-    )
+    return tuple(c.name for c in vocabulary.concrete_objects if all(_admits(vocabulary, p, c.name) for _, p in uses))
 
 
 def _declaration(vocabulary: Vocabulary, name: str, allowed: tuple[str, ...], fits: ObjectTerm) -> str:
@@ -118,10 +121,15 @@ def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequenc
             needs = noun(vocabulary.object_term(parameter.fits)) if parameter.fits else "an object that moves"
             why = f": '{signature.name}' needs it as {needs}"
             break
-    return Advice(f"use a separate object here, e.g. `{other}` ({noun(fits)}); '{name}' cannot also be {noun(fits)}{why}", other=other)
+    return Advice(
+        f"use a separate object here, e.g. `{other}` ({noun(fits)}); '{name}' cannot also be {noun(fits)}{why}",
+        other=other,
+    )
 
 
-def fit_help(vocabulary: Vocabulary, name: str, declared_term: str | None, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh) -> Advice:
+def fit_help(
+    vocabulary: Vocabulary, name: str, declared_term: str | None, fits: ObjectTerm, uses: Sequence[Use], fresh: Fresh
+) -> Advice:
     """Help for an object `name` that does not fit a parameter asking for `fits`.
 
     `declared_term` is the term of its declaration (None when its name typed it), `uses` every
@@ -190,7 +198,9 @@ def _completer(vocabulary: Vocabulary) -> tuple[TermSignature, int] | None:
     return None
 
 
-def call(vocabulary: Vocabulary, signature: TermSignature, objects: Sequence[str], every_direction: bool = False) -> str:
+def call(
+    vocabulary: Vocabulary, signature: TermSignature, objects: Sequence[str], every_direction: bool = False
+) -> str:
     """A term as written: `hit(bird, rBlock, left)`; with `every_direction`, the alias that
     allows them all where the parameter has one (`any`)."""
     arguments = list(objects)
@@ -237,7 +247,14 @@ def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, object
     if position == 0:  # the goal object acts on another (touch(green, target))
         other = completer.object_parameters[1]
         term = vocabulary.object_term(other.fits) if other.fits else None
-        partner = next((o.name for o in (objects or {}).values() if o.name != goal and term and vocabulary.fits(o.concrete, term.name)), None)
+        partner = next(
+            (
+                o.name
+                for o in (objects or {}).values()
+                if o.name != goal and term and vocabulary.fits(o.concrete, term.name)
+            ),
+            None,
+        )
         partner = partner or (term.abbreviation or term.name if term else actor or vocabulary.player)
         added = [call(vocabulary, completer, (goal, partner))]
     elif last is not None and last.signature.name == completer.requires and last.objects[1:2] == (goal,):

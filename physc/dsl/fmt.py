@@ -68,9 +68,7 @@ def _scenario_lines(scenario: ast.Scenario) -> list[_Line]:
         lines.append(_Line(1, f"domain {scenario.domain.text}", keyword))
     blocks = {
         "objects": [(format_declaration(d), d.span) for d in scenario.objects],
-        "interactions": [
-            (("> " if i else "") + format_term(t), t.span) for i, t in enumerate(scenario.interactions)
-        ],
+        "interactions": [(("> " if i else "") + format_term(t), t.span) for i, t in enumerate(scenario.interactions)],
         "restrictions": [(format_term(t), t.span) for t in scenario.restrictions],
     }
     for kind in SECTION_ORDER[1:]:
@@ -110,7 +108,9 @@ def _gap(source: SourceText | None, after_line: int, before_line: int) -> bool:
     return any(not source.line_text(n).strip() for n in range(after_line + 1, min(before_line, source.line_count + 1)))
 
 
-def _render_comments(out: list[str], comments: list[ast.Comment], indent: str, source, next_line: int | None, keep_gaps: bool):
+def _render_comments(
+    out: list[str], comments: list[ast.Comment], indent: str, source, next_line: int | None, keep_gaps: bool
+):
     for index, comment in enumerate(comments):
         out.append(indent + comment.text)
         following = comments[index + 1].span.line if index + 1 < len(comments) else next_line

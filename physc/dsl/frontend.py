@@ -59,7 +59,9 @@ def _analyzed(path: str, source: SourceText, check: bool, vocabularies: Vocabula
     return Analysis(path, parsed.source, parsed.file, checked.scenarios, parsed.diagnostics, checked.diagnostics)
 
 
-def analyze_files(paths, vocabularies: Vocabularies) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
+def analyze_files(
+    paths, vocabularies: Vocabularies
+) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
     """The checked scenarios of several files, each with its file's path and its own text in
     block form (what a worker on another machine is sent), in order; and, for each file with
     errors, (path, its analysis, its errors): a batch command (eval, generate) reports those and

@@ -90,9 +90,7 @@ class ObjectChecks:
                 asked, fixes = suggestion(item, allowed) if not known else (None, replacements(item, allowed))
                 self.error(
                     "E0303",
-                    f"'{term.name}' cannot be '{item.text}'"
-                    if known
-                    else f"unknown concrete object '{item.text}'",
+                    f"'{term.name}' cannot be '{item.text}'" if known else f"unknown concrete object '{item.text}'",
                     item.span,
                     help=asked or f"'{term.name}' may be: {' | '.join(allowed)}",
                     fixes=fixes,
@@ -104,11 +102,20 @@ class ObjectChecks:
         if materials is None:
             return
         self.objects[name.text] = KnownObject(
-            name.text, term.name, concrete, vocabulary.is_static(concrete), True, name.span, declaration=declaration.span, materials=materials
+            name.text,
+            term.name,
+            concrete,
+            vocabulary.is_static(concrete),
+            True,
+            name.span,
+            declaration=declaration.span,
+            materials=materials,
         )
         self.unknown.discard(name.text)
 
-    def declared_materials(self, declaration: ast.Declaration, term, concrete: tuple[str, ...]) -> tuple[str, ...] | None:
+    def declared_materials(
+        self, declaration: ast.Declaration, term, concrete: tuple[str, ...]
+    ) -> tuple[str, ...] | None:
         """The materials a declaration names (version 2), in the vocabulary's order; None after
         E0306 for one that every concrete object it may become cannot be made of."""
         if not declaration.materials:
@@ -120,12 +127,21 @@ class ObjectChecks:
                 continue
             good = False
             if not possible:
-                self.error("E0306", f"'{declaration.name.text}' ({' | '.join(concrete)}) is made of no material", item.span,
-                           help="only blocks have a material: remove the parenthesis")
+                self.error(
+                    "E0306",
+                    f"'{declaration.name.text}' ({' | '.join(concrete)}) is made of no material",
+                    item.span,
+                    help="only blocks have a material: remove the parenthesis",
+                )
                 continue
             asked, fixes = suggestion(item, possible)
-            self.error("E0306", f"'{declaration.name.text}' cannot be made of '{item.text}'", item.span,
-                       help=asked or f"its materials: {' | '.join(possible)}", fixes=fixes)
+            self.error(
+                "E0306",
+                f"'{declaration.name.text}' cannot be made of '{item.text}'",
+                item.span,
+                help=asked or f"its materials: {' | '.join(possible)}",
+                fixes=fixes,
+            )
         if not good:
             return None
         named = {m.text for m in declaration.materials}
@@ -198,7 +214,11 @@ class ObjectChecks:
 
         def fits(other: str) -> bool:
             found = self.objects[other]
-            return other != name and not found.static and (not parameter.fits or vocabulary.fits(found.concrete, parameter.fits))
+            return (
+                other != name
+                and not found.static
+                and (not parameter.fits or vocabulary.fits(found.concrete, parameter.fits))
+            )
 
         def calm(other: str) -> bool:
             return fits(other) and not vocabulary.fits(self.objects[other].concrete, vocabulary.goal)
@@ -238,7 +258,9 @@ class ObjectChecks:
                 written[key] = fit_help(self.vocabulary, found.name, declared, term, self.uses[found.name], self.fresh)
             self.helps[index] = written[key]
             declarations[index] = found.declaration
-        players = {o.name: None for o in self.objects.values() if self.vocabulary.fits(o.concrete, self.vocabulary.player)}
+        players = {
+            o.name: None for o in self.objects.values() if self.vocabulary.fits(o.concrete, self.vocabulary.player)
+        }
         for item in self.immobile:
             if item[0] not in self.helps:
                 self.explain_immobile(item, players)
@@ -246,4 +268,3 @@ class ObjectChecks:
             diagnostic = self.diagnostics[index]
             fixes = self.fixes(advice, diagnostic.span, declaration=declarations.get(index))
             self.diagnostics[index] = attrs.evolve(diagnostic, help=advice.text, fixes=fixes)
-

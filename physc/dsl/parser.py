@@ -82,7 +82,7 @@ class ParseResult:
 
 
 @functools.cache
-def _lark() -> tuple[Lark, "_Builder"]:
+def _lark() -> tuple[Lark, _Builder]:
     grammar = resources.files("physc.dsl").joinpath("phys.lark").read_text(encoding="utf-8")
     builder = _Builder()
     parser = Lark(grammar, parser="lalr", lexer=FastLexer, transformer=builder, maybe_placeholders=False)
@@ -440,7 +440,7 @@ def _parse_source(source: SourceText) -> ParseResult:
                 "E0003",
                 "this file holds no scenario",
                 source.span(0, 0),
-                help='write a scenario, e.g. `scenario SF = {[hit(bird)(pig)(any)] > [destroy(bird)(pig)]}, {}`',
+                help="write a scenario, e.g. `scenario SF = {[hit(bird)(pig)(any)] > [destroy(bird)(pig)]}, {}`",
             )
         )
     return ParseResult(source, ast.File(tuple(scenarios), tuple(comments)), tuple(diagnostics))
@@ -466,7 +466,15 @@ def read_source(path: str) -> ReadResult:
     if data is None:
         return ReadResult(None, (Diagnostic("E0001", problem),))
     if len(data) > MAX_SOURCE_BYTES:
-        return ReadResult(None, (Diagnostic("E0001", f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads"),))
+        return ReadResult(
+            None,
+            (
+                Diagnostic(
+                    "E0001",
+                    f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads",
+                ),
+            ),
+        )
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as error:

@@ -38,7 +38,12 @@ def phys_lexer(vocabularies) -> type[RegexLexer]:
     vocabularies = list(vocabularies)
     interactions = tuple(sorted({t.name for v in vocabularies for t in v.terms if t.kind == INTERACTION}))
     restrictions = tuple(sorted({t.name for v in vocabularies for t in v.terms if t.kind == RESTRICTION}))
-    object_terms = "|".join(sorted({re.escape(s) for v in vocabularies for t in v.object_terms for s in t.spellings}, key=lambda s: (-len(s), s)))
+    object_terms = "|".join(
+        sorted(
+            {re.escape(s) for v in vocabularies for t in v.object_terms for s in t.spellings},
+            key=lambda s: (-len(s), s),
+        )
+    )
     concrete = tuple(sorted({c.name for v in vocabularies for c in v.concrete_objects}))
     directions = tuple(sorted({d for v in vocabularies for d in v.directions}))
 

@@ -94,7 +94,11 @@ class SequenceChecks:
             if complete and signature.requires and (signature.requires, resolved.objects) not in seen and not enabled:
                 pair = ", ".join(resolved.objects)
                 added = f"{signature.requires}({pair}, any)"
-                other = f" or '{signature.enabled_by}({resolved.objects[0]})'" if self.could_enable(signature, resolved.objects[0]) else ""
+                other = (
+                    f" or '{signature.enabled_by}({resolved.objects[0]})'"
+                    if self.could_enable(signature, resolved.objects[0])
+                    else ""
+                )
                 self.advise(
                     "E0403",
                     f"'{signature.name}({pair})' needs an earlier '{signature.requires}({pair}, …)'{other}",
@@ -126,7 +130,8 @@ class SequenceChecks:
                 unhittable = {tuple(r.objects[:2]) for r in restrictions if r is not None and r.signature.narrows}
             self.advise(
                 "E0404",
-                f"the {goal} '{obj.name}' {vocabulary.goal_unmet}" + (f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""),
+                f"the {goal} '{obj.name}' {vocabulary.goal_unmet}"
+                + (f" ({vocabulary.goal_rule})" if vocabulary.goal_rule else ""),
                 obj.span,
                 goal_help(vocabulary, obj.name, last, self.actor_for(obj.name, movers, unhittable), self.objects),
             )
@@ -138,9 +143,9 @@ class SequenceChecks:
             return name != goal and (name, goal) not in unhittable
 
         goals = self.vocabulary.goal
-        return latest(movers, lambda m: free(m) and not self.vocabulary.fits(self.objects[m].concrete, goals)) or latest(
-            movers, free
-        )
+        return latest(
+            movers, lambda m: free(m) and not self.vocabulary.fits(self.objects[m].concrete, goals)
+        ) or latest(movers, free)
 
     def apply_restrictions(self, interactions, restrictions) -> dict[int, tuple[str, ...]]:
         """Narrow interaction directions; report restrictions that contradict the sequence."""
@@ -207,4 +212,3 @@ class SequenceChecks:
                         notes=[Label(restriction.node.span, "the restriction")],
                     )
         return narrowed
-

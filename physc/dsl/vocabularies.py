@@ -9,7 +9,7 @@ checks. The kinds are the words a vocabulary marks its terms and parameters with
 from __future__ import annotations
 
 import re
-from typing import Callable
+from collections.abc import Callable
 
 import attrs
 
@@ -87,7 +87,9 @@ class TermSignature:
     parameters: tuple[Parameter, ...]
     description: str = ""
     requires: str | None = None  # an earlier interaction with the same objects is required
-    enabled_by: str | None = None  # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
+    enabled_by: str | None = (
+        None  # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
+    )
     narrows: str | None = None  # restriction: narrows the directions of this interaction
     forbids: str | None = None  # restriction: forbids this interaction of its first object
     carries: bool = False  # restriction: its first object rests on its second, which sets it in motion when it moves or goes (a structure)
@@ -119,7 +121,9 @@ class Vocabulary:
     terms: tuple[TermSignature, ...]
     direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
     player: str = ""  # object term of what the player sets in motion
-    players: int | None = None  # how many objects of the player's term compile places (None: any); check warns beyond (W0302)
+    players: int | None = (
+        None  # how many objects of the player's term compile places (None: any); check warns beyond (W0302)
+    )
     goal: str = ""  # object term of the goal objects: each must meet the goal (an interaction `completes` it)
     goal_unmet: str = "never meets the goal"  # what E0404 says of a goal object no interaction completes
     goal_rule: str = ""  # when a task is solved, for messages ("a task is solved when every pig is destroyed")

@@ -30,8 +30,11 @@ def register_envs() -> list[str]:
             continue
         if playing.env_id not in gymnasium.registry:
             gymnasium.register(
-                id=playing.env_id, entry_point="physc.envs.env:TaskEnv", kwargs={"domain": name},
-                max_episode_steps=playing.max_attempts, disable_env_checker=False,
+                id=playing.env_id,
+                entry_point="physc.envs.env:TaskEnv",
+                kwargs={"domain": name},
+                max_episode_steps=playing.max_attempts,
+                disable_env_checker=False,
             )
         ids.append(playing.env_id)
     return ids

@@ -24,7 +24,9 @@ def heuristic_agent(env, observation, attempt: int):
     first, on the low then the high trajectory; PHYRE-like drops a ball on the green object."""
     playing = env.unwrapped.playing
     if playing.heuristic is None:
-        raise ValueError(f"the domain of {env.unwrapped.spec.id if env.unwrapped.spec else 'this environment'} has no heuristic agent")
+        raise ValueError(
+            f"the domain of {env.unwrapped.spec.id if env.unwrapped.spec else 'this environment'} has no heuristic agent"
+        )
     return playing.heuristic(env.unwrapped, observation, attempt)
 
 
@@ -36,8 +38,14 @@ def play_episode(env, agent, seed: int | None = None, options: dict | None = Non
     while True:
         observation, reward, terminated, truncated, step_info = env.step(agent(env, observation, attempt))
         if terminated or truncated:
-            return {"task_id": info["task_id"], "reward": reward, "solved": bool(step_info.get("solved")),
-                    "realised": bool(step_info.get("realised")), "attempts": attempt + 1, "valid": bool(step_info.get("valid"))}
+            return {
+                "task_id": info["task_id"],
+                "reward": reward,
+                "solved": bool(step_info.get("solved")),
+                "realised": bool(step_info.get("realised")),
+                "attempts": attempt + 1,
+                "valid": bool(step_info.get("valid")),
+            }
         attempt += 1
 
 
@@ -54,7 +62,8 @@ def evaluate_agent(env, agent, episodes_per_task: int = 1, seed: int = 0) -> dic
 
     def summary(plays: list[dict]) -> dict:
         return {
-            "plays": len(plays), "solved": round(sum(p["solved"] for p in plays) / len(plays), 4),
+            "plays": len(plays),
+            "solved": round(sum(p["solved"] for p in plays) / len(plays), 4),
             "reward": round(statistics.fmean(p["reward"] for p in plays), 4),
             "realised": round(sum(p["realised"] for p in plays) / len(plays), 4),
             "no_valid_action": sum(not p["valid"] for p in plays),

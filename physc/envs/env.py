@@ -38,12 +38,25 @@ class TaskEnv(gymnasium.Env):
 
     metadata = {"render_modes": ["rgb_array"]}
 
-    def __init__(self, domain: str, tasks, *, action: str | None = None, observation: str = "features", noise: bool | None = None,
-                 world: str | None = None, backend: str | None = None, render_mode: str | None = None, interactions: bool = True):
+    def __init__(
+        self,
+        domain: str,
+        tasks,
+        *,
+        action: str | None = None,
+        observation: str = "features",
+        noise: bool | None = None,
+        world: str | None = None,
+        backend: str | None = None,
+        render_mode: str | None = None,
+        interactions: bool = True,
+    ):
         if observation not in OBSERVATIONS:
             raise ValueError(f"observation is one of {', '.join(OBSERVATIONS)}, not {observation!r}")
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode is one of {', '.join(self.metadata['render_modes'])} or None, not {render_mode!r}")
+            raise ValueError(
+                f"render_mode is one of {', '.join(self.metadata['render_modes'])} or None, not {render_mode!r}"
+            )
         self.simulator = ActionSimulator(tasks, domain=domain, mode=action, world=world, backend=backend)
         playing = self.simulator.playing
         self.playing = playing
@@ -55,11 +68,17 @@ class TaskEnv(gymnasium.Env):
         # Unbounded: even PHYRE's normalised features pass 1 (a bar longer than the scene).
         features = spaces.Box(-np.inf, np.inf, (playing.max_objects, len(playing.feature_names)), np.float32)
         picture = spaces.Box(0, 255, playing.picture_shape, np.uint8)
-        self.observation_space = {"features": features, "picture": picture, "both": spaces.Dict(features=features, picture=picture)}[observation]
+        self.observation_space = {
+            "features": features,
+            "picture": picture,
+            "both": spaces.Dict(features=features, picture=picture),
+        }[observation]
         for index in range(len(self.simulator)):
             rows = len(self.simulator.features(index))
             if rows > playing.max_objects:
-                raise ValueError(f"the task {self.simulator.task_ids[index]} has {rows} objects, more than the {playing.max_objects} an observation holds")
+                raise ValueError(
+                    f"the task {self.simulator.task_ids[index]} has {rows} objects, more than the {playing.max_objects} an observation holds"
+                )
         self.task_index = 0
         self._last = None  # the last valid play of the episode
 
@@ -73,11 +92,19 @@ class TaskEnv(gymnasium.Env):
         features = picture = None
         if self.observation_kind != "picture":
             rows = self.simulator.features(self.task_index) if result is None else self.simulator.frame(result)
-            shape = self.observation_space["features"].shape if self.observation_kind == "both" else self.observation_space.shape
+            shape = (
+                self.observation_space["features"].shape
+                if self.observation_kind == "both"
+                else self.observation_space.shape
+            )
             features = np.zeros(shape, np.float32)
             features[: len(rows)] = rows
         if self.observation_kind != "features":
-            picture = self.simulator.picture(self.task_index) if result is None else self.simulator.frame(result, picture=True)
+            picture = (
+                self.simulator.picture(self.task_index)
+                if result is None
+                else self.simulator.frame(result, picture=True)
+            )
         if self.observation_kind == "both":
             return {"features": features, "picture": picture}
         return features if picture is None else picture

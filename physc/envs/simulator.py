@@ -61,7 +61,9 @@ class Simulation:
     trace: object = attrs.field(default=None, eq=False, repr=False)
     images: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
     featurized_objects: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
-    played: tuple = attrs.field(default=(), eq=False, repr=False)  # (the domain, the level and the action as played: noisy ones under noise)
+    played: tuple = attrs.field(
+        default=(), eq=False, repr=False
+    )  # (the domain, the level and the action as played: noisy ones under noise)
 
 
 class ActionSimulator:
@@ -70,7 +72,15 @@ class ActionSimulator:
     `world` or `backend` names others. `mode` is the domain's action mode (angrybirds:
     "angle", the default, or "point"; PHYRE-like: "ball" or "two_balls", the tasks' own)."""
 
-    def __init__(self, tasks, *, domain: str | None = None, mode: str | None = None, world: str | None = None, backend: str | None = None):
+    def __init__(
+        self,
+        tasks,
+        *,
+        domain: str | None = None,
+        mode: str | None = None,
+        world: str | None = None,
+        backend: str | None = None,
+    ):
         from physc.api.tasks import domain_of, scenario_of
 
         gathered = sources.gather(tasks)
@@ -93,7 +103,9 @@ class ActionSimulator:
     def _index(self, task: int | str) -> int:
         if isinstance(task, str):
             if task not in self.task_ids:
-                raise KeyError(f"no task '{task}' (task ids: {', '.join(self.task_ids[:5])}{', …' if len(self) > 5 else ''})")
+                raise KeyError(
+                    f"no task '{task}' (task ids: {', '.join(self.task_ids[:5])}{', …' if len(self) > 5 else ''})"
+                )
             return self.task_ids.index(task)
         if not 0 <= task < len(self):
             raise IndexError(f"task index {task} is not in 0 .. {len(self) - 1}")
@@ -123,8 +135,15 @@ class ActionSimulator:
         return self.action_space.sample()
 
     def simulate_action(
-        self, task: int | str, action, *, noise: int | random.Random | None = None, need_images: bool = False,
-        need_featurized_objects: bool = False, stride: int | None = None, need_interactions: bool = True,
+        self,
+        task: int | str,
+        action,
+        *,
+        noise: int | random.Random | None = None,
+        need_images: bool = False,
+        need_featurized_objects: bool = False,
+        stride: int | None = None,
+        need_interactions: bool = True,
     ) -> Simulation:
         """`action` played on the task (an index or an id), to rest; with `noise` (a seed or a
         random.Random), under the domain's noise model. `need_images`, `need_featurized_objects`:
@@ -175,4 +194,3 @@ class ActionSimulator:
             trace = play_to_rest(domain, level, played)
         make = self.playing.frame_picture if picture else self.playing.frame_features
         return make(domain, level, played, trace, trace.steps - 1 if step < 0 else step)
-

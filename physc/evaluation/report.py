@@ -14,9 +14,8 @@ import json
 import statistics
 from pathlib import Path
 
-import numpy as np
-
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -47,7 +46,15 @@ VERIFY_METRICS = (
     ("verified_realised", "Sequence realised in {backend} (exact replay)", None),
     ("verified_noisy", "Sequence realised in {backend} (" + str(NOISY_REPLAYS) + " noisy replays)", None),
 )
-NAMES = {2: "Two", 3: "Three", 4: "Four", 5: "Five", 6: "Six", 7: "Seven", 8: "Eight"}  # interaction counts as the table heads them
+NAMES = {
+    2: "Two",
+    3: "Three",
+    4: "Four",
+    5: "Five",
+    6: "Six",
+    7: "Seven",
+    8: "Eight",
+}  # interaction counts as the table heads them
 # With a random agent (a simulated domain's evaluation): PHYRE's AUCCESS of its attempts.
 AGENT_METRICS = (("auccess", "Random agent's AUCCESS (100 attempts)", None),)
 # With a domain's acceptance rule (PHYRE's): its flags for every task kept, from random actions.
@@ -58,9 +65,27 @@ ACCEPTANCE_METRICS = (
     ("solve_rate", "Solutions per valid random action (PHYRE's pool, those simulated)", None),
 )
 CSV_COLUMNS = (
-    "file", "scenario", "interactions", "seed", "generated", "generation_seconds", "stable", "largest_shift",
-    "intended_exact", "intended_noisy", "fidelity_exact", "fidelity_noisy", "accidental", "agent_plays", "trace", "reason",
-    "min_robustness", "robustness", "layouts_tried", "simulations", "structure",
+    "file",
+    "scenario",
+    "interactions",
+    "seed",
+    "generated",
+    "generation_seconds",
+    "stable",
+    "largest_shift",
+    "intended_exact",
+    "intended_noisy",
+    "fidelity_exact",
+    "fidelity_noisy",
+    "accidental",
+    "agent_plays",
+    "trace",
+    "reason",
+    "min_robustness",
+    "robustness",
+    "layouts_tried",
+    "simulations",
+    "structure",
 )
 VERIFY_COLUMNS = ("verify_backend", "verified_solved", "verified_realised", "verified_noisy")  # with --verify-backend
 
@@ -114,23 +139,38 @@ def summarise(records: list[dict]) -> dict:
         out["why_none"] = sorted(reasons.items(), key=lambda item: -item[1])
         return out
 
-    scenarios = {name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()}
+    scenarios = {
+        name: stats(rows) | {"interactions": rows[0]["interactions"]} for name, rows in group("scenario").items()
+    }
     counts = {count: stats(rows) for count, rows in sorted(group("interactions").items())}
     verified = sorted({r["verify_backend"] for r in records if r.get("verify_backend")})
     domains = sorted({r.get("domain", "angrybirds") for r in records})  # records without one are angrybirds'
     agent = any(r.get("auccess") is not None for r in records)
     judged = any(r.get("good_stable") is not None for r in records)
     return {
-        "scenarios": scenarios, "interactions": counts, "paper": PAPER, "verify_backend": ", ".join(verified) or None, "domains": domains,
-        "auccess": agent, "acceptance": judged,
+        "scenarios": scenarios,
+        "interactions": counts,
+        "paper": PAPER,
+        "verify_backend": ", ".join(verified) or None,
+        "domains": domains,
+        "auccess": agent,
+        "acceptance": judged,
     }
 
 
 def metrics(summary: dict) -> tuple:
     """The report's metrics: the paper's (compared with the paper's table only for its own
     domain), the random agent's AUCCESS and the verify backend's when the records have them."""
-    own = METRICS if summary.get("domains", ["angrybirds"]) == ["angrybirds"] else tuple((m, title, None) for m, title, _ in METRICS)
-    out = own + (AGENT_METRICS if summary.get("auccess") else ()) + (ACCEPTANCE_METRICS if summary.get("acceptance") else ())
+    own = (
+        METRICS
+        if summary.get("domains", ["angrybirds"]) == ["angrybirds"]
+        else tuple((m, title, None) for m, title, _ in METRICS)
+    )
+    out = (
+        own
+        + (AGENT_METRICS if summary.get("auccess") else ())
+        + (ACCEPTANCE_METRICS if summary.get("acceptance") else ())
+    )
     backend = summary.get("verify_backend")
     if backend:
         out += tuple((metric, title.format(backend=backend), paper) for metric, title, paper in VERIFY_METRICS)
@@ -178,7 +218,9 @@ def _scenario_effort(summary: dict) -> list[str]:
     if not any(row.get("median_seconds") is not None or row.get("why_none") for row in rows.values()):
         return []
     lines = ["", "## Per scenario: cost, margins, and why no task", ""]
-    lines.append("| scenario | generated | median s a task | median simulations a task | weakest margin (share, link) | margins raised | why no task (seeds) |")
+    lines.append(
+        "| scenario | generated | median s a task | median simulations a task | weakest margin (share, link) | margins raised | why no task (seeds) |"
+    )
     lines.append("|---|---|---|---|---|---|---|")
     for name, row in rows.items():
         seconds = "–" if row.get("median_seconds") is None else f"{row['median_seconds']:.1f}"
@@ -204,7 +246,11 @@ def why_none(reason: str) -> str:
         head = "every layout tried"
     best = re.search(r"realised (\d+) of the (\d+) interactions", reason)
     fragile = "the solution was too fragile" in reason or "fails physc verify" in reason
-    return head + (f", best {best.group(1)} of {best.group(2)}" if best else "") + (", fragile" if fragile and best and best.group(1) == best.group(2) else "")
+    return (
+        head
+        + (f", best {best.group(1)} of {best.group(2)}" if best else "")
+        + (", fragile" if fragile and best and best.group(1) == best.group(2) else "")
+    )
 
 
 def _whole(pair) -> str:
@@ -220,7 +266,13 @@ def _generated(row: dict) -> str:
 def markdown(summary: dict, command: str, seconds: float) -> str:
     counts = sorted(summary["interactions"])
     names = NAMES
-    lines = ["# Evaluation results", "", f"Command: `{command}`  ", f"Wall time of this invocation: {seconds:.0f} s (a resumed run counts only the tasks it ran)", ""]
+    lines = [
+        "# Evaluation results",
+        "",
+        f"Command: `{command}`  ",
+        f"Wall time of this invocation: {seconds:.0f} s (a resumed run counts only the tasks it ran)",
+        "",
+    ]
     lines += ["## Per interaction count (physc; the paper in brackets)", ""]
     lines.append("| Evaluation metric | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")
     lines.append("|---|" + "---|" * len(counts))
@@ -234,7 +286,11 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     lines.append("| Tasks generated | " + " | ".join(_generated(summary["interactions"][c]) for c in counts) + " |")
     unplayed = [summary["interactions"][c].get("no_agent_play", 0) for c in counts]
     if any(unplayed):
-        lines.append("| Tasks where the agent found no play (no accidental solvability) | " + " | ".join(map(str, unplayed)) + " |")
+        lines.append(
+            "| Tasks where the agent found no play (no accidental solvability) | "
+            + " | ".join(map(str, unplayed))
+            + " |"
+        )
     lines += _effort_lines(summary, counts, names)
     lines += ["", "## Per scenario", ""]
     header = ["scenario", "interactions", "generated"] + [title for _, title, _ in metrics(summary)]
@@ -248,7 +304,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
     if summary.get("verify_backend"):
         lines += [
             f"With --verify-backend, a task was kept only if its solution also passed in {summary['verify_backend']}, and",
-            f"the rows \"in {summary['verify_backend']}\" replay it there afresh: exactly, and {NOISY_REPLAYS} times with the same noise.",
+            f'the rows "in {summary["verify_backend"]}" replay it there afresh: exactly, and {NOISY_REPLAYS} times with the same noise.',
         ]
     return "\n".join(lines) + "\n"
 
@@ -266,7 +322,9 @@ def _definitions(domains: list[str]) -> list[str]:
         if measures:
             lead = "Definitions: " if len(domains) == 1 else f"Definitions ({name}): "
             lines += textwrap.wrap(lead + measures, width=DEFINITIONS_WIDTH, break_on_hyphens=False)
-    lines.append("Metrics are over the generated tasks; generation ran with the final validation skipped, as in the paper.")
+    lines.append(
+        "Metrics are over the generated tasks; generation ran with the final validation skipped, as in the paper."
+    )
     return lines
 
 
@@ -278,10 +336,25 @@ def plot(summary: dict, metric: str, title: str, paper_key: str | None) -> bytes
     figure, axes = plt.subplots(figsize=(5, 3.4), dpi=100)
     ours = [(c, summary["interactions"][c][metric]) for c in counts if summary["interactions"][c][metric]]
     if ours:
-        axes.errorbar([c for c, _ in ours], [v[0] for _, v in ours], yerr=[v[1] for _, v in ours], marker="o", capsize=3, label="physc")
+        axes.errorbar(
+            [c for c, _ in ours],
+            [v[0] for _, v in ours],
+            yerr=[v[1] for _, v in ours],
+            marker="o",
+            capsize=3,
+            label="physc",
+        )
     if paper_key:
         paper = PAPER[paper_key]
-        axes.errorbar(list(paper), [v[0] for v in paper.values()], yerr=[v[1] for v in paper.values()], marker="s", capsize=3, linestyle="--", label="paper")
+        axes.errorbar(
+            list(paper),
+            [v[0] for v in paper.values()],
+            yerr=[v[1] for v in paper.values()],
+            marker="s",
+            capsize=3,
+            linestyle="--",
+            label="paper",
+        )
     axes.set_xticks([2, 4, 6, 8])
     axes.set_xlabel("interactions in the scenario")
     axes.set_title(title, fontsize=10)
@@ -297,9 +370,16 @@ def plot(summary: dict, metric: str, title: str, paper_key: str | None) -> bytes
 def write(records: list[dict], folder: Path, command: str, seconds: float) -> dict:
     summary = summarise(records)
     write_atomic(folder / "results.md", markdown(summary, command, seconds))
-    write_atomic(folder / "results.json", json.dumps({"command": command, "seconds": round(seconds, 1), **summary}, indent=2, default=str) + "\n")
+    write_atomic(
+        folder / "results.json",
+        json.dumps({"command": command, "seconds": round(seconds, 1), **summary}, indent=2, default=str) + "\n",
+    )
     out = io.StringIO()
-    columns = CSV_COLUMNS + (("auccess",) if summary.get("auccess") else ()) + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
+    columns = (
+        CSV_COLUMNS
+        + (("auccess",) if summary.get("auccess") else ())
+        + (VERIFY_COLUMNS if summary.get("verify_backend") else ())
+    )
     columns += tuple(metric for metric, _, _ in ACCEPTANCE_METRICS) if summary.get("acceptance") else ()
     writer = csv.DictWriter(out, fieldnames=columns, extrasaction="ignore")
     writer.writeheader()
@@ -332,7 +412,22 @@ def _pictures(records: list[dict], folder: Path) -> None:
         level = from_data(record["level"], {cls.__name__: cls for cls in domain.files.level_classes})
         solution = from_data(record["solution"], solution_classes(domain))
         task = Task(
-            record["scenario"], domain.name, record["seed"], "", level, solution, record["trace"], None, tuple(record["robustness"]),
-            (), (), (), record.get("layouts_tried", 0), 0, record.get("simulations", 0), {}, {},
+            record["scenario"],
+            domain.name,
+            record["seed"],
+            "",
+            level,
+            solution,
+            record["trace"],
+            None,
+            tuple(record["robustness"]),
+            (),
+            (),
+            (),
+            record.get("layouts_tried", 0),
+            0,
+            record.get("simulations", 0),
+            {},
+            {},
         )
         write_atomic(folder / f"task_{record['scenario']}_{record['seed']}.png", domain.files.picture(task))

@@ -18,15 +18,14 @@ import random
 import time
 from pathlib import Path
 
-
 from physc import budget
 from physc.compiler.infeasible import Infeasible
 from physc.domains.base import DomainError
-from physc.generation.pipeline import Pipeline
 from physc.evaluation import measure
 from physc.execution import Executor
 from physc.files import ensure_folder, read_json_lines, write_atomic
 from physc.generation.job import Job
+from physc.generation.pipeline import Pipeline
 from physc.generation.verify import verify
 from physc.serialize import to_data
 
@@ -51,7 +50,10 @@ def evaluate(job: Job) -> dict:
     started = time.perf_counter()
     try:
         task = Pipeline(domain, scenario, job.seed, job.settings).task
-    except (Infeasible, DomainError) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
+    except (
+        Infeasible,
+        DomainError,
+    ) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
         return record
     record.update(
@@ -65,13 +67,19 @@ def evaluate(job: Job) -> dict:
     )
     weakest = (task.margins or {}).get("weakest")
     if weakest is not None:  # the weakest link over the noisy replays the solution passed (physc.simulation.margins)
-        record.update(weakest_link=weakest["term"], weakest_share=weakest["share"], weakest_margin=f"{weakest['value']:+.3g} {weakest['unit']}")
+        record.update(
+            weakest_link=weakest["term"],
+            weakest_share=weakest["share"],
+            weakest_margin=f"{weakest['value']:+.3g} {weakest['unit']}",
+        )
     if task.margins is not None:
         record.update(raised=bool(task.margins.get("raised")), raise_candidates=task.margins.get("candidates", 0))
     if task.acceptance is not None:  # the domain's acceptance rule (PHYRE's flags)
         record.update(
-            good_stable="GOOD_STABLE" in task.acceptance["flags"], trivial="TRIVIAL" in task.acceptance["flags"],
-            solution_stable=task.acceptance["solution_stable"], solve_rate=task.acceptance.get("solve_rate"),
+            good_stable="GOOD_STABLE" in task.acceptance["flags"],
+            trivial="TRIVIAL" in task.acceptance["flags"],
+            solution_stable=task.acceptance["solution_stable"],
+            solve_rate=task.acceptance.get("solve_rate"),
         )
     rng = random.Random(f"physc-eval/{job.scenario}/{job.seed}")
     stable, shift = domain.stability(task.level)
@@ -89,7 +97,9 @@ def evaluate(job: Job) -> dict:
         level=to_data(task.level),
     )
     if job.settings.verify_backend is not None:
-        check = verify(domain, scenario, task.level, task.solution, job.settings.verify_backend, noisy=measure.NOISY_REPLAYS)
+        check = verify(
+            domain, scenario, task.level, task.solution, job.settings.verify_backend, noisy=measure.NOISY_REPLAYS
+        )
         record.update(
             verify_backend=job.settings.verify_backend,
             verified_solved=check.solved,
@@ -107,7 +117,9 @@ def key(job: Job) -> tuple[str, str, int]:
 
 def done_records(folder: Path) -> dict:
     """The records already written (a torn last line, from a killed run, is ignored)."""
-    return {(record["file"], record["scenario"], record["seed"]): record for record in read_json_lines(folder / RECORDS)}
+    return {
+        (record["file"], record["scenario"], record["seed"]): record for record in read_json_lines(folder / RECORDS)
+    }
 
 
 def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> list[dict]:
@@ -124,6 +136,7 @@ def run(jobs: list[Job], folder: Path, executor: Executor, progress=None) -> lis
     if progress:
         progress.start(len(jobs), len(jobs) - len(todo), executor.describe())
     with path.open("a", encoding="utf-8") as out:
+
         def keep(record):
             records[(record["file"], record["scenario"], record["seed"])] = record
             out.write(json.dumps(record, sort_keys=True) + "\n")

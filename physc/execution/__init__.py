@@ -16,7 +16,7 @@ so the same jobs give the same results on every executor and with any number of 
 from __future__ import annotations
 
 import abc
-from typing import Callable, Iterable
+from collections.abc import Callable, Iterable
 
 Keep = Callable[[object], None]  # called here with each job's result, as it completes
 
@@ -48,7 +48,7 @@ class Executor(abc.ABC):
         """Where jobs run, in words, for progress lines and reports."""
         return f"{self.workers} {self.name} worker{'s' if self.workers != 1 else ''}"
 
-    def __enter__(self) -> "Executor":
+    def __enter__(self) -> Executor:
         return self
 
     def __exit__(self, *exc) -> None:

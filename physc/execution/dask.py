@@ -77,7 +77,10 @@ class DaskCluster(Executor):
             self.workers = max(1, workers or 1)
             with dask.config.set(LOCAL_SETTINGS):  # the workers are handed the settings when they start
                 self.cluster = LocalCluster(
-                    n_workers=self.workers, threads_per_worker=1, processes=True, dashboard_address=_dashboard(),
+                    n_workers=self.workers,
+                    threads_per_worker=1,
+                    processes=True,
+                    dashboard_address=_dashboard(),
                     silence_logs=logging.ERROR,
                 )
             self.client = Client(self.cluster)
@@ -86,12 +89,17 @@ class DaskCluster(Executor):
         """A scheduler with no workers: say so, wait WORKER_WAIT s for one, else stop."""
         import sys
 
-        print(f"physc: the Dask scheduler at {scheduler} has no workers; waiting up to {WORKER_WAIT:g} s for one (dask worker {scheduler})", file=sys.stderr)
+        print(
+            f"physc: the Dask scheduler at {scheduler} has no workers; waiting up to {WORKER_WAIT:g} s for one (dask worker {scheduler})",
+            file=sys.stderr,
+        )
         try:
             self.client.wait_for_workers(1, timeout=WORKER_WAIT)
         except TimeoutError:
             self.client.close()
-            raise ExecutorError(f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s): start some with `dask worker {scheduler}`") from None
+            raise ExecutorError(
+                f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s): start some with `dask worker {scheduler}`"
+            ) from None
         except BaseException:  # Ctrl-C while waiting, a lost connection: the client goes too
             self.client.close()
             raise
@@ -104,7 +112,9 @@ class DaskCluster(Executor):
             theirs = self.client.run(physc_code)
         except Exception as error:  # a worker that cannot even import physc
             self.client.close()
-            raise ExecutorError(f"the workers of {scheduler} cannot run physc ({type(error).__name__}: {error}); install it on every machine") from None
+            raise ExecutorError(
+                f"the workers of {scheduler} cannot run physc ({type(error).__name__}: {error}); install it on every machine"
+            ) from None
         mine = physc_code()
         others = sorted(worker for worker, code in theirs.items() if code != mine)
         if others:
@@ -117,7 +127,9 @@ class DaskCluster(Executor):
     def describe(self) -> str:
         where = f"the Dask cluster at {self.address}" if self.address else "a local Dask cluster"
         link = self.client.dashboard_link if self.cluster is not None and self.cluster.dashboard_link else None
-        return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''}" + (f"; dashboard {link})" if link else ")")
+        return f"{where} ({self.workers} worker{'s' if self.workers != 1 else ''}" + (
+            f"; dashboard {link})" if link else ")"
+        )
 
     def map(self, function, jobs, keep) -> None:
         from distributed import KilledWorker, wait

@@ -42,7 +42,9 @@ class LocalProcesses(Executor):
                     breaks[index] += 1
                 lost = [i for i in suspects if breaks[i] >= RUNS]
                 if lost:
-                    raise ExecutorError(f"a worker process died {RUNS} times while running the job {getattr(jobs[lost[0]], 'key', jobs[lost[0]])}") from None
+                    raise ExecutorError(
+                        f"a worker process died {RUNS} times while running the job {getattr(jobs[lost[0]], 'key', jobs[lost[0]])}"
+                    ) from None
 
     def _pool(self, function, jobs, left: dict, running: set, keep) -> None:
         """Run the jobs `left` in one pool, removing each from `left` once kept and noting in

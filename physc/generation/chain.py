@@ -94,7 +94,11 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     if ledger.stages_raised < settings.raise_stages and ledger.variants_tried < settings.variants:
         ledger.stages_raised += 1
         ledger.variants_tried += 1
-        base = (weak[0][2].layout, weak[0][2].attempts[0]) if weak else (ledger.failed_layout.get(stage.index), ledger.failed.get(stage.index))
+        base = (
+            (weak[0][2].layout, weak[0][2].attempts[0])
+            if weak
+            else (ledger.failed_layout.get(stage.index), ledger.failed.get(stage.index))
+        )
         node = raise_stage(problem, ledger, parent, stage, *base) if base[1] is not None else None
         if node is not None:
             found = chain(problem, ledger, node, i + 1)
@@ -107,7 +111,9 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     return None
 
 
-def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: ChainStage, layout, attempt: Attempt) -> Node | None:
+def raise_stage(
+    problem: Problem, ledger: Ledger, parent: Node, stage: ChainStage, layout, attempt: Attempt
+) -> Node | None:
     """The stage's failed or weak link raised (raising.py): the coordinates of the link the
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
     raise the stage's strength; the first strong candidate, else the strongest that realises
@@ -115,7 +121,11 @@ def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: ChainStag
     margins = problem.domain.margins(problem.scenario, attempt.trace, stage.end)
     weakest = margins.weakest
     interactions = problem.interactions
-    k = min(attempt.fidelity.matched, len(interactions) - 1) if weakest is None or weakest.index is None else weakest.index
+    k = (
+        min(attempt.fidelity.matched, len(interactions) - 1)
+        if weakest is None or weakest.index is None
+        else weakest.index
+    )
     if weakest is None:
         weakest = Margin(interactions[k].text, k, -1.0, "", 1.0, "", False)
     space = Coordinates.of(problem, layout, attempt.action, *weak_parts(problem, weakest))
@@ -124,12 +134,32 @@ def raise_stage(problem: Problem, ledger: Ledger, parent: Node, stage: ChainStag
         scene = prefix(candidate, problem.entry, stage.start)
         played = attrs.evolve(simulate(problem, ledger, scene, action), label=attempt.label)
         if not passes(problem, played, stage, candidate):
-            return Candidate(candidate, action, notes, score(problem.domain.margins(problem.scenario, played.trace, stage.end), stage.end, played.fidelity.matched) - 1.0, False, False)
+            return Candidate(
+                candidate,
+                action,
+                notes,
+                score(
+                    problem.domain.margins(problem.scenario, played.trace, stage.end),
+                    stage.end,
+                    played.fidelity.matched,
+                )
+                - 1.0,
+                False,
+                False,
+            )
         strength = stage_strength(problem, ledger, candidate, stage, played)
         return Candidate(candidate, action, notes, strength, strength >= 0, True, played)
 
     settings = problem.settings
-    found = climb(problem, ledger, space, judge, f"{stage.index}/{attempt.label}", settings.raise_stage_evaluations, settings.raise_stage_sigma)
+    found = climb(
+        problem,
+        ledger,
+        space,
+        judge,
+        f"{stage.index}/{attempt.label}",
+        settings.raise_stage_evaluations,
+        settings.raise_stage_sigma,
+    )
     if found is None:
         return None
     step = f"{weakest.term}: margins raised: {found.notes or 'as placed'}"
@@ -151,7 +181,9 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, 
         noise = random.Random(f"stage/{stage.index}/{attempt.label}/{r}")
         noisy_level, action = domain.actions.noisy(level, attempt.action, noise)
         played = replayed(problem, ledger, noisy_level, action)
-        strength = min(strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched))
+        strength = min(
+            strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched)
+        )
         if strength < 0:
             break
     return strength
@@ -168,7 +200,9 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         level = problem.level_of(scene)
         actions = [
-            (f"{a.label}; {label}", action) for a in order for label, action in domain.actions.candidates(level, problem.scenario, stage.start, a.action, a.trace)
+            (f"{a.label}; {label}", action)
+            for a in order
+            for label, action in domain.actions.candidates(level, problem.scenario, stage.start, a.action, a.trace)
         ]
         screen = len(actions)
     elif parent.attempts:
@@ -197,8 +231,13 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
             ledger.failed[stage.index] = best
             ledger.failed_layout[stage.index] = layout
         if not parent.attempts and not ledger.screened:
-            ledger.screened = [a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: problem.settings.screen]]
-    margin = {id(a): min(score(domain.margins(problem.scenario, a.trace, stage.end), stage.end, a.fidelity.matched), 1.0) for a in good}
+            ledger.screened = [
+                a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: problem.settings.screen]
+            ]
+    margin = {
+        id(a): min(score(domain.margins(problem.scenario, a.trace, stage.end), stage.end, a.fidelity.matched), 1.0)
+        for a in good
+    }
     good.sort(key=lambda a: (a.fidelity.score[:3], margin[id(a)], promise(problem, a, stage.end)), reverse=True)
     return tuple(good[: problem.settings.beam]) or None
 

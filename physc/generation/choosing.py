@@ -94,11 +94,17 @@ def alternatives(problem: Problem, layout, declared, stage, attempt):
     here = estimate(current)
     ranked = sorted(options, key=estimate, reverse=True)
     for body in ranked:
-        if estimate(body) <= here * (1 + 1e-6) or (body.concrete, body.material) == (current.concrete, current.material):
+        if estimate(body) <= here * (1 + 1e-6) or (body.concrete, body.material) == (
+            current.concrete,
+            current.material,
+        ):
             continue
         fitted = refitted(current, body, tuple(declared.directions))
         changed = attrs.evolve(layout, objects=tuple(fitted if o.name == target else o for o in layout.objects))
         if not placing.consistent(prefix(changed, problem.entry, stage.start), problem.parameters, {target}, {target}):
             continue
         material = f" {body.material}" if body.material else ""
-        yield f"{target}: a{material} {body.concrete} ({act}: ×{estimate(body) / here if here else math.inf:.2f})", changed
+        yield (
+            f"{target}: a{material} {body.concrete} ({act}: ×{estimate(body) / here if here else math.inf:.2f})",
+            changed,
+        )

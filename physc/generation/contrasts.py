@@ -37,5 +37,7 @@ def contrasts(problem: Problem, ledger: Ledger, layout, attempt) -> tuple[str | 
         solved = sum(bool(p.trace.solved) for p in plays)
         if solved:
             return settings.CONTRAST_SOLVES, ()
-        notes.append(f"{term.text or f'contrast({contrast}, {counterpart})'}: {contrast} acted on as {counterpart} solves 0 of {len(plays)} plays")
+        notes.append(
+            f"{term.text or f'contrast({contrast}, {counterpart})'}: {contrast} acted on as {counterpart} solves 0 of {len(plays)} plays"
+        )
     return None, tuple(notes)

@@ -70,16 +70,24 @@ def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]
     pairs: list[tuple[str, str]] = []
     if margin.index is not None:
         actor = interactions[margin.index].objects[0] if interactions[margin.index].objects else None
-        pushed = [j for j in range(margin.index) if interactions[j].name == "hit" and interactions[j].objects[1:2] == (actor,)]
+        pushed = [
+            j for j in range(margin.index) if interactions[j].name == "hit" and interactions[j].objects[1:2] == (actor,)
+        ]
         for term in [interactions[j] for j in pushed[-1:]] + list(interactions[margin.index : margin.index + 2]):
             names |= set(term.objects)
-            if term.name in ("hit", "fall", "touch", "destroy") and len(term.objects) > 1 and tuple(term.objects[:2]) not in pairs:
+            if (
+                term.name in ("hit", "fall", "touch", "destroy")
+                and len(term.objects) > 1
+                and tuple(term.objects[:2]) not in pairs
+            ):
                 pairs.append(tuple(term.objects[:2]))
         return names, pairs
     restriction = next((r for r in problem.scenario.restrictions if r.text == margin.term), None)
     if restriction is not None:
         names |= set(restriction.objects)
-        names |= {t.objects[1] for t in interactions if t.name in ("roll", "slide") and t.objects[0] == restriction.objects[0]}
+        names |= {
+            t.objects[1] for t in interactions if t.name in ("roll", "slide") and t.objects[0] == restriction.objects[0]
+        }
     return names, pairs
 
 
@@ -121,7 +129,9 @@ class Coordinates:
         supports = problem.supports
         # What never moves: the player's object, the ground and obstacles; a support moves only
         # with what it holds.
-        fixed = set(problem.players) | {o.name for o in layout.objects if o.concrete in placing.GROUND or o.role == "obstacle"}
+        fixed = set(problem.players) | {
+            o.name for o in layout.objects if o.concrete in placing.GROUND or o.role == "obstacle"
+        }
         groups = structures(layout)
         axes = []
         if problem.domain.actions.nudged(action, 1) is not None:
@@ -143,13 +153,17 @@ class Coordinates:
                     if beyond is not None:
                         axes.append(Coordinate("length", name, frozenset(beyond), reach, sign, name))
                         break
-                if placed.concrete == getattr(rules, "inclined", None) and not any(b == name for b in supports.support_of.values()):
+                if placed.concrete == getattr(rules, "inclined", None) and not any(
+                    b == name for b in supports.support_of.values()
+                ):
                     axes.append(Coordinate("slope", name, frozenset((name,)), settings.raise_turn))
             options = problem.domain.search.bodies(placed, problem.scenario)
             kinds = {(o.concrete, o.material): o for o in options}
             if len(kinds) > 1 and (placed.concrete, placed.material) in kinds:
                 ranked = sorted(kinds.values(), key=problem.domain.search.mass)
-                current = next(i for i, o in enumerate(ranked) if (o.concrete, o.material) == (placed.concrete, placed.material))
+                current = next(
+                    i for i, o in enumerate(ranked) if (o.concrete, o.material) == (placed.concrete, placed.material)
+                )
                 axes.append(Coordinate("body", name, frozenset((name,)), 1.0, bodies=tuple(ranked), current=current))
         for a, b in pairs:
             if a not in objects or b not in objects or b in fixed:
@@ -219,7 +233,10 @@ class Coordinates:
                 continue
             if axis.kind == "body":
                 chosen = axis.body(amount)
-                if (chosen.concrete, chosen.material) != (axis.bodies[axis.current].concrete, axis.bodies[axis.current].material):
+                if (chosen.concrete, chosen.material) != (
+                    axis.bodies[axis.current].concrete,
+                    axis.bodies[axis.current].material,
+                ):
                     bodies[axis.name] = chosen
                     notes.append(axis.text(amount))
                 continue
@@ -244,7 +261,13 @@ class Coordinates:
             changes = {}
             if o.name in bodies:  # on the same bottom, centred where it stood
                 body = bodies[o.name]
-                changes.update(concrete=body.concrete, material=body.material, width=body.width, height=body.height, y=round(o.y - o.height / 2 + body.height / 2 + dy, 5))
+                changes.update(
+                    concrete=body.concrete,
+                    material=body.material,
+                    width=body.width,
+                    height=body.height,
+                    y=round(o.y - o.height / 2 + body.height / 2 + dy, 5),
+                )
                 dy = 0.0
             if o.name in stretch:
                 grow, sign = stretch[o.name]

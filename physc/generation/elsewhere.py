@@ -34,7 +34,11 @@ class Elsewhere:
 
     def text(self) -> str:
         link = f"; weakest link {self.weakest.text()}" if self.weakest is not None else ""
-        how = "built again there by the search's stages from one of the best layouts" if self.built else "the best layout, replayed"
+        how = (
+            "built again there by the search's stages from one of the best layouts"
+            if self.built
+            else "the best layout, replayed"
+        )
         return (
             f"in the world '{self.world}', {how}, realises {self.matched} of the {self.total} interactions{link}: "
             f"--world {self.world} may carry this scenario (physc worlds describes it)"
@@ -63,7 +67,9 @@ def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int 
         try:
             for _, level, action, placed in furthest:
                 for tried in [action] + [a for a in _candidates(there, level, scenario) if a != action]:
-                    found = _judged(there, scenario, there.play(level, tried, scenario, search_seconds(there)), best, total, here)
+                    found = _judged(
+                        there, scenario, there.play(level, tried, scenario, search_seconds(there)), best, total, here
+                    )
                     if found is not None:
                         return found
                 built = _built(there, scenario, placed, accept)

@@ -41,7 +41,17 @@ def obstruct(problem: Problem, ledger: Ledger, layout, solution: Attempt) -> tup
             culprit = offending(problem, ledger, layout, restriction)
             if culprit is None:
                 break
-            blocked = block(problem, ledger, layout, culprit, restriction.objects[0], solution, BACKS, lambda a: breaks(a, restriction), len(added))
+            blocked = block(
+                problem,
+                ledger,
+                layout,
+                culprit,
+                restriction.objects[0],
+                solution,
+                BACKS,
+                lambda a: breaks(a, restriction),
+                len(added),
+            )
             if blocked is None:
                 return None
             layout, note = blocked
@@ -60,7 +70,9 @@ def offending(problem: Problem, ledger: Ledger, layout, restriction) -> Attempt 
     return None
 
 
-def block(problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: str, solution: Attempt, backs, bad, count: int):
+def block(
+    problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: str, solution: Attempt, backs, bad, count: int
+):
     """(`layout` with an obstacle across `actor`'s flight in `offending` after which the
     solution still works and `bad` no longer holds of the offending action, its
     description), or None."""
@@ -78,7 +90,17 @@ def block(problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: s
             continue
         x, y, vx, vy = at
         angle = (math.degrees(math.atan2(vy, vx)) + 180.0) % 180.0 - 90.0  # across the flight
-        obstacle = PlacedObject(name, "obstacle", blocker, None, round(x, 5), round(y, 5), round(angle, 3), problem.domain.search.blocker_length, problem.domain.search.blocker_thickness)
+        obstacle = PlacedObject(
+            name,
+            "obstacle",
+            blocker,
+            None,
+            round(x, 5),
+            round(y, 5),
+            round(angle, 3),
+            problem.domain.search.blocker_length,
+            problem.domain.search.blocker_thickness,
+        )
         candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
         if not placing.consistent(candidate, problem.parameters, {name}):
             continue
@@ -106,7 +128,9 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
     that solve the task), each by an obstacle that keeps the solution holding up, at most
     `shortcuts` tried; and the obstacles' descriptions. `count`: obstacles so far."""
     lead = problem.interactions[0].objects
-    first = lead[1] if len(lead) > 1 else next(iter(problem.domain.reach_targets(problem.scenario)), None)  # (after a tap: what the bird hits)
+    first = (
+        lead[1] if len(lead) > 1 else next(iter(problem.domain.reach_targets(problem.scenario)), None)
+    )  # (after a tap: what the bird hits)
     actor = next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
     added: list[str] = []
     if problem.domain.search.blocker is None or actor is None:
@@ -123,7 +147,9 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
                 continue
             left -= 1
             shortcut = lambda a: a.trace.solved and not a.fidelity.valid  # noqa: E731
-            blocked = block(problem, ledger, layout, attempt, actor, solution, SHORTCUT_BACKS, shortcut, count + len(added))
+            blocked = block(
+                problem, ledger, layout, attempt, actor, solution, SHORTCUT_BACKS, shortcut, count + len(added)
+            )
             if blocked is not None and holds_up(problem, ledger, solution, blocked[0]):
                 layout = blocked[0]
                 added.append(blocked[1])
@@ -140,7 +166,9 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
             candidate = attrs.evolve(layout, objects=layout.objects + (obj,))
             if not placing.consistent(candidate, problem.parameters, {obj.name}):
                 continue
-            if not problem.domain.actions.valid(problem.level_of(candidate), solution.action):  # it covers the player's action
+            if not problem.domain.actions.valid(
+                problem.level_of(candidate), solution.action
+            ):  # it covers the player's action
                 continue
             if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
                 continue
@@ -149,7 +177,10 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
             if not holds_up(problem, ledger, solution, candidate):
                 continue
             level = problem.level_of(candidate)
-            if any(replayed(problem, ledger, level, action).trace.solved for _, action in problem.domain.search.actions_at(level, obj.name)):
+            if any(
+                replayed(problem, ledger, level, action).trace.solved
+                for _, action in problem.domain.search.actions_at(level, obj.name)
+            ):
                 continue
             layout = candidate
             added.append(obj.name)

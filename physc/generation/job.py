@@ -46,9 +46,20 @@ class Job:
         made with others is made again)."""
         run = self.settings
         return {
-            "time_budget": run.time_budget, "layouts": run.layouts, "clause_budget": run.clause_budget, "min_robustness": run.min_robustness,
-            "validate": run.validate, "acceptance": run.acceptance, "picture": self.picture, "accidental": self.accidental, "world": self.world,
-            "backend": self.backend, "verify_backend": run.verify_backend, "scenario": self.fingerprint, "physc": __version__, "code": self.code,
+            "time_budget": run.time_budget,
+            "layouts": run.layouts,
+            "clause_budget": run.clause_budget,
+            "min_robustness": run.min_robustness,
+            "validate": run.validate,
+            "acceptance": run.acceptance,
+            "picture": self.picture,
+            "accidental": self.accidental,
+            "world": self.world,
+            "backend": self.backend,
+            "verify_backend": run.verify_backend,
+            "scenario": self.fingerprint,
+            "physc": __version__,
+            "code": self.code,
         }
 
     def target(self):
@@ -68,10 +79,16 @@ def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[
     run = settings.get("settings") or RunSettings()
     engines = tuple(n for n in (settings.get("backend", DEFAULT_BACKEND), run.verify_backend) if n)
     for path, scenario, source in scenarios:
-        world = world_name(bound(load_domain(scenario.domain), settings.get("world") or None))  # WorldError: not this domain's
+        world = world_name(
+            bound(load_domain(scenario.domain), settings.get("world") or None)
+        )  # WorldError: not this domain's
         common = dict(
-            settings, world=world, domain=scenario.domain, fingerprint=scenario_fingerprint(scenario),
-            code=code_fingerprint(scenario.domain, engines), source=source,
+            settings,
+            world=world,
+            domain=scenario.domain,
+            fingerprint=scenario_fingerprint(scenario),
+            code=code_fingerprint(scenario.domain, engines),
+            source=source,
         )
         jobs += [Job(path, scenario.name, seed + index, **common) for index in range(tasks)]
     return jobs, problems

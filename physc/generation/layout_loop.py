@@ -86,7 +86,9 @@ class LayoutLoop:
             places.append((self.domain, self.settings.verify_backend))
         spent = 0
         for domain, other in places:
-            check = verify(domain, self.scenario, parts.level, parts.solution, other or domain.backend.name, noisy=replays)
+            check = verify(
+                domain, self.scenario, parts.level, parts.solution, other or domain.backend.name, noisy=replays
+            )
             spent += check.simulations
             if not check.passes(needed):
                 if other is not None:
@@ -94,7 +96,9 @@ class LayoutLoop:
                 else:
                     where = check.failed[0] if check.failed else domain.world.name
                     why = f"the solution fails physc verify in the world '{where}'"
-                return attrs.evolve(result, satisfied=False, parts=None, simulations=result.simulations + spent, given_up=why, nearest=0)
+                return attrs.evolve(
+                    result, satisfied=False, parts=None, simulations=result.simulations + spent, given_up=why, nearest=0
+                )
         return attrs.evolve(result, simulations=result.simulations + spent)
 
     def run(self, placements: Iterator) -> Generated:
@@ -148,10 +152,14 @@ class LayoutLoop:
                     best, stopped = result.best, result.stopped
                 for term, count, why in result.lost:
                     lost.setdefault(term, [0, why])[0] += count
-                if result.weakest is not None and (weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)):
+                if result.weakest is not None and (
+                    weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)
+                ):
                     weakest = result.weakest
                 if result.furthest is not None:
-                    furthest = sorted(furthest + [result.furthest], key=lambda play: play[0], reverse=True)[: elsewhere.PLAYS]
+                    furthest = sorted(furthest + [result.furthest], key=lambda play: play[0], reverse=True)[
+                        : elsewhere.PLAYS
+                    ]
                 if result.satisfied:
                     failure, used = None, placed
                     break
@@ -162,7 +170,11 @@ class LayoutLoop:
                 if result.nearest >= self.min_robustness:
                     fragile.append((-result.nearest, layouts, placed))
                 if self.progress is not None:
-                    self.progress(Progress(layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)))
+                    self.progress(
+                        Progress(
+                            layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)
+                        )
+                    )
                 if layouts >= self.settings.layouts:
                     failure = Infeasible(
                         "satisfy",
@@ -212,7 +224,14 @@ class LayoutLoop:
         )
 
     def explained(
-        self, failure: Infeasible, nearest: int, given_up: dict, best: int = 0, stopped: str = "", lost: dict | None = None, weakest=None,
+        self,
+        failure: Infeasible,
+        nearest: int,
+        given_up: dict,
+        best: int = 0,
+        stopped: str = "",
+        lost: dict | None = None,
+        weakest=None,
         other=None,
     ) -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
@@ -229,7 +248,9 @@ class LayoutLoop:
         if lost and best >= len(interactions):  # every link was made, but not robustly: say which one noise breaks
             term, (count, why) = max(lost.items(), key=lambda item: item[1][0])
             total = sum(n for n, _ in lost.values())
-            message += f"; of the {total} noisy replays that failed, {count} lost `{term}` first" + (f" ({why})" if why else "")
+            message += f"; of the {total} noisy replays that failed, {count} lost `{term}` first" + (
+                f" ({why})" if why else ""
+            )
         if weakest is not None and best >= len(interactions):
             message += f"; the weakest link was `{weakest.term}`: best margin {weakest.value:+.3g} {weakest.unit} ({weakest.what})"
         if nearest:

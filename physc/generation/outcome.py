@@ -10,7 +10,6 @@ from __future__ import annotations
 import attrs
 
 
-
 @attrs.frozen
 class Parts:
     """The parts of a task that a satisfied layout gives: each field is the Task's field of the
@@ -27,8 +26,12 @@ class Parts:
     repairs: tuple[str, ...]
     obstacles: tuple[str, ...]
     distractors: tuple[str, ...]
-    acceptance: dict | None = None  # what random actions showed (the domain's evaluation's `acceptance`), if the domain has a rule
-    margins: dict | None = None  # the links' margins: the weakest over the noisy replays, each as played (search.margins_record)
+    acceptance: dict | None = (
+        None  # what random actions showed (the domain's evaluation's `acceptance`), if the domain has a rule
+    )
+    margins: dict | None = (
+        None  # the links' margins: the weakest over the noisy replays, each as played (search.margins_record)
+    )
 
 
 @attrs.frozen

@@ -32,8 +32,8 @@ from physc.compiler.to_dimension_graphs import ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.domains import world_name
 from physc.dsl.scenario import ScenarioIR
-from physc.generation.run_settings import RunSettings
 from physc.generation.layout_loop import LayoutLoop
+from physc.generation.run_settings import RunSettings
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 
@@ -46,7 +46,15 @@ class Placed:
 
 
 class Pipeline:
-    def __init__(self, domain, scenario: ScenarioIR, seed: int = 0, settings: RunSettings = RunSettings(), source: str = "", progress=None):
+    def __init__(
+        self,
+        domain,
+        scenario: ScenarioIR,
+        seed: int = 0,
+        settings: RunSettings = RunSettings(),
+        source: str = "",
+        progress=None,
+    ):
         self.domain = domain
         self.scenario = scenario
         self.seed = seed
@@ -74,7 +82,9 @@ class Pipeline:
             with budget.deadline(self.deadline):
                 yield
         except budget.OutOfTime:
-            raise Infeasible(stage, f"the time budget of {self.settings.time_budget:g} s ran out", budget=Exhausted.TIME) from None
+            raise Infeasible(
+                stage, f"the time budget of {self.settings.time_budget:g} s ran out", budget=Exhausted.TIME
+            ) from None
 
     @functools.cached_property
     def layout_graph(self) -> LayoutGraph:

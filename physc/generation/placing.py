@@ -31,7 +31,9 @@ FIXED_ROLES = ("support", "obstacle", "player")  # roles of what the search neve
 
 def box(placed) -> tuple[float, float, float, float]:
     """(left, bottom, right, top) of a placed object's outline."""
-    points = [p for k, p in five_points(placed.x, placed.y, placed.width, placed.height, placed.rotation).items() if k != "c"]
+    points = [
+        p for k, p in five_points(placed.x, placed.y, placed.width, placed.height, placed.rotation).items() if k != "c"
+    ]
     xs, ys = [p.real for p in points], [p.imag for p in points]
     return min(xs), min(ys), max(xs), max(ys)
 
@@ -46,7 +48,12 @@ def consistent(layout, parameters, moved, resting=frozenset()) -> bool:
     for name, o in placed.items():
         if name in moved:
             left, bottom, right, top = box(o)
-            if left < parameters.left - 1e-6 or right > parameters.right + 1e-6 or bottom < parameters.bottom - 1e-6 or top > parameters.top + 1e-6:
+            if (
+                left < parameters.left - 1e-6
+                or right > parameters.right + 1e-6
+                or bottom < parameters.bottom - 1e-6
+                or top > parameters.top + 1e-6
+            ):
                 return False
         if o.concrete in GROUND:
             continue
@@ -85,9 +92,15 @@ class Supports:
             carried[s] = carried.get(s, 0) + 1
         roles = {o.name: o.role for o in layout.objects}
         concretes = {o.name: o.concrete for o in layout.objects}
-        own = {a: s for a, s in support_of.items() if roles.get(s) == "support" and carried[s] == 1 and concretes[s] not in GROUND}
+        own = {
+            a: s
+            for a, s in support_of.items()
+            if roles.get(s) == "support" and carried[s] == 1 and concretes[s] not in GROUND
+        }
         ground = {a for a, s in support_of.items() if concretes.get(s) in GROUND or s not in roles}
-        ground |= {o.name for o in layout.objects if o.name not in support_of and abs(box(o)[1] - parameters.bottom) < 1e-3}
+        ground |= {
+            o.name for o in layout.objects if o.name not in support_of and abs(box(o)[1] - parameters.bottom) < 1e-3
+        }
         ground = frozenset(ground)
         fixed = frozenset(n for n, r in roles.items() if r in FIXED_ROLES or concretes[n] in GROUND)
         return cls(support_of, own, ground, fixed)
@@ -113,7 +126,9 @@ def shifted(layout, members: set[str], dx: float, dy: float, supports: Supports)
         dy = 0.0
     if abs(dx) < 1e-6 and abs(dy) < 1e-6:
         return None
-    objects = tuple(attrs.evolve(o, x=round(o.x + dx, 5), y=round(o.y + dy, 5)) if o.name in members else o for o in layout.objects)
+    objects = tuple(
+        attrs.evolve(o, x=round(o.x + dx, 5), y=round(o.y + dy, 5)) if o.name in members else o for o in layout.objects
+    )
     return attrs.evolve(layout, objects=objects)
 
 
@@ -164,7 +179,12 @@ def landings(faller_size, target, rows, scale: float, behind: float | None = Non
     wa, ha = faller_size
     top = target.y + target.height / 2 + ha / 2
     landing = next(
-        ((i, x * scale) for i, (x, y, _, _, vy, _) in enumerate(rows) if not math.isnan(x) and vy < -0.1 and y * scale <= top), None
+        (
+            (i, x * scale)
+            for i, (x, y, _, _, vy, _) in enumerate(rows)
+            if not math.isnan(x) and vy < -0.1 and y * scale <= top
+        ),
+        None,
     )
     if landing is None:
         return
@@ -176,7 +196,9 @@ def landings(faller_size, target, rows, scale: float, behind: float | None = Non
             yield step, x + share * reach, target.y
 
 
-def approach(trace, objects, sizes: dict, scale: float, margin: float, until: int | None = None, centre_only: str | None = None) -> int | None:
+def approach(
+    trace, objects, sizes: dict, scale: float, margin: float, until: int | None = None, centre_only: str | None = None
+) -> int | None:
     """The first row of `trace` (before `until`) at which one of its bodies comes within
     `margin` of one of `objects` (their boxes), or None; a body is a disc of half its larger
     side (`sizes`: name → (width, height)), but `centre_only`'s centre only has to stay out."""
@@ -186,7 +208,10 @@ def approach(trace, objects, sizes: dict, scale: float, margin: float, until: in
         radius, gap = (0.0, 0.0) if name == centre_only else (max(sizes.get(name, (0.0, 0.0))) / 2, margin)
         x, y = rows[:, index, 0], rows[:, index, 1]
         for obj in objects:
-            near = np.flatnonzero((np.abs(x - obj.x) - obj.width / 2 - radius - gap < 0) & (np.abs(y - obj.y) - obj.height / 2 - radius - gap < 0))
+            near = np.flatnonzero(
+                (np.abs(x - obj.x) - obj.width / 2 - radius - gap < 0)
+                & (np.abs(y - obj.y) - obj.height / 2 - radius - gap < 0)
+            )
             if len(near) and (first is None or near[0] < first):
                 first = int(near[0])
     return first

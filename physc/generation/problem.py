@@ -52,13 +52,25 @@ class Problem:
     @classmethod
     def of(cls, domain, scenario, layout, accept: int, run: RunSettings = RunSettings()) -> Problem:
         vocabulary = domain.vocabulary
-        carried = [tuple(t.objects[:2]) for t in scenario.restrictions if (term := vocabulary.term(t.name)) is not None and term.carries]
+        carried = [
+            tuple(t.objects[:2])
+            for t in scenario.restrictions
+            if (term := vocabulary.term(t.name)) is not None and term.carries
+        ]
         entry = introduced(layout, scenario.interactions, carried)
         starts = tuple(domain.actions.starts(scenario))
         return cls(
-            domain, scenario, layout, domain.search.settings or SETTINGS, placing.Supports.of(layout, scenario, domain.layout_parameters),
-            entry, tuple(stages(scenario.interactions, entry, starts)),
-            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player), accept, run, starts,
+            domain,
+            scenario,
+            layout,
+            domain.search.settings or SETTINGS,
+            placing.Supports.of(layout, scenario, domain.layout_parameters),
+            entry,
+            tuple(stages(scenario.interactions, entry, starts)),
+            frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player),
+            accept,
+            run,
+            starts,
         )
 
     @property
@@ -91,7 +103,9 @@ class Problem:
 
     def heading_after(self, name: str, index: int) -> str | None:
         """The way `name` next rolls or slides, from interaction `index` on."""
-        term = next((t for t in self.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name), None)
+        term = next(
+            (t for t in self.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name), None
+        )
         return None if term is None else term.directions[0]
 
 
@@ -105,7 +119,9 @@ class Ledger:
     furthest_layout: object | None = None  # the layout it was played in
     nearest: int = 0  # most noisy replays passed by a working action given up as fragile
     tried: int = 0  # working actions put through the noisy replays
-    lost: dict = attrs.field(factory=dict)  # declared term → (failed noisy replays that lost it first, what the first shows)
+    lost: dict = attrs.field(
+        factory=dict
+    )  # declared term → (failed noisy replays that lost it first, what the first shows)
     variants_tried: int = 0
     screened: list = attrs.field(factory=list)  # labels of the first stage's actions that came nearest
     failed: dict = attrs.field(factory=dict)  # stage → the best attempt of a variant that failed there
@@ -119,13 +135,20 @@ class Ledger:
         return self.evaluator.simulations
 
 
-def simulate(problem: Problem, ledger: Ledger, layout, action, seconds: float | None = None, resume: Snapshot | None = None) -> Attempt:
+def simulate(
+    problem: Problem, ledger: Ledger, layout, action, seconds: float | None = None, resume: Snapshot | None = None
+) -> Attempt:
     """`action` played in `layout`'s level for `seconds` (default: the search's, `Problem.seconds`), from the
     snapshot `resume` if given, judged against the scenario; run once while among the last
     KEPT_SIMULATIONS asked for. The ledger notes how far it got."""
     key = (seconds, layout.objects, action, resume is not None and resume.step)
     options = {} if resume is None else {"resume": resume}
-    trace = ledger.evaluator.kept(key, lambda: problem.domain.play(problem.level_of(layout), action, problem.scenario, seconds or problem.seconds, **options))
+    trace = ledger.evaluator.kept(
+        key,
+        lambda: problem.domain.play(
+            problem.level_of(layout), action, problem.scenario, seconds or problem.seconds, **options
+        ),
+    )
     attempt = Attempt("", action, trace, fidelity(problem.scenario, trace))
     ledger.best = max(ledger.best, attempt.fidelity.matched)
     if ledger.furthest is None or attempt.fidelity.score > ledger.furthest.fidelity.score:

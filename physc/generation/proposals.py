@@ -49,9 +49,13 @@ def offered(problem: Problem, layout, failed, start: int):
         yield from to_the_edge(problem, layout, objects, declared.objects[0], index, start)
         yield from bodies_for(problem, layout, objects, declared.objects[0], "fall", start)
     elif declared.name in ("roll", "slide"):
-        yield from closer(problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
+        yield from closer(
+            problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start
+        )
         yield from bodies_for(problem, layout, objects, declared.objects[0], declared.name, start)
-        yield from next_to(problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start)
+        yield from next_to(
+            problem, layout, objects, declared.objects[0], declared.objects[1], declared.directions[0], start
+        )
     elif declared.name == "destroy":
         yield from bodies_for(problem, layout, objects, declared.objects[0], "destroy", start)
     elif declared.name == "hit" and index == 0:
@@ -158,7 +162,12 @@ def closer(problem: Problem, layout, objects, mover: str, surface: str, heading:
     """`surface`, which `mover` must roll or slide onto from the support it rests on, and the
     world beyond it, brought back to the end of that support: level with it, or a step down."""
     support = problem.supports.support_of.get(mover)
-    if heading not in ("left", "right") or support in (None, surface) or surface not in objects or support not in objects:
+    if (
+        heading not in ("left", "right")
+        or support in (None, surface)
+        or surface not in objects
+        or support not in objects
+    ):
         return
     sign = 1.0 if heading == "right" else -1.0
     s_left, _, s_right, s_top = placing.box(objects[support])
@@ -173,11 +182,16 @@ def closer(problem: Problem, layout, objects, mover: str, surface: str, heading:
     dx = -sign * (gap - SEAM)
     for drop in STEPS_DOWN:
         dy = (s_top - drop) - t_top
-        moved = {n: attrs.evolve(objects[n], x=round(objects[n].x + dx, 5), y=round(objects[n].y + dy, 5)) for n in names}
+        moved = {
+            n: attrs.evolve(objects[n], x=round(objects[n].x + dx, 5), y=round(objects[n].y + dy, 5)) for n in names
+        }
         candidate = _with(layout, moved)
         if _kept(problem, candidate, start, set(names)):
             step = f", {drop:g} lower" if drop else ", level"
-            yield f"{mover} onto {surface}: {surface} and the world beyond brought to the end of {support}{step}", candidate
+            yield (
+                f"{mover} onto {surface}: {surface} and the world beyond brought to the end of {support}{step}",
+                candidate,
+            )
 
 
 def next_to(problem: Problem, layout, objects, mover: str, surface: str, heading: str, start: int):
@@ -213,8 +227,9 @@ def exposed(problem: Problem, layout, objects, declared, start: int):
             continue
         if new_right - new_left < SHORTEST:
             continue
-        cut = attrs.evolve(objects[support], x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5))
+        cut = attrs.evolve(
+            objects[support], x=round((new_left + new_right) / 2, 5), width=round(new_right - new_left, 5)
+        )
         candidate = _with(layout, {support: cut})
         if _kept(problem, candidate, start, {target, support}, {target}):
             yield f"{declared.text}: {support} no longer shields {target}", candidate
-

@@ -69,9 +69,15 @@ def climb(
     # A flat generation (every candidate as far from the link as the last) is common where a
     # link is far from happening: the search goes on, with CMA-ES's step widened, until its budget.
     options = {
-        "bounds": [-1, 1], "popsize": settings.raise_population, "seed": np.nan, "verbose": -9, "maxfevals": evaluations,
+        "bounds": [-1, 1],
+        "popsize": settings.raise_population,
+        "seed": np.nan,
+        "verbose": -9,
+        "maxfevals": evaluations,
         "randn": lambda *shape: generator.standard_normal(shape),
-        "tolflatfitness": evaluations, "tolfun": 0, "tolfunhist": 0,
+        "tolflatfitness": evaluations,
+        "tolfun": 0,
+        "tolfunhist": 0,
         # No cap on the step below the bounds' own (pycma 4.5's cap, a third of the bound range,
         # fails in a one-coordinate search when the step reaches it).
         "maxstd_boundrange": np.inf,

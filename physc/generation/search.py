@@ -93,7 +93,11 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     if not domain.actions.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
         return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
-    judged = domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)) if problem.run.acceptance else None
+    judged = (
+        domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger))
+        if problem.run.acceptance
+        else None
+    )
     if judged is not None and not judged.accepted:
         return given_up(problem, ledger, judged.reason or settings.NOT_ACCEPTED)  # the benchmark's own words
     solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
@@ -110,7 +114,9 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
         acceptance=None if judged is None else judged.record(),
         margins=margins_record(problem, ledger, trace, strong, steps),
     )
-    seconds = {"distract": validating - distracting, "validate": accepting - validating} | ({} if judged is None else {"accept": time.perf_counter() - accepting})
+    seconds = {"distract": validating - distracting, "validate": accepting - validating} | (
+        {} if judged is None else {"accept": time.perf_counter() - accepting}
+    )
     return Outcome(True, ledger.simulations, parts, seconds=seconds, best=ledger.best, stopped=stopped(problem, ledger))
 
 
@@ -138,9 +144,17 @@ def stopped(problem: Problem, ledger: Ledger) -> str:
 def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
     furthest = ledger.furthest
     return Outcome(
-        False, ledger.simulations, nearest=ledger.nearest, given_up=why, best=ledger.best, stopped=stopped(problem, ledger),
-        lost=lost_links(ledger), weakest=ledger.weakest,
-        furthest=None if furthest is None else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action, problem.placed),
+        False,
+        ledger.simulations,
+        nearest=ledger.nearest,
+        given_up=why,
+        best=ledger.best,
+        stopped=stopped(problem, ledger),
+        lost=lost_links(ledger),
+        weakest=ledger.weakest,
+        furthest=None
+        if furthest is None
+        else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action, problem.placed),
     )
 
 

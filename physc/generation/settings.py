@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import attrs
 
-NOISE_STREAMS = ("robustness", "confirmation")  # the replays a solution is chosen for, and the fresh ones that confirm it
+NOISE_STREAMS = (
+    "robustness",
+    "confirmation",
+)  # the replays a solution is chosen for, and the fresh ones that confirm it
 
 # Why a layout is given up (`Outcome.given_up`), in the order of the search's steps.
 NO_ACTION = "no candidate action"

@@ -52,7 +52,15 @@ class Replays:
         return self.least + 0.1 * float(np.mean(self.scores)) if self.scores else 0.0
 
 
-def replays(problem: Problem, ledger: Ledger, attempt: Attempt, layout, stream: str = NOISE_STREAMS[0], action=None, count: bool = True) -> Replays:
+def replays(
+    problem: Problem,
+    ledger: Ledger,
+    attempt: Attempt,
+    layout,
+    stream: str = NOISE_STREAMS[0],
+    action=None,
+    count: bool = True,
+) -> Replays:
     """The domain's noisy replays of `attempt` (or of `action`, with the attempt's noise) in
     `layout`; replay r's noise is drawn from a generator named after the stream, the attempt's
     label and r. With `count`, each failed replay is counted against the link it lost (`lose`)."""
@@ -67,7 +75,11 @@ def replays(problem: Problem, ledger: Ledger, attempt: Attempt, layout, stream: 
         margins = domain.margins(problem.scenario, played.trace)
         valid = played.fidelity.valid
         passed += valid
-        scores.append(score(margins, total, played.fidelity.matched) if valid else min(score(margins, total, played.fidelity.matched), -1e-3))
+        scores.append(
+            score(margins, total, played.fidelity.matched)
+            if valid
+            else min(score(margins, total, played.fidelity.matched), -1e-3)
+        )
         read.append(margins)
         if not valid and count:
             lose(problem, ledger, played)
@@ -85,7 +97,11 @@ def lose(problem: Problem, ledger: Ledger, played: Attempt) -> None:
     term = interactions[k].text if k < len(interactions) else "the restrictions"
     count, why = ledger.lost.get(term, (0, None))
     if why is None:
-        why = why_stopped(problem.scenario, played.trace, played.fidelity) if k < len(interactions) else ", ".join(played.fidelity.violations)
+        why = (
+            why_stopped(problem.scenario, played.trace, played.fidelity)
+            if k < len(interactions)
+            else ", ".join(played.fidelity.violations)
+        )
     ledger.lost[term] = (count + 1, why)
 
 
@@ -142,7 +158,9 @@ def strengthen(problem: Problem, ledger: Ledger, node: Node) -> Strong | None:
     return None
 
 
-def confirmed(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Replays, raised: str = "") -> Strong | None:
+def confirmed(
+    problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Replays, raised: str = ""
+) -> Strong | None:
     """`attempt` in `layout` if it passes as many fresh replays as it must (the second stream)."""
     fresh = replays(problem, ledger, attempt, layout, NOISE_STREAMS[1])
     if fresh.passed < problem.accept:
@@ -195,7 +213,15 @@ def raised(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Re
         value = min(measured.value, own)
         better = attrs.evolve(attempt, action=action, trace=nominal.trace, fidelity=nominal.fidelity)
         holds = measured.passed >= problem.accept
-        return Candidate(candidate, action, notes, value, holds and min(measured.least, own) >= settings.raise_enough, holds, (better, measured))
+        return Candidate(
+            candidate,
+            action,
+            notes,
+            value,
+            holds and min(measured.least, own) >= settings.raise_enough,
+            holds,
+            (better, measured),
+        )
 
     def accept(candidate: Candidate) -> Strong | None:
         better, measured = candidate.found

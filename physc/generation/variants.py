@@ -20,7 +20,12 @@ from physc.generation.attempt import Attempt
 from physc.generation.problem import Ledger, Problem
 from physc.generation.stages import ChainStage, prefix
 
-ALONG = ("roll", "slide", "bounce", "destroy")  # terms whose second object is not met on the path (what it moves on, or what it already met)
+ALONG = (
+    "roll",
+    "slide",
+    "bounce",
+    "destroy",
+)  # terms whose second object is not met on the path (what it moves on, or what it already met)
 
 
 def variants(problem: Problem, ledger: Ledger, parent, stage: ChainStage):
@@ -32,7 +37,14 @@ def variants(problem: Problem, ledger: Ledger, parent, stage: ChainStage):
     if parent.attempts and stage.start < len(interactions):
         declared = interactions[stage.start]
         for lead, attempt in enumerate(parent.attempts[:2]):
-            offered.append((lead, itertools.islice(on_path(problem, parent.layout, declared, stage, attempt), problem.settings.places)))
+            offered.append(
+                (
+                    lead,
+                    itertools.islice(
+                        on_path(problem, parent.layout, declared, stage, attempt), problem.settings.places
+                    ),
+                )
+            )
     offered.append((0, iter([("", parent.layout)])))
     for lead, found in offered:
         for description, layout in found:
@@ -53,14 +65,17 @@ def repaired(problem: Problem, ledger: Ledger, parent, stage: ChainStage, seen: 
     base = parent.layout if depth == 0 else ledger.failed_layout.get(stage.index, parent.layout)
     lead = next((j for j, a in enumerate(parent.attempts) if a.label == failed.label), 0)
     changes = itertools.chain(
-        proposals.offered(problem, base, failed, stage.start), problem.domain.search.proposals(base, problem.scenario, failed, stage.start)
+        proposals.offered(problem, base, failed, stage.start),
+        problem.domain.search.proposals(base, problem.scenario, failed, stage.start),
     )
     for description, layout in itertools.islice(changes, problem.settings.proposals):
         if layout.objects in seen:
             continue
         seen.add(layout.objects)
         yield description, layout, lead
-        if depth < problem.settings.repair_depth and ledger.failed_layout.get(stage.index) is layout:  # nearer: change it further
+        if (
+            depth < problem.settings.repair_depth and ledger.failed_layout.get(stage.index) is layout
+        ):  # nearer: change it further
             yield from repaired(problem, ledger, parent, stage, seen, depth + 1)
             return
 
@@ -73,7 +88,9 @@ def with_bodies(problem: Problem, layout, parent, stage: ChainStage, lead: int):
         return
     declared = problem.interactions[stage.start]
     attempt = parent.attempts[min(lead, len(parent.attempts) - 1)]
-    for note, changed in itertools.islice(choosing.alternatives(problem, layout, declared, stage, attempt), problem.settings.bodies - 1):
+    for note, changed in itertools.islice(
+        choosing.alternatives(problem, layout, declared, stage, attempt), problem.settings.bodies - 1
+    ):
         yield note, changed
 
 
@@ -105,7 +122,11 @@ def on_path(problem: Problem, layout, declared, stage: ChainStage, attempt: Atte
         rows = trace.states[first:, trace.index(body), :]
         if declared.name != "fall":
             sideways = supports.sideways_only(target)
-            found = list(placing.hit_places(actor_size, objects[target], rows, declared.directions, sideways, problem.scale, settings))
+            found = list(
+                placing.hit_places(
+                    actor_size, objects[target], rows, declared.directions, sideways, problem.scale, settings
+                )
+            )
             if sideways and "above" in declared.directions:
                 found = list(placing.landings(actor_size, objects[target], rows, problem.scale)) + found
         else:
@@ -131,7 +152,9 @@ def on_path(problem: Problem, layout, declared, stage: ChainStage, attempt: Atte
         description = f"{declared.text}: {target} on its path, at ({where.x:.2f}, {where.y:.2f})"
         if pushed is not None:  # it falls next: its ledge ending at it first, so that the push takes it over
             support = supports.support_of[target]
-            edged = proposals.ledge_ends_at(problem, moved, {o.name: o for o in moved.objects}, target, support, pushed, stage.start)
+            edged = proposals.ledge_ends_at(
+                problem, moved, {o.name: o for o in moved.objects}, target, support, pushed, stage.start
+            )
             if edged is not None:
                 yield f"{description}, {support} ending at it", edged
         yield description, moved

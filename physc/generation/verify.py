@@ -50,7 +50,11 @@ class Verification:
         if self.noisy_run:
             parts.append(f"{self.noisy_passed} of {self.noisy_run} noisy replays realise it")
         if self.readings > 1:
-            parts.append(f"in each of the {self.readings} readings of the world that change a replay" if not self.failed else f"{len(self.failed)} of the readings fail")
+            parts.append(
+                f"in each of the {self.readings} readings of the world that change a replay"
+                if not self.failed
+                else f"{len(self.failed)} of the readings fail"
+            )
         return f"in {self.backend}: " + ", ".join(parts)
 
 
@@ -145,6 +149,9 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
         passed += all(c.valid for _, _, c in replays)
         rng.setstate(after[0])
     if not why and passed < noisy:
-        why = f"{passed} of {noisy} noisy replays realise the sequence" + (f" in every reading (failing in: {'; '.join(failed)})" if failed else "")
-    return Verification(backend, solved, realised, passed, noisy, trace.sequence(), why, most, tuple(failed), simulations)
-
+        why = f"{passed} of {noisy} noisy replays realise the sequence" + (
+            f" in every reading (failing in: {'; '.join(failed)})" if failed else ""
+        )
+    return Verification(
+        backend, solved, realised, passed, noisy, trace.sequence(), why, most, tuple(failed), simulations
+    )

@@ -40,7 +40,9 @@ def complete(place: Place, snippets: bool) -> list[types.CompletionItem]:
         return []
     if role == context.OBJECT_TERM:
         return [
-            types.CompletionItem(label=t.name, kind=Kind.Class, detail=" | ".join(t.concrete), documentation=t.noun or None)
+            types.CompletionItem(
+                label=t.name, kind=Kind.Class, detail=" | ".join(t.concrete), documentation=t.noun or None
+            )
             for t in vocabulary.object_terms
         ]
     if role in (context.CONCRETE, context.MATERIAL):
@@ -48,7 +50,10 @@ def complete(place: Place, snippets: bool) -> list[types.CompletionItem]:
         names = term.allowed if term else tuple(c.name for c in vocabulary.concrete_objects)
         if role == context.CONCRETE:
             return [_concrete(vocabulary, name) for name in names]
-        return [types.CompletionItem(label=m, kind=Kind.EnumMember, detail="material") for m in vocabulary.materials(names, every=False)]
+        return [
+            types.CompletionItem(label=m, kind=Kind.EnumMember, detail="material")
+            for m in vocabulary.materials(names, every=False)
+        ]
     if role == context.TERM and place.section in ("interactions", "restrictions"):
         kind = INTERACTION if place.section == "interactions" else RESTRICTION
         return [_term(t, snippets) for t in vocabulary.terms if t.kind == kind]
@@ -63,13 +68,17 @@ def complete(place: Place, snippets: bool) -> list[types.CompletionItem]:
 def _keyword(word: str, snippet: str | None) -> types.CompletionItem:
     if snippet is None:
         return types.CompletionItem(label=word, kind=Kind.Keyword)
-    return types.CompletionItem(label=word, kind=Kind.Keyword, insert_text=snippet, insert_text_format=types.InsertTextFormat.Snippet)
+    return types.CompletionItem(
+        label=word, kind=Kind.Keyword, insert_text=snippet, insert_text_format=types.InsertTextFormat.Snippet
+    )
 
 
 def _concrete(vocabulary: Vocabulary, name: str) -> types.CompletionItem:
     concrete = vocabulary.concrete(name)
     detail = "static" if concrete.static else "dynamic"
-    return types.CompletionItem(label=name, kind=Kind.EnumMember, detail=detail, documentation=concrete.description or None)
+    return types.CompletionItem(
+        label=name, kind=Kind.EnumMember, detail=detail, documentation=concrete.description or None
+    )
 
 
 def _term(signature: TermSignature, snippets: bool) -> types.CompletionItem:
@@ -115,10 +124,16 @@ def _arguments(vocabulary: Vocabulary, place: Place, parameter: Parameter) -> li
         seen.add(name)
         term, concrete = object_concrete(vocabulary, place, name)
         if fits(concrete):
-            items.append(types.CompletionItem(label=name, kind=Kind.Variable, detail=term, sort_text=f"0{len(items):04d}"))
+            items.append(
+                types.CompletionItem(label=name, kind=Kind.Variable, detail=term, sort_text=f"0{len(items):04d}")
+            )
     for term in vocabulary.object_terms:  # then the names whose type the domain infers
         name = term.abbreviation or term.name
         if name not in seen and fits(term.concrete):
             seen.add(name)
-            items.append(types.CompletionItem(label=name, kind=Kind.Class, detail=f"a new {term.name}", sort_text=f"1{len(items):04d}"))
+            items.append(
+                types.CompletionItem(
+                    label=name, kind=Kind.Class, detail=f"a new {term.name}", sort_text=f"1{len(items):04d}"
+                )
+            )
     return items

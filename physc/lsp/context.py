@@ -95,7 +95,11 @@ def _scenario_start(text: str, offset: int) -> int | None:
     while True:
         line_start = text.rfind("\n", 0, line_end) + 1
         if _SCENARIO_WORD.search(text, line_start, line_end + 8):
-            keywords = [t.start for t in tokens(text, line_start, min(len(text), max(line_end, offset))) if t.kind == "SCENARIO" and t.start < offset]
+            keywords = [
+                t.start
+                for t in tokens(text, line_start, min(len(text), max(line_end, offset)))
+                if t.kind == "SCENARIO" and t.start < offset
+            ]
             if keywords:
                 return keywords[-1]
         if line_start == 0:

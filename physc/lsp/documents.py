@@ -43,7 +43,9 @@ class Snapshot:
     def lsp_diagnostic(self, diagnostic: Diagnostic) -> types.Diagnostic:
         message = diagnostic.message + (f"\nhelp: {diagnostic.help}" if diagnostic.help else "")
         related = [
-            types.DiagnosticRelatedInformation(location=types.Location(uri=self.uri, range=self.range(n.span)), message=n.message)
+            types.DiagnosticRelatedInformation(
+                location=types.Location(uri=self.uri, range=self.range(n.span)), message=n.message
+            )
             for n in diagnostic.notes
         ]
         return types.Diagnostic(
@@ -60,7 +62,9 @@ class Snapshot:
 
     def diagnostics_at(self, start: int, end: int) -> list[Diagnostic]:
         """The diagnostics whose span meets the offsets [start, end]."""
-        return [d for d in self.analysis.diagnostics if d.span is not None and d.span.start <= end and start <= d.span.end]
+        return [
+            d for d in self.analysis.diagnostics if d.span is not None and d.span.start <= end and start <= d.span.end
+        ]
 
 
 @attrs.define
@@ -75,7 +79,9 @@ class Document:
 def analyze_document(uri: str, text: str) -> Analysis:
     """`physc check`'s analysis of an editor's text."""
     if len(text) > MAX_SOURCE_BYTES or len(text.encode("utf-8", "surrogatepass")) > MAX_SOURCE_BYTES:
-        too_big = Diagnostic("E0001", f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads")
+        too_big = Diagnostic(
+            "E0001", f"cannot read the input: it is larger than {MAX_SOURCE_BYTES // 2**20} MiB, the most physc reads"
+        )
         return Analysis(uri, SourceText(uri, ""), None, (), (too_big,), ())
     if text.startswith("\ufeff"):
         text = " " + text[1:]
@@ -136,7 +142,9 @@ class Documents:
                 return known
             analysis = analyze_document(uri, text)
             document = self._open.get(uri)
-            made = document.positions if document is not None and document.text is text else None  # completion's, if any
+            made = (
+                document.positions if document is not None and document.text is text else None
+            )  # completion's, if any
             snapshot = Snapshot(uri, version, text, analysis, made or Positions(text, self.encoding))
             if document is not None and document.version == version:  # still open, still this version
                 self._latest[uri] = snapshot
@@ -145,6 +153,10 @@ class Documents:
     def latest(self, uri: str) -> Snapshot | None:
         """The analysis of the document's current text, if it was made; else None."""
         snapshot, document = self._latest.get(uri), self._open.get(uri)
-        if snapshot is None or document is None or (snapshot.version, snapshot.text) != (document.version, document.text):
+        if (
+            snapshot is None
+            or document is None
+            or (snapshot.version, snapshot.text) != (document.version, document.text)
+        ):
             return None
         return snapshot

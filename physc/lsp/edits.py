@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import difflib
 import re
-from typing import Callable, Sequence
+from collections.abc import Callable, Sequence
 
 from lsprotocol import types
 

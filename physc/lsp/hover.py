@@ -7,7 +7,7 @@ its message, help and the section of docs/errors.md about its code.
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 from physc import error_codes
 from physc.diagnostics import Diagnostic

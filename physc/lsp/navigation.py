@@ -64,12 +64,20 @@ def symbols(file: ast.File, to_range) -> list[types.DocumentSymbol]:
     found = []
     for scenario in file.scenarios:
         children = [
-            types.DocumentSymbol(name=d.name.text, detail=d.term.text, kind=Kind.Variable, range=to_range(d.span), selection_range=to_range(d.name.span))
+            types.DocumentSymbol(
+                name=d.name.text,
+                detail=d.term.text,
+                kind=Kind.Variable,
+                range=to_range(d.span),
+                selection_range=to_range(d.name.span),
+            )
             for d in scenario.objects
         ]
         for kind, terms in ((Kind.Event, scenario.interactions), (Kind.Property, scenario.restrictions)):
             children += [
-                types.DocumentSymbol(name=format_term(t), kind=kind, range=to_range(t.span), selection_range=to_range(t.name.span))
+                types.DocumentSymbol(
+                    name=format_term(t), kind=kind, range=to_range(t.span), selection_range=to_range(t.name.span)
+                )
                 for t in terms
             ]
         found.append(
@@ -83,4 +91,3 @@ def symbols(file: ast.File, to_range) -> list[types.DocumentSymbol]:
             )
         )
     return found
-

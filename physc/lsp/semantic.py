@@ -32,7 +32,13 @@ def tokens(file: ast.File, positions: Positions) -> types.SemanticTokens:
         first, last = positions.position(start), positions.position(end)
         if first.line != last.line:  # a token never spans lines
             continue
-        data += [first.line - line, first.character - (column if first.line == line else 0), last.character - first.character, TOKEN_TYPES.index(kind), modifiers]
+        data += [
+            first.line - line,
+            first.character - (column if first.line == line else 0),
+            last.character - first.character,
+            TOKEN_TYPES.index(kind),
+            modifiers,
+        ]
         line, column = first.line, first.character
     return types.SemanticTokens(data=data)
 

@@ -56,13 +56,17 @@ class PhyscServer(LanguageServer):
                 document = self.documents.current(uri)
                 if document is None:
                     return
-                snapshot = await loop.run_in_executor(self.checker, self.documents.snapshot, uri, document.version, document.text)
+                snapshot = await loop.run_in_executor(
+                    self.checker, self.documents.snapshot, uri, document.version, document.text
+                )
                 if uri in self.stale:
                     continue
                 if self.documents.latest(uri) is not snapshot:  # closed meanwhile
                     return
                 self.text_document_publish_diagnostics(
-                    types.PublishDiagnosticsParams(uri=uri, version=snapshot.version, diagnostics=snapshot.lsp_diagnostics())
+                    types.PublishDiagnosticsParams(
+                        uri=uri, version=snapshot.version, diagnostics=snapshot.lsp_diagnostics()
+                    )
                 )
                 return
         except Exception:  # a bug in physc: keep serving; the log says what happened
@@ -140,12 +144,19 @@ def build() -> PhyscServer:
     @guarded
     async def complete(ls: PhyscServer, params: types.CompletionParams):
         place = _place(ls, params.text_document.uri, params.position)
-        return None if place is None else types.CompletionList(is_incomplete=False, items=completion.complete(place, ls.snippets()))
+        return (
+            None
+            if place is None
+            else types.CompletionList(is_incomplete=False, items=completion.complete(place, ls.snippets()))
+        )
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     @guarded
     async def on_hover(ls: PhyscServer, params: types.HoverParams):
-        document, positions = ls.documents.current(params.text_document.uri), ls.documents.positions(params.text_document.uri)
+        document, positions = (
+            ls.documents.current(params.text_document.uri),
+            ls.documents.positions(params.text_document.uri),
+        )
         if document is None:
             return None
         text, offset = document.text, positions.offset(params.position)
@@ -196,7 +207,9 @@ def build() -> PhyscServer:
             return None  # physc fmt formats only what parses
         return edits.formatting(analysis.file, analysis.source, snapshot.text)
 
-    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix]))
+    @server.feature(
+        types.TEXT_DOCUMENT_CODE_ACTION, types.CodeActionOptions(code_action_kinds=[types.CodeActionKind.QuickFix])
+    )
     @guarded
     async def code_actions(ls: PhyscServer, params: types.CodeActionParams):
         snapshot = await ls.current(params.text_document.uri)

@@ -90,7 +90,11 @@ def fidelity(scenario: Declared, trace: Trace) -> Fidelity:
     # Restrictions hold "during the solution": from the shot until the declared
     # sequence is complete (what happens after the last pig is gone is not the solution).
     until = times[-1] if matched == len(scenario.interactions) and times else float("inf")
-    progress = 0.0 if matched == len(scenario.interactions) else _progress(scenario.interactions[matched], trace, times[-1] if times else 0.0)
+    progress = (
+        0.0
+        if matched == len(scenario.interactions)
+        else _progress(scenario.interactions[matched], trace, times[-1] if times else 0.0)
+    )
     return Fidelity(
         matched,
         len(scenario.interactions),
@@ -106,7 +110,9 @@ def _progress(declared: DeclaredTerm, trace: Trace, since: float) -> float:
     start = int(since / trace.dt)
     if declared.name == "destroy":
         target = declared.objects[1]
-        return sum(d.amount for d in trace.damage if d.target == target and d.by == declared.objects[0] and d.time >= since)
+        return sum(
+            d.amount for d in trace.damage if d.target == target and d.by == declared.objects[0] and d.time >= since
+        )
     actor = declared.objects[0]
     if actor not in trace.names:
         return 0.0

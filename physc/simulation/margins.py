@@ -45,8 +45,8 @@ import attrs
 
 from physc.simulation.fidelity import Declared, matches
 from physc.simulation.recognise import Recogniser, approach
-from physc.simulation.where import Where
 from physc.simulation.trace import Interaction, Trace
+from physc.simulation.where import Where
 
 SIDES = {"right": 0.0, "above": 90.0, "left": 180.0, "below": 270.0}  # the direction each side of a body faces
 ALL_SIDES = frozenset(SIDES)
@@ -73,11 +73,18 @@ class Margin:
         return self.value / self.scale if self.scale else self.value
 
     def text(self) -> str:
-        """"`fall(fBlock2, pig)`: −0.12 units of overhang (…)"."""
+        """ "`fall(fBlock2, pig)`: −0.12 units of overhang (…)"."""
         return f"`{self.term}`: {self.value:+.3g} {self.unit} ({self.what})"
 
     def record(self) -> dict:
-        return {"term": self.term, "value": round(self.value, 4), "unit": self.unit, "share": round(self.share, 4), "what": self.what, "held": self.held}
+        return {
+            "term": self.term,
+            "value": round(self.value, 4),
+            "unit": self.unit,
+            "share": round(self.share, 4),
+            "what": self.what,
+            "held": self.held,
+        }
 
 
 @attrs.frozen
@@ -120,7 +127,9 @@ class Recognised:
 
     @classmethod
     def of(cls, trace: Trace) -> Recognised:
-        return cls(tuple(_Term(i.name, i.objects, (i.direction,) if i.direction else (), i.text()) for i in trace.interactions))
+        return cls(
+            tuple(_Term(i.name, i.objects, (i.direction,) if i.direction else (), i.text()) for i in trace.interactions)
+        )
 
 
 def _angle(dx: float, dy: float) -> float:
@@ -168,7 +177,11 @@ class MarginReader:
             # (an explosive's blast: the recogniser's `explosive` kinds); what it acts on must
             # outlast the blows before the link (its own blow is the link's).
             if margin is not None and k < len(found):
-                outlast = [(declared.objects[0], found[k].time)] if trace.kinds.get(declared.objects[0]) not in self.recogniser.explosive else []
+                outlast = (
+                    [(declared.objects[0], found[k].time)]
+                    if trace.kinds.get(declared.objects[0]) not in self.recogniser.explosive
+                    else []
+                )
                 outlast += [(declared.objects[1], found[k].time - trace.dt / 2)] if len(declared.objects) > 1 else []
                 for name, until in outlast:
                     lasting = self.survival(trace, name, until, declared.text, k)
@@ -199,7 +212,14 @@ class MarginReader:
         left = whole - sum(d.most if d.most is not None else d.amount for d in blows)
         if not math.isfinite(whole):
             return None
-        return Margin(text, k, left, "life", max(whole / 2, 1e-6), f"the life {name} has left under the worst reading (scale: half its life)")
+        return Margin(
+            text,
+            k,
+            left,
+            "life",
+            max(whole / 2, 1e-6),
+            f"the life {name} has left under the worst reading (scale: half its life)",
+        )
 
     def destroyed_first(self, trace: Trace, declared, since: float, k: int) -> Margin | None:
         """A link that could not happen because what it acts on was destroyed first, by something
@@ -211,14 +231,25 @@ class MarginReader:
         if len(declared.objects) < 2:
             return None
         actor, target = declared.objects[0], declared.objects[1]
-        death = next((d for d in trace.destructions if d.name == target and d.time >= since - 1e-9 and d.by not in self.where.bodies(actor)), None)
+        death = next(
+            (
+                d
+                for d in trace.destructions
+                if d.name == target and d.time >= since - 1e-9 and d.by not in self.where.bodies(actor)
+            ),
+            None,
+        )
         if death is None:
             return None
         lasting = self.survival(trace, target, death.time, declared.text, k)
         if lasting is None or lasting.value > 0:
             return None
         by = f"by {death.by}" if death.by else f"({death.cause})"
-        return attrs.evolve(lasting, held=False, what=f"the life {target} had left under the worst reading when destroyed first {by} (scale: half its life)")
+        return attrs.evolve(
+            lasting,
+            held=False,
+            what=f"the life {target} had left under the worst reading when destroyed first {by} (scale: half its life)",
+        )
 
     # ---- the terms -------------------------------------------------------------------------
     def hit(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
@@ -232,11 +263,22 @@ class MarginReader:
             gap = self.where.gap(actor, target, self.where.row(since), trace.steps)
             if gap is None:
                 return Margin(text, k, -1.0, "of a link", 1.0, f"{actor} never came near {target}", False)
-            return Margin(text, k, -max(gap, 0.0), "units", self.where.size(actor), f"the nearest {actor} came to {target}", False)
+            return Margin(
+                text, k, -max(gap, 0.0), "units", self.where.size(actor), f"the nearest {actor} came to {target}", False
+            )
         contact = contacts[0]
         parts = []
         speed = abs(contact.relative_velocity[0] * contact.normal[0] + contact.relative_velocity[1] * contact.normal[1])
-        parts.append(Margin(text, k, speed - self.recogniser.hit_speed, "units/s", self.recogniser.hit_speed, "approach speed beyond a hit's least"))
+        parts.append(
+            Margin(
+                text,
+                k,
+                speed - self.recogniser.hit_speed,
+                "units/s",
+                self.recogniser.hit_speed,
+                "approach speed beyond a hit's least",
+            )
+        )
         if sides and sides != ALL_SIDES:
             vx, vy = approach(trace, contact, self.where.party(contact, actor), self.where.party(contact, target))
             parts.append(Margin(text, k, side_margin(-vx, -vy, sides), "degrees", 45.0, "from striking another side"))
@@ -248,7 +290,11 @@ class MarginReader:
         if mover not in trace.names:
             return None
         index = trace.index(mover)
-        spans = [span for span in self.recogniser.travels_on(trace, self.where.intervals, mover, surface) if span[1] >= since - 1e-9]
+        spans = [
+            span
+            for span in self.recogniser.travels_on(trace, self.where.intervals, mover, surface)
+            if span[1] >= since - 1e-9
+        ]
         if found is not None:
             spans = [span for span in spans if span[0] - dt <= found.time <= span[1] + dt] or spans
         best = None  # (seconds, distance) of the travel that did most of the motion
@@ -260,10 +306,25 @@ class MarginReader:
         need, far = self.recogniser.motion_time, self.recogniser.travel
         if best is None:
             return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
-        parts = [Margin(text, k, best[0] - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised")]
+        parts = [
+            Margin(
+                text, k, best[0] - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised"
+            )
+        ]
         if far > 0:
-            parts.append(Margin(text, k, best[1] - far, "units", far, f"distance of {GERUND.get(name, name)} beyond the least recognised"))
-        after = next((i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None)
+            parts.append(
+                Margin(
+                    text,
+                    k,
+                    best[1] - far,
+                    "units",
+                    far,
+                    f"distance of {GERUND.get(name, name)} beyond the least recognised",
+                )
+            )
+        after = next(
+            (i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None
+        )
         if after is not None and matched[after].name != "hit":
             after = None  # only a meeting has a speed to arrive at
         if found is not None and after is not None:
@@ -271,7 +332,16 @@ class MarginReader:
             arrive = trace.states[self.where.row(matched[after].time) - 1, index]
             v0, v1 = math.hypot(start[3], start[4]), math.hypot(arrive[3], arrive[4])
             if v0 > 0 and not math.isnan(v1):
-                parts.append(Margin(text, k, v1, "units/s", max(v0, self.recogniser.moving), f"speed left when it reached {matched[after].objects[1] if len(matched[after].objects) > 1 else 'the next body'}"))
+                parts.append(
+                    Margin(
+                        text,
+                        k,
+                        v1,
+                        "units/s",
+                        max(v0, self.recogniser.moving),
+                        f"speed left when it reached {matched[after].objects[1] if len(matched[after].objects) > 1 else 'the next body'}",
+                    )
+                )
         return min(parts, key=lambda m: m.share)
 
     def roll(self, declared, trace, found, since, matched, k):
@@ -296,13 +366,36 @@ class MarginReader:
             support = self.where.support_before(faller, self.where.row(since))
             over = None if support is None else self.where.overhang(faller, support, self.where.row(since))
             if over is None:
-                return Margin(text, k, -rec.fall_height, "units", rec.fall_height, f"{faller} never left what it rested on", False)
-            return Margin(text, k, min(over, 0.0), "units of overhang", half, f"{faller}'s centre past the edge of {support}", False)
+                return Margin(
+                    text, k, -rec.fall_height, "units", rec.fall_height, f"{faller} never left what it rested on", False
+                )
+            return Margin(
+                text,
+                k,
+                min(over, 0.0),
+                "units of overhang",
+                half,
+                f"{faller}'s centre past the edge of {support}",
+                False,
+            )
         if spells:
-            seconds, drop = max((self.where.drop(index, s) for s in spells), key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height))
-            parts.append(Margin(text, k, seconds - rec.fall_time, "s", rec.fall_time, "seconds in the air beyond a fall's least"))
-            parts.append(Margin(text, k, drop - rec.fall_height, "units", rec.fall_height, "height dropped beyond a fall's least"))
-            landing = spells[0][1] if found is None else next((s[1] for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt), spells[0][1])
+            seconds, drop = max(
+                (self.where.drop(index, s) for s in spells),
+                key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height),
+            )
+            parts.append(
+                Margin(text, k, seconds - rec.fall_time, "s", rec.fall_time, "seconds in the air beyond a fall's least")
+            )
+            parts.append(
+                Margin(
+                    text, k, drop - rec.fall_height, "units", rec.fall_height, "height dropped beyond a fall's least"
+                )
+            )
+            landing = (
+                spells[0][1]
+                if found is None
+                else next((s[1] for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt), spells[0][1])
+            )
             pa, pb = self.where.pose(faller, landing), self.where.pose(target, landing)
             if pa is not None and pb is not None:
                 overlap = self.where.extents(pa)[0] + self.where.extents(pb)[0] - abs(pa[0] - pb[0])
@@ -323,14 +416,33 @@ class MarginReader:
             spans = [s for s in spans if abs(s[1] - found.time) < trace.dt / 2] or spans
         if not spans:
             gap = self.where.gap(mover, surface, self.where.row(since), trace.steps)
-            return Margin(text, k, -max(gap or 0.0, 0.0), "units", self.where.size(mover), f"the nearest {mover} came to {surface}", False)
+            return Margin(
+                text,
+                k,
+                -max(gap or 0.0, 0.0),
+                "units",
+                self.where.size(mover),
+                f"the nearest {mover} came to {surface}",
+                False,
+            )
         begin, end = spans[0]
-        parts = [Margin(text, k, rec.bounce_time - (end - begin), "s", rec.bounce_time, "seconds its touch was short of a bounce's most")]
+        parts = [
+            Margin(
+                text,
+                k,
+                rec.bounce_time - (end - begin),
+                "s",
+                rec.bounce_time,
+                "seconds its touch was short of a bounce's most",
+            )
+        ]
         sides = set(declared.directions or ()) & ALL_SIDES
         after = int(round(end / trace.dt))
         if sides and sides != ALL_SIDES and after < trace.steps and not math.isnan(trace.states[after, index, 3]):
             vx, vy = trace.states[after, index, 3:5]
-            parts.append(Margin(text, k, side_margin(float(vx), float(vy), sides), "degrees", 45.0, "from leaving another way"))
+            parts.append(
+                Margin(text, k, side_margin(float(vx), float(vy), sides), "degrees", 45.0, "from leaving another way")
+            )
         return min(parts, key=lambda m: m.share)
 
     def destroy(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
@@ -342,8 +454,19 @@ class MarginReader:
                 return None
             before = blow[0].life + blow[0].amount
             worst = sum(d.least if d.least is not None else d.amount for d in blow)
-            return Margin(text, k, worst - before, "damage", max(before, 1e-6), f"the blow under the worst reading beyond the {before:.3g} life {target} had left")
-        dealt = [d for d in trace.damage if d.target == target and d.by in self.where.bodies(attacker) and d.time >= since - 1e-9]
+            return Margin(
+                text,
+                k,
+                worst - before,
+                "damage",
+                max(before, 1e-6),
+                f"the blow under the worst reading beyond the {before:.3g} life {target} had left",
+            )
+        dealt = [
+            d
+            for d in trace.damage
+            if d.target == target and d.by in self.where.bodies(attacker) and d.time >= since - 1e-9
+        ]
         if not dealt:
             return Margin(text, k, -1.0, "of its life", 1.0, f"{attacker} dealt {target} no damage", False)
         left = min(d.life for d in dealt)
@@ -357,27 +480,44 @@ class MarginReader:
         a, b = declared.objects[0], declared.objects[1]
         spans = self.where.intervals.get(frozenset((a, b)), ())
         longest = max((min(end, trace.duration) - begin for begin, end in spans), default=0.0)
-        return Margin(declared.text, k, longest - need, "s", need, "seconds touching beyond the goal's", found is not None)
+        return Margin(
+            declared.text, k, longest - need, "s", need, "seconds touching beyond the goal's", found is not None
+        )
 
     # ---- restrictions ------------------------------------------------------------------------
     def cannot_hit(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
         a, b = restriction.objects[0], restriction.objects[1]
         text = restriction.text or f"cannotHit({a}, {b})"
-        redirected = min((i.time for i in trace.interactions if i.name == "bounce" and i.objects[0] == a and any(
-            t.name == "bounce" and tuple(t.objects) == i.objects for t in terms)), default=math.inf)
+        redirected = min(
+            (
+                i.time
+                for i in trace.interactions
+                if i.name == "bounce"
+                and i.objects[0] == a
+                and any(t.name == "bounce" and tuple(t.objects) == i.objects for t in terms)
+            ),
+            default=math.inf,
+        )
         end = min(until, redirected)
         broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
         sides = set(restriction.directions or ALL_SIDES) & ALL_SIDES
         hits = [c for c in self.where.contacts(a, b, 0.0) if c.time <= end]
         if hits and sides != ALL_SIDES:
             allowed = ALL_SIDES - sides
-            worst = min(side_margin(*(-v for v in approach(trace, c, self.where.party(c, a), self.where.party(c, b))), allowed) for c in hits)
-            return Margin(text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0)
+            worst = min(
+                side_margin(*(-v for v in approach(trace, c, self.where.party(c, a), self.where.party(c, b))), allowed)
+                for c in hits
+            )
+            return Margin(
+                text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0
+            )
         gap = self.where.gap(a, b, 0, self.where.row(end) + 1)
         if gap is None:
             return None
         value = min(gap, 0.0) if broken else gap
-        return Margin(text, None, value, "units of clearance", self.where.size(a), f"the clearance {a} kept from {b}", not broken)
+        return Margin(
+            text, None, value, "units of clearance", self.where.size(a), f"the clearance {a} kept from {b}", not broken
+        )
 
     def cannot_fall(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
         a = restriction.objects[0]
@@ -391,4 +531,6 @@ class MarginReader:
             seconds, drop = self.where.drop(index, spell)
             worst = max(worst, min(seconds / rec.fall_time, drop / rec.fall_height))
         broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
-        return Margin(text, None, 1.0 - worst, "of a fall", 1.0, "how far its longest drop was from a recognised fall", not broken)
+        return Margin(
+            text, None, 1.0 - worst, "of a fall", 1.0, "how far its longest drop was from a recognised fall", not broken
+        )

@@ -115,7 +115,11 @@ class Recogniser:
         # One roll over two contact intervals, or a double hit, is one interaction.
         out = []
         for interaction in ordered:
-            if out and (out[-1].name, out[-1].objects, out[-1].direction) == (interaction.name, interaction.objects, interaction.direction):
+            if out and (out[-1].name, out[-1].objects, out[-1].direction) == (
+                interaction.name,
+                interaction.objects,
+                interaction.direction,
+            ):
                 continue
             out.append(interaction)
         return tuple(out)
@@ -318,7 +322,11 @@ class Recogniser:
                     continue
                 landed = (stop + 1) * dt
                 landing = next(
-                    (c.b if c.a == name else c.a for c in trace.contacts if name in (c.a, c.b) and c.time >= landed - dt * 1.5),
+                    (
+                        c.b if c.a == name else c.a
+                        for c in trace.contacts
+                        if name in (c.a, c.b) and c.time >= landed - dt * 1.5
+                    ),
                     None,
                 )
                 if landing is not None:

@@ -74,7 +74,9 @@ class RunRules:
         """Why `name` (its state: x, y, angle, vx, vy, ω) leaves now: (cause, by whom), or None."""
         return None
 
-    def on_removed(self, engine, name: str, cause: str, alive: set[str], damage: list[DamageRecord], time: float) -> None:
+    def on_removed(
+        self, engine, name: str, cause: str, alive: set[str], damage: list[DamageRecord], time: float
+    ) -> None:
         """`name` is leaving (still in the engine): what its leaving does to the others."""
 
     def lingers(self, engine, name: str, cause: str) -> float:
@@ -139,7 +141,9 @@ class Recording:
         return self.played if self.played is not None else len(self.states)
 
 
-def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None) -> Recording:
+def run(
+    engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, resume: Snapshot | None = None
+) -> Recording:
     """Step `engine` for `seconds` (or until `rules.finished`), recording the bodies in
     `dynamic` and every contact, damage and destruction; from `resume`'s step on, if given
     (physc.simulation.snapshot)."""
@@ -151,7 +155,9 @@ def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: flo
     lingering: dict[str, float] = {}  # bodies gone from the level but still in the engine → when they leave it
     arrivals = rules.arrivals
     unrecorded: set[str] = set()  # bodies that lingered: their contacts are no longer recorded
-    parting: list[tuple[str, str]] = []  # their contacts when they left the level: ended for the record next step, as a removal's are
+    parting: list[
+        tuple[str, str]
+    ] = []  # their contacts when they left the level: ended for the record next step, as a removal's are
     rules.on_start(engine)
     if arrivals:
         alive &= set(engine.names)  # the bodies still to come are not alive yet
@@ -171,7 +177,16 @@ def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: flo
                 already.discard(pair)
                 resumed.add(pair)
                 continue  # touching at the snapshot already (reported when stepped, or woken): no new contact
-            record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
+            record = ContactRecord(
+                time,
+                event.a,
+                event.b,
+                event.point,
+                event.normal,
+                event.relative_velocity,
+                event.velocity_a,
+                event.velocity_b,
+            )
             # What touched what; another pair of the same bodies' colliders, and a body that
             # lingers after it left the level, are heard by the rules alone.
             if event.first and not pair & unrecorded:
@@ -188,7 +203,9 @@ def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: flo
         row = _read(engine, dynamic, states[step], lingering, index)
         values = row.tolist()  # (plain floats are quicker to test than a small array)
         if rules.removals_due(values, alive, time):
-            values = _removals(engine, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting))
+            values = _removals(
+                engine, dynamic, index, rules, row, time, alive, damage, destructions, lingering, (unrecorded, parting)
+            )
         if arrivals and _entered(engine, rules, values, alive, damage, time, row, index):
             values = row.tolist()
         if rules.finished(values, alive, time):
@@ -197,7 +214,9 @@ def run(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: flo
     return Recording(states, tuple(contacts), tuple(separations), tuple(damage), tuple(destructions))
 
 
-def run_to_outcome(engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, to_end: bool = True) -> Recording:
+def run_to_outcome(
+    engine, dynamic: Sequence[str], rules: RunRules, seconds: float, dt: float, to_end: bool = True
+) -> Recording:
     """`run` to the outcome, recording only what the rules' verdict reads: the same steps, the
     same hooks in the same order, so the same outcome, damage and destructions, bit for bit
     (the engine's state does not depend on what is read from it). It keeps no states but the
@@ -232,7 +251,16 @@ def run_to_outcome(engine, dynamic: Sequence[str], rules: RunRules, seconds: flo
         if hears:
             engine.ended()  # (drained: only the rules read contacts here)
             for event in engine.begun():
-                record = ContactRecord(time, event.a, event.b, event.point, event.normal, event.relative_velocity, event.velocity_a, event.velocity_b)
+                record = ContactRecord(
+                    time,
+                    event.a,
+                    event.b,
+                    event.point,
+                    event.normal,
+                    event.relative_velocity,
+                    event.velocity_a,
+                    event.velocity_b,
+                )
                 rules.on_contact(engine, record, damage, time)
         if lingering:
             for name in [n for n, until in lingering.items() if until <= time + 1e-9]:
@@ -246,10 +274,14 @@ def run_to_outcome(engine, dynamic: Sequence[str], rules: RunRules, seconds: flo
             values = row.tolist() if reads else values
         if finished(values, alive, time) or (settled is not None and settled(time, end)):
             break
-    return Recording(_read(engine, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1)
+    return Recording(
+        _read(engine, dynamic, row, lingering, index)[None], (), (), tuple(damage), tuple(destructions), played=step + 1
+    )
 
 
-def _entered(engine, rules: RunRules, values, alive: set, damage: list, time: float, row: np.ndarray, index: dict) -> bool:
+def _entered(
+    engine, rules: RunRules, values, alive: set, damage: list, time: float, row: np.ndarray, index: dict
+) -> bool:
     """The bodies the rules bring in now (`RunRules.enter`) made alive, their states read into
     `row`; whether any came."""
     new = rules.enter(engine, values, alive, damage, time)
@@ -269,7 +301,16 @@ def _read(engine, dynamic: Sequence[str], out: np.ndarray, lingering: dict, inde
 
 
 def _removals(
-    engine, dynamic, index: dict, rules: RunRules, row: np.ndarray, time: float, alive: set, damage: list, destructions: list, lingering: dict,
+    engine,
+    dynamic,
+    index: dict,
+    rules: RunRules,
+    row: np.ndarray,
+    time: float,
+    alive: set,
+    damage: list,
+    destructions: list,
+    lingering: dict,
     recording=None,
 ) -> list:
     """The bodies the rules say leave now taken out (or left to linger), in `dynamic` order: the
@@ -299,7 +340,9 @@ def _removals(
     return row.tolist()
 
 
-def _continued(engine, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]) -> int:
+def _continued(
+    engine, dynamic: Sequence[str], rules: RunRules, snapshot: Snapshot, states: np.ndarray, alive: set[str]
+) -> int:
     """`engine` (built as at the start) put in `snapshot`'s state: its bodies restored, the
     ones gone by then removed, the rows before it filled in (a body the snapshot lacks:
     its pose at the start, at rest), the rules resumed. The step to go on from."""

@@ -65,13 +65,27 @@ def playout(scene: Scene, backend: Backend, rules: RunRules, seconds: float, to_
     dynamic = scene.dynamic
     recorded = run_to_outcome(built(scene, backend), dynamic, rules, seconds * scene.turns, scene.dt, to_end)
     return Playout(
-        scene.dt, dynamic, recorded.states[-1], recorded.steps, recorded.damage, recorded.destructions, scene.goal,
-        rules.solved(recorded), rules.goal_met(recorded),
+        scene.dt,
+        dynamic,
+        recorded.states[-1],
+        recorded.steps,
+        recorded.damage,
+        recorded.destructions,
+        scene.goal,
+        rules.solved(recorded),
+        rules.goal_met(recorded),
     )
 
 
 def play_scene(
-    scene: Scene, backend: Backend, rules: RunRules, seconds: float, recogniser: Recogniser, restrictions=(), redirects=None, recognise: bool = True,
+    scene: Scene,
+    backend: Backend,
+    rules: RunRules,
+    seconds: float,
+    recogniser: Recogniser,
+    restrictions=(),
+    redirects=None,
+    recognise: bool = True,
     resume=None,
 ) -> Trace:
     """`scene` run for `seconds` at most (each turn's) under `rules`, in `backend` (from the
@@ -80,11 +94,23 @@ def play_scene(
     declared bounces, see physc.simulation.restrictions) checked."""
     dynamic = scene.dynamic
     recorded = run(built(scene, backend), dynamic, rules, seconds * scene.turns, scene.dt, resume)
-    trace = rules.completed(Trace(
-        scene.dt, dynamic, dict(scene.kinds), recorded.states, recorded.contacts, recorded.separations,
-        recorded.damage, recorded.destructions, scene.goal, rules.solved(recorded), goal_met=rules.goal_met(recorded),
-        outlines={body.name: body.outline for body in scene.bodies}, radii=dict(scene.radii),
-    ))
+    trace = rules.completed(
+        Trace(
+            scene.dt,
+            dynamic,
+            dict(scene.kinds),
+            recorded.states,
+            recorded.contacts,
+            recorded.separations,
+            recorded.damage,
+            recorded.destructions,
+            scene.goal,
+            rules.solved(recorded),
+            goal_met=rules.goal_met(recorded),
+            outlines={body.name: body.outline for body in scene.bodies},
+            radii=dict(scene.radii),
+        )
+    )
     if not recognise:
         return trace
     interactions = rules.read(recogniser.recognise(trace, scene.radii))

@@ -21,7 +21,14 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from physc.simulation.trace import ContactRecord, DamageRecord, DependenceRecord, DestructionRecord, SeparationRecord, Trace
+from physc.simulation.trace import (
+    ContactRecord,
+    DamageRecord,
+    DependenceRecord,
+    DestructionRecord,
+    SeparationRecord,
+    Trace,
+)
 
 
 @attrs.frozen
@@ -48,9 +55,13 @@ class Snapshot:
     def of(cls, trace: Trace, step: int) -> Snapshot:
         """`trace` cut after `step` steps (1 ≤ step < trace.steps)."""
         if not 1 <= step < trace.steps:
-            raise ValueError(f"a snapshot of a {trace.steps}-step run must be cut after 1 to {trace.steps - 1} steps, not {step}")
+            raise ValueError(
+                f"a snapshot of a {trace.steps}-step run must be cut after 1 to {trace.steps - 1} steps, not {step}"
+            )
         if cls.latest_cut(trace, step) != step:
-            raise ValueError(f"a snapshot cannot be cut after {step} steps: a body that left the level is still in the world there")
+            raise ValueError(
+                f"a snapshot cannot be cut after {step} steps: a body that left the level is still in the world there"
+            )
         time = step * trace.dt + 1e-9
 
         def until(records):
@@ -63,8 +74,16 @@ class Snapshot:
             pair = frozenset((a, b))
             touching[pair] = 0 if parted else 1
         return cls(
-            step, trace.dt, trace.names, trace.states[:step].copy(), contacts, separations, until(trace.damage),
-            until(trace.destructions), frozenset(p for p, t in touching.items() if t), until(trace.depends),
+            step,
+            trace.dt,
+            trace.names,
+            trace.states[:step].copy(),
+            contacts,
+            separations,
+            until(trace.damage),
+            until(trace.destructions),
+            frozenset(p for p, t in touching.items() if t),
+            until(trace.depends),
         )
 
     @staticmethod

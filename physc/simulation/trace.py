@@ -125,7 +125,9 @@ class Trace(Run):
     dt: float
     names: tuple[str, ...]  # the dynamic bodies, in the order of the state arrays
     kinds: dict = attrs.field(eq=False)  # name → kind (bird, pig, block, platform, tnt)
-    states: np.ndarray = attrs.field(eq=False, repr=False, metadata={"dump": False})  # (steps, bodies, 6): x y angle vx vy w; NaN once gone
+    states: np.ndarray = attrs.field(
+        eq=False, repr=False, metadata={"dump": False}
+    )  # (steps, bodies, 6): x y angle vx vy w; NaN once gone
     contacts: tuple[ContactRecord, ...] = ()
     separations: tuple[SeparationRecord, ...] = ()
     damage: tuple[DamageRecord, ...] = ()
@@ -135,12 +137,16 @@ class Trace(Run):
     interactions: tuple[Interaction, ...] = ()
     violations: tuple[Violation, ...] = ()
     goal_met: float | None = None  # when the rules judged the goal met, where they time it (PHYRE: the touch held 3 s)
-    depends: tuple[DependenceRecord, ...] = ()  # the rules' decisions another reading of the world would have made otherwise
+    depends: tuple[
+        DependenceRecord, ...
+    ] = ()  # the rules' decisions another reading of the world would have made otherwise
     # Every body's box where it starts: name → (x, y, angle in radians, half-width, half-height)
     # in its own frame; a static body stays there, a dynamic one moves as `states` say (margins
     # read how far a landing or a clearance was from failing from it).
     outlines: dict = attrs.field(factory=dict, eq=False, repr=False)
-    radii: dict = attrs.field(factory=dict, eq=False, repr=False)  # name → rolling radius of a round body (the recogniser's)
+    radii: dict = attrs.field(
+        factory=dict, eq=False, repr=False
+    )  # name → rolling radius of a round body (the recogniser's)
     # Bodies that are part of another as the scenario names it (Science Birds: a blue bird's
     # other two birds after its split are that bird): name → the whole's name.
     parts: dict = attrs.field(factory=dict, eq=False, repr=False, metadata={"dump": False})
@@ -154,7 +160,6 @@ class Trace(Run):
     @property
     def steps(self) -> int:
         return self.states.shape[0]
-
 
     def paths(self, threshold: float = 0.1, every: float = 0.1) -> dict[str, list[tuple[float, float]]]:
         """Sampled paths (every `every` seconds) of the bodies that moved more than `threshold`."""
@@ -190,4 +195,3 @@ class Playout(Run):
     goal: tuple[str, ...] = ()
     solved: bool = False
     goal_met: float | None = None
-

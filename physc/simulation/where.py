@@ -98,7 +98,8 @@ class Where:
         trace = self.trace
         ones, others = self.bodies(a), self.bodies(b)
         return [
-            c for c in trace.contacts
+            c
+            for c in trace.contacts
             if c.time >= since - 1e-9 and ((c.a in ones and c.b in others) or (c.b in ones and c.a in others))
         ]
 
@@ -112,10 +113,16 @@ class Where:
         for pair, spans in self.intervals.items():
             if name in pair:
                 for begin, end in spans:
-                    touching[max(int(round(begin / trace.dt)) - 1, 0) : min(int(math.ceil(end / trace.dt)) - 1, trace.steps)] = True
+                    touching[
+                        max(int(round(begin / trace.dt)) - 1, 0) : min(int(math.ceil(end / trace.dt)) - 1, trace.steps)
+                    ] = True
         airborne = ~touching & ~np.isnan(trace.states[:, index, 0])
         edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne, [False]]).astype(int)))
-        return [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2]) if since - 1e-9 <= (a + 1) * trace.dt <= until + 1e-9]
+        return [
+            (int(a), int(b))
+            for a, b in zip(edges[::2], edges[1::2])
+            if since - 1e-9 <= (a + 1) * trace.dt <= until + 1e-9
+        ]
 
     def drop(self, index: int, spell) -> tuple[float, float]:
         trace = self.trace
@@ -132,7 +139,12 @@ class Where:
                 continue
             (other,) = pair - {name}
             for begin, end in spans:
-                if begin <= time + 1e-9 and end <= time + trace.dt * 1.5 and end > when and end >= time - trace.dt * 1.5:
+                if (
+                    begin <= time + 1e-9
+                    and end <= time + trace.dt * 1.5
+                    and end > when
+                    and end >= time - trace.dt * 1.5
+                ):
                     best, when = other, end
         return best
 

@@ -152,7 +152,10 @@ class Box2DWorld(ContactLog):
     def moving(self, names: Sequence[str], speed: float) -> bool:
         """Read from the awake bodies alone: Box2D zeroes a body's velocity as it falls asleep."""
         if self._moving_for is not names or self._moving_version != self._version:
-            self._moving_for, self._moving_version = names, self._version  # the bodies of `names`, looked up again after an add or a remove
+            self._moving_for, self._moving_version = (
+                names,
+                self._version,
+            )  # the bodies of `names`, looked up again after an add or a remove
             self._moving_bodies = [self.bodies[name] for name in names if name in self.bodies]
         for body in self._moving_bodies:
             if _awake(body):
@@ -224,7 +227,9 @@ class Box2DWorld(ContactLog):
             va = body_a.GetLinearVelocityFromWorldPoint(point)
             vb = body_b.GetLinearVelocityFromWorldPoint(point)
             normal = tuple(manifold.normal)
-            return ContactEvent(a, b, point, normal, (va[0] - vb[0], va[1] - vb[1]), (va[0], va[1]), (vb[0], vb[1]), first)
+            return ContactEvent(
+                a, b, point, normal, (va[0] - vb[0], va[1] - vb[1]), (va[0], va[1]), (vb[0], vb[1]), first
+            )
 
         self._part_began(a, fixture_a.userData, b, fixture_b.userData, event)
 
@@ -240,15 +245,28 @@ def _definitions(spec: BodySpec) -> tuple:
     Box2D copies a definition, and clones its shape, into each world it builds."""
     kind = Box2D.b2_staticBody if spec.static else Box2D.b2_dynamicBody
     body = Box2D.b2BodyDef(
-        type=kind, position=(spec.x, spec.y), angle=spec.angle, angularDamping=spec.angular_damping,
-        gravityScale=spec.gravity_scale, bullet=spec.continuous, userData=spec.name,
+        type=kind,
+        position=(spec.x, spec.y),
+        angle=spec.angle,
+        angularDamping=spec.angular_damping,
+        gravityScale=spec.gravity_scale,
+        bullet=spec.continuous,
+        userData=spec.name,
     )
-    shapes = [(shape, collider) for part, collider in zip(parts(spec.shape), colliders(spec.shape)) for shape in _box2d_shapes(part)]
+    shapes = [
+        (shape, collider)
+        for part, collider in zip(parts(spec.shape), colliders(spec.shape))
+        for shape in _box2d_shapes(part)
+    ]
     area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
     density = spec.density if spec.mass is None else spec.mass / max(area, 1e-12)
     fixtures = tuple(
         Box2D.b2FixtureDef(
-            shape=shape, density=0.0 if spec.static else density, friction=spec.friction, restitution=spec.bounciness, userData=collider,
+            shape=shape,
+            density=0.0 if spec.static else density,
+            friction=spec.friction,
+            restitution=spec.bounciness,
+            userData=collider,
             **({"groupIndex": -group_number(spec.group)} if spec.group else {}),
         )
         for shape, collider in shapes
@@ -270,7 +288,9 @@ class _Fixtures(tuple):
 def _box2d_shapes(part) -> list:
     if isinstance(part, Circle):
         return [Box2D.b2CircleShape(radius=part.radius)]
-    return [Box2D.b2PolygonShape(vertices=list(points)) for points in convex_parts(part.points, max_corners=MAX_CORNERS)]
+    return [
+        Box2D.b2PolygonShape(vertices=list(points)) for points in convex_parts(part.points, max_corners=MAX_CORNERS)
+    ]
 
 
 def _area(shape) -> float:

@@ -32,4 +32,10 @@ except ImportError as error:  # pragma: no cover - pybullet is a dependency of p
 from physc.backends import Backend  # noqa: E402
 from physc.backends.bullet.world import HONOURS, BulletWorld  # noqa: E402
 
-BACKEND = Backend("bullet", "pybullet 3 (Bullet), bodies kept in the plane by planar joints: a second verifier", BulletWorld, package="pybullet", honours=HONOURS)
+BACKEND = Backend(
+    "bullet",
+    "pybullet 3 (Bullet), bodies kept in the plane by planar joints: a second verifier",
+    BulletWorld,
+    package="pybullet",
+    honours=HONOURS,
+)

@@ -42,7 +42,9 @@ def collision_shape(client: int, spec: BodySpec) -> int:
 def _mesh(client: int, points) -> int:
     """The convex hull of `points` grown by SKIN, DEPTH deep."""
     vertices = [(x, y, z) for x, y in Extent.grown(points, SKIN) for z in (-DEPTH / 2, DEPTH / 2)]
-    return pybullet.createCollisionShape(pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=client)
+    return pybullet.createCollisionShape(
+        pybullet.GEOM_MESH, vertices=vertices, flags=pybullet.URDF_INITIALIZE_SAT_FEATURES, physicsClientId=client
+    )
 
 
 def _compound(client: int, shape: Compound) -> int:
@@ -65,8 +67,12 @@ def _compound(client: int, shape: Compound) -> int:
         positions.append((cx, cy, 0.0))
         turns.append(pybullet.getQuaternionFromEuler((0.0, 0.0, angle)))
     return pybullet.createCollisionShapeArray(
-        shapeTypes=kinds, radii=radii, halfExtents=halves, collisionFramePositions=positions,
-        collisionFrameOrientations=turns, physicsClientId=client,
+        shapeTypes=kinds,
+        radii=radii,
+        halfExtents=halves,
+        collisionFramePositions=positions,
+        collisionFrameOrientations=turns,
+        physicsClientId=client,
     )
 
 
@@ -90,7 +96,10 @@ def planar_body(client: int, spec: BodySpec, shape: int, mass: float, inertia: f
     the body's origin, motors off, no damping of Bullet's own; its mass sits at `centre` in
     the body's frame, with `inertia` about z through it."""
     body = pybullet.createMultiBody(
-        0.0, -1, -1, (0.0, 0.0, 0.0),
+        0.0,
+        -1,
+        -1,
+        (0.0, 0.0, 0.0),
         linkMasses=(LINK_MASS, LINK_MASS, mass),
         linkCollisionShapeIndices=(-1, -1, shape),
         linkVisualShapeIndices=(-1, -1, -1),
@@ -105,10 +114,16 @@ def planar_body(client: int, spec: BodySpec, shape: int, mass: float, inertia: f
     )
     for joint, value in zip(JOINTS, (spec.x, spec.y, spec.angle)):
         pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=client)
-    pybullet.setJointMotorControlArray(body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=client)
+    pybullet.setJointMotorControlArray(
+        body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=client
+    )
     pybullet.changeDynamics(body, -1, linearDamping=0.0, angularDamping=0.0, physicsClientId=client)
     pybullet.changeDynamics(
-        body, BODY_LINK, lateralFriction=friction(spec), restitution=spec.bounciness,
-        localInertiaDiagonal=(inertia, inertia, inertia), physicsClientId=client,
+        body,
+        BODY_LINK,
+        lateralFriction=friction(spec),
+        restitution=spec.bounciness,
+        localInertiaDiagonal=(inertia, inertia, inertia),
+        physicsClientId=client,
     )
     return body

@@ -33,7 +33,10 @@ def centroid(shape: Circle | Polygon | Compound, skin: float = 0.0) -> tuple[flo
         weights = [area(part, skin) for part in shape.parts]
         centres = [centroid(part) for part in shape.parts]
         total = sum(weights)
-        return (sum(w * c[0] for w, c in zip(weights, centres)) / total, sum(w * c[1] for w, c in zip(weights, centres)) / total)
+        return (
+            sum(w * c[0] for w, c in zip(weights, centres)) / total,
+            sum(w * c[1] for w, c in zip(weights, centres)) / total,
+        )
     if isinstance(shape, Circle):
         return (0.0, 0.0)
     points = shape.points
@@ -74,7 +77,10 @@ class Extent:
         xs, ys = [x for x, _ in points], [y for _, y in points]
         width, height = max(xs) - min(xs), max(ys) - min(ys)
         corners = {(sx * width / 2, sy * height / 2) for sx in (-1, 1) for sy in (-1, 1)}
-        exact = len(points) == 4 and all(any(math.isclose(x, cx, abs_tol=1e-9) and math.isclose(y, cy, abs_tol=1e-9) for cx, cy in corners) for x, y in points)
+        exact = len(points) == 4 and all(
+            any(math.isclose(x, cx, abs_tol=1e-9) and math.isclose(y, cy, abs_tol=1e-9) for cx, cy in corners)
+            for x, y in points
+        )
         return cls(width, height, exact)
 
     @staticmethod

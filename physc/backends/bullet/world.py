@@ -112,12 +112,16 @@ class BulletWorld(ContactLog):
             centre = centroid(spec.shape, SKIN)
             inertia = polar_moment(spec.shape, mass, SKIN) - mass * (centre[0] ** 2 + centre[1] ** 2)
             body = planar_body(self.client, spec, shape, mass, inertia, centre)
-            self._dynamic[spec.name] = Dynamic(mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale)
+            self._dynamic[spec.name] = Dynamic(
+                mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale
+            )
             if self._dt is not None:
                 self._set_damping(spec.name, body)
         if spec.group and not spec.static:  # no collision with the group's other bodies (Bullet filters pairs of links)
             for other in self._groups.setdefault(spec.group, []):
-                pybullet.setCollisionFilterPair(body, self._id[other], BODY_LINK, BODY_LINK, 0, physicsClientId=self.client)
+                pybullet.setCollisionFilterPair(
+                    body, self._id[other], BODY_LINK, BODY_LINK, 0, physicsClientId=self.client
+                )
             self._groups[spec.group].append(spec.name)
         self.names.append(spec.name)
         self._id[spec.name] = body
@@ -139,10 +143,16 @@ class BulletWorld(ContactLog):
         """The engine's settings for a game step of `dt`, set at the first step."""
         self._dt = dt
         pybullet.setPhysicsEngineParameter(
-            fixedTimeStep=dt / SUBSTEPS, numSubSteps=0, numSolverIterations=ITERATIONS,
-            erp=self.settings.baumgarte, contactERP=self.settings.baumgarte, frictionERP=self.settings.baumgarte,
-            contactSlop=self.settings.linear_slop, restitutionVelocityThreshold=self.settings.restitution_threshold,
-            deterministicOverlappingPairs=1, physicsClientId=self.client,
+            fixedTimeStep=dt / SUBSTEPS,
+            numSubSteps=0,
+            numSolverIterations=ITERATIONS,
+            erp=self.settings.baumgarte,
+            contactERP=self.settings.baumgarte,
+            frictionERP=self.settings.baumgarte,
+            contactSlop=self.settings.linear_slop,
+            restitutionVelocityThreshold=self.settings.restitution_threshold,
+            deterministicOverlappingPairs=1,
+            physicsClientId=self.client,
         )
         for name in self._dynamic:
             self._set_damping(name, self._id[name])
@@ -218,7 +228,9 @@ class BulletWorld(ContactLog):
                     pull = -dynamic.mass * self.gravity * (dynamic.gravity_scale - 1.0)
                     angle = self.state(name)[2]
                     force = (pull * math.sin(angle), pull * math.cos(angle), 0.0)
-                    pybullet.applyExternalForce(self._id[name], BODY_LINK, force, (0.0, 0.0, 0.0), pybullet.LINK_FRAME, physicsClientId=c)
+                    pybullet.applyExternalForce(
+                        self._id[name], BODY_LINK, force, (0.0, 0.0, 0.0), pybullet.LINK_FRAME, physicsClientId=c
+                    )
             pybullet.stepSimulation(physicsClientId=c)
             self._touched(pairs)
         return pairs
@@ -234,7 +246,11 @@ class BulletWorld(ContactLog):
         raised_to: dict[str, float] = {}
         for event in events:
             a, b = event.a, event.b
-            if a not in self._dynamic or b not in self._dynamic or self._dynamic[a].bounciness == self._dynamic[b].bounciness:
+            if (
+                a not in self._dynamic
+                or b not in self._dynamic
+                or self._dynamic[a].bounciness == self._dynamic[b].bounciness
+            ):
                 continue
             approach = event.relative_velocity[0] * event.normal[0] + event.relative_velocity[1] * event.normal[1]
             high, low = (a, b) if self._dynamic[a].bounciness > self._dynamic[b].bounciness else (b, a)
@@ -291,7 +307,9 @@ class BulletWorld(ContactLog):
     def state(self, name: str):
         """(x, y, angle, vx, vy, ω): the origin's position and the centre of mass's velocity,
         as pymunk gives them (Bullet's joints move with the origin)."""
-        (x, vx, *_), (y, vy, *_), (angle, w, *_) = pybullet.getJointStates(self._id[name], JOINTS, physicsClientId=self.client)
+        (x, vx, *_), (y, vy, *_), (angle, w, *_) = pybullet.getJointStates(
+            self._id[name], JOINTS, physicsClientId=self.client
+        )
         rx, ry = self._arm(name, angle)
         return (x, y, angle, vx - w * ry, vy + w * rx, w)
 
@@ -356,4 +374,3 @@ class BulletWorld(ContactLog):
 
     def mass(self, name: str) -> float:
         return self._dynamic[name].mass
-

@@ -4,4 +4,6 @@ honours what Chipmunk can (Box2D is physc's default)."""
 from physc.backends import Backend
 from physc.backends.pymunk.world import HONOURS, PymunkWorld
 
-BACKEND = Backend("pymunk", "pymunk 7 (Chipmunk2D): fast, deterministic", PymunkWorld, package="pymunk", honours=HONOURS)
+BACKEND = Backend(
+    "pymunk", "pymunk 7 (Chipmunk2D): fast, deterministic", PymunkWorld, package="pymunk", honours=HONOURS
+)

@@ -113,7 +113,10 @@ class PymunkWorld(ContactLog):
             body = pymunk.Body()
         body.position = (spec.x, spec.y)
         body.angle = spec.angle
-        shapes = tuple(pymunk.Circle(body, s.radius) if isinstance(s, Circle) else pymunk.Poly(body, s.points, radius=self._skin) for s in parts(spec.shape))
+        shapes = tuple(
+            pymunk.Circle(body, s.radius) if isinstance(s, Circle) else pymunk.Poly(body, s.points, radius=self._skin)
+            for s in parts(spec.shape)
+        )
         total = sum(shape.area for shape in shapes)
         for shape in shapes:
             if not spec.static:
@@ -247,11 +250,25 @@ class PymunkWorld(ContactLog):
         # impact is computed in the step the contact begins, right after this callback.
         approach = (va.x - vb.x) * normal.x + (va.y - vb.y) * normal.y
         bounces = approach > self.settings.restitution_threshold
-        arbiter.restitution = max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])]) if bounces else 0.0
+        arbiter.restitution = (
+            max(self._bounciness[id(arbiter.shapes[0])], self._bounciness[id(arbiter.shapes[1])]) if bounces else 0.0
+        )
         first, second = arbiter.shapes
         self._part_began(
-            a, self._collider_of[id(first)], b, self._collider_of[id(second)],
-            lambda new: ContactEvent(a, b, (point.x, point.y), (normal.x, normal.y), (va.x - vb.x, va.y - vb.y), (va.x, va.y), (vb.x, vb.y), new),
+            a,
+            self._collider_of[id(first)],
+            b,
+            self._collider_of[id(second)],
+            lambda new: ContactEvent(
+                a,
+                b,
+                (point.x, point.y),
+                (normal.x, normal.y),
+                (va.x - vb.x, va.y - vb.y),
+                (va.x, va.y),
+                (vb.x, vb.y),
+                new,
+            ),
         )
 
     def _on_separate(self, arbiter, space, data):

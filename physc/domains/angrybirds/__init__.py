@@ -9,17 +9,16 @@ obstacles (a platform) and distractors, its level file and picture.
 
 from __future__ import annotations
 
-
 import attrs
 
-from physc.domains.angrybirds.level import Level
-from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
-from physc.domains.angrybirds.vocabulary import VOCABULARY
-from physc.domains.angrybirds.worlds import PHYQ, WORLDS
 from physc.domains.angrybirds.evaluation import ScienceBirdsEvaluation
+from physc.domains.angrybirds.level import Level
 from physc.domains.angrybirds.level_files import ScienceBirdsFiles
+from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
 from physc.domains.angrybirds.shooting import ScienceBirdsActions
+from physc.domains.angrybirds.vocabulary import VOCABULARY
+from physc.domains.angrybirds.worlds import PHYQ, WORLDS
 from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.ending import Ending
@@ -47,15 +46,27 @@ class AngryBirds(SimulatedDomain):
     worlds = WORLDS
     default_world = PHYQ.name
     capabilities = SimulatedDomain.capabilities | {
-        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "simulation", "actions", "distractors",
-        "emit_level", "picture", "read_level", "draw",
+        "layout_rules",
+        "layout_parameters",
+        "concretize",
+        "level_from_layout",
+        "simulation",
+        "actions",
+        "distractors",
+        "emit_level",
+        "picture",
+        "read_level",
+        "draw",
     }
+
     @property
     def layout_rules(self):
         """The layout graph's rules in Science Birds (the compiler loads when a scenario is compiled)."""
         from physc.compiler.layout_rules import LayoutRules
 
-        return LayoutRules(player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform")
+        return LayoutRules(
+            player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform"
+        )
 
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through
     files = part(ScienceBirdsFiles)  # its level XML, pictures and Phy-Q's level set (level_files.py)
@@ -76,7 +87,9 @@ class AngryBirds(SimulatedDomain):
         from physc.compiler.dimension_graphs import LayoutParameters
 
         area = self.world.frame.placement
-        return LayoutParameters(clearance=0.1, far=1.5, left=area.left, right=area.right, bottom=area.bottom, top=area.top)
+        return LayoutParameters(
+            clearance=0.1, far=1.5, left=area.left, right=area.right, bottom=area.bottom, top=area.top
+        )
 
     search = part(ScienceBirdsSearch)  # the search's hooks: bodies, obstacles, distractors (search_hooks.py)
 
@@ -105,7 +118,9 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.to_level import level_from_layout
 
         birds = level_birds(layout, scenario, VOCABULARY.player, lambda concrete: shape(concrete).prefab)
-        return attrs.evolve(level_from_layout(layout), birds=birds, world=self.world.name, generator=f"physc {__version__}")
+        return attrs.evolve(
+            level_from_layout(layout), birds=birds, world=self.world.name, generator=f"physc {__version__}"
+        )
 
     def game(self, level):
         """`level` as the game plays it in this domain's world and engine."""

@@ -31,7 +31,9 @@ def candidate_shots(target: LevelObject, world) -> list[tuple[str, Shot]]:
         if not world.reachable(x, y):
             continue
         for trajectory in ("low", "high"):
-            out.append((f"{target.name}.{label}, {trajectory}", Shot(target=(round(x, 5), round(y, 5)), trajectory=trajectory)))
+            out.append(
+                (f"{target.name}.{label}, {trajectory}", Shot(target=(round(x, 5), round(y, 5)), trajectory=trajectory))
+            )
     return out
 
 

@@ -28,6 +28,11 @@ def accidental(domain, level, solution_target: str | None) -> tuple[float | None
                 plays += 1
                 shot = Shot(target=(x, y), trajectory=trajectory)
                 if len(level.birds) > 1:
-                    shot = Shots(tuple(Shot(target=(x, y), trajectory=trajectory, bird="bird" if k == 0 else f"bird{k + 1}") for k in range(len(level.birds))))
+                    shot = Shots(
+                        tuple(
+                            Shot(target=(x, y), trajectory=trajectory, bird="bird" if k == 0 else f"bird{k + 1}")
+                            for k in range(len(level.birds))
+                        )
+                    )
                 solved += domain.playout(level, shot).solved
     return (solved / plays if plays else None), plays

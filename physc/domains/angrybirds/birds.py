@@ -69,20 +69,43 @@ def _multipliers(wood: float, stone: float, ice: float) -> dict:
 class Powers:
     """The powers' numbers (the birds' prefabs, the egg's, their scripts)."""
 
-    split_angles: tuple[float, ...] = _cited((15.0, 5.0, -5.0), "BirdBlue.prefab `_childrenAmount` 3, `_angleBetweenBirds` 10; ABBBirdBlue.SpecialAttack")
+    split_angles: tuple[float, ...] = _cited(
+        (15.0, 5.0, -5.0), "BirdBlue.prefab `_childrenAmount` 3, `_angleBetweenBirds` 10; ABBBirdBlue.SpecialAttack"
+    )
     boost: float = _cited(4.0, "BirdYellow.prefab `_specialAttackForce` (an impulse along the heading)")
-    black_blast: Blast = _cited(Blast(3.0, 4.0, 20.0), "BirdBlack.prefab `_explosionArea`, `_explosionPower`, `_explosionDamage`")
+    black_blast: Blast = _cited(
+        Blast(3.0, 4.0, 20.0), "BirdBlack.prefab `_explosionArea`, `_explosionPower`, `_explosionDamage`"
+    )
     black_fuse: float = _cited(0.6, "bird_black_explode.anim: the event calling Explode at 0.6 s")
-    egg_blast: Blast = _cited(Blast(2.0, 2.0, 200.0), "Egg.prefab `_explosionArea`, `_explosionPower`, `_explosionDamage`")
-    egg_drop: float = _cited(6.0, "BirdWhite.prefab `_eggForce`, on the egg's stored Rigidbody2D mass 1 (auto mass comes at its Start)")
-    egg_stored_mass: float = _cited(1.0, "Egg.prefab Rigidbody2D m_Mass 1, m_UseAutoMass 0: the mass the drop's impulse meets")
+    egg_blast: Blast = _cited(
+        Blast(2.0, 2.0, 200.0), "Egg.prefab `_explosionArea`, `_explosionPower`, `_explosionDamage`"
+    )
+    egg_drop: float = _cited(
+        6.0, "BirdWhite.prefab `_eggForce`, on the egg's stored Rigidbody2D mass 1 (auto mass comes at its Start)"
+    )
+    egg_stored_mass: float = _cited(
+        1.0, "Egg.prefab Rigidbody2D m_Mass 1, m_UseAutoMass 0: the mass the drop's impulse meets"
+    )
     egg_push_up: float = _cited(10.0, "BirdWhite.prefab `_pushUpForce` (an impulse on the bird)")
     egg_outline: tuple = _cited(
-        ((0.105, 0.29), (-0.115, 0.29), (-0.205, 0.22), (-0.225, 0.15), (-0.225, -0.25), (-0.165, -0.29), (0.135, -0.29), (0.225, -0.22), (0.225, 0.2), (0.215, 0.25)),
+        (
+            (0.105, 0.29),
+            (-0.115, 0.29),
+            (-0.205, 0.22),
+            (-0.225, 0.15),
+            (-0.225, -0.25),
+            (-0.165, -0.29),
+            (0.135, -0.29),
+            (0.225, -0.22),
+            (0.225, 0.2),
+            (0.215, 0.25),
+        ),
         "Egg.prefab PolygonCollider2D points",
     )
     egg_density: float = _cited(1.0, "Egg.prefab ABEgg `_density`")
-    egg_gravity_scale: float = _cited(1 / 0.48, "Egg.prefab Rigidbody2D m_GravityScale 1: the full 9.81, where the world's is 9.81 × the birds' 0.48")
+    egg_gravity_scale: float = _cited(
+        1 / 0.48, "Egg.prefab Rigidbody2D m_GravityScale 1: the full 9.81, where the world's is 9.81 × the birds' 0.48"
+    )
     egg_friction: float = _cited(0.4, "Egg.prefab names no material: Unity's default")
     past_slingshot: float = _cited(2.0, "ABBird.IsInFrontOfSlingshot: x + diameter > rest x + 2 × `_dragRadius`")
 

@@ -19,11 +19,17 @@ def bodies(placed, scenario) -> list:
     for concrete in allowed:
         catalogue = shape(concrete)
         if catalogue.kind == "pig":
-            out.append(attrs.evolve(placed, concrete=concrete, material=None, width=catalogue.width, height=catalogue.height))
+            out.append(
+                attrs.evolve(placed, concrete=concrete, material=None, width=catalogue.width, height=catalogue.height)
+            )
         if catalogue.kind != "block":
             continue
         for material in [m for m in catalogue.materials if not named or m in named]:
-            out.append(attrs.evolve(placed, concrete=concrete, material=material, width=catalogue.width, height=catalogue.height))
+            out.append(
+                attrs.evolve(
+                    placed, concrete=concrete, material=material, width=catalogue.width, height=catalogue.height
+                )
+            )
     return out
 
 

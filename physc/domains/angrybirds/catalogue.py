@@ -97,7 +97,9 @@ class Shape:
 
 
 def _block(name, prefab, width, height, life, outline="box", points=()):
-    return Shape(name, prefab, "block", width, height, outline, points, materials=MATERIALS, life=dict(zip(MATERIALS, life)))
+    return Shape(
+        name, prefab, "block", width, height, outline, points, materials=MATERIALS, life=dict(zip(MATERIALS, life))
+    )
 
 
 _SHAPES = (
@@ -115,7 +117,15 @@ _SHAPES = (
     _block("circleSmall", "CircleSmall", 0.42, 0.42, (150, 300, 100), "circle"),
     _block("circle", "Circle", 0.75, 0.75, (200, 600, 125), "circle"),
     _block("squareHole", "SquareHole", 0.7636, 0.7636, (120, 160, 70)),
-    _block("triangleHole", "TriangleHole", 0.80, 0.783, (70, 140, 48), "polygon", ((-0.40, -0.386), (0.40, -0.386), (0.0, 0.397))),
+    _block(
+        "triangleHole",
+        "TriangleHole",
+        0.80,
+        0.783,
+        (70, 140, 48),
+        "polygon",
+        ((-0.40, -0.386), (0.40, -0.386), (0.0, 0.397)),
+    ),
     # The other blocks of real levels.
     _block("rectFat", "RectFat", 0.7636, 0.3772, (80, 140, 53)),
     _block("squareSmall", "SquareSmall", 0.3772, 0.3772, (60, 100, 40)),
@@ -124,7 +134,15 @@ _SHAPES = (
     _block("rectSmall", "RectSmall", 0.7636, 0.184, (50, 80, 33)),
     _block("rectMedium", "RectMedium", 1.5456, 0.184, (70, 120, 47)),
     _block("rectBig", "RectBig", 1.886, 0.184, (100, 140, 65)),
-    _block("triangle", "Triangle", 0.75, 0.75, (80, 140, 53), "polygon", ((-0.375, -0.375), (0.375, -0.375), (-0.375, 0.375))),
+    _block(
+        "triangle",
+        "Triangle",
+        0.75,
+        0.75,
+        (80, 140, 53),
+        "polygon",
+        ((-0.375, -0.375), (0.375, -0.375), (-0.375, 0.375)),
+    ),
     # Static things.
     Shape("flatPlatform", "Platform", "platform", PLATFORM_BASE, PLATFORM_THICKNESS, static=True),
     Shape("inclinedPlatform", "Platform", "platform", PLATFORM_BASE, PLATFORM_THICKNESS, static=True),

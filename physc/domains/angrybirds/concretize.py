@@ -46,7 +46,9 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
         if edge.term == ON_LOCATION:
             carried.setdefault(edge.b, []).append(edge.a)
     concrete = choose_concrete(scenario, graph, rng)
-    declared = {o.name: o.materials for o in scenario.objects if o.materials}  # version 2: the materials a scenario names
+    declared = {
+        o.name: o.materials for o in scenario.objects if o.materials
+    }  # version 2: the materials a scenario names
     bodies = {}
     # Objects first: a platform's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: shape(concrete[n.name]).kind == "platform"):
@@ -67,7 +69,9 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
             ramp = name in graph.ramps and incline.ramp is not None
             length = _length(rng, incline.ramp_length if ramp and incline.ramp_length else INCLINED_LENGTH)
             if name in headings:
-                angle = rng.uniform(*(incline.ramp if ramp else incline.descending)) * (-1 if headings[name] == "right" else 1)
+                angle = rng.uniform(*(incline.ramp if ramp else incline.descending)) * (
+                    -1 if headings[name] == "right" else 1
+                )
             else:
                 angle = rng.uniform(*world.incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, chosen, Geometry(length, PLATFORM_THICKNESS, round(angle, 2)))

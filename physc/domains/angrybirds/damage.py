@@ -49,7 +49,9 @@ class Strike:
     defence: float
     material: str
 
-    def attacker(self, rules: Rules, relative_velocity: str, platform_mass: float, near_tie: str) -> tuple[str, float, bool]:
+    def attacker(
+        self, rules: Rules, relative_velocity: str, platform_mass: float, near_tie: str
+    ) -> tuple[str, float, bool]:
         """(the attacker's name, its mass, whether ABBlock's bird override applies) under one reading."""
         this, other = self.this, self.other
         if other.kind == "ground":  # no Rigidbody2D: the object attacks itself
@@ -104,7 +106,11 @@ READ = ("relative_velocity", "platform_mass", "near_tie")  # the rules' fields t
 
 def readings(points) -> tuple[tuple[str, ...], list[tuple]]:
     """(the rules' fields the open points `points` set, every combination of their values)."""
-    fields = tuple(p.setting.split(".", 1)[1] for p in points if p.setting.startswith("rules.") and p.setting.split(".", 1)[1] in READ)
+    fields = tuple(
+        p.setting.split(".", 1)[1]
+        for p in points
+        if p.setting.startswith("rules.") and p.setting.split(".", 1)[1] in READ
+    )
     values = [p.readings for p in points if p.setting.startswith("rules.") and p.setting.split(".", 1)[1] in READ]
     return fields, list(itertools.product(*values))
 
@@ -115,7 +121,11 @@ def decisive(fields: tuple[str, ...], amounts: dict[tuple, float]) -> tuple[int,
     out = []
     for i in range(len(fields)):
         for combo, amount in amounts.items():
-            differs = [other for other in amounts if other[:i] == combo[:i] and other[i + 1 :] == combo[i + 1 :] and other[i] != combo[i]]
+            differs = [
+                other
+                for other in amounts
+                if other[:i] == combo[:i] and other[i + 1 :] == combo[i + 1 :] and other[i] != combo[i]
+            ]
             if any(abs(amounts[other] - amount) > 1e-12 for other in differs):
                 out.append(i)
                 break

@@ -26,7 +26,9 @@ def _resting_places(layout, width: float, rng: random.Random, frame):
     places = [((area.left + 1.5 + width / 2, area.right - width / 2), frame.ground_top)]
     for obj in layout.objects:
         if shape(obj.concrete).kind == "platform" and abs(obj.rotation or 0.0) < 1e-6 and obj.width >= width + 0.2:
-            places.append(((obj.x - obj.width / 2 + width / 2, obj.x + obj.width / 2 - width / 2), obj.y + obj.height / 2))
+            places.append(
+                ((obj.x - obj.width / 2 + width / 2, obj.x + obj.width / 2 - width / 2), obj.y + obj.height / 2)
+            )
     rng.shuffle(places)
     return places
 
@@ -41,4 +43,14 @@ def distractors(layout, index: int, rng: random.Random, world):
             continue
         x = rng.uniform(low, high)
         y = top + kind.height / 2 + SKIN
-        yield PlacedObject(f"distractor{index}", "distractor", kind.name, material, round(x, 5), round(y, 5), 0.0, kind.width, kind.height)
+        yield PlacedObject(
+            f"distractor{index}",
+            "distractor",
+            kind.name,
+            material,
+            round(x, 5),
+            round(y, 5),
+            0.0,
+            kind.width,
+            kind.height,
+        )

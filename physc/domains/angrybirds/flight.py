@@ -45,7 +45,10 @@ class Flights:
         self.shots = shots
         self.birds: list[Bird] = [bird(prefabs[k] if k < len(prefabs) else "BirdRed") for k in range(len(shots))]
         self.names = [shot.bird for shot in shots]
-        self.extras = {name: extra(name, b.power) if shots[k].tap is not None else () for k, (name, b) in enumerate(zip(self.names, self.birds))}
+        self.extras = {
+            name: extra(name, b.power) if shots[k].tap is not None else ()
+            for k, (name, b) in enumerate(zip(self.names, self.birds))
+        }
         self.parent = {clone: name for name, clones in self.extras.items() for clone in clones}
         self.next = 0  # the shot to come
         self.due_at: float | None = 0.0  # when it is shot (None: once the level rests)
@@ -100,10 +103,19 @@ class Flights:
         """The body of a bird (the red bird: as the world's model has it)."""
         b, model = self.of(name), self.model
         red = b.prefab == "BirdRed"
-        mass, friction, bounciness = (model.bird_mass, model.bird_friction, model.bird_bounciness) if red else (b.mass, b.friction, b.bounciness)
+        mass, friction, bounciness = (
+            (model.bird_mass, model.bird_friction, model.bird_bounciness) if red else (b.mass, b.friction, b.bounciness)
+        )
         return BodySpec(
-            name, Circle(b.radius), *origin, mass=mass, friction=friction, bounciness=bounciness,
-            angular_damping=model.bird_angular_drag, continuous=True, group=GROUP if self.several else "",
+            name,
+            Circle(b.radius),
+            *origin,
+            mass=mass,
+            friction=friction,
+            bounciness=bounciness,
+            angular_damping=model.bird_angular_drag,
+            continuous=True,
+            group=GROUP if self.several else "",
         )
 
     def left(self, name: str, time: float) -> None:
@@ -148,11 +160,15 @@ class Flights:
     def done(self, name: str, vx: float, vy: float, time: float) -> bool:
         """At a check: whether the bird goes, too old or nearly still."""
         rules = self.rules
-        return time >= self.launched_at(name) + rules.bird_lifetime - 1e-9 or math.hypot(vx, vy) < rules.bird_still_speed
+        return (
+            time >= self.launched_at(name) + rules.bird_lifetime - 1e-9 or math.hypot(vx, vy) < rules.bird_still_speed
+        )
 
     def checked(self, name: str) -> None:
         """A check the bird passed: the next one a second later (never past its lifetime)."""
-        self.flying[name] = min(self.flying[name] + self.rules.bird_still_every, self.launched_at(name) + self.rules.bird_lifetime)
+        self.flying[name] = min(
+            self.flying[name] + self.rules.bird_still_every, self.launched_at(name) + self.rules.bird_lifetime
+        )
 
     # ---- powers ----------------------------------------------------------------------------
     def taps_due(self, time: float) -> list[str]:
@@ -198,8 +214,14 @@ class Flights:
             self.launched[egg] = time
             self.parent[egg] = name
             spec = BodySpec(
-                egg, Polygon(POWERS.egg_outline), x, y, density=POWERS.egg_density, friction=POWERS.egg_friction,
-                gravity_scale=POWERS.egg_gravity_scale, group=GROUP,
+                egg,
+                Polygon(POWERS.egg_outline),
+                x,
+                y,
+                density=POWERS.egg_density,
+                friction=POWERS.egg_friction,
+                gravity_scale=POWERS.egg_gravity_scale,
+                group=GROUP,
             )
             return [(spec, (0.0, -POWERS.egg_drop / POWERS.egg_stored_mass))]
         elif b.power == "blast":
@@ -225,12 +247,18 @@ class Flights:
     def read(self, interactions: tuple[Interaction, ...]) -> tuple[Interaction, ...]:
         """The recognised interactions as the scenario names them: what a blue bird's other
         birds and a white bird's egg did, their bird's; each tap that fired a power, `tap(bird)`."""
-        named = [Interaction(i.name, tuple(self.parent.get(o, o) for o in i.objects), i.direction, i.time) for i in interactions]
+        named = [
+            Interaction(i.name, tuple(self.parent.get(o, o) for o in i.objects), i.direction, i.time)
+            for i in interactions
+        ]
         named += [Interaction("tap", (name,), None, time) for time, name in self.tapped]
         ordered = sorted(named, key=lambda i: (round(i.time, 6), ORDER.get(i.name, -1)))
         out = []
         for interaction in ordered:  # a hit by two of a blue bird's three at once is one
-            if interaction.name != "tap" and any((o.name, o.objects, o.direction) == (interaction.name, interaction.objects, interaction.direction) for o in out):
+            if interaction.name != "tap" and any(
+                (o.name, o.objects, o.direction) == (interaction.name, interaction.objects, interaction.direction)
+                for o in out
+            ):
                 continue
             out.append(interaction)
         return tuple(out)

@@ -27,6 +27,11 @@ class Frame:
 
     left: float = attrs.field(default=-17.5, metadata={"source": "ABGameWorld.cs: objects beyond ±17.5 are destroyed"})
     right: float = attrs.field(default=17.5, metadata={"source": "ABGameWorld.cs: objects beyond ±17.5 are destroyed"})
-    ground_top: float = attrs.field(default=-3.5, metadata={"source": "Phy-Q's generator: GROUND_LEVEL -3.5 (docs/angrybirds.md, 'Level files')"})
-    slingshot: tuple[float, float] = attrs.field(default=(-12.0, -2.5), metadata={"source": "Phy-Q's templates: <Slingshot x=-12.0 y=-2.5> (docs/angrybirds.md, 'Level files')"})
+    ground_top: float = attrs.field(
+        default=-3.5, metadata={"source": "Phy-Q's generator: GROUND_LEVEL -3.5 (docs/angrybirds.md, 'Level files')"}
+    )
+    slingshot: tuple[float, float] = attrs.field(
+        default=(-12.0, -2.5),
+        metadata={"source": "Phy-Q's templates: <Slingshot x=-12.0 y=-2.5> (docs/angrybirds.md, 'Level files')"},
+    )
     placement: Area = attrs.field(factory=Area)

@@ -18,12 +18,12 @@ import attrs
 
 from physc.backends import Backend, BodySpec, Circle, Polygon, colliders
 from physc.domains.angrybirds import prefabs
-from physc.domains.angrybirds.damage import Party, Strike, decisive, readings
 from physc.domains.angrybirds.catalogue import (
     BY_PREFAB,
     PHYQ_CIRCLES,
     extent,
 )
+from physc.domains.angrybirds.damage import Party, Strike, decisive, readings
 from physc.domains.angrybirds.flight import FIRST, Flights
 from physc.domains.angrybirds.launch import Shot, shots_of
 from physc.domains.angrybirds.level import Level, LevelObject
@@ -52,7 +52,9 @@ class Game(RunRules):
         points = [p for p in world.open_points() if p.setting.startswith("rules.")]
         self._fields, self._combos = readings(points)
         self._settings = tuple(f"rules.{f}" for f in self._fields)
-        self._platform_masses = next((p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,))
+        self._platform_masses = next(
+            (p.readings for p in points if p.setting == "rules.platform_mass"), (self.rules.platform_mass,)
+        )
         self.flights = self._flights(())  # the birds of a run (`scene` makes them)
 
     def _material(self, obj: LevelObject) -> str:
@@ -82,22 +84,53 @@ class Game(RunRules):
         if catalogue.kind == "pig":
             mass = prefabs.body_mass(obj.type, model.pig_density, model.circle_colliders) if game else None
             spec = BodySpec(
-                obj.name, outline, obj.x, obj.y, mass=mass, density=model.pig_density, friction=model.pig_friction,
-                bounciness=model.pig_bounciness, continuous=True, **common,
+                obj.name,
+                outline,
+                obj.x,
+                obj.y,
+                mass=mass,
+                density=model.pig_density,
+                friction=model.pig_friction,
+                bounciness=model.pig_bounciness,
+                continuous=True,
+                **common,
             )
             return spec, "pig", float(catalogue.life[""]), rules.pig_defence
         if catalogue.kind == "tnt":
             spec = BodySpec(
-                obj.name, outline, obj.x, obj.y, angle, density=model.tnt_density, friction=model.tnt_friction,
-                gravity_scale=model.tnt_gravity_scale, angular_damping=model.tnt_angular_drag,
+                obj.name,
+                outline,
+                obj.x,
+                obj.y,
+                angle,
+                density=model.tnt_density,
+                friction=model.tnt_friction,
+                gravity_scale=model.tnt_gravity_scale,
+                angular_damping=model.tnt_angular_drag,
             )
             return spec, "tnt", float(catalogue.life[""]), 0.0
         material = model.materials[self._material(obj)]
         mass = prefabs.body_mass(obj.type, material.density, model.circle_colliders) if game else None
-        spec = BodySpec(obj.name, outline, obj.x, obj.y, mass=mass, density=material.density, friction=material.friction, bounciness=material.bounciness, **common)
+        spec = BodySpec(
+            obj.name,
+            outline,
+            obj.x,
+            obj.y,
+            mass=mass,
+            density=material.density,
+            friction=material.friction,
+            bounciness=material.bounciness,
+            **common,
+        )
         return spec, "block", float(catalogue.life[material.name]), material.defence
 
-    def scene(self, shot: Shot | None = None, stop_at_rest: bool = True, invulnerable: float | None = None, settle_after_solved: float | None = None) -> Scene:
+    def scene(
+        self,
+        shot: Shot | None = None,
+        stop_at_rest: bool = True,
+        invulnerable: float | None = None,
+        settle_after_solved: float | None = None,
+    ) -> Scene:
         """The level as physics (physc.simulation.scene), the first bird of `shot` at the slingshot,
         flying as the shot sends it; the game, the run's rules, set for one run of it (a scene
         a run; the game's state is this run's until the next `scene`).
@@ -108,10 +141,19 @@ class Game(RunRules):
         still); with `settle_after_solved`, that many seconds after the last pig is destroyed, once
         nothing is falling (a fall that began while the sequence ran is recognised where it lands)."""
         ground_top = self.world.frame.ground_top
-        ground = BodySpec(GROUND, Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))), 0.0, ground_top - 0.5, static=True, friction=self.model.ground_friction)
+        ground = BodySpec(
+            GROUND,
+            Polygon(((-40, -0.5), (40, -0.5), (40, 0.5), (-40, 0.5))),
+            0.0,
+            ground_top - 0.5,
+            static=True,
+            friction=self.model.ground_friction,
+        )
         bodies = [ground]
         self.kinds = {GROUND: "ground"}
-        self._depends: list[DependenceRecord] = []  # where another reading of the open points would have dealt other damage
+        self._depends: list[
+            DependenceRecord
+        ] = []  # where another reading of the open points would have dealt other damage
         self.life, self.defence, self.material = {}, {}, {}
         self.colliders: dict[str, int] = {}  # how many colliders each body has (a blast reaches each)
         self._objects = {obj.name: obj for obj in self.level.objects}
@@ -139,13 +181,22 @@ class Game(RunRules):
             velocities[spec.name] = (*velocity, 0.0)
         self.outlines = {body.name: body.outline for body in bodies}
         # This run's settings and state, read by the hooks below.
-        self._invulnerable = invulnerable if invulnerable is not None else 0.0 if shots else self.rules.invulnerable_seconds
+        self._invulnerable = (
+            invulnerable if invulnerable is not None else 0.0 if shots else self.rules.invulnerable_seconds
+        )
         self._dynamic = dynamic
         self._pigs = tuple(n for n in dynamic if self.kinds[n] == "pig")
         self._settle_after_solved, self._solved_at = settle_after_solved, None
         self._stop_at_rest, self._resting_since = stop_at_rest, None
         return Scene(
-            tuple(bodies), dict(self.kinds), self.world.gravity, self.world.engine, self.radii(), velocities, self._pigs, rows=dynamic,
+            tuple(bodies),
+            dict(self.kinds),
+            self.world.gravity,
+            self.world.engine,
+            self.radii(),
+            velocities,
+            self._pigs,
+            rows=dynamic,
             turns=max(len(shots), 1),
         )
 
@@ -215,7 +266,9 @@ class Game(RunRules):
 
     # ---- the run's hooks (physc.simulation.run.RunRules) ------------------------------
     def on_contact(self, engine, contact: ContactRecord, damage: list, time: float) -> None:
-        for name in self._dying.intersection((contact.a, contact.b)):  # OnCollisionEnter2D → DealDamage → Die: it stops again
+        for name in self._dying.intersection(
+            (contact.a, contact.b)
+        ):  # OnCollisionEnter2D → DealDamage → Die: it stops again
             _stop(engine, name)
         self.flights.on_contact(contact.a, contact.b, time)
         if time > self._invulnerable:
@@ -268,14 +321,20 @@ class Game(RunRules):
         if self._settle_after_solved is not None and self._pigs:
             if self._solved_at is None and not any(p in alive for p in self._pigs):
                 self._solved_at = time
-            if self._solved_at is not None and time - self._solved_at >= self._settle_after_solved and not self._falling(values, self._dynamic):
+            if (
+                self._solved_at is not None
+                and time - self._solved_at >= self._settle_after_solved
+                and not self._falling(values, self._dynamic)
+            ):
                 return True
         if self._stop_at_rest:
             still = self.world.rest_speed
             # A shot to come waits for the level to be static, birds and all (ABGameWorld.IsLevelStable:
             # a bird at rest, not yet removed, is still); the run ends once the last bird is gone too.
             waiting = self.flights.waiting()
-            if (not waiting and not alive.isdisjoint(self.flights.flying)) or any(abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values):
+            if (not waiting and not alive.isdisjoint(self.flights.flying)) or any(
+                abs(vx) + abs(vy) + abs(w) > still for _, _, _, vx, vy, w in values
+            ):
                 self._resting_since = None
             elif self._resting_since is None:
                 self._resting_since = time
@@ -286,16 +345,22 @@ class Game(RunRules):
                 self._resting_since = None
         return False
 
-    def play(self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, resume=None, **options) -> Trace:
+    def play(
+        self, shot: Shot | None = None, seconds: float = 10.0, restrictions=(), redirects=None, resume=None, **options
+    ) -> Trace:
         """`simulate`, with the interactions recognised and the restrictions checked (`redirects`:
         the declared bounces, see physc.simulation.restrictions)."""
         scene = self.scene(shot, **options)
-        return play_scene(scene, self.backend, self, seconds, self.world.recogniser, restrictions, redirects, resume=resume)
+        return play_scene(
+            scene, self.backend, self, seconds, self.world.recogniser, restrictions, redirects, resume=resume
+        )
 
     def completed(self, trace: Trace) -> Trace:
         """The trace with the damage another reading of the open points would have dealt, the
         birds that came in and the parts of each split bird."""
-        return attrs.evolve(trace, depends=tuple(self._depends), outlines=dict(self.outlines), parts=dict(self.flights.parent))
+        return attrs.evolve(
+            trace, depends=tuple(self._depends), outlines=dict(self.outlines), parts=dict(self.flights.parent)
+        )
 
     def read(self, interactions: tuple) -> tuple:
         """What a blue bird's other birds and a white bird's egg did, their bird's; each tap that
@@ -377,7 +442,11 @@ class Game(RunRules):
         for obj in self.level.objects:
             catalogue = BY_PREFAB[obj.type]
             if catalogue.round or catalogue.kind == "pig":
-                circle = prefabs.circle_radius(obj.type, self.model.circle_colliders) if obj.type in prefabs.prefabs() else None
+                circle = (
+                    prefabs.circle_radius(obj.type, self.model.circle_colliders)
+                    if obj.type in prefabs.prefabs()
+                    else None
+                )
                 out[obj.name] = circle or min(catalogue.width, catalogue.height) / 2
         return out
 
@@ -390,11 +459,27 @@ class Game(RunRules):
         if speed <= 0:
             return
         for target in (contact.a, contact.b):
-            if target not in self.life or self.life[target] <= 0 or target in self._dying or self.kinds.get(target) == "platform":
+            if (
+                target not in self.life
+                or self.life[target] <= 0
+                or target in self._dying
+                or self.kinds.get(target) == "platform"
+            ):
                 continue  # a platform has no ABGameObject: nothing of it is damaged
             other = contact.b if target == contact.a else contact.a
-            rv = contact.relative_velocity if target == contact.a else (-contact.relative_velocity[0], -contact.relative_velocity[1])
-            strike = Strike(self._party(engine, target), self._party(engine, other), speed, rv, self.defence[target], self.material.get(target, ""))
+            rv = (
+                contact.relative_velocity
+                if target == contact.a
+                else (-contact.relative_velocity[0], -contact.relative_velocity[1])
+            )
+            strike = Strike(
+                self._party(engine, target),
+                self._party(engine, other),
+                speed,
+                rv,
+                self.defence[target],
+                self.material.get(target, ""),
+            )
             amount, attacker, per_speed = strike.dealt(rules)
             least = most = None
             if self._fields and strike.most(rules, self._platform_masses) > 0:
@@ -429,7 +514,9 @@ class Game(RunRules):
         rules = self.rules
         self._blast(engine, name, rules.tnt_radius, rules.tnt_impulse, rules.tnt_damage, alive, damage, time)
 
-    def _blast(self, engine, name: str, radius: float, power: float, amount: float, alive: set, damage: list, time: float) -> None:
+    def _blast(
+        self, engine, name: str, radius: float, power: float, amount: float, alive: set, damage: list, time: float
+    ) -> None:
         """ABTNT.Explode where `name` is: every body within `radius` but birds takes damage and
         an impulse away from it, both falling off linearly with the distance."""
         cx, cy = engine.state(name)[:2]

@@ -26,10 +26,14 @@ class Unreachable(ValueError):
 class Launch:
     """The slingshot's launch: where the bird rests, how far a full stretch pulls it, its speed."""
 
-    bird_rest: tuple[float, float] = attrs.field(default=(-12.15, -1.7), metadata={"source": "Phy-Q levels' bird (sciencebirds-facts §1)"})
+    bird_rest: tuple[float, float] = attrs.field(
+        default=(-12.15, -1.7), metadata={"source": "Phy-Q levels' bird (sciencebirds-facts §1)"}
+    )
     speed: float = attrs.field(default=10.0, metadata={"source": "ABConstants.BIRD_MAX_LANUCH_SPEED"})
     drag_radius: float = attrs.field(default=1.0, metadata={"source": "BirdRed.prefab `_dragRadius`"})
-    collider_offset: tuple[float, float] = attrs.field(default=(0.05, -0.03), metadata={"source": "BirdRed.prefab CircleCollider2D `m_Offset`"})
+    collider_offset: tuple[float, float] = attrs.field(
+        default=(0.05, -0.03), metadata={"source": "BirdRed.prefab CircleCollider2D `m_Offset`"}
+    )
 
     def point(self, angle: float, stretch: float = 1.0) -> tuple[float, float]:
         """Where the bird's centre starts a shot released at `angle` degrees: the rest point
@@ -137,7 +141,11 @@ class Shot:
         return self.start(world)[1]
 
     def text(self) -> str:
-        aim = f"angle {self.angle:g}°" if self.angle is not None else f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
+        aim = (
+            f"angle {self.angle:g}°"
+            if self.angle is not None
+            else f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
+        )
         return aim + ("" if self.tap is None else f", tap at {self.tap:g} s")
 
     @property

@@ -86,13 +86,17 @@ class Source:
             return line, None
         if attribute is not None:
             tag_end = self.text.find(">", start)
-            found = re.compile(rf"\s{re.escape(attribute)}\s*=").search(self.text, start, tag_end if tag_end >= 0 else end)
+            found = re.compile(rf"\s{re.escape(attribute)}\s*=").search(
+                self.text, start, tag_end if tag_end >= 0 else end
+            )
             if found:
                 start = found.start() + 1
         where = self.source.span(start, start)
         return where.line, where.column
 
-    def error(self, code: str, message: str, element, attribute: str | None = None, help: str | None = None) -> LevelError:
+    def error(
+        self, code: str, message: str, element, attribute: str | None = None, help: str | None = None
+    ) -> LevelError:
         return LevelError(code, message, *self.position(element, attribute), help=help)
 
     # ---- values ----------------------------------------------------------------------
@@ -108,32 +112,52 @@ class Source:
         elif text.strip().lstrip("+-").lower() in ("nan", "inf", "infinity"):
             value = math.nan
         else:
-            raise self.error("E0902", f"<{element.tag}> {attribute}=\"{_short(text)}\" is not a number", element, attribute)
+            raise self.error(
+                "E0902", f'<{element.tag}> {attribute}="{_short(text)}" is not a number', element, attribute
+            )
         if not math.isfinite(value):
-            raise self.error("E0902", f"<{element.tag}> {attribute}=\"{_short(text)}\" is not a finite number", element, attribute)
+            raise self.error(
+                "E0902", f'<{element.tag}> {attribute}="{_short(text)}" is not a finite number', element, attribute
+            )
         return value
 
-    def bounded(self, element, attribute: str, low: float, high: float, what: str, required: bool = True) -> float | None:
+    def bounded(
+        self, element, attribute: str, low: float, high: float, what: str, required: bool = True
+    ) -> float | None:
         """A number within [low, high]; `what` says what the range is, for the message."""
         value = self.number(element, attribute, required)
         if value is not None and not low <= value <= high:
-            raise self.error("E0904", f"<{element.tag}> {attribute}=\"{_short(element.get(attribute))}\" is out of range: {what}", element, attribute)
+            raise self.error(
+                "E0904",
+                f'<{element.tag}> {attribute}="{_short(element.get(attribute))}" is out of range: {what}',
+                element,
+                attribute,
+            )
         return value
 
     def coordinate(self, element, attribute: str) -> float:
         limit = f"{MAX_COORDINATE:g}"
-        return self.bounded(element, attribute, -MAX_COORDINATE, MAX_COORDINATE, f"positions are from -{limit} to {limit}")
+        return self.bounded(
+            element, attribute, -MAX_COORDINATE, MAX_COORDINATE, f"positions are from -{limit} to {limit}"
+        )
 
     def rotation(self, element) -> float | None:
         limit = f"{MAX_ROTATION:g}"
-        return self.bounded(element, "rotation", -MAX_ROTATION, MAX_ROTATION, f"rotations are from -{limit} to {limit} degrees", required=False)
+        return self.bounded(
+            element,
+            "rotation",
+            -MAX_ROTATION,
+            MAX_ROTATION,
+            f"rotations are from -{limit} to {limit} degrees",
+            required=False,
+        )
 
     def scale(self, element, attribute: str) -> float | None:
         value = self.number(element, attribute, required=False)
         if value is not None and not MIN_SCALE <= abs(value) <= MAX_SCALE:
             raise self.error(
                 "E0904",
-                f"<{element.tag}> {attribute}=\"{_short(element.get(attribute))}\" is out of range: "
+                f'<{element.tag}> {attribute}="{_short(element.get(attribute))}" is out of range: '
                 f"a scale's size is from {MIN_SCALE:g} to {MAX_SCALE:g} (negative mirrors)",
                 element,
                 attribute,
@@ -165,13 +189,23 @@ class Source:
         given = element.get("material")
         if element.tag != "Block" or given in MATERIALS:
             return given
-        message = "<Block> has no 'material' attribute" if given is None else f"unknown material '{_short(given)}' for <Block>"
+        message = (
+            "<Block> has no 'material' attribute"
+            if given is None
+            else f"unknown material '{_short(given)}' for <Block>"
+        )
         return self._unknown(message, given or "", MATERIALS, element, "material", "materials", code="E0905")
 
     def _unknown(self, message, given, known, element, attribute, kinds, code="E0903"):
         listed = f"{kinds}: {', '.join(known)}"
         suggestion = did_you_mean(given, known) if given else None
-        raise self.error(code, message, element, attribute if element.get(attribute) is not None else None, help=f"{suggestion} ({listed})" if suggestion else listed)
+        raise self.error(
+            code,
+            message,
+            element,
+            attribute if element.get(attribute) is not None else None,
+            help=f"{suggestion} ({listed})" if suggestion else listed,
+        )
 
 
 def _short(text: str, limit: int = 40) -> str:

@@ -70,7 +70,9 @@ class ScienceBirdsFiles(LevelFiles):
 
         if isinstance(task, ConcreteLayout):
             return render(task, fmt, self.domain.world)
-        trace = self.domain.game(task.level).simulate(self.domain.actions.action_of(task.solution), self.domain.seconds, settle_after_solved=0.5)
+        trace = self.domain.game(task.level).simulate(
+            self.domain.actions.action_of(task.solution), self.domain.seconds, settle_after_solved=0.5
+        )
         supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
         title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
         return save(draw_level(task.level, self.domain.world, title, trace.paths(), supports), fmt)

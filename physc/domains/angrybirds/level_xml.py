@@ -59,12 +59,16 @@ def decode(data: bytes) -> str:
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as error:
-        raise LevelError("E0901", f"the level file is neither UTF-8 nor UTF-16 (byte 0x{data[error.start]:02x})") from None
+        raise LevelError(
+            "E0901", f"the level file is neither UTF-8 nor UTF-16 (byte 0x{data[error.start]:02x})"
+        ) from None
 
 
 def _parser() -> etree.XMLParser:
     """lxml's parser, made safe for files nobody here wrote: nothing outside the text is read."""
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False)
+    return etree.XMLParser(
+        resolve_entities=False, no_network=True, load_dtd=False, dtd_validation=False, huge_tree=False
+    )
 
 
 def _tree(text: str):
@@ -122,7 +126,12 @@ def parse_level(text: str) -> Level:
     if root.get("width") is not None:
         width = source.number(root, "width")
         if not 0 < width <= MAX_WIDTH:
-            raise source.error("E0904", f"<Level> width=\"{root.get('width')}\" is out of range: more than 0 and at most {MAX_WIDTH:g}", root, "width")
+            raise source.error(
+                "E0904",
+                f'<Level> width="{root.get("width")}" is out of range: more than 0 and at most {MAX_WIDTH:g}',
+                root,
+                "width",
+            )
     objects, elements = [], []
     counts: dict[str, int] = {}
     container = root.find("GameObjects")
@@ -130,7 +139,12 @@ def parse_level(text: str) -> Level:
         if not isinstance(element.tag, str):
             continue  # a comment or a processing instruction
         if element.tag not in ELEMENTS:
-            raise source.error("E0903", f"unknown game object <{element.tag}>", element, help=did_you_mean(element.tag, ELEMENTS) or f"game objects are {', '.join(f'<{e}>' for e in ELEMENTS)}")
+            raise source.error(
+                "E0903",
+                f"unknown game object <{element.tag}>",
+                element,
+                help=did_you_mean(element.tag, ELEMENTS) or f"game objects are {', '.join(f'<{e}>' for e in ELEMENTS)}",
+            )
         if len(objects) == MAX_BODIES:
             raise source.error(
                 "E0906",
@@ -162,7 +176,7 @@ def parse_level(text: str) -> Level:
             "E0908",
             f"{len(stacked):,} pairs of objects are stacked into one another (centres nearer than half the smaller one), more than the {MAX_DEEP_OVERLAPS} physc plays",
             elements[stacked[MAX_DEEP_OVERLAPS][1]],
-            help="real levels have none: objects touch, they do not sit inside one another; a pile of bodies at one spot takes Box2D minutes a step at the game's 100 iterations (docs/angrybirds.md, \"Level files\")",
+            help='real levels have none: objects touch, they do not sit inside one another; a pile of bodies at one spot takes Box2D minutes a step at the game\'s 100 iterations (docs/angrybirds.md, "Level files")',
         )
     return Level(
         width=width,

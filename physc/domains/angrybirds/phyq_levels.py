@@ -29,7 +29,21 @@ from physc.domains.angrybirds import agent_action
 from physc.domains.angrybirds.level_xml import parse_level
 
 GAME_FOLDER = "9001_Data/StreamingAssets/Levels/physc/Levels"  # where the game reads them, relative to its folder
-COLUMNS = ("level", "file", "scenario", "seed", "world", "shot", "release_angle", "dx", "dy", "tap_time", "agent_angle", "reference_x", "reference_y")
+COLUMNS = (
+    "level",
+    "file",
+    "scenario",
+    "seed",
+    "world",
+    "shot",
+    "release_angle",
+    "dx",
+    "dy",
+    "tap_time",
+    "agent_angle",
+    "reference_x",
+    "reference_y",
+)
 
 
 def level_file(row: dict, number: int) -> str:
@@ -53,12 +67,24 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
             angle = shot.get("release_angle")
             action, launched = shot.get("agent_action"), shot.get("agent_angle")
             if action is None or launched is None:  # a task made before solutions recorded it
-                action, launched = agent_action.agent_action(angle, level.slingshot, level.camera.y, level.camera.max_width)
+                action, launched = agent_action.agent_action(
+                    angle, level.slingshot, level.camera.y, level.camera.max_width
+                )
             shots.append(
                 {
-                    "level": number, "file": name, "scenario": row["scenario"], "seed": row["seed"], "world": world, "shot": k,
-                    "release_angle": angle, "dx": action[0], "dy": action[1], "tap_time": action[2],
-                    "agent_angle": round(launched, 5), "reference_x": reference[0], "reference_y": reference[1],
+                    "level": number,
+                    "file": name,
+                    "scenario": row["scenario"],
+                    "seed": row["seed"],
+                    "world": world,
+                    "shot": k,
+                    "release_angle": angle,
+                    "dx": action[0],
+                    "dy": action[1],
+                    "tap_time": action[2],
+                    "agent_angle": round(launched, 5),
+                    "reference_x": reference[0],
+                    "reference_y": reference[1],
                 }
             )
     table = io.StringIO()

@@ -17,12 +17,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
 
-from physc.picture import save  # noqa: E402,F401  (angrybirds' pictures are saved as every domain's)
-
 from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
 from physc.domains.angrybirds.catalogue import by_prefab, extent  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
+from physc.picture import save  # noqa: E402,F401  (angrybirds' pictures are saved as every domain's)
 
 MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
 KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}
@@ -48,7 +47,9 @@ def picture_top(level: Level) -> float:
     return max([o.y + 1.0 for o in level.objects] + [6.0]) + 0.5
 
 
-def draw_level(level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True, top: float | None = None):
+def draw_level(
+    level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True, top: float | None = None
+):
     """A matplotlib figure of a level in `world` (its frame: bounds, ground, the bird's rest);
     `paths` maps names to [(x, y), …], drawn as arrows. `bird`: drawn at rest (True), at a
     point (x, y), or not at all (False); `top`: the picture's upper edge (by default above
@@ -63,7 +64,15 @@ def draw_level(level: Level, world, title: str = "", paths=None, supports=frozen
     sling_x, sling_y = level.slingshot
     axes.add_patch(patches.Rectangle((sling_x - 0.12, ground), 0.24, sling_y + 0.9 - ground, color="#6b4226", zorder=1))
     if bird is not False:
-        axes.add_patch(patches.Circle(world.launch.bird_rest if bird is True else bird, 0.17, facecolor=KIND_COLOURS["bird"], edgecolor="black", zorder=3))
+        axes.add_patch(
+            patches.Circle(
+                world.launch.bird_rest if bird is True else bird,
+                0.17,
+                facecolor=KIND_COLOURS["bird"],
+                edgecolor="black",
+                zorder=3,
+            )
+        )
     for obj in level.objects:
         kind = by_prefab(obj.type).kind
         if kind == "platform":
@@ -79,14 +88,23 @@ def draw_level(level: Level, world, title: str = "", paths=None, supports=frozen
         artist.set_zorder(3)
         axes.add_patch(artist)
         if obj.name:
-            axes.annotate(obj.name, (obj.x, obj.y), ha="center", va="center", fontsize=6, zorder=6,
-                          bbox={"boxstyle": "round,pad=0.1", "fc": "white", "alpha": 0.6, "lw": 0})
+            axes.annotate(
+                obj.name,
+                (obj.x, obj.y),
+                ha="center",
+                va="center",
+                fontsize=6,
+                zorder=6,
+                bbox={"boxstyle": "round,pad=0.1", "fc": "white", "alpha": 0.6, "lw": 0},
+            )
     for name, points in (paths or {}).items():
         if len(points) < 2:
             continue
         xs, ys = zip(*points)
         axes.plot(xs, ys, linestyle="--", linewidth=1.0, color="#333333", zorder=4)
-        axes.annotate("", points[-1], points[-2], arrowprops={"arrowstyle": "->", "color": "#333333", "lw": 1.2}, zorder=4)
+        axes.annotate(
+            "", points[-1], points[-2], arrowprops={"arrowstyle": "->", "color": "#333333", "lw": 1.2}, zorder=4
+        )
     axes.set_title(title, fontsize=10)
     axes.tick_params(labelsize=7)
     figure.tight_layout()
@@ -96,5 +114,7 @@ def draw_level(level: Level, world, title: str = "", paths=None, supports=frozen
 def render(layout: ConcreteLayout, fmt: str, world, title: str | None = None, paths=None) -> bytes:
     """A picture of a concrete layout: as the Science Birds level it becomes in `world`."""
     supports = frozenset(o.name for o in layout.objects if o.role == "support")
-    figure = draw_level(level_from_layout(layout), world, title or f"{layout.scenario} (seed {layout.seed})", paths, supports)
+    figure = draw_level(
+        level_from_layout(layout), world, title or f"{layout.scenario} (seed {layout.seed})", paths, supports
+    )
     return save(figure, fmt)

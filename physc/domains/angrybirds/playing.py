@@ -41,12 +41,20 @@ def aim_at_pigs(env, observation, attempt: int):
     return np.array([angle], np.float32)
 
 
-
 class AngryBirdsPlaying(Playing):
     env_id = "physc/AngryBirds-v0"
     modes = ("angle", "point")
     noise = True  # the evaluation's noise model (noise.py): objects and release angle jittered
-    feature_names = ("x", "y", "rotation", "width", "height", *(f"is_{k}" for k in KINDS), *(f"is_{m}" for m in MATERIALS), "is_round")
+    feature_names = (
+        "x",
+        "y",
+        "rotation",
+        "width",
+        "height",
+        *(f"is_{k}" for k in KINDS),
+        *(f"is_{m}" for m in MATERIALS),
+        "is_round",
+    )
     picture_shape = PICTURE
     heuristic = staticmethod(aim_at_pigs)
 
@@ -58,7 +66,9 @@ class AngryBirdsPlaying(Playing):
         frame = world.frame
         low = np.array([frame.left, frame.ground_top], np.float32)
         high = np.array([frame.right, frame.placement.top], np.float32)
-        return spaces.Dict(target=spaces.Box(low, high, (2,), np.float32), trajectory=spaces.Discrete(len(TRAJECTORIES)))
+        return spaces.Dict(
+            target=spaces.Box(low, high, (2,), np.float32), trajectory=spaces.Discrete(len(TRAJECTORIES))
+        )
 
     def action(self, domain, level, mode: str, action):
         """A Shot; None for a point the bird cannot reach on the trajectory asked."""
@@ -78,10 +88,18 @@ class AngryBirdsPlaying(Playing):
             shape = BY_PREFAB.get(obj.type)
             kind = shape.kind if shape is not None else obj.element.lower()
             width, height = extent(obj) if shape is not None else (0.0, 0.0)
-            rows.append([
-                obj.x, obj.y, obj.rotation or 0.0, width, height, *(kind == k for k in KINDS),
-                *((obj.material or "") == m for m in MATERIALS), bool(shape is not None and shape.round),
-            ])
+            rows.append(
+                [
+                    obj.x,
+                    obj.y,
+                    obj.rotation or 0.0,
+                    width,
+                    height,
+                    *(kind == k for k in KINDS),
+                    *((obj.material or "") == m for m in MATERIALS),
+                    bool(shape is not None and shape.round),
+                ]
+            )
         return np.array(rows, np.float32).reshape(len(rows), len(self.feature_names))
 
     def picture(self, domain, level) -> np.ndarray:
@@ -118,7 +136,9 @@ class AngryBirdsPlaying(Playing):
             state = states.get(obj.name, ())
             if state is None:
                 gone.add(obj.name)
-            moved.append(obj if not state else attrs.evolve(obj, x=state[0], y=state[1], rotation=math.degrees(state[2])))
+            moved.append(
+                obj if not state else attrs.evolve(obj, x=state[0], y=state[1], rotation=math.degrees(state[2]))
+            )
         bird = states.get("bird")
         return attrs.evolve(level, objects=tuple(moved)), gone, (bird[0], bird[1]) if bird else False
 
@@ -145,8 +165,10 @@ class AngryBirdsPlaying(Playing):
     def reward(self, trace) -> tuple[float, dict]:
         pigs = list(trace.goal)
         destroyed = [d.name for d in trace.destructions if d.name in pigs]
-        return (len(destroyed) / len(pigs) if pigs else float(trace.solved)), {"pigs": len(pigs), "pigs_destroyed": len(destroyed)}
+        return (len(destroyed) / len(pigs) if pigs else float(trace.solved)), {
+            "pigs": len(pigs),
+            "pigs_destroyed": len(destroyed),
+        }
 
 
 PLAYING = AngryBirdsPlaying()
-

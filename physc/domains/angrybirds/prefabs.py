@@ -54,7 +54,11 @@ def _rings(collider: dict) -> tuple[tuple[tuple[float, float], ...], list]:
 def _collider_parts(collider: dict) -> tuple[Polygon | Circle, ...]:
     if collider["type"] == "box":
         (w, h), (dx, dy) = collider["size"], collider["offset"]
-        return (Polygon(((dx - w / 2, dy - h / 2), (dx + w / 2, dy - h / 2), (dx + w / 2, dy + h / 2), (dx - w / 2, dy + h / 2))),)
+        return (
+            Polygon(
+                ((dx - w / 2, dy - h / 2), (dx + w / 2, dy - h / 2), (dx + w / 2, dy + h / 2), (dx - w / 2, dy + h / 2))
+            ),
+        )
     if collider["type"] == "circle":
         if collider["offset"] != [0.0, 0.0]:
             raise ValueError("an off-centre circle collider is not a physc shape")
@@ -77,7 +81,9 @@ def circle_first(prefab: str) -> bool:
     polygon (Phy-Q's Circle, CircleSmall and pigs)."""
     colliders = prefabs()[prefab]["colliders"]
     return (
-        len(colliders) >= 2 and colliders[0]["type"] == "circle" and not colliders[0]["enabled"]
+        len(colliders) >= 2
+        and colliders[0]["type"] == "circle"
+        and not colliders[0]["enabled"]
         and any(c["type"] == "polygon" and c["enabled"] for c in colliders[1:])
     )
 
@@ -99,7 +105,9 @@ def enabled(prefab: str) -> list[dict]:
 def body_shape(prefab: str, circle_colliders: bool = False) -> Circle | Polygon | Compound:
     """The prefab's colliders (`colliders`) as one body's shape (convex parts about its origin,
     each naming its collider: the game hears of a contact once per pair of colliders)."""
-    pieces = [(index, part) for index, collider in colliders(prefab, circle_colliders) for part in _collider_parts(collider)]
+    pieces = [
+        (index, part) for index, collider in colliders(prefab, circle_colliders) for part in _collider_parts(collider)
+    ]
     parts = tuple(part for _, part in pieces)
     return parts[0] if len(parts) == 1 else Compound(parts, tuple(index for index, _ in pieces))
 

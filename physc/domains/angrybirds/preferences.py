@@ -56,8 +56,8 @@ along a chain (no gain).
 from __future__ import annotations
 
 from physc.compiler.layout_graph import LayoutGraph
-from physc.domains.angrybirds.catalogue import MATERIAL
 from physc.compiler.sequence import last_hit_on
+from physc.domains.angrybirds.catalogue import MATERIAL
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 from physc.dsl.scenario import ScenarioIR
 
@@ -140,7 +140,12 @@ def square_when_it_falls_on_a_mover(scenario: ScenarioIR, graph: LayoutGraph, co
     allowed = _allowed(graph)
     moving = {t.objects[0] for t in scenario.interactions if t.name in ("roll", "slide")}
     for term in scenario.interactions:
-        if term.name == "fall" and term.objects[1] in moving and concrete.get(term.objects[0]) in ROUND and SQUARE in allowed.get(term.objects[0], ()):
+        if (
+            term.name == "fall"
+            and term.objects[1] in moving
+            and concrete.get(term.objects[0]) in ROUND
+            and SQUARE in allowed.get(term.objects[0], ())
+        ):
             concrete[term.objects[0]] = SQUARE
 
 

@@ -27,7 +27,8 @@ class Rules:
     damage_factor: float = _cited(11.22, "ABConstants.DAMAGE_CONSTANT_MULTIPLIER")
     block_damage_share: float = _cited(0.5, "ABGameObject.OnCollisionEnter2D")
     bird_multiplier: dict = attrs.field(
-        factory=lambda: {"wood": 1.0, "stone": 1.0, "ice": 1.0, "": 1.0}, metadata={"source": "BirdRed.prefab `_woodDamageMultiplier` etc."}
+        factory=lambda: {"wood": 1.0, "stone": 1.0, "ice": 1.0, "": 1.0},
+        metadata={"source": "BirdRed.prefab `_woodDamageMultiplier` etc."},
     )
     # Who attacks in a contact. "object": as the game's scripts do, each object in its own
     # OnCollisionEnter2D (called after the step) takes as attacker whichever of itself and the
@@ -37,7 +38,9 @@ class Rules:
     # Which way `Collision2D.relativeVelocity` points, which the game's files leave open (Unity's
     # 2D physics computes it): "this-minus-other" (this object's velocity less the other's) or
     # "other-minus-this". A task must hold under both (ScienceBirdsWorld.readings).
-    relative_velocity: str = _cited("other-minus-this", "open: Unity's Collision2D.relativeVelocity (not in the game's files)")
+    relative_velocity: str = _cited(
+        "other-minus-this", "open: Unity's Collision2D.relativeVelocity (not in the game's files)"
+    )
     # The platform's mass as the attacker's in a block's or pig's OnCollisionEnter2D. Platform.prefab
     # is a kinematic Rigidbody2D (`m_BodyType: 1`) with `m_Mass: 1` and no auto mass; what
     # `Rigidbody2D.mass` returns for a kinematic body (the stored 1, or Box2D's 0) is not in the
@@ -48,7 +51,9 @@ class Rules:
     # projections closer than `tie_band` units/s are decided by rounding, which the files cannot
     # say; "this" (the comparison as written: an exact tie is not `>`): the object attacks
     # itself, "other": the other body attacks. A task must hold under both.
-    near_tie: str = _cited("this", "open: ABGameObject.OnCollisionEnter2D compares projectCollision > projectThis in float32")
+    near_tie: str = _cited(
+        "this", "open: ABGameObject.OnCollisionEnter2D compares projectCollision > projectThis in float32"
+    )
     # The band of a near tie: float32's resolution at the game's speeds (2⁻²³ of 16 units/s is
     # 2·10⁻⁶) times the few roundings of a projection, with room for the solver's order of
     # bodies (head-on pushes tie within 2·10⁻⁷ to 7·10⁻⁶ units/s, docs/angrybirds.md).
@@ -86,7 +91,9 @@ class Bodies:
     # Whether a prefab whose first collider is a disabled circle before an enabled polygon
     # (Circle, CircleSmall, the pigs) collides as that circle instead (and the game's density
     # rule lands on it): False in Phy-Q's game.
-    circle_colliders: bool = _cited(False, "Circle.prefab, CircleSmall.prefab, the pigs: the CircleCollider2D is disabled")
+    circle_colliders: bool = _cited(
+        False, "Circle.prefab, CircleSmall.prefab, the pigs: the CircleCollider2D is disabled"
+    )
     angular_drag: float = _cited(2.0, "the blocks' and pigs' prefabs: Rigidbody2D m_AngularDrag")
     bird_angular_drag: float = _cited(2.0, "BirdRed.prefab: Rigidbody2D m_AngularDrag")
     tnt_angular_drag: float = _cited(0.05, "TNT.prefab: Rigidbody2D m_AngularDrag")
@@ -102,5 +109,6 @@ class Bodies:
     platform_friction: float = _cited(0.4, "Platform.prefab names no material: Unity's default")
     ground_friction: float = _cited(0.4, "the ground names no material: Unity's default")
     materials: dict = attrs.field(
-        factory=lambda: dict(MATERIAL), metadata={"source": "Wood, Stone, Ice .physicsMaterial2D; densities and defences: the blocks' scripts"}
+        factory=lambda: dict(MATERIAL),
+        metadata={"source": "Wood, Stone, Ice .physicsMaterial2D; densities and defences: the blocks' scripts"},
     )

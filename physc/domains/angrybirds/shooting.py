@@ -10,7 +10,9 @@ import random
 from physc.domains.actions import Actions
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 
-NUDGE_STEP = 0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
+NUDGE_STEP = (
+    0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
+)
 
 
 class ScienceBirdsActions(Actions):

@@ -44,8 +44,12 @@ class Solution:
 
     def __attrs_post_init__(self):
         """A task file's shot holds finite numbers and a trajectory (ValueError if not)."""
-        numbers = (*self.target, self.release_angle) if isinstance(self.target, tuple) and len(self.target) == 2 else None
-        if numbers is None or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
+        numbers = (
+            (*self.target, self.release_angle) if isinstance(self.target, tuple) and len(self.target) == 2 else None
+        )
+        if numbers is None or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers
+        ):
             raise ValueError("the solution's target and release angle must be finite numbers")
         if self.trajectory not in ("low", "high"):
             raise ValueError(f"the solution's trajectory is 'low' or 'high', not {self.trajectory!r}")
@@ -69,9 +73,13 @@ class BirdShot:
 
     def __attrs_post_init__(self):
         """A task file's shot holds finite numbers where a shot has them (ValueError if not)."""
-        numbers = [*self.target, self.release_angle] if isinstance(self.target, tuple) and len(self.target) == 2 else None
+        numbers = (
+            [*self.target, self.release_angle] if isinstance(self.target, tuple) and len(self.target) == 2 else None
+        )
         numbers = numbers and numbers + [v for v in (self.tap, self.wait) if v is not None]
-        if not numbers or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers):
+        if not numbers or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in numbers
+        ):
             raise ValueError("a shot's target, release angle, tap and wait must be finite numbers")
         if self.trajectory not in ("low", "high"):
             raise ValueError(f"a shot's trajectory is 'low' or 'high', not {self.trajectory!r}")
@@ -102,7 +110,9 @@ def shot_starts(scenario, player: str) -> tuple[int, ...]:
     named = birds(scenario, player)[1:]
     out = []
     for k, term in enumerate(scenario.interactions):
-        if any(name in named and not any(name in t.objects for t in scenario.interactions[:k]) for name in term.objects):
+        if any(
+            name in named and not any(name in t.objects for t in scenario.interactions[:k]) for name in term.objects
+        ):
             out.append(k)
     return tuple(sorted(set(out)))
 
@@ -140,11 +150,16 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
     for label, shot in domain.search.actions_at(level, target):
         shot = attrs.evolve(shot, bird=name)
         if tapped(scenario, name):
-            variants = [(f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share))) for share in TAP_SHARES]
+            variants = [
+                (f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share)))
+                for share in TAP_SHARES
+            ]
         else:
             variants = [(label, shot)]
         if before is not None and timed(scenario, start, order):
-            variants = [(f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS]
+            variants = [
+                (f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS
+            ]
         for text, variant in variants:
             if before is None:
                 out.append((text, variant))
@@ -165,7 +180,13 @@ def where_left(level, trace):
         state = states.get(obj.name, ())
         if state is None:
             continue
-        objects.append(obj if not state else attrs.evolve(obj, x=round(state[0], 5), y=round(state[1], 5), rotation=round(math.degrees(state[2]), 3)))
+        objects.append(
+            obj
+            if not state
+            else attrs.evolve(
+                obj, x=round(state[0], 5), y=round(state[1], 5), rotation=round(math.degrees(state[2]), 3)
+            )
+        )
     return attrs.evolve(level, objects=tuple(objects))
 
 
@@ -189,7 +210,10 @@ def simple(action) -> bool:
 
 def noisy(action, world, rng, sigma: float):
     """Each shot's release angle jittered (in the order shot)."""
-    return as_action(Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait) for s in shots_of(action))
+    return as_action(
+        Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait)
+        for s in shots_of(action)
+    )
 
 
 def nudged(action, world, step: int, degrees: float):
@@ -209,7 +233,11 @@ def solution(label: str, action, world):
     parts = []
     for k, shot in enumerate(shots_of(action)):
         aimed = labels[k].split(": ", 1)[-1] if k < len(labels) else label
-        parts.append(BirdShot(shot.bird, aimed, shot.target, shot.trajectory, round(shot.release_angle(world), 5), shot.tap, shot.wait))
+        parts.append(
+            BirdShot(
+                shot.bird, aimed, shot.target, shot.trajectory, round(shot.release_angle(world), 5), shot.tap, shot.wait
+            )
+        )
     return ShotsSolution(label, tuple(parts))
 
 
@@ -227,7 +255,9 @@ def action_of(solution, noise=None):
             if noise is None:
                 shots.append(Shot(target=tuple(s.target), trajectory=s.trajectory, tap=s.tap, bird=s.bird, wait=s.wait))
             else:
-                shots.append(Shot(angle=s.release_angle + noise[0].gauss(0.0, noise[1]), tap=s.tap, bird=s.bird, wait=s.wait))
+                shots.append(
+                    Shot(angle=s.release_angle + noise[0].gauss(0.0, noise[1]), tap=s.tap, bird=s.bird, wait=s.wait)
+                )
         return as_action(shots)
     if noise is None:
         return Shot(target=tuple(solution.target), trajectory=solution.trajectory)

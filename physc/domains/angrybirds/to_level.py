@@ -28,11 +28,27 @@ def level_from_layout(layout: ConcreteLayout) -> Level:
                 )
             )
         elif catalogue.kind == "pig":
-            objects.append(LevelObject("Pig", catalogue.prefab, level_number(placed.x), level_number(placed.y), rotation, name=placed.name))
+            objects.append(
+                LevelObject(
+                    "Pig", catalogue.prefab, level_number(placed.x), level_number(placed.y), rotation, name=placed.name
+                )
+            )
         elif catalogue.kind == "tnt":  # the game's <TNT> element (LevelLoader.cs), its own prefab
-            objects.append(LevelObject("TNT", catalogue.prefab, level_number(placed.x), level_number(placed.y), rotation, name=placed.name))
+            objects.append(
+                LevelObject(
+                    "TNT", catalogue.prefab, level_number(placed.x), level_number(placed.y), rotation, name=placed.name
+                )
+            )
         else:
             objects.append(
-                LevelObject("Block", catalogue.prefab, level_number(placed.x), level_number(placed.y), rotation, placed.material, name=placed.name)
+                LevelObject(
+                    "Block",
+                    catalogue.prefab,
+                    level_number(placed.x),
+                    level_number(placed.y),
+                    rotation,
+                    placed.material,
+                    name=placed.name,
+                )
             )
     return Level(objects=tuple(objects))

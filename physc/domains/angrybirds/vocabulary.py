@@ -19,10 +19,16 @@ MATERIALS = ("wood", "stone", "ice")  # a block's (catalogue.MATERIALS)
 CONCRETE_OBJECTS = (
     ConcreteObject("redBird", description="the red bird (Science Birds BirdRed)"),
     # Version 2: the game's other birds and their powers, set off by a tap (`tap(bird)`).
-    ConcreteObject("blueBird", description="the blue bird (BirdBlue): a tap splits it into three, fanned +15°, +5° and −5°"),
+    ConcreteObject(
+        "blueBird", description="the blue bird (BirdBlue): a tap splits it into three, fanned +15°, +5° and −5°"
+    ),
     ConcreteObject("yellowBird", description="the yellow bird (BirdYellow): a tap speeds it up along its flight"),
-    ConcreteObject("blackBird", description="the black bird (BirdBlack): it blasts at a tap, or 0.6 s after it strikes"),
-    ConcreteObject("whiteBird", description="the white bird (BirdWhite): a tap drops an egg that blasts where it lands"),
+    ConcreteObject(
+        "blackBird", description="the black bird (BirdBlack): it blasts at a tap, or 0.6 s after it strikes"
+    ),
+    ConcreteObject(
+        "whiteBird", description="the white bird (BirdWhite): a tap drops an egg that blasts where it lands"
+    ),
     ConcreteObject("pigSmall", description="a small pig (BasicSmall)"),
     ConcreteObject("pigMedium", description="a medium pig (BasicMedium)"),
     ConcreteObject("circleSmall", description="a small circular block (CircleSmall)", materials=MATERIALS),
@@ -39,13 +45,28 @@ CONCRETE_OBJECTS = (
     ConcreteObject("squareSmall", description="a small square, 0.38 (SquareSmall)", materials=MATERIALS),
     ConcreteObject("squareTiny", description="a tiny square, 0.18 (SquareTiny)", materials=MATERIALS),
     ConcreteObject("triangle", description="a right triangle, 0.75 (Triangle)", materials=MATERIALS),
-    ConcreteObject("tnt", description="a TNT box (TNT): any blow destroys it, and its blast damages and pushes what lies within 2.5 units"),
+    ConcreteObject(
+        "tnt",
+        description="a TNT box (TNT): any blow destroys it, and its blast damages and pushes what lies within 2.5 units",
+    ),
     ConcreteObject("flatPlatform", static=True, description="a horizontal platform (Platform)"),
     ConcreteObject("inclinedPlatform", static=True, description="a rotated platform (Platform)"),
-    ConcreteObject("ground", static=True, description="the level's ground, under everything (every level has it; it is not written)"),
+    ConcreteObject(
+        "ground",
+        static=True,
+        description="the level's ground, under everything (every level has it; it is not written)",
+    ),
 )
 
-SQUARED = ("rectFat", "rectBig", "rectMedium", "rectSmall", "rectTiny", "squareSmall", "squareTiny")  # flat-bottomed: they fall and slide
+SQUARED = (
+    "rectFat",
+    "rectBig",
+    "rectMedium",
+    "rectSmall",
+    "rectTiny",
+    "squareSmall",
+    "squareTiny",
+)  # flat-bottomed: they fall and slide
 
 OBJECT_TERMS = (
     ObjectTerm("bird", ("redBird",), noun="a bird", pinnable=("blueBird", "yellowBird", "blackBird", "whiteBird")),
@@ -71,33 +92,40 @@ OBJECT_TERMS = (
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableBlock", slidable="slidableBlock", surface="surface")
 CONTRAST, ON = structure_terms()
 TERMS = (
-    PAPER["hit"],
-    PAPER["roll"],
-    PAPER["fall"],
-    PAPER["slide"],
-    PAPER["bounce"],
-    TermSignature(
-        "explode",
-        INTERACTION,
-        (Parameter("a", OBJECT, fits="tnt", acts=True),),
-        "a TNT box a is destroyed by a blow, and its blast damages and pushes what lies near it (version 2)",
-    ),
-    TermSignature(
-        "tap",
-        INTERACTION,
-        (Parameter("a", OBJECT, fits="bird", acts=True),),
-        "the player taps bird a in flight, setting off its power: a blue bird splits in three, a yellow one speeds up, "
-        "a black one blasts, a white one drops an egg (version 2)",
-    ),
-    TermSignature(
-        "destroy",
-        INTERACTION,
-        (Parameter("a", OBJECT, dynamic=True, acts=True), Parameter("b", OBJECT, fits="pig", destroys=True, completes=True)),
-        "a destroys b in the collision (or, after explode(a), in a's blast)",
-        requires="hit",
-        enabled_by="explode",
-    ),
-) + RESTRICTIONS + (CONTRAST, ON)
+    (
+        PAPER["hit"],
+        PAPER["roll"],
+        PAPER["fall"],
+        PAPER["slide"],
+        PAPER["bounce"],
+        TermSignature(
+            "explode",
+            INTERACTION,
+            (Parameter("a", OBJECT, fits="tnt", acts=True),),
+            "a TNT box a is destroyed by a blow, and its blast damages and pushes what lies near it (version 2)",
+        ),
+        TermSignature(
+            "tap",
+            INTERACTION,
+            (Parameter("a", OBJECT, fits="bird", acts=True),),
+            "the player taps bird a in flight, setting off its power: a blue bird splits in three, a yellow one speeds up, "
+            "a black one blasts, a white one drops an egg (version 2)",
+        ),
+        TermSignature(
+            "destroy",
+            INTERACTION,
+            (
+                Parameter("a", OBJECT, dynamic=True, acts=True),
+                Parameter("b", OBJECT, fits="pig", destroys=True, completes=True),
+            ),
+            "a destroys b in the collision (or, after explode(a), in a's blast)",
+            requires="hit",
+            enabled_by="explode",
+        ),
+    )
+    + RESTRICTIONS
+    + (CONTRAST, ON)
+)
 
 VOCABULARY = Vocabulary(
     object_terms=OBJECT_TERMS,

@@ -46,16 +46,25 @@ SCIENCE_BIRDS_ENGINE = EngineSettings(
 
 OPEN_POINTS = (
     OpenPoint(
-        "rules.relative_velocity", ("other-minus-this", "this-minus-other"), "which way Collision2D.relativeVelocity points",
-        "Unity's Collision2D.relativeVelocity: not in the game's files, and Unity does not document its sign", "relativeVelocity {value}",
+        "rules.relative_velocity",
+        ("other-minus-this", "this-minus-other"),
+        "which way Collision2D.relativeVelocity points",
+        "Unity's Collision2D.relativeVelocity: not in the game's files, and Unity does not document its sign",
+        "relativeVelocity {value}",
     ),
     OpenPoint(
-        "rules.platform_mass", (1.0, 0.0), "what Rigidbody2D.mass returns for the kinematic platform",
-        "Platform.prefab: Rigidbody2D m_BodyType 1 (kinematic), m_Mass 1, m_UseAutoMass 0", "platform mass {value:g}",
+        "rules.platform_mass",
+        (1.0, 0.0),
+        "what Rigidbody2D.mass returns for the kinematic platform",
+        "Platform.prefab: Rigidbody2D m_BodyType 1 (kinematic), m_Mass 1, m_UseAutoMass 0",
+        "platform mass {value:g}",
     ),
     OpenPoint(
-        "rules.near_tie", ("this", "other"), "which body attacks when the two projections tie within rules.tie_band",
-        "ABGameObject.OnCollisionEnter2D: projectCollision > projectThis, in float32", "near ties: {value} attacks",
+        "rules.near_tie",
+        ("this", "other"),
+        "which body attacks when the two projections tie within rules.tie_band",
+        "ABGameObject.OnCollisionEnter2D: projectCollision > projectThis, in float32",
+        "near ties: {value} attacks",
     ),
 )
 
@@ -68,8 +77,12 @@ class ScienceBirdsWorld(World):
     launch: Launch = attrs.field(factory=Launch)
     bodies: Bodies = attrs.field(factory=Bodies)
     rules: Rules = attrs.field(factory=Rules)
-    rest_speed: float = attrs.field(default=0.02, metadata={"source": "physc: below this (units/s, rad/s) a body counts as at rest"})
-    falling_speed: float = attrs.field(default=0.5, metadata={"source": "physc: coming down faster (units/s), a body is still falling"})
+    rest_speed: float = attrs.field(
+        default=0.02, metadata={"source": "physc: below this (units/s, rad/s) a body counts as at rest"}
+    )
+    falling_speed: float = attrs.field(
+        default=0.5, metadata={"source": "physc: coming down faster (units/s), a body is still falling"}
+    )
 
     def open_points(self) -> tuple[OpenPoint, ...]:
         """What the game's files leave open about its damage rule (docs/angrybirds.md, "Points
@@ -92,10 +105,24 @@ PHYQ = ScienceBirdsWorld(
     engine=SCIENCE_BIRDS_ENGINE,
     gravity=9.81 * 0.48,
     recogniser=Recogniser(
-        hit_speed=0.3, rehit=0.1, moving=0.15, roll_slip=0.5, slide_spin=1.0, motion_time=0.2, fall_time=0.2,
-        fall_height=0.4, bounce_time=0.2, bounce_speed=1.0,
-        surfaces=("platform", "ground"), background=("ground",), thrown=("bird",), explosive=("tnt",),
-        travel=0.22, hop_rise=1.0, round_slides=False, bounce_walls=True,
+        hit_speed=0.3,
+        rehit=0.1,
+        moving=0.15,
+        roll_slip=0.5,
+        slide_spin=1.0,
+        motion_time=0.2,
+        fall_time=0.2,
+        fall_height=0.4,
+        bounce_time=0.2,
+        bounce_speed=1.0,
+        surfaces=("platform", "ground"),
+        background=("ground",),
+        thrown=("bird",),
+        explosive=("tnt",),
+        travel=0.22,
+        hop_rise=1.0,
+        round_slides=False,
+        bounce_walls=True,
     ),
     incline=Incline(descending=(10.0, 25.0), other=(15.0, 40.0), ramp=(12.7, 26.8), ramp_length=(5.4, 7.1)),
     sources={
@@ -122,7 +149,9 @@ ROLLING = PHYQ.derive(
     "physc's reading of the paper's unpublished 'adjusted physics parameters' (patches/rolling/); its words are the "
     "paper's: a roll or slide is motion in unbroken contact, with no least travel (docs/angrybirds.md, 'What the motion words mean')",
     bodies=attrs.evolve(PHYQ.bodies, circle_colliders=True, angular_drag=0.05),
-    recogniser=attrs.evolve(PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True, bounce_walls=False),
+    recogniser=attrs.evolve(
+        PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True, bounce_walls=False
+    ),
 )
 
 WORLDS = (PHYQ, ROLLING)
@@ -135,6 +164,8 @@ def catalogue_model(colliders: str) -> ScienceBirdsWorld:
     if colliders == "game":
         return PHYQ
     return PHYQ.derive(
-        f"phyq-{colliders}", f"Phy-Q's game with physc's '{colliders}' catalogue bodies", "physc's catalogue model (benchmarks only)",
+        f"phyq-{colliders}",
+        f"Phy-Q's game with physc's '{colliders}' catalogue bodies",
+        "physc's catalogue model (benchmarks only)",
         bodies=attrs.evolve(PHYQ.bodies, colliders=colliders),
     )

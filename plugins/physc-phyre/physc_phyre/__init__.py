@@ -14,6 +14,7 @@ import functools
 import random
 
 import attrs
+
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.actions import Actions
@@ -21,7 +22,6 @@ from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.scene import Scene
-
 from physc_phyre import actions, two_balls, world
 from physc_phyre.concretize import concretize
 from physc_phyre.evaluation import PhyreEvaluation
@@ -81,16 +81,37 @@ class PhyreActions(Actions):
 
 class Phyre(SimulatedDomain):
     name = "phyre"
-    description = "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
+    description = (
+        "PHYRE-like tasks: the agent places a red ball (or two); the green object must touch the target for 3 s"
+    )
     vocabulary = VOCABULARY
     worlds = (PHYRE,)
     capabilities = SimulatedDomain.capabilities | {
-        "layout_rules", "layout_parameters", "concretize", "level_from_layout", "scene", "actions", "distractors", "random_action",
-        "emit_level", "picture", "score_agent",
+        "layout_rules",
+        "layout_parameters",
+        "concretize",
+        "level_from_layout",
+        "scene",
+        "actions",
+        "distractors",
+        "random_action",
+        "emit_level",
+        "picture",
+        "score_agent",
     }
-    layout_rules = LayoutRules(player="redBall", flat="blackBar", ground="floor", player_placed=False, continuous_paths=True, fall_ahead_after_motion=True)
-    layout_parameters = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
+    layout_rules = LayoutRules(
+        player="redBall",
+        flat="blackBar",
+        ground="floor",
+        player_placed=False,
+        continuous_paths=True,
+        fall_ahead_after_motion=True,
+    )
+    layout_parameters = LayoutParameters(
+        clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE
+    )
     seconds = world.MAX_STEPS / world.FPS
+
     @property
     def playing(self):
         """How agents play its tasks (playing.py; physc/PhyreLike-v0)."""
@@ -117,7 +138,9 @@ class Phyre(SimulatedDomain):
         specs, kinds, radii = list(specs), dict(kinds), dict(radii)
         balls = action.balls if action is not None else ()
         if len(balls) > len(level.players):  # (fewer: the ball tier's actions on a two-ball task, as PHYRE judges it)
-            raise ValueError(f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}")
+            raise ValueError(
+                f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}"
+            )
         for name, ball in zip(level.players, balls):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))
             kinds[name] = "agent"
@@ -130,8 +153,6 @@ class Phyre(SimulatedDomain):
         return GoalRules.of(level)
 
 
-
-
 @functools.lru_cache(maxsize=64)
 def _level_scene(level: PhyreLevel) -> tuple[tuple, dict, dict]:
     """(bodies, kinds, rolling radii) of the level without the agent's balls: the same for
@@ -140,7 +161,9 @@ def _level_scene(level: PhyreLevel) -> tuple[tuple, dict, dict]:
     kinds = {spec.name: "wall" for spec in specs} | {level.floor: "floor"}
     radii = {}
     for body in level.bodies:
-        specs.append(world.body_spec(body.name, world.outline(body.shape, body.size), body.x, body.y, body.angle, body.dynamic))
+        specs.append(
+            world.body_spec(body.name, world.outline(body.shape, body.size), body.x, body.y, body.angle, body.dynamic)
+        )
         kinds[body.name] = "object" if body.dynamic else "surface"
         if body.shape == "ball":
             radii[body.name] = body.size / world.PIXELS_PER_METRE

@@ -100,8 +100,15 @@ class TierResult:
     def record(self) -> dict:
         c = self.counts
         return {
-            "tier": self.tier, "chunks": self.chunks, "attempts": c.attempts, "valid": c.valid, "solved": list(c.solved),
-            "stable": list(c.stable), "flags": list(self.flags), "simulated": self.simulated, "given_up": self.given_up,
+            "tier": self.tier,
+            "chunks": self.chunks,
+            "attempts": c.attempts,
+            "valid": c.valid,
+            "solved": list(c.solved),
+            "stable": list(c.stable),
+            "flags": list(self.flags),
+            "simulated": self.simulated,
+            "given_up": self.given_up,
             "solve_rate": round(self.solved_simulated / max(self.simulated, 1), 6),
         }
 
@@ -128,7 +135,12 @@ class Verdict:
 
     @property
     def accepted(self) -> bool:
-        return self.solution_stable and self.main is not None and self.main.answer and not any(t.answer or t.given_up for t in self.excluded)
+        return (
+            self.solution_stable
+            and self.main is not None
+            and self.main.answer
+            and not any(t.answer or t.given_up for t in self.excluded)
+        )
 
     @property
     def flags(self) -> list[str]:
@@ -164,8 +176,12 @@ class Verdict:
         """The figures a task file and `physc eval` keep."""
         main = self.main.record() if self.main is not None else {}
         return {
-            "accepted": self.accepted, "flags": self.flags, "solution_stable": self.solution_stable,
-            "simulations": self.simulations, **main, "unsolvable_in": [t.record() for t in self.excluded],
+            "accepted": self.accepted,
+            "flags": self.flags,
+            "solution_stable": self.solution_stable,
+            "simulations": self.simulations,
+            **main,
+            "unsolvable_in": [t.record() for t in self.excluded],
         }
 
 
@@ -207,7 +223,9 @@ def done(rule: Acceptance, valid: int, solved: int, stable: int, held: frozenset
     """PHYRE's `_update_done_stats`: whether the rule decides at these counts."""
     if valid < rule.min_valid or not {"GOOD", "BAD"} & held or not {"GOOD_STABLE", "BAD_STABLE"} & held:
         return False
-    return not ("GOOD" in held and solved < rule.min_solutions) and not ("GOOD_STABLE" in held and stable < rule.min_solutions)
+    return not ("GOOD" in held and solved < rule.min_solutions) and not (
+        "GOOD_STABLE" in held and stable < rule.min_solutions
+    )
 
 
 def answer(rule: Acceptance, held: frozenset[str], main: bool) -> bool:
@@ -247,8 +265,10 @@ def _settled(rule: Acceptance, counts: Counts, main: bool) -> tuple[bool, set]:
     n, t = counts.valid, counts.attempts
     (s_lo, s_hi), (st_lo, st_hi) = counts.solved, counts.stable
     solved_tests = (
-        lambda k: _greater(k, n, rule.threshold) < rule.p_value, lambda k: _less(k, n, 2 * rule.threshold) < rule.p_value,
-        lambda k: k >= rule.min_solutions, lambda k: k > 0,
+        lambda k: _greater(k, n, rule.threshold) < rule.p_value,
+        lambda k: _less(k, n, 2 * rule.threshold) < rule.p_value,
+        lambda k: k >= rule.min_solutions,
+        lambda k: k > 0,
     )
     stable_tests = solved_tests[:3] + (lambda k: k / max(t, 1) >= rule.trivial,)
     seen = set()
@@ -274,7 +294,9 @@ def stable_solution(action, neighbours, valid: Callable, solves: Callable) -> bo
     return all(not valid(n) or solves(n) for n in neighbours(action))
 
 
-def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable, main: bool = True) -> TierResult:
+def evaluate(
+    rule: Acceptance, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable, main: bool = True
+) -> TierResult:
     """PHYRE's evaluation of a task in `rule`'s tier, settled early (module docstring):
     `pool(chunk)` the chunk's actions, `valid(a)`, `solves(a)` (a simulation),
     `neighbours(a)`. `main`: the answer is whether the task is kept; otherwise whether it is
@@ -291,8 +313,11 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
     def result(answer_: bool, given_up: str | None = None) -> TierResult:
         counts = bounds()
         certain = [
-            name for name in ("GOOD_STABLE", "GOOD", "BAD_STABLE", "BAD", "IMPOSSIBLE", "TRIVIAL")
-            if all(name in flags(rule, counts.attempts, counts.valid, s, st) for s in counts.solved for st in counts.stable)
+            name
+            for name in ("GOOD_STABLE", "GOOD", "BAD_STABLE", "BAD", "IMPOSSIBLE", "TRIVIAL")
+            if all(
+                name in flags(rule, counts.attempts, counts.valid, s, st) for s in counts.solved for st in counts.stable
+            )
         ]
         return TierResult(rule.tier, answer_, chunks, counts, tuple(certain), simulated, solved, given_up)
 
@@ -333,7 +358,9 @@ def evaluate(rule: Acceptance, pool: Callable, valid: Callable, solves: Callable
             return result(decided)
 
 
-def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable) -> Verdict:
+def judge(
+    rule: Acceptance, solution, pool: Callable, valid: Callable, solves: Callable, neighbours: Callable
+) -> Verdict:
     """The verdict on a task whose intended action is `solution`: `pool(rule, chunk)` the
     chunk of `rule`'s tier and size, the rest as `evaluate` takes them. The tiers the task must not
     be solvable in are judged first, as PHYRE does, and a task solvable there is not judged
@@ -355,8 +382,17 @@ def judge(rule: Acceptance, solution, pool: Callable, valid: Callable, solves: C
     return Verdict(True, main, tuple(excluded), plays[0])
 
 
-def verdict(rule: Acceptance, level, action, solves: Callable, pool: Callable, valid: Callable, neighbours: Callable) -> Verdict:
+def verdict(
+    rule: Acceptance, level, action, solves: Callable, pool: Callable, valid: Callable, neighbours: Callable
+) -> Verdict:
     """`rule`'s verdict on a finished level whose intended action is `action`: `solves(candidate)`
     plays one action (within the search's budget), `pool(level, tier, chunk, size)` the pool's
     chunks, `valid(level, action)` and `neighbours(action)` as the domain's actions say."""
-    return judge(rule, action, lambda r, chunk: pool(level, r.tier, chunk, r.chunk), lambda a: valid(level, a), solves, neighbours)
+    return judge(
+        rule,
+        action,
+        lambda r, chunk: pool(level, r.tier, chunk, r.chunk),
+        lambda a: valid(level, a),
+        solves,
+        neighbours,
+    )

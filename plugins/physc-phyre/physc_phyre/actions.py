@@ -39,7 +39,13 @@ def drops(level: PhyreLevel, first) -> list[tuple[str, BallAction]]:
     target = names[first.objects[1]]
     left, _, right, top = outline_box(target)
     width = right - left
-    points = {"upper left": left, "left of top": left + width / 4, "top": left + width / 2, "right of top": right - width / 4, "upper right": right}
+    points = {
+        "upper left": left,
+        "left of top": left + width / 4,
+        "top": left + width / 2,
+        "right of top": right - width / 4,
+        "upper right": right,
+    }
     gaps = FALL_GAPS if first.name == "fall" else GAPS
     sides = _sides(first)
     out, seen = [], set()
@@ -50,7 +56,9 @@ def drops(level: PhyreLevel, first) -> list[tuple[str, BallAction]]:
                 for at, x_ in shoulders or ((point, x),):
                     # As high as asked, or as high as the scene allows (a target near the top).
                     y = min(int(top + radius + gap), SCENE - radius)
-                    action = BallAction(int(x_), y, radius, f"{target.name} {at}, r {radius}, {y - top - radius:.0f} px above")
+                    action = BallAction(
+                        int(x_), y, radius, f"{target.name} {at}, r {radius}, {y - top - radius:.0f} px above"
+                    )
                     if (action.x, action.y, radius) not in seen and placeable(level, action):
                         seen.add((action.x, action.y, radius))
                         out.append((action.aimed_at, action))
@@ -172,8 +180,12 @@ def moved(action, shift):
 # src/simulator/geometry.h's helpers (lines 19-163), in the C++ float arithmetic PHYRE computes
 # it in; docs/phyre-facts.md, "Invalid actions".
 INSIDENESS_EPS = np.float32(1e-5)  # px, kInsidenessEps (geometry.h:20): a ball may sink this far into a body, a touch
-ZERO_LENGTH_EDGE_EPS = np.float32(1e-4)  # px², kZeroLengthEdgeEps (geometry.h:19): a polygon's edge this short (squared) is a point
-EXACT_WITHIN = 1e-3  # px: a ball this near a touch is judged in PHYRE's float arithmetic (its rounding is under 1e-4 px here)
+ZERO_LENGTH_EDGE_EPS = np.float32(
+    1e-4
+)  # px², kZeroLengthEdgeEps (geometry.h:19): a polygon's edge this short (squared) is a point
+EXACT_WITHIN = (
+    1e-3  # px: a ball this near a touch is judged in PHYRE's float arithmetic (its rounding is under 1e-4 px here)
+)
 F32 = np.float32
 _EPS = float(INSIDENESS_EPS)  # the same, for the test in doubles
 
@@ -219,7 +231,9 @@ def _as_phyre_reads(body: SceneBody) -> tuple:
 def _reads(data: dict) -> tuple:
     """(x, y, angle, shapes) of a body of a task file (task_file.py's structure)."""
     shapes = tuple(
-        float(shape["circle"]["radius"]) if "circle" in shape else tuple((v["x"], v["y"]) for v in shape["polygon"]["vertices"])
+        float(shape["circle"]["radius"])
+        if "circle" in shape
+        else tuple((v["x"], v["y"]) for v in shape["polygon"]["vertices"])
         for shape in data["shapes"]
     )
     return data["position"]["x"], data["position"]["y"], data["angle"], shapes
@@ -258,7 +272,10 @@ def _phyre_polygon(points, px: float, py: float, angle: float, x: float, y: floa
     c, s = float(F32(math.cos(a))), float(F32(math.sin(a)))
     tx, ty = x - px, y - py
     qx, qy = tx * c - ty * s, tx * s + ty * c
-    if all(F32((x1 - x0) * (qy - y0) - (y1 - y0) * (qx - x0)) > 0 for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points)):
+    if all(
+        F32((x1 - x0) * (qy - y0) - (y1 - y0) * (qx - x0)) > 0
+        for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points)
+    ):
         return True
     best = min(_square_distance_to_segment(p0, p1, qx, qy) for p0, p1 in zip(points[-1:] + points[:-1], points))
     return F32(np.sqrt(best)) + INSIDENESS_EPS < F32(radius)

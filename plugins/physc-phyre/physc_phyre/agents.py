@@ -25,10 +25,10 @@ from pathlib import Path
 
 import attrs
 import numpy as np
+
 from physc.domains.base import DomainError
 from physc.evaluation.agent import calling
 from physc.simulation.ending import Ending
-
 from physc_phyre import observation, phyre_format
 from physc_phyre.actions import from_unit
 
@@ -41,9 +41,13 @@ class Observation:
     """What an agent is shown of a task."""
 
     task_id: str
-    image: np.ndarray = attrs.field(eq=False, repr=False)  # PHYRE's colour indices, (256, 256) uint8, row 0 at the bottom
+    image: np.ndarray = attrs.field(
+        eq=False, repr=False
+    )  # PHYRE's colour indices, (256, 256) uint8, row 0 at the bottom
     features: np.ndarray = attrs.field(eq=False, repr=False)  # (objects, 14) float32
-    task: dict = attrs.field(eq=False, repr=False)  # the task in PHYRE's structure (phyre_format.py), without its solutions
+    task: dict = attrs.field(
+        eq=False, repr=False
+    )  # the task in PHYRE's structure (phyre_format.py), without its solutions
 
 
 def random_agent(seen: Observation) -> Iterable[tuple[float, ...]]:
@@ -106,7 +110,11 @@ def random_attempts(domain, level, rng: random.Random) -> dict:
     if not outcomes:
         return {"accidental": None, "agent_plays": 0}
     first = next((k + 1 for k, solved in enumerate(outcomes) if solved), None)
-    return {"accidental": round(sum(outcomes) / len(outcomes), 5), "agent_plays": len(outcomes), "auccess": round(auccess(first), 5)}
+    return {
+        "accidental": round(sum(outcomes) / len(outcomes), 5),
+        "agent_plays": len(outcomes),
+        "auccess": round(auccess(first), 5),
+    }
 
 
 def first_solved(domain, level, seen: Observation, agent: Callable) -> int | None:
@@ -140,7 +148,8 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
     setups = json.loads((folder / "phyre" / "folds.json").read_text())
     if setup not in setups:
         raise DomainError(
-            "E0703", f"the dataset has no evaluation setup '{setup}' (its folds.json: {', '.join(setups)})",
+            "E0703",
+            f"the dataset has no evaluation setup '{setup}' (its folds.json: {', '.join(setups)})",
             help="name one of them with --setup; PHYRE's setups are per action tier",
         )
     split_of = setups[setup]
@@ -173,7 +182,12 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
             "templates": {t: round(statistics.mean(v), 5) for t, v in sorted(per_template.items())},
         }
     means = [r["auccess"] for r in results.values() if r["auccess"] is not None]
-    return {"setup": setup, "split": split, "folds": results, "auccess": round(statistics.mean(means), 5) if means else None}
+    return {
+        "setup": setup,
+        "split": split,
+        "folds": results,
+        "auccess": round(statistics.mean(means), 5) if means else None,
+    }
 
 
 def _rows(folder: Path) -> list[dict]:

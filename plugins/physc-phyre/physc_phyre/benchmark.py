@@ -21,8 +21,8 @@ import io
 import json
 
 import numpy as np
-from physc.domains.base import DomainError
 
+from physc.domains.base import DomainError
 from physc_phyre import folds, observation, phyre_format
 
 FOLDER = "phyre"
@@ -35,7 +35,8 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
         templates.setdefault(row["scenario"], len(templates))
     if len(templates) > phyre_format.TEMPLATES:
         raise DomainError(
-            "E0703", f"the dataset has {len(templates)} scenarios, but physc's range of PHYRE templates holds {phyre_format.TEMPLATES}",
+            "E0703",
+            f"the dataset has {len(templates)} scenarios, but physc's range of PHYRE templates holds {phyre_format.TEMPLATES}",
             help="generate fewer scenarios into one dataset",
         )
     out = []
@@ -43,7 +44,8 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
         mine = sorted(((row, text) for row, text in tasks if row["scenario"] == scenario), key=lambda t: t[0]["seed"])
         if len(mine) > phyre_format.INSTANCES:
             raise DomainError(
-                "E0703", f"scenario '{scenario}' has {len(mine)} tasks, but a PHYRE template holds {phyre_format.INSTANCES} at most (its instance ids have three digits)",
+                "E0703",
+                f"scenario '{scenario}' has {len(mine)} tasks, but a PHYRE template holds {phyre_format.INSTANCES} at most (its instance ids have three digits)",
                 help="generate fewer --tasks per scenario",
             )
         for instance, (row, text) in enumerate(mine):
@@ -92,7 +94,9 @@ def _action(task: dict) -> list[float] | None:
     if not solutions:
         return None
     balls = solutions[0].get("balls", ())
-    return [v for ball in balls for v in BallAction(ball["position"]["x"], ball["position"]["y"], ball["radius"]).unit()] or None
+    return [
+        v for ball in balls for v in BallAction(ball["position"]["x"], ball["position"]["y"], ball["radius"]).unit()
+    ] or None
 
 
 def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:

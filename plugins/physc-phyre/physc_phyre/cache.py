@@ -36,7 +36,9 @@ def _actions(text: str) -> int:
     except ValueError:
         value = 0
     if not 1 <= value <= MAX_ACTIONS:
-        raise argparse.ArgumentTypeError(f"expected a whole number from 1 to {MAX_ACTIONS} (PHYRE's cache holds {MAX_ACTIONS}), got {text!r}")
+        raise argparse.ArgumentTypeError(
+            f"expected a whole number from 1 to {MAX_ACTIONS} (PHYRE's cache holds {MAX_ACTIONS}), got {text!r}"
+        )
     return value
 
 
@@ -44,10 +46,16 @@ def parser() -> argparse.ArgumentParser:
     from physc.commands.common import Parser
     from physc.commands.running import add_executor
 
-    made = Parser(prog=PROG, description="PHYRE's simulation cache (simulation_cache.gz) of the tasks of a dataset physc generate wrote")
+    made = Parser(
+        prog=PROG,
+        description="PHYRE's simulation cache (simulation_cache.gz) of the tasks of a dataset physc generate wrote",
+    )
     made.add_argument("dataset", metavar="DATASET", help="a dataset of PHYRE-like tasks (physc generate --out)")
     made.add_argument(
-        "--actions", type=_actions, default=DEFAULT_ACTIONS, metavar="N",
+        "--actions",
+        type=_actions,
+        default=DEFAULT_ACTIONS,
+        metavar="N",
         help=f"actions per task: the first N of PHYRE's pool of seed 42 (default {DEFAULT_ACTIONS}; PHYRE's own cache: {MAX_ACTIONS})",
     )
     add_executor(made)
@@ -59,11 +67,14 @@ def tasks_of(dataset: Path) -> dict[str, list[tuple[str, str]]]:
     """(task id, task file) of each task of the dataset, by PHYRE's action tier, in id order;
     every task file is read here, so that a bad one stops the run before any work."""
     import pyarrow.parquet as pq
+
     from physc.commands.common import UsageError
 
     table = dataset / "phyre" / "tasks.parquet"
     if not table.is_file():
-        raise UsageError(f"{dataset} has no phyre/tasks.parquet: is it a dataset physc generate wrote from PHYRE-like scenarios?")
+        raise UsageError(
+            f"{dataset} has no phyre/tasks.parquet: is it a dataset physc generate wrote from PHYRE-like scenarios?"
+        )
     try:
         rows = pq.read_table(table, columns=["task_id", "task", "tier"]).to_pylist()
     except Exception as error:  # pyarrow's errors for a damaged or foreign file have no common base
@@ -73,7 +84,9 @@ def tasks_of(dataset: Path) -> dict[str, list[tuple[str, str]]]:
     tiers: dict[str, list[tuple[str, str]]] = {}
     for row in sorted(rows, key=lambda r: r["task_id"]):
         if row["tier"] not in simulation_cache.TIERS:
-            raise UsageError(f"{table}: task {row['task_id']} is of the tier {row['tier']!r}, which PHYRE's cache does not hold")
+            raise UsageError(
+                f"{table}: task {row['task_id']} is of the tier {row['tier']!r}, which PHYRE's cache does not hold"
+            )
         path = str(dataset / row["task"])
         try:
             simulation_cache.task_level(path)
@@ -84,7 +97,11 @@ def tasks_of(dataset: Path) -> dict[str, list[tuple[str, str]]]:
 
 
 def chunks(tasks: list[tuple[str, str]], actions: np.ndarray) -> list[simulation_cache.Chunk]:
-    return [simulation_cache.Chunk(task_id, path, start, actions[start : start + CHUNK]) for task_id, path in tasks for start in range(0, len(actions), CHUNK)]
+    return [
+        simulation_cache.Chunk(task_id, path, start, actions[start : start + CHUNK])
+        for task_id, path in tasks
+        for start in range(0, len(actions), CHUNK)
+    ]
 
 
 def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, executor, say) -> list[Path]:
@@ -115,7 +132,10 @@ def build(dataset: Path, tiers: dict[str, list[tuple[str, str]]], count: int, ex
     written = []
     for tier, tasks in tiers.items():
         folder = ensure_folder(simulation_cache.cache_folder(dataset / "phyre" / "cache", count, tier))
-        write_atomic(folder / simulation_cache.FILE_NAME, simulation_cache.cache_bytes(pools[tier], {t: statuses[t] for t, _ in tasks}))
+        write_atomic(
+            folder / simulation_cache.FILE_NAME,
+            simulation_cache.cache_bytes(pools[tier], {t: statuses[t] for t, _ in tasks}),
+        )
         written.append(folder / simulation_cache.FILE_NAME)
     return written
 
@@ -153,7 +173,9 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_INTERNAL
     for path in written:
         say(f"wrote {path}")
-    say(f"PHYRE reads it with PHYRE_CACHE_DIR={dataset / 'phyre' / 'cache'}: phyre.SimulationCache(phyre.simulation_cache.get_cache_folder({args.actions}) / tier)")
+    say(
+        f"PHYRE reads it with PHYRE_CACHE_DIR={dataset / 'phyre' / 'cache'}: phyre.SimulationCache(phyre.simulation_cache.get_cache_folder({args.actions}) / tier)"
+    )
     return EXIT_OK
 
 

@@ -22,7 +22,6 @@ import random
 from physc.compiler.concrete_layout import Body
 from physc.compiler.geometry import Geometry
 from physc.compiler.layout_graph import ON_LOCATION
-
 from physc_phyre import furniture
 from physc_phyre.level import HELD, KINDS
 from physc_phyre.world import BAR_HEIGHT, SCENE, WALL, extent
@@ -31,7 +30,10 @@ PATH_LENGTH = (50.0, 90.0)
 LEDGE_LENGTH = (30.0, 70.0)
 BAR_LENGTH = (35.0, 70.0)
 RAMP_LENGTH = (70.0, 120.0)
-TARGET_LENGTH = (80.0, 150.0)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
+TARGET_LENGTH = (
+    80.0,
+    150.0,
+)  # a purple bar the green object comes to rest on: a ball that lands rolling must stay on it
 # A purple pad lying on the floor (PHYRE's 00007: 0.2 of the scene; 00019: 0.1-0.2).
 PAD_LENGTH = (26.0, 51.0)
 # Bars standing upright: a green or gray stick (PHYRE's templates 00003, 00009, 00017: 0.2-0.5
@@ -52,7 +54,9 @@ def _heading_to(scenario, name: str) -> str | None:
     """The way (left or right) the object that touches `name` last rolls or slides before it."""
     for k, term in enumerate(scenario.interactions):
         if term.name == "touch" and term.objects[1] == name:
-            moves = [t for t in scenario.interactions[:k] if t.name in ("roll", "slide") and t.objects[0] == term.objects[0]]
+            moves = [
+                t for t in scenario.interactions[:k] if t.name in ("roll", "slide") and t.objects[0] == term.objects[0]
+            ]
             return moves[-1].directions[0] if moves else None
     return None
 
@@ -77,7 +81,10 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
             carried.setdefault(edge.b, []).append(edge.a)
     # The agent's ball is the action's, never an object of the scene (it is rollable and
     # fallable only so that the red ball may roll and fall).
-    chosen = {node.name: rng.choice([c for c in node.concrete if c in KINDS or c in furniture.KINDS or c == "floor"]) for node in graph.nodes}
+    chosen = {
+        node.name: rng.choice([c for c in node.concrete if c in KINDS or c in furniture.KINDS or c == "floor"])
+        for node in graph.nodes
+    }
     # `cradled(a)`, `pegged(a)`: the support the layout gave a is a cradle, a row of pegs (furniture.py).
     under = {t.objects[0]: SUPPORTS[t.name] for t in scenario.restrictions if t.name in SUPPORTS}
     for support, loads in carried.items():
@@ -89,9 +96,13 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
     for node in sorted(graph.nodes, key=lambda n: n.static):
         name, concrete = node.name, chosen[node.name]
         if concrete == "floor":
-            bodies[name] = Body(name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2))
+            bodies[name] = Body(
+                name, node.role, concrete, Geometry(SCENE + 2 * WALL, WALL), fixed=(SCENE / 2, -WALL / 2)
+            )
         elif concrete in furniture.KINDS and concrete != "pegRow":
-            bodies[name] = Body(name, node.role, concrete, furniture.geometry(concrete, rng, _heading_to(scenario, name)))
+            bodies[name] = Body(
+                name, node.role, concrete, furniture.geometry(concrete, rng, _heading_to(scenario, name))
+            )
         elif concrete == "purpleWall":  # upright against the edge its toucher heads for
             side = _heading_to(scenario, name) or rng.choice(("left", "right"))
             x = BAR_HEIGHT / 2 if side == "left" else SCENE - BAR_HEIGHT / 2
@@ -105,7 +116,9 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
             length = round(rng.uniform(*UPRIGHT[concrete]), 1)
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, 90.0))
         elif concrete == "purpleFloor":
-            bodies[name] = Body(name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT), fixed=(SCENE / 2, BAR_HEIGHT / 2))
+            bodies[name] = Body(
+                name, node.role, concrete, Geometry(SCENE, BAR_HEIGHT), fixed=(SCENE / 2, BAR_HEIGHT / 2)
+            )
         elif concrete == "ramp":
             length = round(rng.uniform(*RAMP_LENGTH), 1)
             if name in headings:
@@ -116,8 +129,20 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
         elif concrete in ("blackBar", "purpleBar", "pegRow") and node.static:
             # A load rests in the ledge's left, middle or right third: three of its widths; a
             # piece of furniture, as wide as a ledge, only needs its centre over an outer third.
-            loads = [(_across(bodies[o].geometry), bodies[o].concrete in furniture.KINDS) for o in carried.get(name, ()) if o in bodies]
-            low, high = PATH_LENGTH if name in headings else LEDGE_LENGTH if name in carried else TARGET_LENGTH if concrete == "purpleBar" else BAR_LENGTH
+            loads = [
+                (_across(bodies[o].geometry), bodies[o].concrete in furniture.KINDS)
+                for o in carried.get(name, ())
+                if o in bodies
+            ]
+            low, high = (
+                PATH_LENGTH
+                if name in headings
+                else LEDGE_LENGTH
+                if name in carried
+                else TARGET_LENGTH
+                if concrete == "purpleBar"
+                else BAR_LENGTH
+            )
             low = max([low] + [(1.5 if wide else 3) * across + 6.0 for across, wide in loads])
             length = round(rng.uniform(low, max(high, low + 30.0)), 1)
             geometry = furniture.peg_row(length) if concrete == "pegRow" else Geometry(length, BAR_HEIGHT)

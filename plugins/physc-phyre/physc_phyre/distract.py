@@ -14,7 +14,6 @@ from __future__ import annotations
 import random
 
 from physc.compiler.concrete_layout import PlacedObject
-
 from physc_phyre.world import BAR_HEIGHT, SCENE
 
 BAR = (20.0, 60.0)  # length, px
@@ -32,7 +31,17 @@ def distractors(layout, index: int, rng: random.Random):
         if kind == "blackBar":
             length = round(rng.uniform(*BAR), 1)
             x, y = rng.uniform(MARGIN + length / 2, SCENE - MARGIN - length / 2), rng.uniform(MARGIN, SCENE - MARGIN)
-            yield PlacedObject(name, "distractor", kind, None, round(x, 3), round(y, 3), round(rng.uniform(-TILT, TILT), 2), length, BAR_HEIGHT)
+            yield PlacedObject(
+                name,
+                "distractor",
+                kind,
+                None,
+                round(x, 3),
+                round(y, 3),
+                round(rng.uniform(-TILT, TILT), 2),
+                length,
+                BAR_HEIGHT,
+            )
         else:
             radius = int(rng.uniform(*RADIUS)) + 0.5
             x = rng.uniform(MARGIN + radius, SCENE - MARGIN - radius)

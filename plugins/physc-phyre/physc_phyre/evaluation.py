@@ -8,8 +8,8 @@ from __future__ import annotations
 import random
 
 import attrs
-from physc.domains.evaluation import Evaluation
 
+from physc.domains.evaluation import Evaluation
 from physc_phyre.acceptance import Acceptance, verdict
 from physc_phyre.level import PhyreLevel
 

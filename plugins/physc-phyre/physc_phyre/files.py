@@ -4,12 +4,12 @@ beside a dataset, the pictures in PHYRE's look, and the task file's ball actions
 from __future__ import annotations
 
 import attrs
+
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.domains.base import MissingCapability
 from physc.domains.level_files import LevelFiles
 from physc.picture import FORMATS
 from physc.simulation.ending import Ending
-
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction, level_from_layout
 from physc_phyre.task_file import task_json
 

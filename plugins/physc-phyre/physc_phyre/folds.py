@@ -35,7 +35,9 @@ def setup(tier: str, kind: str) -> str:
     return f"{TIERS[tier]}_{kind}"
 
 
-_KIND_OF = {kind: kind for kind in KINDS} | {setup(tier, kind): kind for tier in TIERS for kind in KINDS}  # a setup → how it splits
+_KIND_OF = {kind: kind for kind in KINDS} | {
+    setup(tier, kind): kind for tier in TIERS for kind in KINDS
+}  # a setup → how it splits
 
 
 def stable_shuffle(strings: Iterable[str], salt: str = "") -> list[str]:

@@ -29,8 +29,8 @@ import math
 import random
 
 import attrs
-from physc.compiler.geometry import Geometry
 
+from physc.compiler.geometry import Geometry
 from physc_phyre.world import BAR_HEIGHT, extent, jar_thickness
 
 FULCRUM = 12.5  # px, a see-saw's fulcrum ball (PHYRE's 00004: scale 0.1)
@@ -68,7 +68,10 @@ def geometry(concrete: str, rng: random.Random, heading: str | None = None) -> G
     if concrete == "cradle":
         a = math.radians(CRADLE_TILT)
         bar = round(rng.uniform(*CRADLE_BAR), 1)
-        return Geometry(round(2 * bar * math.cos(a) + BAR_HEIGHT * math.sin(a), 3), round(bar * math.sin(a) + BAR_HEIGHT * math.cos(a), 3))
+        return Geometry(
+            round(2 * bar * math.cos(a) + BAR_HEIGHT * math.sin(a), 3),
+            round(bar * math.sin(a) + BAR_HEIGHT * math.cos(a), 3),
+        )
     if concrete == "purpleRamp":
         tilt = rng.uniform(*PURPLE_RAMP_TILT)
         sign = {"right": 1, "left": -1}.get(heading) or rng.choice((-1, 1))
@@ -91,10 +94,18 @@ def bodies(placed, body_class) -> list:
     if placed.concrete in ("seesaw", "blueSeesaw", "teeter"):
         r = FULCRUM if placed.concrete != "teeter" else TEETER_FULCRUM
         length = placed.width
-        beam = body_class(name, "bar", round(cx, 3), round(bottom + 2 * r + BAR_HEIGHT / 2, 3), 0.0, length, color, True)
+        beam = body_class(
+            name, "bar", round(cx, 3), round(bottom + 2 * r + BAR_HEIGHT / 2, 3), 0.0, length, color, True
+        )
         out = [beam, body_class(name + "_fulcrum", "ball", round(cx, 3), round(bottom + r, 3), 0.0, r, "black", False)]
-        if placed.concrete == "teeter":  # a second fulcrum under its right end: it holds until its left half is weighed down
-            out.append(body_class(name + "_end", "ball", round(cx + length / 2 - r, 3), round(bottom + r, 3), 0.0, r, "black", False))
+        if (
+            placed.concrete == "teeter"
+        ):  # a second fulcrum under its right end: it holds until its left half is weighed down
+            out.append(
+                body_class(
+                    name + "_end", "ball", round(cx + length / 2 - r, 3), round(bottom + r, 3), 0.0, r, "black", False
+                )
+            )
         return out
     if placed.concrete == "cradle":
         a = math.radians(CRADLE_TILT)
@@ -103,16 +114,31 @@ def bodies(placed, body_class) -> list:
         dx = bar / 2 * math.cos(a)
         return [
             body_class(name, "bar", round(cx - dx, 3), round(y, 3), round(-a, 6), round(bar, 3), color, False),
-            body_class(name + "_right", "bar", round(cx + dx, 3), round(y, 3), round(a, 6), round(bar, 3), color, False),
+            body_class(
+                name + "_right", "bar", round(cx + dx, 3), round(y, 3), round(a, 6), round(bar, 3), color, False
+            ),
         ]
     if placed.concrete == "purpleRamp":
-        return [body_class(name, "bar", round(cx, 3), round(placed.y, 3), round(math.radians(placed.rotation), 6), placed.width, color, False)]
+        return [
+            body_class(
+                name,
+                "bar",
+                round(cx, 3),
+                round(placed.y, 3),
+                round(math.radians(placed.rotation), 6),
+                placed.width,
+                color,
+                False,
+            )
+        ]
     if placed.concrete == "pegRow":  # evenly spread over the box, the outermost at its ends
         gaps = math.ceil((placed.width - 2 * PEG) / PEG_SPACING - 1e-9)
         step = (placed.width - 2 * PEG) / gaps
         left, y = cx - placed.width / 2 + PEG, round(bottom + PEG, 3)
         names = [name] + [f"{name}_peg{k}" for k in range(1, gaps + 1)]
-        return [body_class(n, "ball", round(left + k * step, 3), y, 0.0, PEG, color, False) for k, n in enumerate(names)]
+        return [
+            body_class(n, "ball", round(left + k * step, 3), y, 0.0, PEG, color, False) for k, n in enumerate(names)
+        ]
     raise ValueError(f"no furniture '{placed.concrete}'")
 
 

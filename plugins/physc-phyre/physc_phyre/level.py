@@ -13,8 +13,8 @@ import math
 import random
 
 import attrs
-from physc.domains.base import DomainError
 
+from physc.domains.base import DomainError
 from physc_phyre import furniture
 from physc_phyre.world import SCENE, extent, jar_thickness, size_of
 
@@ -152,11 +152,15 @@ class SceneBody:
 class PhyreLevel:
     bodies: tuple[SceneBody, ...]
     goal: tuple[str, str]  # the green body and the one it must touch (PHYRE's bodyId1, bodyId2)
-    players: tuple[str, ...] = ("redBall",)  # what the scenario calls the agent's balls, in the order the action places them
+    players: tuple[str, ...] = (
+        "redBall",
+    )  # what the scenario calls the agent's balls, in the order the action places them
     floor: str = "floor"  # what the scenario calls the floor (the bottom wall)
     relation: str = "TOUCHING"
     solutions: tuple[BallAction | TwoBallAction, ...] = ()
-    may_be_trivial: bool = False  # `mayBeTrivial()`: PHYRE's acceptance does not exclude TRIVIAL (the template's search_params)
+    may_be_trivial: bool = (
+        False  # `mayBeTrivial()`: PHYRE's acceptance does not exclude TRIVIAL (the template's search_params)
+    )
 
     def __attrs_post_init__(self):
         names = {b.name for b in self.bodies}
@@ -197,10 +201,14 @@ def level_from_layout(layout, scenario) -> PhyreLevel:
         if placed.concrete in HELD:
             bodies += held(placed.name, x, y, angle, size, color, HELD[placed.concrete])
             continue
-        bodies.append(SceneBody(placed.name, shape, round(x, 3), round(y, 3), round(angle, 6), round(size, 3), color, dynamic))
+        bodies.append(
+            SceneBody(placed.name, shape, round(x, 3), round(y, 3), round(angle, 6), round(size, 3), color, dynamic)
+        )
     # The goal pair is the scenario's `touch(green, target)`; without a scenario (a placed
     # layout's picture), the first green body and the first blue or purple one.
-    touch = next((t.objects for t in scenario.interactions if t.name == "touch"), None) if scenario is not None else None
+    touch = (
+        next((t.objects for t in scenario.interactions if t.name == "touch"), None) if scenario is not None else None
+    )
     names = {b.name for b in bodies}
     if touch is not None and set(touch[:2]) <= names:
         green, target = touch[:2]
@@ -225,7 +233,11 @@ def outline_box(body: SceneBody) -> tuple[float, float, float, float]:
     width, height, below = extent(body.shape, body.size)
     c, s = math.cos(body.angle), math.sin(body.angle)
     cx, cy = body.x - below * s, body.y + below * c
-    corners = [(cx + dx * c - dy * s, cy + dx * s + dy * c) for dx in (-width / 2, width / 2) for dy in (-height / 2, height / 2)]
+    corners = [
+        (cx + dx * c - dy * s, cy + dx * s + dy * c)
+        for dx in (-width / 2, width / 2)
+        for dy in (-height / 2, height / 2)
+    ]
     xs, ys = [p[0] for p in corners], [p[1] for p in corners]
     return min(xs), min(ys), max(xs), max(ys)
 

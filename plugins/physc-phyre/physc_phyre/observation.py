@@ -91,14 +91,23 @@ def raster(task: dict, *balls: tuple[float, float, float]) -> np.ndarray:
     image = np.zeros((scene["height"], scene["width"]), dtype=np.uint8)
     bodies = list(scene["bodies"])
     for ball in balls:
-        bodies.append({"position": {"x": ball[0], "y": ball[1]}, "angle": 0.0, "color": RED, "shapes": [{"circle": {"radius": ball[2]}}]})
+        bodies.append(
+            {
+                "position": {"x": ball[0], "y": ball[1]},
+                "angle": 0.0,
+                "color": RED,
+                "shapes": [{"circle": {"radius": ball[2]}}],
+            }
+        )
     for body in bodies:
         color = body.get("color", 0)
         if not color:
             continue
         for shape in body["shapes"]:
             if "polygon" in shape:
-                _fill_polygon(image, _absolute(shape["polygon"]["vertices"], body["position"], body.get("angle", 0.0)), color)
+                _fill_polygon(
+                    image, _absolute(shape["polygon"]["vertices"], body["position"], body.get("angle", 0.0)), color
+                )
             else:
                 _fill_circle(image, body["position"]["x"], body["position"]["y"], shape["circle"]["radius"], color)
     return image
@@ -113,7 +122,9 @@ def jar_offset(diameter: float) -> float:
     for part in jar_parts(jar_height(diameter)):
         points = part.points
         a = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / 2
-        cy = sum((y0 + y1) * (x0 * y1 - x1 * y0) for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / (6 * a)
+        cy = sum((y0 + y1) * (x0 * y1 - x1 * y0) for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / (
+            6 * a
+        )
         area, moment = area + a, moment + a * cy
     return moment / area
 
@@ -124,13 +135,26 @@ def features(task: dict, *balls: tuple[float, float, float]) -> np.ndarray:
     rows = []
     bodies = [b for b in task["scene"]["bodies"] if b.get("shapeType", 0)]
     for ball in balls:
-        bodies.append({"position": {"x": ball[0], "y": ball[1]}, "angle": ball[3] if len(ball) > 3 else 0.0, "diameter": 2 * ball[2], "shapeType": 1, "color": RED})
+        bodies.append(
+            {
+                "position": {"x": ball[0], "y": ball[1]},
+                "angle": ball[3] if len(ball) > 3 else 0.0,
+                "diameter": 2 * ball[2],
+                "shapeType": 1,
+                "color": RED,
+            }
+        )
     for body in bodies:
         x, y, angle = body["position"]["x"], body["position"]["y"], body.get("angle", 0.0)
         if body["shapeType"] == 3:  # a jar: at its centre of mass
             offset = jar_offset(body["diameter"])
             x, y = x - offset * math.sin(angle), y + offset * math.cos(angle)
-        row = [x / SCENE, y / SCENE, math.fmod(angle, 2 * math.pi) % (2 * math.pi) / (2 * math.pi), body["diameter"] / SCENE]
+        row = [
+            x / SCENE,
+            y / SCENE,
+            math.fmod(angle, 2 * math.pi) % (2 * math.pi) / (2 * math.pi),
+            body["diameter"] / SCENE,
+        ]
         row += [float(i == body["shapeType"] - 1) for i in range(SHAPE_TYPES)]
         row += [float(i == body["color"] - 1) for i in range(COLORS)]
         rows.append(row)

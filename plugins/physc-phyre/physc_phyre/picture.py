@@ -10,13 +10,20 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
+
 from physc.backends import Circle, parts  # noqa: E402
 from physc.picture import save  # noqa: E402
-
 from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction  # noqa: E402
 from physc_phyre.world import PIXELS_PER_METRE, SCENE, outline  # noqa: E402
 
-PALETTE = {"red": "#f34f46", "green": "#6bcebb", "blue": "#1877f2", "purple": "#4b4aa4", "gray": "#b9cad2", "black": "#000000"}
+PALETTE = {
+    "red": "#f34f46",
+    "green": "#6bcebb",
+    "blue": "#1877f2",
+    "purple": "#4b4aa4",
+    "gray": "#b9cad2",
+    "black": "#000000",
+}
 
 
 def _draw(axes, shape, x: float, y: float, angle: float, color: str) -> None:

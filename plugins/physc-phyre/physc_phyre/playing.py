@@ -8,8 +8,8 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from physc.domains.playing import Playing, seen_features
 
+from physc.domains.playing import Playing, seen_features
 from physc_phyre import observation
 from physc_phyre.actions import from_unit
 from physc_phyre.task_file import task_json
@@ -45,8 +45,20 @@ class PhyrePlaying(Playing):
     noise = False  # PHYRE's simulator is deterministic
     # PHYRE's featurized objects (phyre/simulator.py's OBJECT_FEATURE_NAMES order; observation.py)
     feature_names = (
-        "x", "y", "angle", "diameter", "shape_ball", "shape_bar", "shape_jar", "shape_standingsticks",
-        "color_red", "color_green", "color_blue", "color_purple", "color_gray", "color_black",
+        "x",
+        "y",
+        "angle",
+        "diameter",
+        "shape_ball",
+        "shape_bar",
+        "shape_jar",
+        "shape_standingsticks",
+        "color_red",
+        "color_green",
+        "color_blue",
+        "color_purple",
+        "color_gray",
+        "color_black",
     )
     picture_shape = (SCENE, SCENE)  # PHYRE's observation: colour indices, row 0 at the bottom
     heuristic = staticmethod(drop_on_green)
@@ -57,7 +69,9 @@ class PhyrePlaying(Playing):
         if len(tiers) > 1:
             raise ValueError("these tasks are of both of PHYRE's tiers: play the ball and the two-ball tasks apart")
         if asked is not None and asked != tiers[0]:
-            raise ValueError(f"these are tasks of the {tiers[0]} tier, played with the action mode {tiers[0]!r}, not {asked!r}")
+            raise ValueError(
+                f"these are tasks of the {tiers[0]} tier, played with the action mode {tiers[0]!r}, not {asked!r}"
+            )
         return tiers[0]
 
     def action_space(self, mode: str, world):
@@ -83,16 +97,27 @@ class PhyrePlaying(Playing):
         """(the task in PHYRE's structure with its bodies where the trace has them after `step`,
         the agent's balls there: x, y, radius in pixels, angle)."""
         import attrs
+
         from physc.domains.playing import states_at
 
         states = states_at(trace, step)
         moved = tuple(
-            attrs.evolve(b, x=states[b.name][0] * PIXELS_PER_METRE, y=states[b.name][1] * PIXELS_PER_METRE, angle=states[b.name][2])
-            if states.get(b.name) else b
+            attrs.evolve(
+                b,
+                x=states[b.name][0] * PIXELS_PER_METRE,
+                y=states[b.name][1] * PIXELS_PER_METRE,
+                angle=states[b.name][2],
+            )
+            if states.get(b.name)
+            else b
             for b in level.bodies
         )
         radii = {name: ball.radius for name, ball in zip(level.players, action.balls)}
-        balls = [(s[0] * PIXELS_PER_METRE, s[1] * PIXELS_PER_METRE, radii[name], s[2]) for name in level.players if (s := states.get(name))]
+        balls = [
+            (s[0] * PIXELS_PER_METRE, s[1] * PIXELS_PER_METRE, radii[name], s[2])
+            for name in level.players
+            if (s := states.get(name))
+        ]
         return json.loads(task_json(attrs.evolve(level, bodies=moved))), balls
 
     def frame_features(self, domain, level, action, trace, step: int) -> np.ndarray:

@@ -16,9 +16,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
 from physc.simulation.recognise import Recogniser
 from physc.simulation.run import RunRules
-
 from physc_phyre.world import FPS, GOAL_STEPS, PIXELS_PER_METRE
 
 STILL_SPEED = 0.01  # m/s and rad/s: slower is at rest
@@ -26,9 +26,19 @@ STILL_STEPS = FPS // 2  # at rest this long without the goal: the run is over
 BALL_TOUCHING_THRESHOLD = 0.1 / PIXELS_PER_METRE  # PHYRE's kBallTouchingThreshold, a tenth of a pixel, in metres
 
 RECOGNISER = Recogniser(
-    hit_speed=0.5, rehit=0.1, moving=0.3, roll_slip=0.3, slide_spin=0.3, motion_time=0.2, fall_time=0.25,
-    fall_height=1.0, bounce_time=0.2, bounce_speed=1.0,
-    surfaces=("surface", "floor"), background=("wall", "floor"), touch_time=GOAL_STEPS / FPS,
+    hit_speed=0.5,
+    rehit=0.1,
+    moving=0.3,
+    roll_slip=0.3,
+    slide_spin=0.3,
+    motion_time=0.2,
+    fall_time=0.25,
+    fall_height=1.0,
+    bounce_time=0.2,
+    bounce_speed=1.0,
+    surfaces=("surface", "floor"),
+    background=("wall", "floor"),
+    touch_time=GOAL_STEPS / FPS,
 )
 
 
@@ -68,7 +78,9 @@ class GoalRules(RunRules):
     def of(cls, level) -> GoalRules:
         """A level's rules; PHYRE's ball rule is the relation TOUCHING's (physc's only one)."""
         touching = level.relation == "TOUCHING"
-        return cls(level.goal, {b.name: b.size / PIXELS_PER_METRE for b in level.bodies if b.shape == "ball" and touching})
+        return cls(
+            level.goal, {b.name: b.size / PIXELS_PER_METRE for b in level.bodies if b.shape == "ball" and touching}
+        )
 
     def on_start(self, engine) -> None:
         self.engine = engine
@@ -93,7 +105,12 @@ class GoalRules(RunRules):
         rows in which they were within reach (a body the snapshot lacks, or a static one, stood
         where it stands now); other bodies: since they last began touching, if they touch then."""
         if self.radii:
-            rows = [snapshot.states[:, snapshot.names.index(n), :2] if n in snapshot.names else [engine.state(n)[:2]] * snapshot.step for n in self.goal]
+            rows = [
+                snapshot.states[:, snapshot.names.index(n), :2]
+                if n in snapshot.names
+                else [engine.state(n)[:2]] * snapshot.step
+                for n in self.goal
+            ]
             pairs = list(zip(*rows))[::-1]
             self.held = next((k for k, (a, b) in enumerate(pairs) if not balls_touch(a, b, *self.radii)), len(pairs))
             return

@@ -32,9 +32,9 @@ from pathlib import Path
 import attrs
 import numpy as np
 
+from physc.simulation.ending import Ending
 from physc_phyre.actions import from_unit, placeable
 from physc_phyre.pool import CACHE_SEED, discrete_actions
-from physc.simulation.ending import Ending
 
 FILE_NAME = "simulation_cache.gz"  # simulation_cache.CACHE_FILE_NAME
 FOLDER = "offline_simulation"  # simulation_cache.get_cache_folder: <root>/offline_simulation/<N>

@@ -19,7 +19,6 @@ import json
 import math
 
 from physc.backends import Circle, parts
-
 from physc_phyre.level import PhyreLevel, SceneBody
 from physc_phyre.world import SCENE, WALL, outline, rectangle
 
@@ -81,9 +80,22 @@ def written(body: SceneBody) -> dict:
 
 def _walls() -> list[dict]:
     half = SCENE / 2
-    places = ((half, -WALL / 2, SCENE, WALL), (-WALL / 2, half, WALL, SCENE), (half, SCENE + WALL / 2, SCENE, WALL), (SCENE + WALL / 2, half, WALL, SCENE))
+    places = (
+        (half, -WALL / 2, SCENE, WALL),
+        (-WALL / 2, half, WALL, SCENE),
+        (half, SCENE + WALL / 2, SCENE, WALL),
+        (SCENE + WALL / 2, half, WALL, SCENE),
+    )
     return [
-        {"position": _vector(x, y), "bodyType": 1, "angle": 0.0, "shapes": _shapes(rectangle(0.0, 0.0, w, h)), "color": COLORS["black"], "shapeType": 0, "diameter": _number(math.hypot(w, h))}
+        {
+            "position": _vector(x, y),
+            "bodyType": 1,
+            "angle": 0.0,
+            "shapes": _shapes(rectangle(0.0, 0.0, w, h)),
+            "color": COLORS["black"],
+            "shapeType": 0,
+            "diameter": _number(math.hypot(w, h)),
+        }
         for x, y, w, h in places
     ]
 
@@ -97,12 +109,20 @@ def describe(level: PhyreLevel) -> str:
 def task_json(level: PhyreLevel) -> str:
     names = ["wall_bottom", "wall_left", "wall_top", "wall_right"] + [b.name for b in level.bodies]
     data = {
-        "scene": {"bodies": _walls() + [_body(b) for b in level.bodies], "width": SCENE, "height": SCENE, "user_input_status": 0},
+        "scene": {
+            "bodies": _walls() + [_body(b) for b in level.bodies],
+            "width": SCENE,
+            "height": SCENE,
+            "user_input_status": 0,
+        },
         "bodyId1": names.index(level.goal[0]),
         "bodyId2": names.index(level.goal[1]),
         "relationships": [TOUCHING],
         "description": describe(level),
-        "solutions": [{"balls": [{"position": _vector(b.x, b.y), "radius": _number(b.radius)} for b in a.balls]} for a in level.solutions],
+        "solutions": [
+            {"balls": [{"position": _vector(b.x, b.y), "radius": _number(b.radius)} for b in a.balls]}
+            for a in level.solutions
+        ],
         "tier": level.tier,
         "physc": {"names": names, "actions": [list(a.unit()) for a in level.solutions]},
     }

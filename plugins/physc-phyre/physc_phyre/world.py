@@ -58,18 +58,30 @@ def jar_parts(height: float) -> tuple[Polygon, ...]:
     width = height * JAR_WIDTH_RATIO
     base_width = width * JAR_BASE_RATIO
     t = jar_thickness(height)
-    base = Polygon(((base_width / 2, t / 2), (-base_width / 2, t / 2), (-base_width / 2, -t / 2), (base_width / 2, -t / 2)))
+    base = Polygon(
+        ((base_width / 2, t / 2), (-base_width / 2, t / 2), (-base_width / 2, -t / 2), (base_width / 2, -t / 2))
+    )
     run = (width - base_width) / 2  # how far a wall leans out over its height
     hypotenuse = math.sqrt(height**2 + run**2)
     cos, sin = run / hypotenuse, height / hypotenuse
     x_delta, x_delta_top, y_delta = t * sin, t / sin, t * cos
     top = height - t / 2
-    left = Polygon((
-        (-width / 2, top), (-base_width / 2, -t / 2), (-base_width / 2 + x_delta, y_delta - t / 2), (-width / 2 + x_delta_top, top),
-    ))
-    right = Polygon((
-        (width / 2, top), (width / 2 - x_delta_top, top), (base_width / 2 - x_delta, y_delta - t / 2), (base_width / 2, -t / 2),
-    ))
+    left = Polygon(
+        (
+            (-width / 2, top),
+            (-base_width / 2, -t / 2),
+            (-base_width / 2 + x_delta, y_delta - t / 2),
+            (-width / 2 + x_delta_top, top),
+        )
+    )
+    right = Polygon(
+        (
+            (width / 2, top),
+            (width / 2 - x_delta_top, top),
+            (base_width / 2 - x_delta, y_delta - t / 2),
+            (base_width / 2, -t / 2),
+        )
+    )
     return (base, left, right)
 
 
@@ -100,7 +112,11 @@ def extent(shape: str, size: float) -> tuple[float, float, float]:
     if shape == "standingsticks":
         a = math.radians(STICKS_ANGLE)
         length, t = 2 * size / 3, 2 * BAR_HEIGHT / 3
-        return 2 * (length / 2 * math.cos(a) + t / 2 * math.sin(a)), 2 * (length / 2 * math.sin(a) + t / 2 * math.cos(a)), 0.0
+        return (
+            2 * (length / 2 * math.cos(a) + t / 2 * math.sin(a)),
+            2 * (length / 2 * math.sin(a) + t / 2 * math.cos(a)),
+            0.0,
+        )
     raise ValueError(f"no PHYRE shape '{shape}'")
 
 
@@ -142,8 +158,16 @@ def body_spec(name: str, shape, x: float, y: float, angle: float, dynamic: bool)
     """A body of PHYRE's material, from a shape and a position in pixels (angle in radians)."""
     m = 1 / PIXELS_PER_METRE
     return BodySpec(
-        name, _metres(shape), x * m, y * m, angle, static=not dynamic, density=DENSITY, friction=FRICTION,
-        bounciness=RESTITUTION, angular_damping=ANGULAR_DAMPING if dynamic else 0.0,
+        name,
+        _metres(shape),
+        x * m,
+        y * m,
+        angle,
+        static=not dynamic,
+        density=DENSITY,
+        friction=FRICTION,
+        bounciness=RESTITUTION,
+        angular_damping=ANGULAR_DAMPING if dynamic else 0.0,
     )
 
 
@@ -158,4 +182,3 @@ def walls(floor: str = "floor") -> list[BodySpec]:
         "wall_right": (SCENE + WALL / 2, half, WALL, SCENE + 2 * WALL),
     }
     return [body_spec(name, rectangle(0.0, 0.0, w, h), x, y, 0.0, False) for name, (x, y, w, h) in places.items()]
-

@@ -6,7 +6,6 @@ Each setting's source is PHYRE's own file (docs/phyre-facts.md has the reasoning
 from __future__ import annotations
 
 from physc.worlds import Incline, World
-
 from physc_phyre.rules import RECOGNISER
 from physc_phyre.world import ENGINE, GRAVITY
 

@@ -8,7 +8,6 @@ import math
 import random
 
 import pytest
-
 from physc_phyre.acceptance import Acceptance, done, evaluate, flags, judge, outcome
 
 # PHYRE's rule at a tenth of its pool, so that a test simulates thousands of actions, not
@@ -83,8 +82,16 @@ def test_phyres_flags_on_a_task_of_its_own():
 @pytest.mark.parametrize(
     ("solved", "stable", "valid", "seed"),
     [
-        (0.02, 0.02, 1.0, 0), (0.02, 0.01, 0.85, 1), (0.005, 0.004, 0.9, 2), (0.09, 0.09, 0.95, 3), (0.12, 0.1, 1.0, 4),
-        (0.2, 0.05, 0.9, 5), (0.0, 0.0, 1.0, 6), (0.003, 0.001, 0.8, 7), (0.1, 0.1, 1.0, 8), (0.3, 0.3, 0.7, 9),
+        (0.02, 0.02, 1.0, 0),
+        (0.02, 0.01, 0.85, 1),
+        (0.005, 0.004, 0.9, 2),
+        (0.09, 0.09, 0.95, 3),
+        (0.12, 0.1, 1.0, 4),
+        (0.2, 0.05, 0.9, 5),
+        (0.0, 0.0, 1.0, 6),
+        (0.003, 0.001, 0.8, 7),
+        (0.1, 0.1, 1.0, 8),
+        (0.3, 0.3, 0.7, 9),
     ],
 )
 def test_the_early_verdict_is_phyres(solved, stable, valid, seed):
@@ -109,9 +116,15 @@ def test_a_rarely_solved_task_is_kept_with_fewer_plays_than_phyres():
     result = world.evaluate()
     expected, _, full_plays = phyres(SMALL, reference)
     assert result.answer and expected
-    assert result.counts.stable[0] >= SMALL.min_solutions and "GOOD_STABLE" in result.flags and "TRIVIAL" not in result.flags
+    assert (
+        result.counts.stable[0] >= SMALL.min_solutions
+        and "GOOD_STABLE" in result.flags
+        and "TRIVIAL" not in result.flags
+    )
     assert world.plays < 0.75 * full_plays
-    assert result.counts.attempts == 2000 and result.counts.valid < 2000  # two chunks: the first holds < 1,000 valid ones
+    assert (
+        result.counts.attempts == 2000 and result.counts.valid < 2000
+    )  # two chunks: the first holds < 1,000 valid ones
 
 
 def test_a_task_stably_solved_by_half_its_actions_is_given_up_as_trivial_at_once():
@@ -133,10 +146,15 @@ def judged_in_two_tiers(ball: World, two_balls: World, ball_chunks: int = 20):
     no one-ball solution, BAD_STABLE needs 15,000 valid attempts at this threshold."""
     worlds = {"ball": ball, "two_balls": two_balls}
     ball_rule = Acceptance(threshold=1e-4, min_valid=1000, chunk=1000, screen=100, max_chunks=ball_chunks)
-    rule = Acceptance(threshold=1e-5, tier="two_balls", min_valid=1000, chunk=1000, screen=100, unsolvable_in=(ball_rule,))
+    rule = Acceptance(
+        threshold=1e-5, tier="two_balls", min_valid=1000, chunk=1000, screen=100, unsolvable_in=(ball_rule,)
+    )
     return judge(
-        rule, INTENDED, lambda r, chunk: [(r.tier, u) for u in worlds[r.tier].pool(chunk)],
-        lambda a: a == INTENDED or worlds[a[0]].valid(a[1]), lambda a: a == INTENDED or worlds[a[0]].solves(a[1]),
+        rule,
+        INTENDED,
+        lambda r, chunk: [(r.tier, u) for u in worlds[r.tier].pool(chunk)],
+        lambda a: a == INTENDED or worlds[a[0]].valid(a[1]),
+        lambda a: a == INTENDED or worlds[a[0]].solves(a[1]),
         lambda a: [INTENDED] * 8 if a == INTENDED else [(a[0], n) for n in worlds[a[0]].neighbours(a[1])],
     )
 

@@ -9,13 +9,13 @@ import random
 from pathlib import Path
 
 import pytest
-from physc.compiler.concrete_layout import PlacedObject
-from physc.simulation.ending import Ending
-
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.furniture import COVER_FIT, KINDS, PEG, PEG_SPACING, bodies, geometry, inside
 from physc_phyre.level import held, level_from_layout, outline_box
 from physc_phyre.world import BAR_HEIGHT, PIXELS_PER_METRE
+
+from physc.compiler.concrete_layout import PlacedObject
+from physc.simulation.ending import Ending
 
 FLOOR_BAR = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
 
@@ -38,7 +38,9 @@ def test_furniture_fills_its_outline_box_and_names_its_parts_after_itself(concre
     edges = [outline_box(p) for p in parts]
     assert min(e[0] for e in edges) == pytest.approx(box.x - box.width / 2, abs=0.6)
     assert max(e[2] for e in edges) == pytest.approx(box.x + box.width / 2, abs=0.6)
-    assert min(e[1] for e in edges) >= 40.0 - 0.6 and max(e[3] for e in edges) == pytest.approx(40.0 + box.height, abs=0.6)
+    assert min(e[1] for e in edges) >= 40.0 - 0.6 and max(e[3] for e in edges) == pytest.approx(
+        40.0 + box.height, abs=0.6
+    )
 
 
 def test_a_purple_ramp_is_one_bar_turned_as_the_layout_placed_it():
@@ -68,7 +70,9 @@ def test_a_teeter_holds_until_its_free_half_is_weighed_down():
 
 def test_a_cradle_holds_a_ball_in_its_v_and_a_purple_ramp_rises_towards_its_toucher():
     left, right = bodies(placed("cradle", 128.0, 50.0, seed=2), SceneBody)
-    assert left.angle == pytest.approx(-math.radians(5), abs=1e-6) and right.angle == pytest.approx(math.radians(5), abs=1e-6)
+    assert left.angle == pytest.approx(-math.radians(5), abs=1e-6) and right.angle == pytest.approx(
+        math.radians(5), abs=1e-6
+    )
     ball = SceneBody("green", "ball", 128.0, 50.0 + 20.0, 0.0, 12.5, "green", True)
     end = end_of(PhyreLevel((left, right, ball), ("", "")), "green")
     assert abs(end[0] - 128.0) < 1.0 and 50.0 < end[1] < 50.0 + 12.5 + BAR_HEIGHT + 1.0
@@ -137,7 +141,10 @@ def test_the_layouts_furniture_and_restrictions_reach_the_level():
         restrictions = ()
 
     class Layout:
-        objects = (placed("blueSeesaw", 100.0, 0.0, name="target"), PlacedObject("green", "object", "greenBall", None, 100.0, 150.0, 0.0, 25.0, 25.0))
+        objects = (
+            placed("blueSeesaw", 100.0, 0.0, name="target"),
+            PlacedObject("green", "object", "greenBall", None, 100.0, 150.0, 0.0, 25.0, 25.0),
+        )
 
     level = level_from_layout(Layout, None)
     assert {b.name for b in level.bodies} == {"target", "target_fulcrum", "green"}
@@ -147,12 +154,12 @@ def test_the_layouts_furniture_and_restrictions_reach_the_level():
 def test_a_purple_pad_lies_on_the_floor_against_the_edge_and_the_ball_stays_on_it():
     """PHYRE's 00019 (and 00007): the target is a short purple bar lying on the floor; the
     layout puts it against an edge, and a ball come down onto it stays on it."""
+    from physc_phyre.concretize import PAD_LENGTH
+
     from physc.domains import load_domain
     from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze
     from physc.generation.pipeline import Pipeline
-
-    from physc_phyre.concretize import PAD_LENGTH
 
     path = Path(__file__).resolve().parents[1] / "examples" / "phyre" / "task00019.phys"
     (scenario,) = analyze(str(path), INSTALLED).scenarios

@@ -4,12 +4,12 @@ kBallTouchingThreshold, a tenth of a pixel), every other pair by the engine's co
 from __future__ import annotations
 
 import pytest
-from physc.simulation.scene import play_scene
-from physc.simulation.snapshot import Snapshot
-
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.rules import BALL_TOUCHING_THRESHOLD, RECOGNISER, GoalRules, balls_touch
 from physc_phyre.world import GOAL_STEPS, PIXELS_PER_METRE
+
+from physc.simulation.scene import play_scene
+from physc.simulation.snapshot import Snapshot
 
 FLOOR_BAR = SceneBody("target_floor", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
 RADIUS = 10.5  # px
@@ -23,7 +23,15 @@ def _balls(gap: float) -> PhyreLevel:
 
 
 def _run(level: PhyreLevel, resume=None):
-    return play_scene(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER, recognise=False, resume=resume)
+    return play_scene(
+        DOMAIN.scene(level, None),
+        DOMAIN.backend,
+        GoalRules.of(level),
+        DOMAIN.seconds,
+        RECOGNISER,
+        recognise=False,
+        resume=resume,
+    )
 
 
 def test_the_threshold_is_a_tenth_of_a_pixel_in_metres():
@@ -38,13 +46,14 @@ def test_balls_near_the_limit_are_judged_in_phyres_float_arithmetic():
     """Judged in doubles away from the limit, in float32 within EXACT_WITHIN of it: the same
     answer as PHYRE's float32 test everywhere, on a sweep across the limit and at its edges."""
     import numpy as np
-
     from physc_phyre.rules import EXACT_WITHIN
 
     f = np.float32
     r1, r2 = RADIUS / PIXELS_PER_METRE, 12.5 / PIXELS_PER_METRE
     limit = r1 + r2 + BALL_TOUCHING_THRESHOLD
-    for offset in np.concatenate([np.linspace(-3 * EXACT_WITHIN, 3 * EXACT_WITHIN, 601), [-EXACT_WITHIN, EXACT_WITHIN]]):
+    for offset in np.concatenate(
+        [np.linspace(-3 * EXACT_WITHIN, 3 * EXACT_WITHIN, 601), [-EXACT_WITHIN, EXACT_WITHIN]]
+    ):
         a, b = (3.1, 7.3), (3.1 + (limit + offset) * 0.6, 7.3 + (limit + offset) * 0.8)
         dx, dy = f(a[0]) - f(b[0]), f(a[1]) - f(b[1])
         phyre = bool(np.sqrt(dx * dx + dy * dy) < f(r1) + f(r2) + f(BALL_TOUCHING_THRESHOLD))
@@ -85,5 +94,7 @@ def test_the_recognised_touch_is_the_rules_verdict():
     level = _balls(0.05)
     trace = play_scene(DOMAIN.scene(level, None), DOMAIN.backend, GoalRules.of(level), DOMAIN.seconds, RECOGNISER)
     assert trace.solved and trace.goal_met == pytest.approx(GOAL_STEPS / 60)
-    assert [(i.name, i.objects, i.time) for i in trace.interactions if i.name == "touch"] == [("touch", ("green", "blue"), trace.goal_met)]
+    assert [(i.name, i.objects, i.time) for i in trace.interactions if i.name == "touch"] == [
+        ("touch", ("green", "blue"), trace.goal_met)
+    ]
     assert _run(_balls(0.2)).goal_met is None

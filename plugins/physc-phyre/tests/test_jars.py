@@ -7,10 +7,10 @@ from __future__ import annotations
 import math
 
 import pytest
-
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody
 from physc_phyre.level import HELD_RADIUS, JAR_SUFFIX, held, outline_box
 from physc_phyre.world import PIXELS_PER_METRE, SCENE, jar_height, jar_parts, jar_thickness
+
 from physc.simulation.ending import Ending
 
 FLOOR_BAR = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
@@ -29,8 +29,9 @@ def test_a_held_ball_lies_on_its_jars_base_and_stays_there():
 
 
 def test_the_vocabularys_jars_become_bodies_of_the_right_shape_and_turn():
-    from physc.compiler.concrete_layout import PlacedObject
     from physc_phyre.level import level_from_layout
+
+    from physc.compiler.concrete_layout import PlacedObject
 
     class Layout:
         objects = (
@@ -44,7 +45,9 @@ def test_the_vocabularys_jars_become_bodies_of_the_right_shape_and_turn():
     assert set(names) == {"target", "target" + JAR_SUFFIX, "cover", "green"}
     assert names["target"].shape == "ball" and names["target"].y < 30.0  # low in its jar
     cover = names["cover"]
-    assert cover.shape == "jar" and math.isclose(cover.angle, math.pi, abs_tol=1e-6) and cover.y > 30.0  # its base on top
+    assert (
+        cover.shape == "jar" and math.isclose(cover.angle, math.pi, abs_tol=1e-6) and cover.y > 30.0
+    )  # its base on top
 
 
 def test_a_held_ball_fits_between_its_jars_walls_at_every_height():
@@ -82,8 +85,18 @@ def test_a_dropped_object_starts_in_the_air_below_whatever_is_above_it():
 PHYRE_JAR_DIAMETER = 48.0
 PHYRE_JAR = (
     [(12.8, 2.151252445042382), (-12.8, 2.151252445042382), (-12.8, -2.151252445042382), (12.8, -2.151252445042382)],
-    [(-16.0, 36.24874755495762), (-12.8, -2.151252445042382), (-8.512357001958177, -1.7939488618722301), (-11.682581703360665, 36.24874755495762)],
-    [(16.0, 36.24874755495762), (11.682581703360665, 36.24874755495762), (8.512357001958177, -1.7939488618722301), (12.8, -2.151252445042382)],
+    [
+        (-16.0, 36.24874755495762),
+        (-12.8, -2.151252445042382),
+        (-8.512357001958177, -1.7939488618722301),
+        (-11.682581703360665, 36.24874755495762),
+    ],
+    [
+        (16.0, 36.24874755495762),
+        (11.682581703360665, 36.24874755495762),
+        (8.512357001958177, -1.7939488618722301),
+        (12.8, -2.151252445042382),
+    ],
 )
 
 
@@ -109,11 +122,24 @@ def test_a_jars_plates_follow_phyres_formula():
     hypotenuse = math.hypot(height, (width - base_width) / 2)
     sin, cos = height / hypotenuse, (width - base_width) / 2 / hypotenuse
     base, left, right = jar_parts(height)
-    assert _flat(base.points) == pytest.approx(_flat([(base_width / 2, t / 2), (-base_width / 2, t / 2), (-base_width / 2, -t / 2), (base_width / 2, -t / 2)]))
+    assert _flat(base.points) == pytest.approx(
+        _flat([(base_width / 2, t / 2), (-base_width / 2, t / 2), (-base_width / 2, -t / 2), (base_width / 2, -t / 2)])
+    )
     top = height - t / 2
     outer_top, outer_bottom, inner_bottom, inner_top = left.points
-    assert _flat(left.points) == pytest.approx(_flat([(-width / 2, top), (-base_width / 2, -t / 2), (-base_width / 2 + t * sin, t * cos - t / 2), (-width / 2 + t / sin, top)]))
-    assert _flat(right.points) == pytest.approx(_flat([(-x, y) for x, y in (outer_top, inner_top, inner_bottom, outer_bottom)]))  # mirrored, counter-clockwise
+    assert _flat(left.points) == pytest.approx(
+        _flat(
+            [
+                (-width / 2, top),
+                (-base_width / 2, -t / 2),
+                (-base_width / 2 + t * sin, t * cos - t / 2),
+                (-width / 2 + t / sin, top),
+            ]
+        )
+    )
+    assert _flat(right.points) == pytest.approx(
+        _flat([(-x, y) for x, y in (outer_top, inner_top, inner_bottom, outer_bottom)])
+    )  # mirrored, counter-clockwise
     assert jar_height(math.hypot(0.9 * width, height)) == pytest.approx(height)  # shapes.py's Jar._diameter, inverted
 
 
@@ -137,7 +163,9 @@ def test_a_jar_is_written_as_phyres_creator_writes_it():
     body = json.loads(task_json(PhyreLevel((jar, green), ("green", "target"))))["scene"]["bodies"][4]
     assert body["diameter"] == pytest.approx(PHYRE_JAR_DIAMETER, abs=1e-6) and body["shapeType"] == 3
     for shape, phyre in zip(body["shapes"], PHYRE_JAR, strict=True):
-        assert [c for v in shape["polygon"]["vertices"] for c in (v["x"], v["y"])] == pytest.approx(_flat(phyre), abs=1e-6)
+        assert [c for v in shape["polygon"]["vertices"] for c in (v["x"], v["y"])] == pytest.approx(
+            _flat(phyre), abs=1e-6
+        )
 
 
 def test_a_jars_features_sit_at_phyres_centre_of_mass():

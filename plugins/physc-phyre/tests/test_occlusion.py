@@ -8,7 +8,6 @@ not need PHYRE."""
 from __future__ import annotations
 
 import pytest
-
 from physc_phyre import PhyreLevel, SceneBody
 from physc_phyre.actions import placeable, valid
 from physc_phyre.level import BallAction

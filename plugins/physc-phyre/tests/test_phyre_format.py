@@ -12,9 +12,8 @@ from pathlib import Path
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
-from test_phyre_plugin import EXAMPLES, physc
-
 from physc_phyre import folds, observation, phyre_format
+from test_phyre_plugin import EXAMPLES, physc
 
 PHYRE_IDS = (Path(__file__).parent / "data" / "phyre_ball_task_ids.txt").read_text().split()
 
@@ -22,7 +21,17 @@ PHYRE_IDS = (Path(__file__).parent / "data" / "phyre_ball_task_ids.txt").read_te
 @pytest.fixture(scope="module")
 def dataset(tmp_path_factory):
     out = tmp_path_factory.mktemp("dataset")
-    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "3", "--no-acceptance", "--out", out, "-q")
+    status, _, err = physc(
+        "generate",
+        EXAMPLES / "01_ledge.phys",
+        EXAMPLES / "02_jar.phys",
+        "--tasks",
+        "3",
+        "--no-acceptance",
+        "--out",
+        out,
+        "-q",
+    )
     assert status == 0, err
     return out
 
@@ -60,8 +69,21 @@ def test_the_picture_fills_the_pixels_whose_centres_lie_inside_with_row_0_at_the
     ball = {"position": {"x": 100.3, "y": 20.7}, "angle": 0.0, "color": 2, "shapes": [{"circle": {"radius": 10.0}}]}
     half = {"x": 20.0, "y": 2.56}
     bar = {
-        "position": {"x": 50.0, "y": 200.0}, "angle": math.pi / 2, "color": 6,
-        "shapes": [{"polygon": {"vertices": [{"x": -half["x"], "y": -half["y"]}, {"x": half["x"], "y": -half["y"]}, {"x": half["x"], "y": half["y"]}, {"x": -half["x"], "y": half["y"]}]}}],
+        "position": {"x": 50.0, "y": 200.0},
+        "angle": math.pi / 2,
+        "color": 6,
+        "shapes": [
+            {
+                "polygon": {
+                    "vertices": [
+                        {"x": -half["x"], "y": -half["y"]},
+                        {"x": half["x"], "y": -half["y"]},
+                        {"x": half["x"], "y": half["y"]},
+                        {"x": -half["x"], "y": half["y"]},
+                    ]
+                }
+            }
+        ],
     }
     task = {"scene": {"width": 256, "height": 256, "bodies": [ball, bar]}}
     image = observation.raster(task, (30.0, 30.0, 5.0))
@@ -71,7 +93,12 @@ def test_the_picture_fills_the_pixels_whose_centres_lie_inside_with_row_0_at_the
     assert image[20, 100] == 2 and image[255 - 20, 100] == 0  # y up: row 20 is 20 px above the bottom
     # the bar turned upright: 5.12 px wide, 40 px tall, about (50, 200)
     rows, columns = np.nonzero(image == 6)
-    assert (rows.min(), rows.max() + 1, columns.min(), columns.max() + 1) == (180, 220, 47, 53)  # columns lrint(47.44) .. lrint(52.56)
+    assert (rows.min(), rows.max() + 1, columns.min(), columns.max() + 1) == (
+        180,
+        220,
+        47,
+        53,
+    )  # columns lrint(47.44) .. lrint(52.56)
     assert image[30, 30] == 1  # the agent's ball, red, drawn last
 
 
@@ -83,7 +110,11 @@ def test_features_are_phyres_fourteen_numbers_with_the_agents_ball_last(dataset)
     assert rows[-1].tolist() == pytest.approx([0.25, 0.5, 0.0, 16 / 256, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0])
     for row, body in zip(rows, shaped):
         assert row[3] == pytest.approx(body["diameter"] / 256)
-        assert row[4 + body["shapeType"] - 1] == 1 and row[8 + body["color"] - 1] == 1 and row.sum() == pytest.approx(row[:4].sum() + 2)
+        assert (
+            row[4 + body["shapeType"] - 1] == 1
+            and row[8 + body["color"] - 1] == 1
+            and row.sum() == pytest.approx(row[:4].sum() + 2)
+        )
         if body["shapeType"] == 3:  # a jar: at its centre of mass, above the middle of its base
             assert row[1] * 256 > body["position"]["y"] + 1
 
@@ -91,6 +122,7 @@ def test_features_are_phyres_fourteen_numbers_with_the_agents_ball_last(dataset)
 def test_folds_split_phyres_own_tasks_as_phyre_does():
     """PHYRE's 2,500 ball-tier task ids split as PHYRE's get_fold splits them (the templates of
     dev and test per seed; fingerprints of the within-template lists; docs/phyre-sources.md 4.7)."""
+
     def templates(ids):
         return sorted({t[:5] for t in ids})
 
@@ -100,7 +132,11 @@ def test_folds_split_phyres_own_tasks_as_phyre_does():
     assert templates(test) == ["00003", "00004", "00014", "00015", "00019"]
     assert templates(folds.fold("cross_template", PHYRE_IDS, 9)[2]) == ["00002", "00007", "00012", "00019", "00021"]
     fingerprint = lambda ids: hashlib.md5(" ".join(ids).encode()).hexdigest()[:12]  # noqa: E731
-    assert [fingerprint(part) for part in folds.fold("within_template", PHYRE_IDS, 0)] == ["751581e5e8e6", "25df5a7b2a57", "d3bb9497eb44"]
+    assert [fingerprint(part) for part in folds.fold("within_template", PHYRE_IDS, 0)] == [
+        "751581e5e8e6",
+        "25df5a7b2a57",
+        "d3bb9497eb44",
+    ]
     with pytest.raises(ValueError, match="no evaluation setup"):
         folds.fold("ball_cross", PHYRE_IDS, 0)
 
@@ -110,7 +146,14 @@ def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     assert sorted(p.name for p in phyre.glob("*.bin.lzma")) == ["tasks50.bin.lzma"]  # not PHYRE's own tasks.bin.lzma
     tasks = phyre_format.read_collection((phyre / "tasks50.bin.lzma").read_bytes())
     ids = [t["taskId"] for t in tasks]
-    assert ids == ["50000:000", "50000:001", "50000:002", "50001:000", "50001:001", "50001:002"]  # Ledge, then Jar; seeds in order
+    assert ids == [
+        "50000:000",
+        "50000:001",
+        "50000:002",
+        "50001:000",
+        "50001:001",
+        "50001:002",
+    ]  # Ledge, then Jar; seeds in order
     assert all(phyre_format.collection_file(t) == "tasks50.bin.lzma" for t in ids)
     first = task_of(dataset)
     first.pop("physc")
@@ -128,7 +171,20 @@ def test_a_generated_dataset_holds_phyres_benchmark(dataset, tmp_path):
     assert list(fold_file) == ["ball_cross_template", "ball_within_template"]  # PHYRE's setup names, the tiers present
     assert set(fold_file["ball_within_template"]) == {str(s) for s in range(10)}
     # the same command again, in another folder: the same bytes
-    assert physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "02_jar.phys", "--tasks", "3", "--no-acceptance", "--out", tmp_path, "-q")[0] == 0
+    assert (
+        physc(
+            "generate",
+            EXAMPLES / "01_ledge.phys",
+            EXAMPLES / "02_jar.phys",
+            "--tasks",
+            "3",
+            "--no-acceptance",
+            "--out",
+            tmp_path,
+            "-q",
+        )[0]
+        == 0
+    )
     for path in phyre.iterdir():
         assert (tmp_path / "phyre" / path.name).read_bytes() == path.read_bytes(), path.name
 
@@ -161,23 +217,78 @@ def test_an_agent_is_scored_by_phyres_auccess_on_the_folds(dataset, tmp_path, mo
     attempt (AUCCESS 1); an agent with `fit` sees the fold's train and dev tasks first."""
     monkeypatch.syspath_prepend(str(Path(__file__).parent))
     ANSWERS.update({r["task_id"]: r["action"] for r in pq.read_table(dataset / "phyre" / "tasks.parquet").to_pylist()})
-    status, _, err = physc("eval", "--agent", "test_phyre_format:oracle", dataset, "--setup", "ball_within_template", "--folds", "2", "--out", tmp_path / "o", "-q")
+    status, _, err = physc(
+        "eval",
+        "--agent",
+        "test_phyre_format:oracle",
+        dataset,
+        "--setup",
+        "ball_within_template",
+        "--folds",
+        "2",
+        "--out",
+        tmp_path / "o",
+        "-q",
+    )
     assert status == 0, err
     scored = json.loads((tmp_path / "o" / "agent.json").read_text())
-    assert scored["auccess"] == 1.0 and scored["folds"]["0"]["tasks"] == 2 and set(scored["folds"]["1"]["templates"]) == {"50000", "50001"}
+    assert (
+        scored["auccess"] == 1.0
+        and scored["folds"]["0"]["tasks"] == 2
+        and set(scored["folds"]["1"]["templates"]) == {"50000", "50001"}
+    )
     FITTED.clear()
-    assert physc("eval", "--agent", "test_phyre_format:Learner", dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path / "l", "-q")[0] == 1
+    assert (
+        physc(
+            "eval",
+            "--agent",
+            "test_phyre_format:Learner",
+            dataset,
+            "--setup",
+            "ball_within_template",
+            "--folds",
+            "1",
+            "--out",
+            tmp_path / "l",
+            "-q",
+        )[0]
+        == 1
+    )
     # a class is not an agent until made: the class itself, called, returns an instance, not actions
     learner = "test_phyre_format:LEARNER"
     globals()["LEARNER"] = Learner()
-    status, _, err = physc("eval", "--agent", learner, dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path / "l", "-q")
+    status, _, err = physc(
+        "eval",
+        "--agent",
+        learner,
+        dataset,
+        "--setup",
+        "ball_within_template",
+        "--folds",
+        "1",
+        "--out",
+        tmp_path / "l",
+        "-q",
+    )
     assert status == 0, err
     train, dev, test = folds.fold("within_template", [t for t in ANSWERS], 0)
     assert FITTED[-1] == sorted(train + dev)
 
 
 def test_a_random_agent_scores_as_physcs_own_evaluation_counts(dataset, tmp_path):
-    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "ball_within_template", "--folds", "1", "--out", tmp_path, "-q")
+    status, _, err = physc(
+        "eval",
+        "--agent",
+        "physc_phyre.agents:random_agent",
+        dataset,
+        "--setup",
+        "ball_within_template",
+        "--folds",
+        "1",
+        "--out",
+        tmp_path,
+        "-q",
+    )
     assert status == 0, err
     scored = json.loads((tmp_path / "agent.json").read_text())
     assert 0.0 <= scored["auccess"] <= 1.0 and scored["split"] == "test"
@@ -194,13 +305,29 @@ def test_a_random_agent_scores_as_physcs_own_evaluation_counts(dataset, tmp_path
 )
 def test_a_broken_agent_is_the_agents_error_not_physcs(dataset, tmp_path, monkeypatch, agent, message):
     monkeypatch.syspath_prepend(str(Path(__file__).parent))
-    status, _, err = physc("eval", "--agent", agent, dataset, "--folds", "1", "--setup", "ball_within_template", "--out", tmp_path, "-q")
+    status, _, err = physc(
+        "eval", "--agent", agent, dataset, "--folds", "1", "--setup", "ball_within_template", "--out", tmp_path, "-q"
+    )
     assert status == 1 and message in err and "Traceback" not in err
 
 
 def test_a_setup_the_dataset_has_no_folds_for_is_a_clear_error(dataset, tmp_path):
-    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", dataset, "--setup", "two_balls_cross_template", "--out", tmp_path, "-q")
-    assert status == 2 and "no evaluation setup 'two_balls_cross_template'" in err and "ball_cross_template, ball_within_template" in err
+    status, _, err = physc(
+        "eval",
+        "--agent",
+        "physc_phyre.agents:random_agent",
+        dataset,
+        "--setup",
+        "two_balls_cross_template",
+        "--out",
+        tmp_path,
+        "-q",
+    )
+    assert (
+        status == 2
+        and "no evaluation setup 'two_balls_cross_template'" in err
+        and "ball_cross_template, ball_within_template" in err
+    )
     assert "Traceback" not in err
 
 
@@ -210,17 +337,23 @@ def test_a_dataset_without_its_benchmark_files_is_a_clear_error(dataset, tmp_pat
     (broken / "manifest.jsonl").write_text((dataset / "manifest.jsonl").read_text())
     status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", broken, "--out", tmp_path / "out")
     assert status == 2 and "cannot read the dataset" in err and "Traceback" not in err
-    status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", tmp_path / "nowhere", "--out", tmp_path / "out")
+    status, _, err = physc(
+        "eval", "--agent", "physc_phyre.agents:random_agent", tmp_path / "nowhere", "--out", tmp_path / "out"
+    )
     assert status == 2 and "one dataset folder" in err
     other = tmp_path / "angrybirds"
     other.mkdir()
-    (other / "manifest.jsonl").write_text(json.dumps({"file": "f", "scenario": "S", "seed": 0, "domain": "angrybirds", "level": "S/0.xml"}) + "\n")
+    (other / "manifest.jsonl").write_text(
+        json.dumps({"file": "f", "scenario": "S", "seed": 0, "domain": "angrybirds", "level": "S/0.xml"}) + "\n"
+    )
     status, _, err = physc("eval", "--agent", "physc_phyre.agents:random_agent", other, "--out", tmp_path / "out")
     assert status == 2 and "scores no agent" in err
 
 
 def test_a_template_with_more_tasks_than_phyres_ids_allow_keeps_its_tasks_and_says_why(tmp_path, monkeypatch):
     monkeypatch.setattr(phyre_format, "INSTANCES", 1)  # PHYRE's ids allow 1,000 instances a template
-    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", "--tasks", "2", "--no-acceptance", "--out", tmp_path, "-q")
+    status, _, err = physc(
+        "generate", EXAMPLES / "01_ledge.phys", "--tasks", "2", "--no-acceptance", "--out", tmp_path, "-q"
+    )
     assert status == 2 and "not the domain's own benchmark files" in err and "instance ids have three digits" in err
     assert (tmp_path / "README.md").is_file() and (tmp_path / "manifest.parquet").is_file()

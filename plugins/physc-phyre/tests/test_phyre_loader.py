@@ -23,13 +23,25 @@ TIERS = {"BALL": "ball", "TWO_BALLS": "two_balls"}
 
 @pytest.fixture(scope="module")
 def phyre():
-    return pytest.importorskip("phyre", reason="PHYRE is not importable (build it from its sources: tools/phyre_simulator/README.md)")
+    return pytest.importorskip(
+        "phyre", reason="PHYRE is not importable (build it from its sources: tools/phyre_simulator/README.md)"
+    )
 
 
 @pytest.fixture(scope="module")
 def dataset(phyre, tmp_path_factory):
     out = tmp_path_factory.mktemp("dataset")
-    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "07_two_balls.phys", "--tasks", "2", "--no-acceptance", "--out", out, "-q")
+    status, _, err = physc(
+        "generate",
+        EXAMPLES / "01_ledge.phys",
+        EXAMPLES / "07_two_balls.phys",
+        "--tasks",
+        "2",
+        "--no-acceptance",
+        "--out",
+        out,
+        "-q",
+    )
     assert status == 0, err
     return out
 

@@ -8,13 +8,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from physc_phyre.pool import acceptance_chunk
+
 from physc.api import domain_of, load_task
 from physc.simulation.ending import Ending
 
-from physc_phyre.pool import acceptance_chunk
-
 DATA = Path(__file__).parent / "data"
-TASKS = [DATA / "balls_00000.json", DATA / "ramp_00011.json"]  # two balls by PHYRE's distance rule; a ball and a bar by contact
+TASKS = [
+    DATA / "balls_00000.json",
+    DATA / "ramp_00011.json",
+]  # two balls by PHYRE's distance rule; a ball and a bar by contact
 
 
 def _actions(domain, level, count):

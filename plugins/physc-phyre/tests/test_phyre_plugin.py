@@ -10,6 +10,7 @@ from pathlib import Path
 
 import attrs
 import pytest
+
 from physc.cli import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -30,7 +31,18 @@ def physc(*args) -> tuple[int, str, str]:
 def ledge(tmp_path_factory):
     folder = tmp_path_factory.mktemp("ledge")
     status, _, err = physc(
-        "compile", LEDGE, "--seed", "1", "-q", "--no-acceptance", "-o", folder / "level.json", "--task", folder / "task.json", "--png", folder / "level.png"
+        "compile",
+        LEDGE,
+        "--seed",
+        "1",
+        "-q",
+        "--no-acceptance",
+        "-o",
+        folder / "level.json",
+        "--task",
+        folder / "task.json",
+        "--png",
+        folder / "level.png",
     )
     assert status == 0, err
     return folder
@@ -79,7 +91,9 @@ def test_same_seed_same_bytes(ledge, tmp_path):
 
 @pytest.mark.parametrize("backend", ["pymunk", "bullet"])
 def test_the_solution_replays_in_both_engines(ledge, backend):
-    status, out, err = physc("verify", ledge / "level.json", "--task", ledge / "task.json", "--backend", backend, "--replays", "2")
+    status, out, err = physc(
+        "verify", ledge / "level.json", "--task", ledge / "task.json", "--backend", backend, "--replays", "2"
+    )
     assert status == 0, out + err
     assert "passes" in out
 
@@ -110,11 +124,20 @@ def test_a_damaged_task_file_is_a_usage_error(ledge, tmp_path, damage, message):
 def test_the_goal_pair_is_the_scenarios_touch(tmp_path):
     """A blue ball declared before the purple floor is not the target: touch says which is."""
     path = tmp_path / "s.phys"
-    text = LEDGE.read_text().replace("target: targetObject = purpleFloor", "decoy: targetObject = blueBall\n        target: targetObject = purpleFloor")
-    path.write_text(text.replace("        > touch(green, target)\n    }", "        > touch(green, target)\n    }\n    restrictions { cannotHit(red, decoy, any) }"))
+    text = LEDGE.read_text().replace(
+        "target: targetObject = purpleFloor",
+        "decoy: targetObject = blueBall\n        target: targetObject = purpleFloor",
+    )
+    path.write_text(
+        text.replace(
+            "        > touch(green, target)\n    }",
+            "        > touch(green, target)\n    }\n    restrictions { cannotHit(red, decoy, any) }",
+        )
+    )
     status, out, err = physc("compile", path, "--seed", "1", "-q", "--emit", "layout")
     assert status == 0, err
     from physc_phyre import DOMAIN
+
     from physc.compiler.concrete_layout import ConcreteLayout
     from physc.domains.words import INSTALLED
     from physc.dsl.frontend import analyze
@@ -147,7 +170,19 @@ def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path, tenth_of
     """A task of PHYRE's template 00009 kept by PHYRE's acceptance rule (GOOD_STABLE, not
     TRIVIAL, its solution stable under half-pixel moves), with the figures in the record and
     the report."""
-    status, _, err = physc("eval", EXAMPLES / "phyre" / "task00009.phys", "--seed", "1", "--tasks", "1", "--jobs", "1", "--out", tmp_path / "eval", "-q")
+    status, _, err = physc(
+        "eval",
+        EXAMPLES / "phyre" / "task00009.phys",
+        "--seed",
+        "1",
+        "--tasks",
+        "1",
+        "--jobs",
+        "1",
+        "--out",
+        tmp_path / "eval",
+        "-q",
+    )
     assert status == 0, err
     (record,) = [json.loads(line) for line in (tmp_path / "eval" / "records.jsonl").read_text().splitlines()]
     assert record["generated"] and record["stable"] and record["intended_exact"]
@@ -160,8 +195,9 @@ def test_eval_measures_the_random_agent_and_phyres_acceptance(tmp_path, tenth_of
 
 
 def test_the_scene_runs_in_box2d_with_phyres_step_and_iterations():
-    from physc.backends import DEFAULT_BACKEND, load_backend
     from physc_phyre import world
+
+    from physc.backends import DEFAULT_BACKEND, load_backend
 
     assert (world.ENGINE.dt, world.ENGINE.velocity_iterations, world.ENGINE.position_iterations) == (1 / 60, 15, 20)
     assert DEFAULT_BACKEND == "box2d"
@@ -199,7 +235,9 @@ def test_a_ball_rolled_along_the_floor_rests_on_it():
     on it anywhere; nothing places it beside the floor (was E0801)."""
     run = _pipeline("task00000.phys")
     texts = {e.text() for e in run.layout_graph.edges}
-    assert "onLocation(green, floor, centre ∨ left ∨ right)" in texts or any(t.startswith("onLocation(green, floor,") for t in texts)
+    assert "onLocation(green, floor, centre ∨ left ∨ right)" in texts or any(
+        t.startswith("onLocation(green, floor,") for t in texts
+    )
     assert not any(t.startswith("inDirection(green, floor") for t in texts)
     objects = {o.name: o for o in run.placed.layout.objects}
     assert objects["green"].y - objects["green"].height / 2 == pytest.approx(0.0, abs=0.5)  # on the floor's top
@@ -223,6 +261,7 @@ def test_an_upright_stick_gets_a_ledge_a_few_of_its_thicknesses_long():
 
 def test_shapes_that_cannot_fit_the_scene_are_drawn_again_not_an_internal_error(monkeypatch):
     import physc_phyre
+
     from physc.compiler.concrete_layout import Body
     from physc.compiler.geometry import Geometry
     from physc.compiler.infeasible import Infeasible
@@ -245,7 +284,17 @@ def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_pa
     assert all(0 < o.x < 256 and 0 < o.y < 256 for o in seen)
     assert all(o.y == o.height / 2 for o in seen if o.concrete == "ball")  # on the floor
     # Template 00009, seed 2: two kept; in the task file, a black (static) or gray body each.
-    status, _, err = physc("compile", EXAMPLES / "phyre" / "task00009.phys", "--seed", "2", "-q", "-o", tmp_path / "t.json", "--task", tmp_path / "task.json")
+    status, _, err = physc(
+        "compile",
+        EXAMPLES / "phyre" / "task00009.phys",
+        "--seed",
+        "2",
+        "-q",
+        "-o",
+        tmp_path / "t.json",
+        "--task",
+        tmp_path / "task.json",
+    )
     assert status == 0, err
     task = json.loads((tmp_path / "task.json").read_text())
     assert task["distractors"] and task["acceptance"]["accepted"]
@@ -274,12 +323,21 @@ def test_a_scene_may_move_at_the_start_but_not_solve_itself():
 def test_may_be_trivial_reaches_the_level_and_its_rule(tmp_path):
     """PHYRE's template 00024 keeps TRIVIAL tasks (its script excludes no flag): the scenario
     says `mayBeTrivial()`, its level keeps it, and its acceptance excludes nothing."""
-    from physc.api import load_task
-
     from physc_phyre import DOMAIN
 
+    from physc.api import load_task
+
     status, _, err = physc(
-        "compile", EXAMPLES / "phyre" / "task00024.phys", "--seed", "0", "-q", "--no-acceptance", "-o", tmp_path / "t.json", "--task", tmp_path / "task.json",
+        "compile",
+        EXAMPLES / "phyre" / "task00024.phys",
+        "--seed",
+        "0",
+        "-q",
+        "--no-acceptance",
+        "-o",
+        tmp_path / "t.json",
+        "--task",
+        tmp_path / "task.json",
     )
     assert status == 0, err
     level = load_task(tmp_path / "task.json").level
@@ -292,5 +350,7 @@ def test_a_solution_the_finished_level_makes_invalid_is_not_kept(tmp_path, monke
     from physc_phyre import PhyreActions
 
     monkeypatch.setattr(PhyreActions, "valid", lambda self, level, action: False)
-    status, _, err = physc("compile", LEDGE, "--seed", "1", "--no-acceptance", "--layouts", "2", "-o", tmp_path / "t.json")
+    status, _, err = physc(
+        "compile", LEDGE, "--seed", "1", "--no-acceptance", "--layouts", "2", "-o", tmp_path / "t.json"
+    )
     assert status == 3 and "the solution is not a valid action in the finished level" in err

@@ -19,6 +19,7 @@ from physc_phyre import DOMAIN, simulation_cache
 from physc_phyre.actions import from_unit, placeable
 from physc_phyre.cache import main
 from test_phyre_plugin import EXAMPLES, physc
+
 from physc.simulation.ending import Ending
 
 ACTIONS = 20
@@ -38,7 +39,17 @@ def cache(*args) -> tuple[int, str]:
 def dataset(tmp_path_factory):
     """A dataset with a task of each tier, and its cache of ACTIONS actions."""
     out = tmp_path_factory.mktemp("cached")
-    status, _, err = physc("generate", EXAMPLES / "01_ledge.phys", EXAMPLES / "07_two_balls.phys", "--tasks", "1", "--no-acceptance", "--out", out, "-q")
+    status, _, err = physc(
+        "generate",
+        EXAMPLES / "01_ledge.phys",
+        EXAMPLES / "07_two_balls.phys",
+        "--tasks",
+        "1",
+        "--no-acceptance",
+        "--out",
+        out,
+        "-q",
+    )
     assert status == 0, err
     status, err = cache(out, "--actions", ACTIONS, "-q")
     assert status == 0, err
@@ -105,7 +116,9 @@ def test_the_statuses_are_the_domains(dataset):
         statuses = loaded["statuses_per_task"][row["task_id"]]
         for i in range(0, ACTIONS, 4):
             action = from_unit(loaded["actions"][i])
-            if action is None or not all(placeable(level, ball) for ball in action.balls):  # PHYRE's mapper, then occlusion
+            if action is None or not all(
+                placeable(level, ball) for ball in action.balls
+            ):  # PHYRE's mapper, then occlusion
                 expected = 0
             else:
                 expected = 1 if DOMAIN.play(level, action, ending=Ending.OUTCOME).solved else -1
@@ -161,7 +174,12 @@ def test_a_damaged_task_file_exits_2_with_no_traceback(dataset, tmp_path):
     shutil.copytree(dataset, copy, ignore=shutil.ignore_patterns("cache"))
     task = next(p for p in sorted(copy.glob("Ledge/*.json")) if not p.name.endswith(".level.json"))
     task.write_text("{not json")
-    run = subprocess.run([sys.executable, "-m", "physc_phyre.cache", str(copy), "--actions", "5"], capture_output=True, text=True, check=False)
+    run = subprocess.run(
+        [sys.executable, "-m", "physc_phyre.cache", str(copy), "--actions", "5"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert run.returncode == 2, run.stderr
     assert "cannot read the task file" in run.stderr and "Traceback" not in run.stderr
     assert not (copy / "phyre" / "cache").exists()

@@ -11,6 +11,7 @@ import pytest
 from physc_phyre import DOMAIN, PhyreLevel, SceneBody, TwoBallAction, actions, benchmark, folds, phyre_format
 from physc_phyre.level import BallAction
 from physc_phyre.task_file import task_json
+
 from physc.simulation.ending import Ending
 
 TARGET = SceneBody("target", "bar", 128.0, 2.56, 0.0, 256.0, "purple", False)
@@ -47,13 +48,17 @@ def test_an_action_must_be_of_the_levels_tier_and_keep_the_balls_apart():
     assert DOMAIN.actions.valid(TWO, far.first)  # the ball tier's action: PHYRE judges a two-ball task by one ball too
     # Apart is PHYRE's mapper's test, before it rounds to pixels: a pair that close is never
     # placed (from_unit), and one placed and then rounded closer is simulated as PHYRE does.
-    assert actions.from_unit((40 / 255, 200 / 255, 6 / 30, 56 / 255, 200 / 255, 6 / 30)) is None  # 16 px apart, 17 needed
+    assert (
+        actions.from_unit((40 / 255, 200 / 255, 6 / 30, 56 / 255, 200 / 255, 6 / 30)) is None
+    )  # 16 px apart, 17 needed
     assert DOMAIN.actions.valid(TWO, TwoBallAction(BallAction(40, 200, 8), BallAction(56, 200, 8)))
     on_the_ledge = TwoBallAction(BallAction(40, 200, 8), BallAction(128, 62, 8))
     assert not DOMAIN.actions.valid(TWO, on_the_ledge)  # the second ball occludes the ledge
     with pytest.raises(ValueError, match="places 1 red balls"):
         DOMAIN.scene(ONE, far)  # more balls than the level's tier places are refused, not cut
-    assert len(DOMAIN.scene(TWO, far.first).bodies) == len(DOMAIN.scene(TWO, far).bodies) - 1  # one ball: the ball tier's play
+    assert (
+        len(DOMAIN.scene(TWO, far.first).bodies) == len(DOMAIN.scene(TWO, far).bodies) - 1
+    )  # one ball: the ball tier's play
 
 
 def test_random_actions_and_neighbours_are_phyres_for_two_balls():
@@ -75,13 +80,25 @@ def test_the_acceptance_rule_is_the_tiers():
     ball, two = DOMAIN.evaluation.rule(ONE), DOMAIN.evaluation.rule(TWO)
     assert (ball.threshold, ball.tier, ball.unsolvable_in) == (1e-5, "ball", ())
     assert (two.threshold, two.tier, two.unsolvable_in) == (1e-6, "two_balls", (attrs.evolve(ball, max_chunks=30),))
-    assert (ball.min_valid, ball.min_solutions, ball.chunk, ball.p_value, ball.trivial) == (10_000, 3, 10_000, 0.05, 0.1)
+    assert (ball.min_valid, ball.min_solutions, ball.chunk, ball.p_value, ball.trivial) == (
+        10_000,
+        3,
+        10_000,
+        0.05,
+        0.1,
+    )
     # PHYRE's pool: a two-ball task is judged by one ball too (valid there), in PHYRE's order
     first = DOMAIN.evaluation.action_pool(TWO, "ball", 0, 10)[:3]
-    assert all(isinstance(a, BallAction) for a in first) and DOMAIN.evaluation.action_pool(TWO, "two_balls", 1, 10)[0] != DOMAIN.evaluation.action_pool(TWO, "two_balls", 0, 10)[0]
+    assert (
+        all(isinstance(a, BallAction) for a in first)
+        and DOMAIN.evaluation.action_pool(TWO, "two_balls", 1, 10)[0]
+        != DOMAIN.evaluation.action_pool(TWO, "two_balls", 0, 10)[0]
+    )
     assert any(DOMAIN.actions.valid(TWO, a) for a in first)
     # `mayBeTrivial()`: the template's search_params exclude no flag (PHYRE's 00000, 00003, …)
-    assert ball.excluded == ("TRIVIAL",) and DOMAIN.evaluation.rule(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
+    assert (
+        ball.excluded == ("TRIVIAL",) and DOMAIN.evaluation.rule(attrs.evolve(ONE, may_be_trivial=True)).excluded == ()
+    )
 
 
 def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
@@ -100,7 +117,9 @@ def test_both_balls_play_and_the_task_is_written_in_phyres_two_ball_tier():
 
 def test_the_benchmark_keeps_six_numbers_and_splits_each_tier_on_its_own():
     one = json.loads(task_json(DOMAIN.files.with_solution(ONE, BallAction(120, 120, 8))))
-    two = json.loads(task_json(DOMAIN.files.with_solution(TWO, TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12)))))
+    two = json.loads(
+        task_json(DOMAIN.files.with_solution(TWO, TwoBallAction(BallAction(120, 120, 8), BallAction(200, 200, 12))))
+    )
     assert len(benchmark._action(one)) == 3 and len(benchmark._action(two)) == 6
     ids = [f"{t:05d}:{i:03d}" for t in range(10) for i in range(5)]
     tiers = {task: "BALL" if task < "00005" else "TWO_BALLS" for task in ids}
@@ -118,7 +137,9 @@ def test_phyres_random_agent_draws_six_numbers_for_a_two_ball_task():
     import numpy as np
     from physc_phyre.agents import Observation, random_agent
 
-    seen = Observation("00100:000", np.zeros((256, 256), np.uint8), np.zeros((0, 14), np.float32), {"tier": "TWO_BALLS"})
+    seen = Observation(
+        "00100:000", np.zeros((256, 256), np.uint8), np.zeros((0, 14), np.float32), {"tier": "TWO_BALLS"}
+    )
     first = next(iter(random_agent(seen)))
     assert len(first) == 6 and all(0 <= v < 1 for v in first)
 
@@ -127,7 +148,9 @@ def test_the_two_ball_example_compiles_to_a_two_ball_task_that_verifies(tmp_path
     from test_phyre_plugin import EXAMPLES, physc
 
     level, task = tmp_path / "level.json", tmp_path / "task.json"
-    status, _, err = physc("compile", EXAMPLES / "07_two_balls.phys", "--seed", "2", "-q", "--no-acceptance", "-o", level, "--task", task)
+    status, _, err = physc(
+        "compile", EXAMPLES / "07_two_balls.phys", "--seed", "2", "-q", "--no-acceptance", "-o", level, "--task", task
+    )
     assert status == 0, err
     written = json.loads(level.read_text())
     assert written["tier"] == "TWO_BALLS" and len(written["solutions"][0]["balls"]) == 2
