@@ -18,10 +18,10 @@ from pathlib import Path
 
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
+from physc.driver.pipeline import Pipeline
 from physc.dsl import ast
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_text
-from physc.generation.pipeline import Pipeline
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 

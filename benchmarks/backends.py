@@ -38,10 +38,10 @@ from simulation_speed import level as speed_level  # noqa: E402
 from physc.backends import load_backend  # noqa: E402
 from physc.domains.angrybirds.catalogue import extent  # noqa: E402
 from physc.domains.angrybirds.game import BIRD, GROUND, Game  # noqa: E402
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model  # noqa: E402
 from physc.domains.angrybirds.launch import Shot  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.level_xml import read_level  # noqa: E402
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model  # noqa: E402
 from physc.simulation.stability import largest_shift  # noqa: E402
 
 GROUND_TOP = PHYQ.frame.ground_top

@@ -4,7 +4,7 @@
 
 RESULTS_DIR is a `physc eval` output folder: its records.jsonl holds every generated task's
 level and solution. Each is replayed in `--backend` with `physc verify`'s own function
-(physc.generation.verify): once as recorded and `--replays` times under the evaluation's
+(physc.search.verify): once as recorded and `--replays` times under the evaluation's
 noise. The table says, per interaction count and per scenario, the share that the replay
 solves and the share whose declared sequence it realises, and how long one exact replay
 takes (median, this machine, one core).
@@ -23,7 +23,7 @@ from physc.domains import load_domain
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze
 from physc.files import write_atomic
-from physc.generation.verify import verify
+from physc.search.verify import verify
 from physc.serialize import from_data
 
 

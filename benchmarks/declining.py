@@ -18,8 +18,8 @@ import math
 
 import numpy as np
 
-from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab
 from physc.backends import load_backend
+from physc.domains.angrybirds.catalogue import PLATFORM_BASE, PLATFORM_THICKNESS, by_prefab
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.worlds import PHYQ
 

@@ -22,9 +22,9 @@ from pathlib import Path
 from physc.compiler.infeasible import Infeasible
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
+from physc.driver.pipeline import Pipeline
+from physc.driver.run_settings import RunSettings
 from physc.dsl.frontend import analyze
-from physc.generation.pipeline import Pipeline
-from physc.generation.run_settings import RunSettings
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 

@@ -21,13 +21,13 @@ import statistics
 from pathlib import Path
 
 from physc.compiler.infeasible import Infeasible
-from physc.generation import search
-from physc.generation.pipeline import Pipeline
-from physc.generation.run_settings import RunSettings
-from physc.generation.settings import NOT_REALISED
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
+from physc.driver.pipeline import Pipeline
+from physc.driver.run_settings import RunSettings
 from physc.dsl.frontend import analyze
+from physc.search import search
+from physc.search.settings import NOT_REALISED
 
 PAPER = Path(__file__).resolve().parents[1] / "examples" / "paper" / "all.paper.phys"
 USED = "(the layout used, fallbacks' second tries included)"

@@ -21,9 +21,9 @@ import time
 
 from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
-from physc.domains.angrybirds.worlds import PHYQ
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.worlds import PHYQ
 
 MATERIALS = ("wood", "stone", "ice")
 

@@ -16,8 +16,8 @@ import numpy as np
 
 from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
-from physc.domains.angrybirds.worlds import catalogue_model
 from physc.domains.angrybirds.level_xml import read_level
+from physc.domains.angrybirds.worlds import catalogue_model
 
 TEMPLATES = Path(__file__).resolve().parents[2] / "shared" / "data" / "sciencebirds" / "phyq-templates"
 

@@ -33,8 +33,8 @@ from physc.commands.lsp import add_command as add_lsp_command
 from physc.commands.options import add_generation, add_target
 from physc.commands.play import add_commands as add_play_commands
 from physc.commands.verify import add_command as add_verify_command
-from physc.compiler.stages import STAGES
 from physc.diagnostics import safe
+from physc.driver.stages import STAGES
 
 
 def command(module: str, name: str):

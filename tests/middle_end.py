@@ -5,10 +5,11 @@ from __future__ import annotations
 import functools
 
 from conftest import EXAMPLES
+
 from physc.domains import load_domain
 from physc.domains.words import INSTALLED
+from physc.driver.pipeline import Pipeline
 from physc.dsl.frontend import analyze
-from physc.generation.pipeline import Pipeline
 
 DOMAIN = load_domain("angrybirds")
 
@@ -36,11 +37,11 @@ def scenario_from_text(text: str):
 
 
 class Searching:
-    """The one search (physc.generation.search) on one placed layout, its steps as methods of
+    """The one search (physc.search.search) on one placed layout, its steps as methods of
     one object for the tests: the problem it reads and the ledger it writes."""
 
     def __init__(self, problem, rng):
-        from physc.generation.problem import Ledger
+        from physc.search.problem import Ledger
 
         self.problem, self.ledger, self.rng = problem, Ledger(), rng
 
@@ -54,27 +55,27 @@ class Searching:
         return self
 
     def simulate(self, layout, action, seconds=None, resume=None):
-        from physc.generation.problem import simulate
+        from physc.search.problem import simulate
 
         return simulate(self.problem, self.ledger, layout, action, seconds, resume)
 
     def realised(self, layout, parent, stage, lead=0):
-        from physc.generation.chain import realised
+        from physc.search.chain import realised
 
         return realised(self.problem, self.ledger, layout, parent, stage, lead)
 
     def variants(self, parent, stage):
-        from physc.generation.variants import variants
+        from physc.search.variants import variants
 
         return variants(self.problem, self.ledger, parent, stage)
 
     def on_path(self, layout, declared, stage, attempt):
-        from physc.generation.variants import on_path
+        from physc.search.variants import on_path
 
         return on_path(self.problem, layout, declared, stage, attempt)
 
     def run(self):
-        from physc.generation.search import search
+        from physc.search.search import search
 
         return search(self.problem, self.ledger, self.rng)
 
@@ -83,7 +84,7 @@ def searching(domain, scenario, layout, seed: int = 0, accept: int | None = None
     """The search of `layout` (accepting `accept` noisy replays: the domain's by default)."""
     import random
 
-    from physc.generation.problem import Problem
+    from physc.search.problem import Problem
 
     problem = Problem.of(domain, scenario, layout, domain.robustness_replays if accept is None else accept)
     found = Searching(problem, random.Random(seed))

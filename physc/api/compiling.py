@@ -16,7 +16,7 @@ from physc.api.errors import NoTask, ScenarioError
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
 from physc.compiler.task import Task
 from physc.diagnostics import Diagnostic, Label
-from physc.generation.run_settings import RunSettings, overridden
+from physc.driver.run_settings import RunSettings, overridden
 
 __all__ = ["check", "compile", "scenarios"]
 
@@ -102,12 +102,12 @@ def check_min_robustness(value: int | None, domain, name: str = "min_robustness"
 
 
 def pipeline(scenario_ast, ir, domain, seed: int = 0, settings=None, progress=None):
-    """The generation pipeline (physc.generation.pipeline.Pipeline) of one checked scenario in
+    """The generation pipeline (physc.driver.pipeline.Pipeline) of one checked scenario in
     `domain` (bound to its world and engine) under the run's `settings` (a RunSettings; None:
     the defaults), with the scenario's block form as the task's source."""
+    from physc.driver.pipeline import Pipeline
     from physc.dsl import ast
     from physc.dsl.fmt import format_file
-    from physc.generation.pipeline import Pipeline
 
     return Pipeline(domain, ir, seed, settings or RunSettings(), format_file(ast.File((scenario_ast,))), progress)
 
@@ -163,13 +163,14 @@ def compile(  # noqa: A001 - the library's verb is the command's
     domain that is not installed or cannot make tasks, physc.worlds.WorldError or
     physc.backends.BackendError for a world or engine that is not there."""
     from physc.domains import bound, load_domain
-    from physc.domains.base import STAGE_NEEDS, require
+    from physc.domains.base import require
+    from physc.driver.stages import NEEDS
 
     settings = overridden(settings, "compile", **overrides)
     scenario_ast, ir, _ = selected(source, scenario)
     domain = bound(load_domain(ir.domain), world, backend)
     check_min_robustness(settings.min_robustness, domain)
-    require(domain, STAGE_NEEDS["task"] + (("replay",) if settings.verify_backend else ()), "compile")
+    require(domain, NEEDS["task"] + (("replay",) if settings.verify_backend else ()), "compile")
     run = pipeline(scenario_ast, ir, domain, seed, settings, progress)
     try:
         with run.within_budget("task"):

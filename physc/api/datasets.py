@@ -17,7 +17,7 @@ import attrs
 
 from physc.api.errors import FileError, ScenarioError
 from physc.compiler.task import Task
-from physc.generation.run_settings import RunSettings, overridden
+from physc.driver.run_settings import RunSettings, overridden
 
 __all__ = ["Dataset", "Evaluation", "evaluate", "generate", "load_dataset"]
 
@@ -79,7 +79,7 @@ def _jobs(
     from physc.api.compiling import check_min_robustness
     from physc.domains import load_domain
     from physc.domains.base import require
-    from physc.generation.job import jobs_for
+    from physc.driver.job import jobs_for
 
     if isinstance(files, (str, os.PathLike)):
         files = [files]
@@ -115,7 +115,7 @@ def clashes(jobs) -> str | None:
 
 
 def job_settings(world, backend, settings: RunSettings) -> dict:
-    """The fields of a job (physc.generation.job.Job) that generation's options set: where it
+    """The fields of a job (physc.driver.job.Job) that generation's options set: where it
     is made (None: the default world, box2d) and the run's settings."""
     from physc.backends import DEFAULT_BACKEND
 
@@ -125,17 +125,17 @@ def job_settings(world, backend, settings: RunSettings) -> dict:
 def generation_needs(png: bool, verify_backend: str | None) -> tuple[str, ...]:
     """What a domain must be able to do for a dataset of its tasks (with pictures, verified in
     a second engine)."""
-    from physc.domains.base import STAGE_NEEDS
+    from physc.driver.stages import NEEDS
 
-    return STAGE_NEEDS["level"] + (("picture",) if png else ()) + (("replay",) if verify_backend else ())
+    return NEEDS["level"] + (("picture",) if png else ()) + (("replay",) if verify_backend else ())
 
 
 def evaluation_needs() -> tuple[str, ...]:
     """What a domain must be able to do for its tasks to be measured: generation, the replays
     and the measurements."""
-    from physc.domains.base import STAGE_NEEDS
+    from physc.driver.stages import NEEDS
 
-    return STAGE_NEEDS["task"] + ("replay", "stability")
+    return NEEDS["task"] + ("replay", "stability")
 
 
 def generate(

@@ -106,10 +106,10 @@ def verify(task: Task, *, world: str | None = None, backend: str | None = None, 
     """The task's intended solution replayed (`physc verify`): in the world and engine the
     task was made in unless `world` or `backend` names others, once as recorded and `replays`
     times under the domain's noise (None: the domain's own number, 6 in angrybirds). Returns
-    physc.generation.verify.Verification: `solved`, `realised`, `noisy_passed`, `trace`, `why`,
+    physc.search.verify.Verification: `solved`, `realised`, `noisy_passed`, `trace`, `why`,
     and `passes(n)`."""
-    from physc.generation.verify import noisy_replays
-    from physc.generation.verify import verify as replay
+    from physc.search.verify import noisy_replays
+    from physc.search.verify import verify as replay
 
     domain = domain_of(task, world, backend)
     count = noisy_replays(domain) if replays is None else replays

@@ -19,10 +19,10 @@ from physc.commands.common import (
 )
 from physc.commands.options import run_settings
 from physc.commands.progress import Heartbeat
-from physc.compiler.stages import BY_NAME, StageError, Unit, stage
 from physc.compiler.task import given_up_summary
 from physc.diagnostics import Diagnostic
 from physc.domains.base import DomainError
+from physc.driver.stages import BY_NAME, StageError, Unit, stage
 from physc.files import check_output, ensure_folder, write_atomic
 from physc.suggest import did_you_mean
 
@@ -83,7 +83,8 @@ def _picture(value, domain, path: str) -> bytes:
 def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnostic]:
     """E0703 for each scenario whose domain lacks a hook that the stage (and --png of a
     task) needs: refused before any work, at the scenario's `domain` line."""
-    from physc.domains.base import STAGE_NEEDS, MissingCapability, require
+    from physc.domains.base import MissingCapability, require
+    from physc.driver.stages import NEEDS
 
     picture = ("picture",) if args.png and BY_NAME[stage_name].drawn else ()
     verifying = ("replay",) if args.verify_backend and BY_NAME[stage_name].simulates else ()
@@ -91,7 +92,7 @@ def _lacking(args, stage_name: str, selected, checked, domains) -> list[Diagnost
     found = []
     for scenario in selected:
         try:
-            require(domains[checked[scenario.name.text].domain], STAGE_NEEDS[stage_name] + picture + verifying, asked)
+            require(domains[checked[scenario.name.text].domain], NEEDS[stage_name] + picture + verifying, asked)
         except MissingCapability as error:
             span = scenario.domain.span if scenario.domain else scenario.name.span
             found.append(Diagnostic(error.code, error.message, span, help=error.help))

@@ -89,8 +89,8 @@ def cmd_eval(args) -> int:
     if args.agent:
         return cmd_agent(args)
     from physc.api.datasets import evaluation_needs
+    from physc.driver.job import jobs_for
     from physc.evaluation.run import run
-    from physc.generation.job import jobs_for
 
     check_batch(args)
     # Generation's final validation is skipped, as in the paper's evaluation.

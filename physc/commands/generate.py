@@ -27,8 +27,8 @@ def _described(row: dict) -> str:
 def cmd_generate(args) -> int:
     from physc.api.datasets import clashes, generation_needs
     from physc.dataset.build import build
-    from physc.dataset.job import NO_TASK
-    from physc.generation.job import jobs_for
+    from physc.dataset.worker import NO_TASK
+    from physc.driver.job import jobs_for
 
     check_batch(args)
     jobs, problems = jobs_for(

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from physc.backends import DEFAULT_BACKEND
 from physc.commands import arguments
-from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.driver.run_settings import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
 
 
 def add_target(parser, verify: bool = True, replay: bool = False) -> None:
@@ -91,10 +91,10 @@ def add_generation(parser, validate: bool = True) -> None:
 
 
 def run_settings(args, validate: bool | None = None):
-    """The run's settings (physc.generation.run_settings.RunSettings) that `add_generation` and
+    """The run's settings (physc.driver.run_settings.RunSettings) that `add_generation` and
     `add_target` parsed, under the options' own names; `validate` where the command decides it
     (eval: never, as the paper's evaluation)."""
-    from physc.generation.run_settings import RunSettings
+    from physc.driver.run_settings import RunSettings
 
     return RunSettings(
         time_budget=args.time_budget,
@@ -108,7 +108,7 @@ def run_settings(args, validate: bool | None = None):
 
 
 def generation_settings(args, validate: bool | None = None) -> dict:
-    """The fields of a job (physc.generation.job.Job) that `add_generation` and `add_target` set:
+    """The fields of a job (physc.driver.job.Job) that `add_generation` and `add_target` set:
     the world, the engine and the run's settings."""
     from physc.api.datasets import job_settings
 

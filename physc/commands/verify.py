@@ -36,7 +36,7 @@ def cmd_verify(args) -> int:
     from physc.api.errors import FileError
     from physc.api.tasks import task_parts
     from physc.commands.options import replaying
-    from physc.generation.verify import noisy_replays, verify
+    from physc.search.verify import noisy_replays, verify
 
     task = read_task(args.task)
     try:

@@ -43,7 +43,7 @@ it as the game's own designers build a roll (Phy-Q's templates 2_1_3, 2_1_6, 2_1
 surface is a ramp descending towards the target, and the target rests at its foot on a support
 of its own, which the mover's path continues onto. Gravity then carries what a strike cannot.
 `LayoutRules.structures(scenario)` names the structures a scenario has; generation tries
-them all (physc.generation.pipeline), and simulation decides.
+them all (physc.driver.pipeline), and simulation decides.
 """
 
 from __future__ import annotations

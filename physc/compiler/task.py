@@ -5,14 +5,6 @@ from __future__ import annotations
 
 import attrs
 
-# A task whose solution failed some noisy replays of the generator (the domain's
-# robustness_replays; 6 in angrybirds) is a fallback, made only on request (--min-robustness K):
-# by default (None) a solution must pass all of them.
-MIN_ROBUSTNESS = None
-LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
-TIME_BUDGET = 120.0  # seconds for generating one task
-CLAUSE_BUDGET = 50_000  # clause choices the layout search may try per shape draw
-
 
 @attrs.frozen
 class Task:

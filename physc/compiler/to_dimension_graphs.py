@@ -30,12 +30,12 @@ from physc.compiler.dimension_graphs import (
 )
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
-from physc.compiler.task import CLAUSE_BUDGET
 
 # The most interactions the search takes. Its memory grows with the square of the bodies
 # times the depth (a copy of both axes' distance matrices per clause on the path) and each
 # clause choice costs the square of the bodies: a 64-interaction chain ends its search in
 # about 35 s and 140 MB, a 200-interaction one ran for minutes at 2 GB (docs/generation.md).
+CLAUSE_BUDGET = 50_000  # clause choices the layout search may try per shape draw (--clause-budget)
 MAX_INTERACTIONS = 64
 SHAPE_DRAWS = 12  # how many times shapes are drawn anew before giving up, if no conjunction is consistent
 MAX_SHAPE_DRAWS = 120  # draws in all while consistent conjunctions are found and still asked for

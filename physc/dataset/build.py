@@ -12,11 +12,11 @@ from pathlib import Path
 
 from physc import budget
 from physc.dataset import manifest, readme
-from physc.dataset.job import make, scenario_file
+from physc.dataset.worker import make, scenario_file
 from physc.domains import load_domain
+from physc.driver.job import Job
 from physc.execution import Executor
 from physc.files import OutputError, ensure_folder, write_atomic
-from physc.generation.job import Job
 
 README = "README.md"
 

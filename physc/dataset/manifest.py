@@ -55,7 +55,7 @@ COLUMNS = [
     ("seconds", "seconds"),
     ("settings", "settings"),
 ]
-# A job's settings (physc.generation.job.Job.recorded), each field typed whether or not a run set it.
+# A job's settings (physc.driver.job.Job.recorded), each field typed whether or not a run set it.
 SETTINGS = (
     ("acceptance", "bool_"),
     ("accidental", "bool_"),
@@ -72,7 +72,7 @@ SETTINGS = (
     ("verify_backend", "string"),
     ("world", "string"),
 )
-# The seconds of the generation's stages (physc.generation.layout_loop; a stage a task did not pass: null).
+# The seconds of the generation's stages (physc.driver.layout_loop; a stage a task did not pass: null).
 SECONDS = (
     ("accept", "float64"),
     ("distract", "float64"),

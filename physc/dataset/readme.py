@@ -9,7 +9,7 @@ from pathlib import Path
 import jinja2
 
 from physc import __version__
-from physc.dataset.job import FALLBACK, NO_TASK
+from physc.dataset.worker import FALLBACK, NO_TASK
 from physc.domains import load_domain
 
 _SIZES = ((1_000, "n<1K"), (10_000, "1K<n<10K"), (100_000, "10K<n<100K"), (1_000_000, "100K<n<1M"))

@@ -46,13 +46,13 @@ class Actions(Part):
 
     def nudged(self, action, step: int):
         """`action` moved `step` whole steps along a line (one of the coordinates the search moves
-        to raise a weak chain's margins, physc.generation.coordinates); None: no such line, or no
+        to raise a weak chain's margins, physc.search.coordinates); None: no such line, or no
         such action there (the default: no line)."""
         return None
 
     def contrasted(self, level, action, counterpart: str, contrast: str):
         """`action` aimed at `contrast` as it is aimed at `counterpart` (language version 2's
-        `contrast(a, b)`, physc.generation.contrasts); None: the domain cannot say (the default),
+        `contrast(a, b)`, physc.search.contrasts); None: the domain cannot say (the default),
         or the action is not aimed at the counterpart."""
         return None
 

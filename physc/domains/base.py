@@ -34,7 +34,6 @@ import abc
 import copy
 from typing import TYPE_CHECKING
 
-from physc.compiler.stages import NEEDS
 from physc.domains.errors import DomainError, LevelError, MissingCapability
 from physc.domains.evaluation import Evaluation
 from physc.domains.level_files import LevelFiles
@@ -55,7 +54,6 @@ __all__ = [
     "CAPABILITIES",
     "DEFAULTS",
     "REQUIRED",
-    "STAGE_NEEDS",
     "Domain",
     "DomainError",
     "LevelError",
@@ -94,11 +92,6 @@ DEFAULTS = (
     "evaluation",
 )  # working defaults
 FILES = ("emit_level", "picture", "read_level", "draw")  # the capabilities that are members of `files`
-
-# What each stage of `physc compile --emit STAGE` asks of the domain, the stages before it
-# included (physc.compiler.stages, where each stage says what it adds). `picture` is asked for
-# by `--png` of a layout, task or level.
-STAGE_NEEDS: dict[str, tuple[str, ...]] = NEEDS
 
 
 def provides(domain: Domain, hook: str) -> bool:

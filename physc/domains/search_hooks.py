@@ -14,7 +14,7 @@ class SearchHooks(Part):
     its world and engine."""
 
     settings = None
-    """The search's budgets and beams, a physc.generation.settings.SearchSettings (None: physc's
+    """The search's budgets and beams, a physc.search.settings.SearchSettings (None: physc's
     defaults)."""
 
     seconds: float | None = None
@@ -24,7 +24,7 @@ class SearchHooks(Part):
 
     trace_scale: float = 1.0
     """Layout lengths per length of the simulation (PHYRE: pixels per metre): how a simulated
-    path is read in the placed layout (physc.generation.placing)."""
+    path is read in the placed layout (physc.search.placing)."""
 
     blocker: str | None = None
     """The concrete object of an obstacle the guards place (a static bar); None: the domain
@@ -40,7 +40,7 @@ class SearchHooks(Part):
     def bodies(self, placed, scenario) -> list:
         """The other bodies `placed` (a PlacedObject) may take, as PlacedObjects of the same name
         with their concrete object, material and size: what the search chooses a new object's
-        body from (physc.generation.choosing). The default: none."""
+        body from (physc.search.choosing). The default: none."""
         return []
 
     def mass(self, placed) -> float:

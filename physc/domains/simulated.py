@@ -22,7 +22,7 @@ does:
 
 Everything else is physc's: every play through the generic loop (`play`, `playout`, each
 ending as physc.simulation.ending.Ending says), the search that makes a placed layout a task
-(physc.generation.search, which the layout loop runs for a domain that declares
+(physc.search.search, which the layout loop runs for a domain that declares
 `satisfy`), the robustness replays, stability, the replays of `physc verify` and the
 evaluation's measurements of intended solvability and fidelity.
 """

@@ -128,7 +128,7 @@ def paper_terms(
 
 def structure_terms() -> tuple[TermSignature, TermSignature]:
     """Language version 2's restrictions on a level's make-up, which the layout rules read
-    (physc.compiler.layout_rules) and the search checks (physc.generation.contrasts):
+    (physc.compiler.layout_rules) and the search checks (physc.search.contrasts):
     `contrast(a, b)` (a domain that has it writes `SimulatedDomain.contrasted`) and `on(a, b)`."""
     contrast = TermSignature(
         "contrast",

@@ -21,12 +21,12 @@ from pathlib import Path
 from physc import budget
 from physc.compiler.infeasible import Infeasible
 from physc.domains.base import DomainError
+from physc.driver.job import Job
+from physc.driver.pipeline import Pipeline
 from physc.evaluation import measure
 from physc.execution import Executor
 from physc.files import ensure_folder, read_json_lines, write_atomic
-from physc.generation.job import Job
-from physc.generation.pipeline import Pipeline
-from physc.generation.verify import verify
+from physc.search.verify import verify
 from physc.serialize import to_data
 
 RECORDS = "records.jsonl"

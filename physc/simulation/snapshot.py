@@ -12,7 +12,7 @@ it, and its rows before the step are that pose.
 
 Continuing is not the same bytes as running from the start: the engine's contact caches
 (warm starting) and its order of bodies differ. It is a quick look, so the search
-confirms what passes with a full run (physc.generation.search). It is deterministic:
+confirms what passes with a full run (physc.search.search). It is deterministic:
 the same snapshot and scene give the same run.
 """
 

@@ -7,9 +7,9 @@ import subprocess
 import sys
 
 import pytest
+from conftest import EXAMPLES, GOLDEN, run_physc
 
 import physc
-from conftest import EXAMPLES, GOLDEN, run_physc
 
 F = EXAMPLES / "paper" / "05_F.phys"
 SF = EXAMPLES / "paper" / "01_SF.phys"

@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import pytest
+from conftest import EXAMPLES
 
 import physc
-from physc.generation.run_settings import RunSettings, overridden
-
-from conftest import EXAMPLES
+from physc.driver.run_settings import RunSettings, overridden
 
 SF = EXAMPLES / "paper" / "01_SF.phys"
 

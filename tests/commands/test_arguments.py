@@ -4,8 +4,8 @@
 from __future__ import annotations
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
+
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.level_xml import emit_level
 

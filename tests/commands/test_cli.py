@@ -8,8 +8,8 @@ import subprocess
 import sys
 
 import pytest
-
 from conftest import EXAMPLES
+
 from physc import __version__
 
 SF = EXAMPLES / "paper" / "01_SF.phys"
@@ -122,7 +122,7 @@ def test_compile_unknown_stage(physc):
 
 
 def test_every_stage_is_available(physc):
-    from physc.compiler.stages import STAGES
+    from physc.driver.stages import STAGES
 
     assert all(s.run is not None for s in STAGES)
 

@@ -9,8 +9,8 @@ import shutil
 import subprocess
 
 import pytest
-
 from conftest import EXAMPLES, SCIENCEBIRDS, run_physc
+
 from physc.cli import build_parser
 
 SF = EXAMPLES / "paper" / "01_SF.phys"

@@ -9,7 +9,6 @@ import sys
 import time
 
 import pytest
-
 from conftest import EXAMPLES
 
 RRR = EXAMPLES / "paper" / "16_RRR.phys"  # rarely generates: runs to its time budget

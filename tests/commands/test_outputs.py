@@ -9,7 +9,6 @@ import subprocess
 import threading
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
 
 R = EXAMPLES / "paper" / "04_R.phys"

@@ -9,8 +9,9 @@ import sys
 import time
 
 from conftest import EXAMPLES
+
 from physc.commands.progress import Heartbeat, Progress
-from physc.generation.layout_loop import Progress as Report
+from physc.driver.layout_loop import Progress as Report
 
 SF = EXAMPLES / "paper" / "01_SF.phys"
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 import json
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
 
 PAPER = EXAMPLES / "paper" / "all.paper.phys"

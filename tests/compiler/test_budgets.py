@@ -6,13 +6,13 @@ from __future__ import annotations
 import time
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
+
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible, readable
-from physc.generation.pipeline import Pipeline
-from physc.generation.run_settings import RunSettings
+from physc.driver.pipeline import Pipeline
+from physc.driver.run_settings import RunSettings
 
 SRF = EXAMPLES / "paper" / "13_SRF.phys"
 

@@ -23,9 +23,9 @@ from __future__ import annotations
 import json
 
 import pytest
-
 from conftest import EXAMPLES, GOLDEN, ROOT, check_golden, run_physc
-from physc.compiler.stages import STAGES
+
+from physc.driver.stages import STAGES
 
 PAPER = sorted((EXAMPLES / "paper").glob("[0-9][0-9]_*.phys"))
 GENERATED = [p for p in PAPER[:7] if p.stem != "04_R"]  # 01_SF … 07_B: the 2- and 4-interaction scenarios but R

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import pytest
-
 from middle_end import DOMAIN, pipeline, scenario_from_text
-from physc.generation.pipeline import Pipeline
+
+from physc.driver.pipeline import Pipeline
 
 
 def edges(name):

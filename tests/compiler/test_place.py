@@ -6,9 +6,9 @@ import itertools
 import json
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios, pipeline
+
 from physc.compiler.geometry import overlap_depth, polygon
 from physc.compiler.qsr_evaluate import holds
 from physc.serialize import dumps

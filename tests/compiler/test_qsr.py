@@ -5,8 +5,8 @@ from __future__ import annotations
 import random
 
 import pytest
-
 from middle_end import DOMAIN, pipeline, scenario_from_text
+
 from physc.compiler.concrete_layout import Body, PlacedObject
 from physc.compiler.difference import DifferenceSystem, Inconsistent
 from physc.compiler.dimension_graphs import base_constraints, new_systems, point, relation_constraints
@@ -156,7 +156,7 @@ def test_dnf_size_is_exact_and_lazy():
 def test_astronomically_large_dnf_is_never_expanded():
     hits = " > ".join(f"hit(bird, pig{i}, any) > destroy(bird, pig{i})" for i in range(60))
     scenario = scenario_from_text(f"scenario MANY {{ interactions {{ {hits} }} }}")
-    from physc.generation.pipeline import Pipeline
+    from physc.driver.pipeline import Pipeline
 
     dnf = Pipeline(DOMAIN, scenario, 0).qsr
     assert dnf.size == 8**60 * 3**60

@@ -4,11 +4,12 @@ the game's designers build one (Phy-Q's templates 2_1_3, 2_1_6, 2_1_9), beside t
 from __future__ import annotations
 
 from middle_end import DOMAIN, paper_scenarios
+
+from physc.compiler.concrete_layout import PlacedObject
 from physc.compiler.layout_graph import ON_LOCATION, TOUCHING
 from physc.domains.angrybirds.bodies import toughness
 from physc.domains.angrybirds.worlds import PHYQ
-from physc.compiler.concrete_layout import PlacedObject
-from physc.generation.choosing import next_act, worth
+from physc.search.choosing import next_act, worth
 
 
 def edges(graph, term):

@@ -17,7 +17,6 @@ from pathlib import Path
 import pandas as pd
 import psutil
 import pytest
-
 from conftest import EXAMPLES, run_physc
 
 SF = EXAMPLES / "paper" / "01_SF.phys"

@@ -93,7 +93,7 @@ def test_records_of_a_changed_scenario_or_time_budget_are_made_again(tmp_path):
 
 
 def test_records_made_by_other_code_are_made_again(tmp_path, monkeypatch):
-    from physc.generation import job as generation_job
+    from physc.driver import job as generation_job
 
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path, "-q").status == 0
     assert run_physc("eval", SF, "--tasks", "1", "--out", tmp_path).stderr.count("resuming: 1 of 1") == 1

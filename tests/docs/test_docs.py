@@ -6,8 +6,8 @@ import re
 from importlib.metadata import EntryPoint
 
 import pytest
-
 from conftest import ROOT, run_physc
+
 from physc import domains, error_codes
 
 DOC = (ROOT / "docs" / "errors.md").read_text(encoding="utf-8")

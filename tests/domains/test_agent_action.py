@@ -7,13 +7,13 @@ import json
 import math
 
 import pytest
+from conftest import EXAMPLES, run_physc
 
 from physc.domains.angrybirds import agent_action as aa
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level_xml import parse_level
 from physc.domains.angrybirds.phyq_levels import benchmark_files
 from physc.domains.angrybirds.worlds import PHYQ
-from conftest import EXAMPLES, run_physc
 
 SLINGSHOT, CAMERA_Y, MAX_WIDTH = (-12.0, -2.5), -1.0, 35.0  # every Phy-Q level's
 

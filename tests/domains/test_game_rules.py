@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import attrs
 import numpy as np
 import pytest
 
@@ -16,8 +17,6 @@ from physc.domains.angrybirds.catalogue import MATERIAL
 from physc.domains.angrybirds.game import BIRD, GROUND, Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
-import attrs
-
 from physc.domains.angrybirds.rules import Rules
 from physc.domains.angrybirds.worlds import PHYQ, SCIENCE_BIRDS_ENGINE
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 import time
 
 import pytest
-
 from conftest import run_physc
+
 from physc.domains.angrybirds.level_checks import MAX_BODIES, MAX_COORDINATE, MAX_LEVEL_BYTES
 from physc.domains.angrybirds.level_xml import LevelError, parse_level, read_level
 

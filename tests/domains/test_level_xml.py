@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 
 import pytest
-
 from conftest import GENERATED, TEMPLATES, run_physc
+
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.level_xml import LevelError, emit_level, parse_level, read_level
 

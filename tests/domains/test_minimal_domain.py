@@ -21,33 +21,44 @@ import math
 from importlib.metadata import EntryPoint
 
 import attrs
-
 from conftest import run_physc
+
 from physc import domains
 from physc.backends import BodySpec, Circle, Polygon, load_backend
+from physc.backends.settings import EngineSettings
 from physc.compiler.concrete_layout import Body
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import Geometry
+from physc.compiler.layout_graph import IN_DIRECTION, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
+from physc.compiler.layout_graph import OBJECT as OBJECT_NODE
 from physc.compiler.layout_rules import LayoutRules
-from physc.compiler.layout_graph import IN_DIRECTION, OBJECT as OBJECT_NODE, PLAYER, LayoutEdge, LayoutGraph, LayoutNode, Provenance
 from physc.diagnostics import SourceText
-from physc.domains.base import STAGE_NEEDS, MissingCapability, missing
+from physc.domains.actions import Actions
+from physc.domains.base import MissingCapability, missing
 from physc.domains.level_files import LevelFiles
 from physc.domains.part import part
-from physc.domains.actions import Actions
 from physc.domains.simulated import SimulatedDomain
-from physc.domains.vocabulary import DIRECTION, INTERACTION, OBJECT, ConcreteObject, ObjectTerm, Parameter, TermSignature, Vocabulary
+from physc.domains.vocabulary import (
+    DIRECTION,
+    INTERACTION,
+    OBJECT,
+    ConcreteObject,
+    ObjectTerm,
+    Parameter,
+    TermSignature,
+    Vocabulary,
+)
+from physc.driver.pipeline import Pipeline
+from physc.driver.stages import NEEDS
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_source
 from physc.dsl.vocabularies import Vocabularies
-from physc.generation.pipeline import Pipeline
 from physc.simulation.ending import Ending
 from physc.simulation.fidelity import fidelity
 from physc.simulation.recognise import Recogniser, approach, side
 from physc.simulation.restrictions import violations
 from physc.simulation.run import RunRules, run
 from physc.simulation.stability import stable
-from physc.backends.settings import EngineSettings
 from physc.simulation.trace import Interaction, Trace
 from physc.worlds import Incline, World
 
@@ -335,7 +346,7 @@ def positions(level: Level) -> dict[str, tuple[float, float, float]]:
 
 # ---- the tests -------------------------------------------------------------------------------
 def test_the_domain_has_every_capability_generation_asks_for():
-    assert missing(DOMAIN, STAGE_NEEDS["level"] + ("picture",)) == ()
+    assert missing(DOMAIN, NEEDS["level"] + ("picture",)) == ()
     ir = scenario_ir()
     assert [t.text for t in ir.interactions] == ["hit(ball, box, left)", "touch(box, goal, left)"]
     assert ir.object("goal").static and not ir.object("box").static

@@ -41,7 +41,6 @@ from __future__ import annotations
 
 import math
 
-import attrs
 import pytest
 
 from physc.backends import load_backend

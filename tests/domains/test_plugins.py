@@ -9,13 +9,13 @@ import sys
 from importlib.metadata import EntryPoint
 
 import pytest
-
 from conftest import ROOT, run_physc
+
 from physc import domains
-from physc.compiler.stages import BY_NAME
-from physc.domains.base import CAPABILITIES, DEFAULTS, FILES, REQUIRED, STAGE_NEEDS, Domain, MissingCapability, missing
+from physc.domains.base import CAPABILITIES, DEFAULTS, FILES, REQUIRED, Domain, MissingCapability, missing
 from physc.domains.evaluation import Evaluation
 from physc.domains.level_files import LevelFiles
+from physc.driver.stages import BY_NAME, NEEDS
 
 PLUGINS = (ROOT / "docs" / "plugins.md").read_text(encoding="utf-8")
 ERRORS = (ROOT / "docs" / "errors.md").read_text(encoding="utf-8")
@@ -75,7 +75,7 @@ def test_domains_come_from_entry_points():
 def test_a_subclass_with_only_the_required_attributes_loads_with_the_defaults(marbles_domain):
     domain = domains.load_domain("marbles")
     assert isinstance(domain, Domain)
-    assert missing(domain, STAGE_NEEDS["level"] + ("picture", "replay", "stability", "read_level", "draw")) == CAPABILITIES
+    assert missing(domain, NEEDS["level"] + ("picture", "replay", "stability", "read_level", "draw")) == CAPABILITIES
     assert domain.reach_targets(None) == [] and domain.reachable(-1e6, 1e6) and domain.robustness_replays is None
     with pytest.raises(MissingCapability, match="the domain 'marbles' cannot .* it has no picture"):
         domain.files.picture(None)
@@ -146,7 +146,7 @@ def test_a_domain_has_the_capabilities_it_declares_and_no_other(install, tmp_pat
 
 
 def test_every_stage_says_what_it_asks_of_a_domain_and_angrybirds_has_it_all():
-    assert list(STAGE_NEEDS) == list(BY_NAME)
+    assert list(NEEDS) == list(BY_NAME)
     assert missing(domains.load_domain("angrybirds"), REQUIRED + CAPABILITIES + DEFAULTS) == ()
 
 

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from physc.backends import load_backend
-
 import pytest
-
 from conftest import GENERATED, TEMPLATES
+
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level_xml import read_level
 from physc.domains.angrybirds.worlds import catalogue_model

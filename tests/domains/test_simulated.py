@@ -4,7 +4,6 @@ placing of a stage's new objects by the one search."""
 
 from __future__ import annotations
 
-
 import attrs
 import pytest
 
@@ -133,14 +132,14 @@ def test_the_next_target_goes_with_its_support_onto_the_actors_path():
     states[:, 0, 1] = np.linspace(5.5, 1.0, steps)
     trace = Trace(1 / 60, ("rObj",), {"rObj": "object"}, states)
     fidelity = Fidelity(1, 3, (), False, (0.1,))
-    from physc.domains import load_domain
-    from physc.generation.attempt import Attempt
-    from physc.generation.placing import consistent
-    from physc.generation.problem import Problem
-    from physc.generation.variants import on_path
-
-    from physc.domains.part import part
     from physc_phyre import PhyreSearch
+
+    from physc.domains import load_domain
+    from physc.domains.part import part
+    from physc.search.attempt import Attempt
+    from physc.search.placing import consistent
+    from physc.search.problem import Problem
+    from physc.search.variants import on_path
 
     class UnscaledSearch(PhyreSearch):
         trace_scale = 1.0

@@ -7,8 +7,8 @@ import json
 import math
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
+
 from physc.backends import Circle, load_backend
 from physc.domains import load_domain
 from physc.domains.angrybirds import prefabs

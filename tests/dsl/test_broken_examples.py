@@ -6,8 +6,8 @@ import json
 import re
 
 import pytest
-
 from conftest import EXAMPLES
+
 from physc import error_codes
 
 BROKEN = sorted((EXAMPLES / "errors").glob("*.phys"))

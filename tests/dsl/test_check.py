@@ -5,8 +5,8 @@ from __future__ import annotations
 import re
 
 import pytest
-
 from conftest import EXAMPLES
+
 from physc.domains.words import INSTALLED
 from physc.dsl.check import check_file
 from physc.dsl.parser import parse_text

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
+from conftest import EXAMPLES
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
+from strategies import files, written
 
-from conftest import EXAMPLES
 from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
-from strategies import files, written
 
 
 def fmt(text: str) -> str:

@@ -23,10 +23,11 @@ import tempfile
 from pathlib import Path
 
 import pytest
+from conftest import EXAMPLES, GOLDEN, ROOT, run_physc
 from hypothesis import given
 from hypothesis import strategies as st
+from strategies import NUMBERS, PHYS_CORPUS, PHYS_PIECES, _texts, fuzz, mutate_level, mutate_text, random_phys, randoms
 
-from conftest import EXAMPLES, GOLDEN, ROOT, run_physc
 from physc import error_codes
 from physc.diagnostics import exit_status, render, to_json
 from physc.domains.angrybirds.level_xml import LevelError, read_level
@@ -34,7 +35,6 @@ from physc.domains.words import INSTALLED
 from physc.dsl.check import check_file
 from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
-from strategies import NUMBERS, PHYS_CORPUS, PHYS_PIECES, _texts, fuzz, mutate_level, mutate_text, random_phys, randoms
 
 # What a terminal would act on (diagnostics.py escapes these): C0 controls but tab and newline,
 # DEL, C1 controls, bidirectional controls, line and paragraph separators.

@@ -6,8 +6,8 @@ import re
 from pathlib import Path
 
 import pytest
-
 from conftest import EXAMPLES
+
 from physc.dsl import ast
 from physc.dsl.parser import parse_text
 

@@ -9,11 +9,11 @@ import warnings
 import gymnasium
 import numpy as np
 import pytest
+from conftest import GOLDEN
 from gymnasium.utils.env_checker import check_env
 
 import physc
 import physc.envs
-from conftest import GOLDEN
 from physc.envs.agents import evaluate_agent, heuristic_agent, play_episode, random_agent
 
 TASKS = [GOLDEN / "task" / name for name in ("05_F.json", "06_S.json", "01_SF.json")]

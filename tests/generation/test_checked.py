@@ -8,17 +8,17 @@ from unittest import mock
 
 import attrs
 import pytest
-
 from middle_end import DOMAIN, paper_scenarios
+
 from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import PHYQ, ROLLING
-from physc.generation.layout_loop import LayoutLoop
-from physc.generation.outcome import Outcome
-from physc.generation.pipeline import Pipeline
-from physc.generation.run_settings import RunSettings
-from physc.generation.verify import verify
+from physc.driver.layout_loop import LayoutLoop
+from physc.driver.pipeline import Pipeline
+from physc.driver.run_settings import RunSettings
+from physc.search.outcome import Outcome
+from physc.search.verify import verify
 from physc.simulation.trace import ContactRecord
 
 BOX2D = load_backend("box2d")

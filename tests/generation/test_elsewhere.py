@@ -1,12 +1,13 @@
-"""The best play of a run that gave no task, replayed in the domain's other worlds (physc.generation.elsewhere)."""
+"""The best play of a run that gave no task, replayed in the domain's other worlds (physc.search.elsewhere)."""
 
 from types import SimpleNamespace
 
+from middle_end import paper_scenarios
+
 from physc.api.compiling import BUDGET_HELP
 from physc.compiler.infeasible import Exhausted
-from physc.generation import elsewhere
+from physc.search import elsewhere
 from physc.simulation.margins import Margin
-from middle_end import paper_scenarios
 
 R = paper_scenarios()["R"]
 
@@ -31,7 +32,7 @@ class Domain:
         return SimpleNamespace(matched=self.matched[self.world.name])
 
     seconds = 10.0
-    search = SimpleNamespace(seconds=9.0)  # the search's plays (physc.generation.problem.search_seconds)
+    search = SimpleNamespace(seconds=9.0)  # the search's plays (physc.search.problem.search_seconds)
     actions = SimpleNamespace(candidates=lambda level, scenario: [])
     capabilities = frozenset()
 

@@ -7,16 +7,16 @@ import json
 from unittest import mock
 
 import pytest
-
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
+
 from physc.compiler.infeasible import Infeasible
-from physc.compiler.task import MIN_ROBUSTNESS
-from physc.generation import search
-from physc.generation.layout_loop import FALLBACKS, LayoutLoop
-from physc.generation.outcome import Outcome, Parts
-from physc.generation.pipeline import Pipeline
-from physc.generation.run_settings import RunSettings
+from physc.driver.run_settings import MIN_ROBUSTNESS
+from physc.driver.layout_loop import FALLBACKS, LayoutLoop
+from physc.driver.pipeline import Pipeline
+from physc.driver.run_settings import RunSettings
+from physc.search import search
+from physc.search.outcome import Outcome, Parts
 
 
 class Scripted:

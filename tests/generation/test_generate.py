@@ -2,22 +2,21 @@
 
 from __future__ import annotations
 
-from physc.backends import load_backend
-
 import json
 
 import attrs
 import pytest
-
 from conftest import EXAMPLES, run_physc
 from middle_end import DOMAIN, paper_scenarios
-from physc.generation.pipeline import Pipeline
-from physc.simulation.fidelity import fidelity
+
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import LevelObject
 from physc.domains.angrybirds.level_xml import read_level
 from physc.domains.angrybirds.worlds import PHYQ
+from physc.driver.pipeline import Pipeline
+from physc.simulation.fidelity import fidelity
 
 # A fixed seed per scenario that generation handles today in the game's physics (docs/results.md
 # has the rates of all 16): seed 0 of the 2- and 4-interaction scenarios but R, and B seed 2 (seed 0
@@ -122,11 +121,11 @@ def test_a_failure_says_why_its_layouts_were_given_up():
 
 def test_the_searchs_parts_are_the_tasks_own_fields():
     """One record from the search to the task: every field of Parts is the Task's field of the
-    same name, passed on whole (physc.generation.pipeline)."""
+    same name, passed on whole (physc.driver.pipeline)."""
     import attrs
 
     from physc.compiler.task import Task
-    from physc.generation.outcome import Parts
+    from physc.search.outcome import Parts
 
     task_fields = {f.name: f for f in attrs.fields(Task)}
     assert {f.name for f in attrs.fields(Parts)} <= set(task_fields)

@@ -4,15 +4,12 @@ from __future__ import annotations
 
 import random
 
-import attrs
-from middle_end import DOMAIN, paper_scenarios, pipeline, scenario_from_text
+from middle_end import DOMAIN, paper_scenarios, scenario_from_text
 
 from physc.compiler.concrete_layout import ChosenRelation
 from physc.compiler.geometry import Geometry, overlap_depth, polygon
 from physc.compiler.infer_layout import InferLayout
 from physc.compiler.qsr import joined
-from physc.domains.angrybirds.actions import candidate_shots
-from physc.simulation.fidelity import fidelity
 from physc.domains.angrybirds.preferences import choose_concrete
 
 

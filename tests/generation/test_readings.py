@@ -13,7 +13,7 @@ from physc.domains.angrybirds.damage import Party, Strike
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import PHYQ
-from physc.generation.verify import verify
+from physc.search.verify import verify
 from physc.simulation.trace import DependenceRecord, Interaction, Trace
 from physc.worlds import OpenPoint, World, under_readings
 

@@ -3,7 +3,6 @@ path, the physics choice of their bodies, backtracking and budgets, in both doma
 
 from __future__ import annotations
 
-import random
 import re
 import subprocess
 import sys
@@ -11,16 +10,14 @@ from pathlib import Path
 
 import attrs
 import pytest
+from middle_end import search, searching
 
 from physc.domains import load_domain
-from physc.dsl.frontend import analyze
-from physc.generation import choosing, guards
-from physc.generation.pipeline import Pipeline
-from physc.generation.chain import Node
-from physc.generation.settings import SearchSettings
-from physc.generation.stages import ChainStage, prefix, stages
-
-from middle_end import search, searching
+from physc.driver.pipeline import Pipeline
+from physc.search import choosing, guards
+from physc.search.chain import Node
+from physc.search.chain_stages import ChainStage, prefix, stages
+from physc.search.settings import SearchSettings
 
 ROOT = Path(__file__).resolve().parents[2]
 PAPER = ROOT / "examples" / "paper"
@@ -136,7 +133,7 @@ def test_a_forbidden_direct_hit_gets_an_obstacle_across_the_flight(monkeypatch):
 def _valid_for(s, action):
     """The search's `simulate`, with the play of `action` counted as realising the sequence
     (the test's stand-in for a solution)."""
-    from physc.generation.problem import simulate as real
+    from physc.search.problem import simulate as real
 
     def simulate(problem, ledger, layout, played, seconds=None, resume=None):
         attempt = real(problem, ledger, layout, played, seconds, resume)
@@ -176,7 +173,7 @@ scenario Gapped {
 def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own():
     from middle_end import scenario_from_text
 
-    from physc.generation import placing, proposals
+    from physc.search import placing, proposals
 
     scenario = scenario_from_text(GAPPED)  # no cannotFall: surface and hSurface need not touch
     domain = load_domain("angrybirds")
@@ -201,7 +198,7 @@ def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own
 
 
 def test_a_bounce_surface_is_turned_within_its_tilt():
-    from physc.generation import proposals
+    from physc.search import proposals
 
     s = search("B", seed=0)
     objects = {o.name: o for o in s.placed.objects}

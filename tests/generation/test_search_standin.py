@@ -1,4 +1,4 @@
-"""The generic search (physc.generation.search) with a stand-in domain and no physics engine.
+"""The generic search (physc.search.search) with a stand-in domain and no physics engine.
 
 The stand-in's world is one line: the player pushes a ball from x = 0 at a speed (its action);
 friction slows it by 1 unit/s²; if it reaches the pig it strikes it at what speed it has
@@ -24,8 +24,8 @@ from physc.compiler.dimension_graphs import LayoutParameters
 from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
-from physc.generation import search
-from physc.generation.problem import Ledger, Problem
+from physc.search import search
+from physc.search.problem import Ledger, Problem
 from physc.simulation.ending import Ending
 from physc.simulation.recognise import Recogniser
 from physc.simulation.trace import ContactRecord, DamageRecord, DestructionRecord, Interaction, Trace

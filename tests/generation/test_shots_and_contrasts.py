@@ -8,12 +8,12 @@ import json
 
 from conftest import run_physc
 
-from physc.dsl.frontend import analyze_text
-from physc.domains.words import INSTALLED
 from physc.domains.angrybirds import DOMAIN
 from physc.domains.angrybirds.phyq_levels import benchmark_files
 from physc.domains.angrybirds.shots import WAITS, birds, candidates, shot_starts, timed
-from physc.generation.stages import stages
+from physc.domains.words import INSTALLED
+from physc.dsl.frontend import analyze_text
+from physc.search.chain_stages import stages
 
 TWO = """scenario TwoShots {
     objects { bird2: bird  pig2: pig }
@@ -50,7 +50,7 @@ def test_a_later_shot_starts_a_stage_and_a_tap_brings_in_what_follows_it():
     ir = scenario(TWO)
     plan = stages(ir.interactions, {"bird": 0, "bird2": 0, "pig": 0, "pig2": 2}, (2,))
     assert [(s.start, s.end) for s in plan] == [(0, 2), (2, 4)]
-    from physc.generation.stages import introduced
+    from physc.search.chain_stages import introduced
 
     class Placed:
         def __init__(self, name, role, concrete):

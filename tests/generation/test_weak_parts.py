@@ -2,9 +2,10 @@
 
 from types import SimpleNamespace
 
-from physc.generation.coordinates import weak_parts
-from physc.simulation.margins import Margin
 from middle_end import paper_scenarios
+
+from physc.search.coordinates import weak_parts
+from physc.simulation.margins import Margin
 
 
 def problem(name):

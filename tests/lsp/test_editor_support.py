@@ -8,10 +8,10 @@ import subprocess
 import sys
 
 import pytest
+from conftest import EXAMPLES, ROOT
 from pygments.lexers import get_lexer_by_name, get_lexer_for_filename
 from pygments.token import Error, Name
 
-from conftest import EXAMPLES, ROOT
 from physc.domains.angrybirds.vocabulary import VOCABULARY
 
 GRAMMAR = json.loads((ROOT / "grammar" / "syntaxes" / "phys.tmLanguage.json").read_text(encoding="utf-8"))

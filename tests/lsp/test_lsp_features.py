@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
-from lsprotocol import types
-
 import json
 import re
 from pathlib import Path
 
 from conftest import EXAMPLES, run_physc
 from lsp_client import client, diagnostics, document, edit, open_document, position  # noqa: F401 (client: a fixture)
+from lsprotocol import types
+
 from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_text
 

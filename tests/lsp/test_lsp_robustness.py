@@ -8,12 +8,10 @@ import json
 import os
 import random
 import subprocess
-import sys
-
-from lsprotocol import types
 
 from conftest import EXAMPLES
 from lsp_client import SERVER, client, diagnostics, document, open_document, position  # noqa: F401 (client: a fixture)
+from lsprotocol import types
 
 SCENARIO = (EXAMPLES / "objects.phys").read_text()
 FAR = position(10**6, 10**6)

@@ -7,19 +7,18 @@ import json
 import sys
 
 import pytest
+from conftest import EXAMPLES, run_physc
 from hypothesis import given
 from hypothesis import strategies as st
 from lsprotocol import types
+from strategies import PHYS_CORPUS, PHYS_PIECES, fuzz, mutate_text, randoms
 
-from conftest import EXAMPLES, run_physc
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze_text
 from physc.lsp import context
 from physc.lsp.completion import complete
 from physc.lsp.hover import hover_text
 from physc.lsp.positions import Positions
-from strategies import PHYS_PIECES, mutate_text
-from strategies import PHYS_CORPUS, fuzz, randoms
 
 OBJECTS = (EXAMPLES / "objects.phys").read_text()
 

@@ -159,6 +159,7 @@ def test_pybullet_missing_is_a_clear_usage_error(monkeypatch):
     import sys
 
     from conftest import EXAMPLES, run_physc
+
     from physc import backends
 
     for module in [m for m in sys.modules if m.startswith("physc.backends.bullet")]:

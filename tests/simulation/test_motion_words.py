@@ -10,14 +10,13 @@ from __future__ import annotations
 import attrs
 import numpy as np
 import pytest
+from conftest import ROOT
 
 import physc
 from physc.api.simulating import bound_domain
 from physc.domains.angrybirds.worlds import PHYQ, ROLLING
 from physc.simulation.ending import Ending
 from physc.simulation.recognise import contact_intervals
-
-from conftest import ROOT
 
 TEMPLATES = ROOT / "tests" / "data" / "sciencebirds" / "phyq-templates"
 

@@ -2,22 +2,21 @@
 
 from __future__ import annotations
 
-from physc.backends import load_backend
-
 import math
 
 import numpy as np
 
+from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
-from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.worlds import PHYQ, catalogue_model
+
 RECOGNISER = PHYQ.recogniser
+from physc.dsl.scenario import TermIR
 from physc.simulation.recognise import side
 from physc.simulation.restrictions import violations
-from physc.dsl.scenario import TermIR
 from physc.simulation.trace import ContactRecord, Interaction, Trace
-
 
 BOX2D = load_backend("box2d")
 

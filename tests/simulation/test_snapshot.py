@@ -112,7 +112,7 @@ def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
     realises a stage, which the next stage builds on, is a play from the start."""
     from middle_end import search
 
-    from physc.generation import chain
+    from physc.search import chain
 
     resumed, simulate, realised = set(), chain.simulate, chain.realised
 
@@ -137,7 +137,7 @@ def test_the_search_confirms_what_a_snapshot_passes_from_the_start(monkeypatch):
 def test_with_snapshots_off_every_play_runs_from_the_start(monkeypatch):
     from middle_end import search
 
-    from physc.generation import chain
+    from physc.search import chain
 
     cuts, simulate = [], chain.simulate
     monkeypatch.setattr(chain, "simulate", lambda *a, **k: cuts.append(a[5] if len(a) > 5 else k.get("resume")) or simulate(*a, **k))

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import numpy as np
-
 from middle_end import paper_scenarios
+
 from physc.simulation.fidelity import Fidelity
 from physc.simulation.stopped import why_stopped
 from physc.simulation.trace import DamageRecord, Trace

@@ -1,7 +1,7 @@
 """The angrybirds domain: Science Birds levels (the paper's demonstration domain).
 
 A one-action simulated domain (physc.domains.simulated.SimulatedDomain): the generation
-search is physc's own (physc.generation.search); what this package writes is what differs
+search is physc's own (physc.search.search); what this package writes is what differs
 in Science Birds: its shot and candidate actions (the paper's points of interest), the game
 played with its rules (game.py), its catalogue, masses and frictions, its noise model, its
 obstacles (a platform) and distractors, its level file and picture.

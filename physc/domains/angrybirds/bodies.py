@@ -1,5 +1,5 @@
 """What a body of the level weighs and how it grips: the facts the search's choice of a
-new object's body reads (physc.generation.choosing), from the game's prefabs and materials."""
+new object's body reads (physc.search.choosing), from the game's prefabs and materials."""
 
 from __future__ import annotations
 

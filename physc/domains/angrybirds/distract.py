@@ -2,7 +2,7 @@
 
 A random number of blocks (0 to the search's `distractors`), of random types and
 materials, each resting on a support: the ground, or the free part of a horizontal
-platform. The search (physc.generation.guards) keeps one only if nothing overlaps, the
+platform. The search (physc.search.guards) keeps one only if nothing overlaps, the
 level still stands, the intended solution still holds up in the noisy replays, and no
 shot at it solves the task. Pigs are never distractors: every pig must be destroyed for
 the task to be solved.

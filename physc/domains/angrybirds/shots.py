@@ -2,7 +2,7 @@
 
 A scenario's birds are shot in the order its sequence first names them; the interaction
 that first names a later bird starts its shot, which the search chooses once the chain has
-got there (physc.generation.chain: a stage that starts a shot extends each parent's action by
+got there (physc.search.chain: a stage that starts a shot extends each parent's action by
 the new bird's candidates). A bird's candidates are the paper's (actions.py) at the first
 object it hits; a bird the scenario taps (`tap(bird)`) is tapped at a few points of its
 flight towards that object (`TAP_SHARES` of the way, in whole milliseconds, as Phy-Q's agents

@@ -3,7 +3,7 @@ besides the goal's (its templates' obstacles, pegs and posts).
 
 A random number of them (0 to the search's `distractors`): a static black bar, level or
 tilted, or a static black ball, somewhere in the scene; or a gray ball resting on the floor.
-The search (physc.generation.guards) keeps one only if nothing overlaps, the scene still
+The search (physc.search.guards) keeps one only if nothing overlaps, the scene still
 stands, and the intended solution still holds up in the noisy replays. They are what makes
 random actions miss: a bar in the way, a ball where one would be placed (an occluding action
 is invalid).

@@ -122,8 +122,8 @@ def test_a_ledge_carries_a_see_saw_with_its_centre_over_an_outer_third():
     on a step shorter than the bar)."""
     from physc.domains import load_domain
     from physc.domains.words import INSTALLED
+    from physc.driver.pipeline import Pipeline
     from physc.dsl.frontend import analyze
-    from physc.generation.pipeline import Pipeline
 
     path = Path(__file__).resolve().parents[1] / "examples" / "phyre" / "task00023.phys"
     (scenario,) = analyze(str(path), INSTALLED).scenarios
@@ -158,8 +158,8 @@ def test_a_purple_pad_lies_on_the_floor_against_the_edge_and_the_ball_stays_on_i
 
     from physc.domains import load_domain
     from physc.domains.words import INSTALLED
+    from physc.driver.pipeline import Pipeline
     from physc.dsl.frontend import analyze
-    from physc.generation.pipeline import Pipeline
 
     path = Path(__file__).resolve().parents[1] / "examples" / "phyre" / "task00019.phys"
     (scenario,) = analyze(str(path), INSTALLED).scenarios
@@ -203,8 +203,8 @@ def test_a_peg_row_spreads_small_black_balls_over_its_box_and_holds_a_ball(tmp_p
 
     from physc.domains import load_domain
     from physc.domains.words import INSTALLED
+    from physc.driver.pipeline import Pipeline
     from physc.dsl.frontend import analyze
-    from physc.generation.pipeline import Pipeline
 
     path = tmp_path / "pegged.phys"
     path.write_text(PEGGED)

@@ -223,8 +223,8 @@ def test_every_pixel_and_radius_survives_phyres_scaling():
 def _pipeline(name):
     from physc.domains import load_domain
     from physc.domains.words import INSTALLED
+    from physc.driver.pipeline import Pipeline
     from physc.dsl.frontend import analyze
-    from physc.generation.pipeline import Pipeline
 
     (scenario,) = analyze(str(EXAMPLES / "phyre" / name), INSTALLED).scenarios
     return Pipeline(load_domain("phyre"), scenario, 0)

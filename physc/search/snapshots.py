@@ -3,8 +3,8 @@
 
 from __future__ import annotations
 
-from physc.generation import placing
-from physc.generation.stages import prefix
+from physc.search import placing
+from physc.search.chain_stages import prefix
 from physc.simulation.snapshot import Snapshot
 
 

@@ -26,9 +26,9 @@ import math
 
 import attrs
 
-from physc.generation import placing
-from physc.generation.problem import Problem
-from physc.generation.stages import prefix
+from physc.search import placing
+from physc.search.chain_stages import prefix
+from physc.search.problem import Problem
 
 
 def next_act(interactions, name: str, start: int) -> str | None:

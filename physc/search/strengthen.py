@@ -22,12 +22,12 @@ from collections import Counter
 import attrs
 import numpy as np
 
-from physc.generation.attempt import Attempt
-from physc.generation.chain import Node, score
-from physc.generation.coordinates import Coordinates, weak_parts
-from physc.generation.problem import Ledger, Problem, replayed, simulate
-from physc.generation.raising import Candidate, climb
-from physc.generation.settings import NOISE_STREAMS
+from physc.search.attempt import Attempt
+from physc.search.chain import Node, score
+from physc.search.coordinates import Coordinates, weak_parts
+from physc.search.problem import Ledger, Problem, replayed, simulate
+from physc.search.raising import Candidate, climb
+from physc.search.settings import NOISE_STREAMS
 from physc.simulation.margins import Margin, Margins
 from physc.simulation.stopped import why_stopped
 

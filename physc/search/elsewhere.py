@@ -16,7 +16,7 @@ from __future__ import annotations
 import attrs
 
 from physc import budget
-from physc.generation.problem import search_seconds
+from physc.search.problem import search_seconds
 from physc.simulation.fidelity import fidelity
 
 RESERVE_SHARE = 0.1  # of the time budget, kept for the replays elsewhere
@@ -56,7 +56,7 @@ def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int 
     realises the whole sequence with every link held where here its weakest link (`weakest`)
     failed; None when none does or the time is out. Each layout is tried in turn: its play and
     the domain's candidate actions replayed there, then the chain built there stage by stage
-    from the layout as placed (physc.generation.chain: later objects placed where that world's
+    from the layout as placed (physc.search.chain: later objects placed where that world's
     physics sends their actor)."""
     total = len(scenario.interactions)
     here = -1.0 if weakest is None else weakest.share
@@ -98,8 +98,8 @@ def _built(there, scenario, placed, accept: int):
     """The trace of the chain the search builds in the world `there` from the layout as
     placed: the whole sequence's best attempt, else the furthest play it made; None for a
     domain the search cannot run in."""
-    from physc.generation.chain import Node, chain
-    from physc.generation.problem import Ledger, Problem
+    from physc.search.chain import Node, chain
+    from physc.search.problem import Ledger, Problem
 
     if placed is None or "satisfy" not in there.capabilities:
         return None

@@ -20,9 +20,9 @@ import attrs
 from physc import budget
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
-from physc.generation import elsewhere, search
-from physc.generation.run_settings import RunSettings
-from physc.generation.verify import noisy_replays, verify
+from physc.driver.run_settings import RunSettings
+from physc.search import elsewhere, search
+from physc.search.verify import noisy_replays, verify
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
@@ -56,7 +56,7 @@ class LayoutLoop:
     domain: object
     scenario: object
     rng: object
-    settings: RunSettings  # the run's budgets and checks (physc.generation.run_settings)
+    settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
     progress: Callable[[Progress], None] | None = None
 
     @property
@@ -68,7 +68,7 @@ class LayoutLoop:
     def satisfy(self, layout, accept: int | None = None):
         """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
         noisy replays, for a fallback), then the checks that it holds where it is played."""
-        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.settings, accept)
+        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.settings.checks, accept)
         return self.checked(result, accept) if result.satisfied else result
 
     def checked(self, result, accept: int | None):

@@ -2,7 +2,7 @@
 
 A job names a scenario (its text travels with it: a worker may be on another machine), a
 seed, the world and engine it is made in, and the run's settings (one RunSettings value,
-physc.generation.run_settings). It depends on
+physc.driver.run_settings). It depends on
 nothing else, so the task it makes depends only on the job, never on the process or the
 number of workers. `recorded` is what a stored result (a dataset row, an evaluation record)
 was made with: one made with other settings is made again.
@@ -16,9 +16,9 @@ from physc import __version__
 from physc.backends import DEFAULT_BACKEND
 from physc.domains import bound, load_domain, world_name
 from physc.domains.words import INSTALLED
+from physc.driver.run_settings import RunSettings
 from physc.dsl.frontend import analyze_files, scenario_in
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
-from physc.generation.run_settings import RunSettings
 
 
 @attrs.frozen

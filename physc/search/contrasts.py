@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import random
 
-from physc.generation import settings
-from physc.generation.problem import Ledger, Problem, replayed
+from physc.search import settings
+from physc.search.problem import Ledger, Problem, replayed
 
 
 def contrasts(problem: Problem, ledger: Ledger, layout, attempt) -> tuple[str | None, tuple[str, ...]]:

@@ -24,9 +24,9 @@ from __future__ import annotations
 import attrs
 
 from physc.compiler.sequence import last_hit_at, last_hit_on
-from physc.generation import choosing, placing
-from physc.generation.problem import Problem
-from physc.generation.stages import prefix
+from physc.search import choosing, placing
+from physc.search.chain_stages import prefix
+from physc.search.problem import Problem
 
 TURNS = (-8.0, 8.0, -15.0, 15.0)  # degrees a bounce surface is turned, tried in turn
 TILT = (5.0, 60.0)  # a turned bounce surface stays this inclined, in degrees
@@ -131,7 +131,7 @@ def ledge_ends_at(problem: Problem, layout, objects, faller: str, support: str, 
 
 def bodies_for(problem: Problem, layout, objects, name: str, act: str, start: int):
     """`name` as each other body it may take that does `act` better, by the estimate of
-    physc.generation.choosing, best first."""
+    physc.search.choosing, best first."""
     current = objects.get(name)
     if current is None:
         return

@@ -1,6 +1,6 @@
 """The state of one search, as two values: what it reads (`Problem`) and what it writes (`Ledger`).
 
-The search of one placed layout (physc.generation.search) is a few steps in turn: the chain
+The search of one placed layout (physc.search.search) is a few steps in turn: the chain
 built stage by stage (chain.py), its margins raised (strengthen.py), guards, distractors,
 validation and acceptance. Each step is a function of the `Problem`, a frozen value of
 everything fixed for the layout (the bound domain, the scenario, the layout as placed, the
@@ -14,12 +14,11 @@ from __future__ import annotations
 import attrs
 
 from physc.compiler.sequence import pushes
-from physc.generation import placing
-from physc.generation.attempt import Attempt
-from physc.generation.evaluator import Evaluator
-from physc.generation.run_settings import RunSettings
-from physc.generation.settings import SETTINGS, SearchSettings
-from physc.generation.stages import ChainStage, introduced, stages
+from physc.search import placing
+from physc.search.attempt import Attempt
+from physc.search.chain_stages import ChainStage, introduced, stages
+from physc.search.evaluator import Evaluator
+from physc.search.settings import SETTINGS, SearchSettings
 from physc.simulation.fidelity import fidelity
 from physc.simulation.margins import Margin
 from physc.simulation.snapshot import Snapshot
@@ -31,6 +30,15 @@ def search_seconds(domain) -> float:
     """A play's simulated time at most while `domain` is searched (each turn's): its search's
     `seconds`, else the domain's."""
     return domain.search.seconds or domain.seconds
+
+
+@attrs.frozen
+class Checks:
+    """What the search checks of a realised, robust chain besides its physics: the run's choices
+    (RunSettings.checks), the only part of the run's settings the search reads."""
+
+    validate: bool = True  # the task is validated (replayed whole, `--no-validate`: not)
+    acceptance: bool = True  # the domain's acceptance rule judges it (`--no-acceptance`: not)
 
 
 @attrs.frozen
@@ -46,11 +54,11 @@ class Problem:
     plan: tuple[ChainStage, ...]
     players: frozenset[str]  # the player's objects (the bird)
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
-    run: RunSettings = RunSettings()  # the run's settings: validation, the acceptance rule
+    checks: Checks = Checks()  # the run's checks: validation, the acceptance rule
     action_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
 
     @classmethod
-    def of(cls, domain, scenario, layout, accept: int, run: RunSettings = RunSettings()) -> Problem:
+    def of(cls, domain, scenario, layout, accept: int, checks: Checks = Checks()) -> Problem:
         vocabulary = domain.vocabulary
         carried = [
             tuple(t.objects[:2])
@@ -69,7 +77,7 @@ class Problem:
             tuple(stages(scenario.interactions, entry, starts)),
             frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player),
             accept,
-            run,
+            checks,
             starts,
         )
 
@@ -128,7 +136,7 @@ class Ledger:
     failed_layout: dict = attrs.field(factory=dict)  # stage → the layout it failed in
     weakest: Margin | None = None  # the strongest weakest link of a chain realised but not robust (exit 3 names it)
     raised: int = 0  # candidates the raising of margins judged (raising.py)
-    stages_raised: int = 0  # stages whose margins were raised (physc.generation.chain)
+    stages_raised: int = 0  # stages whose margins were raised (physc.search.chain)
 
     @property
     def simulations(self) -> int:

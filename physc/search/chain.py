@@ -23,13 +23,13 @@ import attrs
 import numpy as np
 
 from physc import budget
-from physc.generation.attempt import Attempt, reaches
-from physc.generation.coordinates import Coordinates, weak_parts
-from physc.generation.problem import Ledger, Problem, replayed, simulate
-from physc.generation.raising import Candidate, climb
-from physc.generation.snapshots import snapshot
-from physc.generation.stages import ChainStage, prefix
-from physc.generation.variants import variants
+from physc.search.attempt import Attempt, reaches
+from physc.search.chain_stages import ChainStage, prefix
+from physc.search.coordinates import Coordinates, weak_parts
+from physc.search.problem import Ledger, Problem, replayed, simulate
+from physc.search.raising import Candidate, climb
+from physc.search.snapshots import snapshot
+from physc.search.variants import variants
 from physc.simulation.margins import Margin, Margins
 
 

@@ -1,4 +1,4 @@
-"""One task of a dataset: the function that makes it in a worker (its job: physc.generation.job).
+"""One task of a dataset: the function that makes it in a worker (its job: physc.driver.job).
 
 The worker returns the task's manifest row and its files' contents; the process that runs the
 dataset writes them (physc.dataset.build), so a worker may be on another machine. Everything a
@@ -14,8 +14,8 @@ import time
 from physc.compiler.infeasible import Infeasible
 from physc.dataset.manifest import terms
 from physc.domains.base import DomainError
-from physc.generation.job import Job
-from physc.generation.pipeline import Pipeline
+from physc.driver.job import Job
+from physc.driver.pipeline import Pipeline
 from physc.serialize import to_data
 
 OK, FALLBACK, NO_TASK = "ok", "fallback", "no task"  # a row's outcome

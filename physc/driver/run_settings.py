@@ -1,14 +1,22 @@
 """The settings of one run that makes a task, as one value: from `physc compile`'s options and
 `physc.compile`'s keywords down to the layout loop, the search and the workers of `physc
 generate` and `physc eval`, under one name each (the option `--time-budget` is the field
-`time_budget` everywhere). A job (physc.generation.job.Job) carries one; a stored result says
+`time_budget` everywhere). A job (physc.driver.job.Job) carries one; a stored result says
 which it was made with (the job's `recorded`)."""
 
 from __future__ import annotations
 
 import attrs
 
-from physc.compiler.task import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.compiler.to_dimension_graphs import CLAUSE_BUDGET
+from physc.search.problem import Checks
+
+# A task whose solution failed some noisy replays of the generator (the domain's
+# robustness_replays; 6 in angrybirds) is a fallback, made only on request (--min-robustness K):
+# by default (None) a solution must pass all of them.
+MIN_ROBUSTNESS = None
+LAYOUT_BUDGET = 160  # placed layouts that simulation-based satisfaction may try
+TIME_BUDGET = 120.0  # seconds for generating one task
 
 
 @attrs.frozen
@@ -31,6 +39,11 @@ class RunSettings:
     """Whether the domain's acceptance rule judges each task (`--no-acceptance`: not)."""
     verify_backend: str | None = None
     """A second physics backend the task's solution must also pass in (`--verify-backend`)."""
+
+    @property
+    def checks(self) -> Checks:
+        """What of these settings the search reads: whether it validates and judges a task."""
+        return Checks(self.validate, self.acceptance)
 
     def robustness(self, domain) -> int:
         """The noisy replays a solution must pass at least in `domain`: `min_robustness`, or all

@@ -23,8 +23,8 @@ from collections.abc import Callable
 import attrs
 import numpy as np
 
-from physc.generation.coordinates import Coordinates
-from physc.generation.problem import Ledger, Problem
+from physc.search.coordinates import Coordinates
+from physc.search.problem import Ledger, Problem
 
 OUTSIDE = 3.0  # the value (to be minimised) of a point outside the region: worse than any play
 

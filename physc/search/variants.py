@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import itertools
 
-from physc.generation import choosing, placing, proposals
-from physc.generation.attempt import Attempt
-from physc.generation.problem import Ledger, Problem
-from physc.generation.stages import ChainStage, prefix
+from physc.search import choosing, placing, proposals
+from physc.search.attempt import Attempt
+from physc.search.chain_stages import ChainStage, prefix
+from physc.search.problem import Ledger, Problem
 
 ALONG = (
     "roll",

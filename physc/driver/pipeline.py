@@ -31,9 +31,9 @@ from physc.compiler.task import Task
 from physc.compiler.to_dimension_graphs import ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.domains import world_name
+from physc.driver.layout_loop import LayoutLoop
+from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
-from physc.generation.layout_loop import LayoutLoop
-from physc.generation.run_settings import RunSettings
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 
@@ -58,7 +58,7 @@ class Pipeline:
         self.domain = domain
         self.scenario = scenario
         self.seed = seed
-        self.settings = settings  # the run's budgets and checks, as one value (physc.generation.run_settings)
+        self.settings = settings  # the run's budgets and checks, as one value (physc.driver.run_settings)
         self.source = source
         self.rng = random.Random(seed)
         # Called after each layout given up, with a Progress: long generations say how

@@ -23,7 +23,7 @@ import numpy as np
 from physc.compiler.geometry import overlapping_pair
 from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
-from physc.generation.stages import WHOLLY_ON, supports
+from physc.search.chain_stages import WHOLLY_ON, supports
 
 GROUND = ("ground", "floor")  # concretes of the ground a body may rest on
 FIXED_ROLES = ("support", "obstacle", "player")  # roles of what the search never places on a path

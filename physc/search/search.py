@@ -30,25 +30,24 @@ import time
 
 from physc.domains.base import require
 from physc.domains.simulated import search_needs
-from physc.generation import guards, settings
-from physc.generation.chain import Node, chain
-from physc.generation.contrasts import contrasts
-from physc.generation.outcome import Outcome, Parts
-from physc.generation.problem import Ledger, Problem, replayed
-from physc.generation.run_settings import RunSettings
-from physc.generation.strengthen import Strong, lost_links, replays, strengthen
+from physc.search import guards, settings
+from physc.search.chain import Node, chain
+from physc.search.contrasts import contrasts
+from physc.search.outcome import Outcome, Parts
+from physc.search.problem import Checks, Ledger, Problem, replayed
+from physc.search.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.ending import Ending
 from physc.simulation.stopped import why_stopped
 
 
-def satisfy(domain, scenario, layout, rng, run: RunSettings = RunSettings(), accept: int | None = None) -> Outcome:
+def satisfy(domain, scenario, layout, rng, checks: Checks = Checks(), accept: int | None = None) -> Outcome:
     """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
-    or why not, under the run's settings (`run`: whether the task is validated and judged by
-    the domain's acceptance rule); `accept`: the noisy replays a solution must pass (default:
+    or why not, under the run's `checks` (whether the task is validated and judged by the
+    domain's acceptance rule); `accept`: the noisy replays a solution must pass (default:
     all of them)."""
     require(domain, search_needs(domain), "generating a task")
     replays_run = domain.robustness_replays or 0
-    problem = Problem.of(domain, scenario, layout, replays_run if accept is None else accept, run)
+    problem = Problem.of(domain, scenario, layout, replays_run if accept is None else accept, checks)
     return search(problem, Ledger(), rng)
 
 
@@ -84,7 +83,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
         return given_up(problem, ledger, why)
     validating = time.perf_counter()
     validated, trace = None, attempt.trace
-    if problem.run.validate:
+    if problem.checks.validate:
         final = replayed(problem, ledger, problem.level_of(layout), attempt.action)
         if not final.fidelity.valid:
             return given_up(problem, ledger, settings.NOT_VALIDATED)
@@ -95,7 +94,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     accepting = time.perf_counter()
     judged = (
         domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger))
-        if problem.run.acceptance
+        if problem.checks.acceptance
         else None
     )
     if judged is not None and not judged.accepted:

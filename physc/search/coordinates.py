@@ -28,8 +28,8 @@ from __future__ import annotations
 import attrs
 
 from physc.compiler.qsr import joined
-from physc.generation import placing
-from physc.generation.problem import Problem
+from physc.search import placing
+from physc.search.problem import Problem
 
 PROBE = 0.25  # the share of its reach a coordinate is tried at, either way, to be offered
 
@@ -104,7 +104,7 @@ def structures(layout) -> dict[str, frozenset[str]]:
 
 
 def placing_supports(layout) -> dict[str, str]:
-    from physc.generation.stages import supports
+    from physc.search.chain_stages import supports
 
     return supports(layout)
 

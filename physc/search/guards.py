@@ -16,10 +16,10 @@ import math
 import attrs
 
 from physc.compiler.concrete_layout import PlacedObject
-from physc.generation import placing
-from physc.generation.attempt import Attempt
-from physc.generation.problem import Ledger, Problem, replayed, simulate
-from physc.generation.strengthen import holds_up
+from physc.search import placing
+from physc.search.attempt import Attempt
+from physc.search.problem import Ledger, Problem, replayed, simulate
+from physc.search.strengthen import holds_up
 
 BACKS = (0.9, 1.3, 1.8, 2.4, 3.0, 3.7, 4.5)  # layout units back along the flight from the hit, tried in turn
 SHORTCUT_BACKS = (0.9, 1.3, 1.8)

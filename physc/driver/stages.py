@@ -32,7 +32,7 @@ class Unit:
 
 
 class Run(Protocol):
-    """What a stage reads of the run that compiles a scenario (physc.generation.pipeline.Pipeline,
+    """What a stage reads of the run that compiles a scenario (physc.driver.pipeline.Pipeline,
     handed down by the command: the compiler does not import the generation above it)."""
 
     @property
@@ -105,7 +105,8 @@ STAGES: tuple[Stage, ...] = (
     ),
 )
 BY_NAME = {stage.name: stage for stage in STAGES}
-# What each stage asks of a domain, the stages before it included (it runs them).
+# What each stage of `physc compile --emit STAGE` asks of a domain, the stages before it included
+# (it runs them); `picture` is asked for by `--png` of a layout, task or level.
 NEEDS: dict[str, tuple[str, ...]] = {
     stage.name: tuple(dict.fromkeys(hook for before in STAGES[: k + 1] for hook in before.needs))
     for k, stage in enumerate(STAGES)
