@@ -9,17 +9,21 @@ import hashlib
 import importlib.util
 import json
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import attrs
 
 from physc.backends import installed_backends
 from physc.domains import installed_domains
 
+if TYPE_CHECKING:
+    from attrs import AttrsInstance
 
-def scenario_fingerprint(scenario) -> str:
+
+def scenario_fingerprint(scenario: AttrsInstance) -> str:
     """A hash of what a scenario says: the fields its equality compares (not where it is
     written: spans, the file's path, layout and comments do not count)."""
-    data = attrs.asdict(scenario, filter=lambda attribute, _: attribute.eq)
+    data = attrs.asdict(scenario, filter=lambda attribute, _: bool(attribute.eq))
     return hashlib.sha256(json.dumps(data, sort_keys=True).encode()).hexdigest()[:16]
 
 
@@ -50,6 +54,8 @@ def code_fingerprint(domain: str, backends: tuple[str, ...] = ()) -> str:
         spec = importlib.util.find_spec(package)
         if spec is None:
             continue
-        where = list(spec.submodule_search_locations or []) or ([spec.origin] if spec.has_location else [])
+        where = list(spec.submodule_search_locations or []) or (
+            [spec.origin] if spec.has_location and spec.origin is not None else []
+        )
         parts += [f"{package}:{source_fingerprint(Path(place))}" for place in where]
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()[:16]

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import enum
 import json
-from typing import Union
+from typing import Any, TypeAlias, cast
 
 import attrs
 
 from physc.diagnostics import Span
 
 # Plain data, as JSON holds it: what every IR value dumps to and a task file reads back from.
-Data = Union[None, bool, int, float, str, list["Data"], dict[str, "Data"]]
+Data: TypeAlias = None | bool | int | float | str | list["Data"] | dict[str, "Data"]
 
 
 def to_data(value: object) -> Data:
@@ -25,26 +25,39 @@ def to_data(value: object) -> Data:
     if isinstance(value, Span):
         return f"{value.line}:{value.column}-{value.end_line}:{value.end_column}"
     if attrs.has(type(value)):
-        data = {"node": type(value).__name__}
+        data: dict[str, Data] = {"node": type(value).__name__}
         for field in attrs.fields(type(value)):
             if not field.metadata.get("dump", True):
                 continue
             if field.metadata.get("omit_default") and getattr(value, field.name) == field.default:
-                continue  # a field a later version added: left out where unused, so earlier files dump the same
+                # a field a later version added: left out where unused, so earlier files dump the same
+                continue
             data[field.name] = to_data(getattr(value, field.name))
-        extra = getattr(value, "__extra_dump__", None)
-        if extra is not None:
-            data.update(to_data(extra()))
+        data.update(_extra_fields(value))
         return data
     if isinstance(value, enum.Enum):
         return value.value
     if isinstance(value, (list, tuple)):
         return [to_data(v) for v in value]
     if isinstance(value, (set, frozenset)):
-        return sorted(to_data(v) for v in value)
+        # a set holds scalars (names, numbers), which sort by value
+        members: list[Any] = [to_data(v) for v in value]
+        return sorted(members)
     if isinstance(value, dict):
         return {str(k): to_data(v) for k, v in value.items()}
-    return value
+    # the rest are JSON's scalars (None, bools, numbers, strings), dumped as they are
+    return cast("Data", value)
+
+
+def _extra_fields(value: object) -> dict[str, Data]:
+    """The fields an IR value adds to its dump beyond its attrs fields (`__extra_dump__`, a
+    dict; e.g. the exact size of a DNF in `--emit qsr`); none if it has no such method."""
+    extra = getattr(value, "__extra_dump__", None)
+    if extra is None:
+        return {}
+    fields = to_data(extra())
+    assert isinstance(fields, dict), "__extra_dump__ returns a dict"
+    return fields
 
 
 def dumps(value: object) -> str:
@@ -60,14 +73,16 @@ def from_data(data: Data, classes: dict[str, type]) -> object:
     if isinstance(data, dict):
         if "node" not in data:
             return {k: from_data(v, classes) for k, v in data.items()}
-        cls = classes.get(data["node"])
+        node = data["node"]
+        cls = classes.get(node) if isinstance(node, str) else None
         if cls is None:
             raise ValueError(f"a '{data['node']}' is not something this file may hold")
         known = {field.name for field in attrs.fields(cls)}
         unknown = sorted(set(data) - known - {"node"})
         if unknown:
             raise ValueError(
-                f"a '{data['node']}' has no field {', '.join(repr(k) for k in unknown)} (a file written by another version of its domain?)"
+                f"a '{data['node']}' has no field {', '.join(repr(k) for k in unknown)}"
+                " (a file written by another version of its domain?)"
             )
         return cls(**{k: from_data(v, classes) for k, v in data.items() if k != "node"})
     if isinstance(data, list):
