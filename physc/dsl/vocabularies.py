@@ -8,6 +8,7 @@ checks. The kinds are the words a vocabulary marks its terms and parameters with
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable
 
@@ -87,12 +88,13 @@ class TermSignature:
     parameters: tuple[Parameter, ...]
     description: str = ""
     requires: str | None = None  # an earlier interaction with the same objects is required
-    enabled_by: str | None = (
-        None  # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
-    )
+    # or, instead, an earlier interaction of this name by the first object alone (destroy after explode)
+    enabled_by: str | None = None
     narrows: str | None = None  # restriction: narrows the directions of this interaction
     forbids: str | None = None  # restriction: forbids this interaction of its first object
-    carries: bool = False  # restriction: its first object rests on its second, which sets it in motion when it moves or goes (a structure)
+    # restriction: its first object rests on its second, which sets it in motion when it moves or
+    # goes (a structure)
+    carries: bool = False
 
     @property
     def required_count(self) -> int:
@@ -121,9 +123,8 @@ class Vocabulary:
     terms: tuple[TermSignature, ...]
     direction_aliases: dict[str, tuple[str, ...]] = attrs.field(factory=dict)
     player: str = ""  # object term of what the player sets in motion
-    players: int | None = (
-        None  # how many objects of the player's term compile places (None: any); check warns beyond (W0302)
-    )
+    # how many objects of the player's term compile places (None: any); check warns beyond (W0302)
+    players: int | None = None
     goal: str = ""  # object term of the goal objects: each must meet the goal (an interaction `completes` it)
     goal_unmet: str = "never meets the goal"  # what E0404 says of a goal object no interaction completes
     goal_rule: str = ""  # when a task is solved, for messages ("a task is solved when every pig is destroyed")
@@ -131,18 +132,32 @@ class Vocabulary:
     directions: tuple[str, ...] = attrs.field(init=False, default=())
 
     def __attrs_post_init__(self):
-        by_spelling = {s: t for t in self.object_terms for s in t.spellings}
-        object.__setattr__(self, "_by_spelling", by_spelling)
-        object.__setattr__(self, "_terms", {t.name: t for t in self.terms})
-        object.__setattr__(self, "_concrete", {c.name: c for c in self.concrete_objects})
-        pattern = "|".join(sorted(map(re.escape, by_spelling), key=len, reverse=True))
-        object.__setattr__(self, "_typed_name", re.compile(rf"({pattern})[0-9]*"))
         words: dict[str, None] = {}
         for term in self.terms:
             for parameter in term.parameters:
                 words.update(dict.fromkeys(parameter.directions))
         words.update(dict.fromkeys(self.direction_aliases))
         object.__setattr__(self, "directions", tuple(words))
+
+    # The look-ups below are derived from the fields once, on first use (kept in the instance's
+    # __dict__, which a frozen attrs class without slots allows; they are not attrs fields).
+    @functools.cached_property
+    def _by_spelling(self) -> dict[str, ObjectTerm]:
+        return {s: t for t in self.object_terms for s in t.spellings}
+
+    @functools.cached_property
+    def _terms(self) -> dict[str, TermSignature]:
+        return {t.name: t for t in self.terms}
+
+    @functools.cached_property
+    def _concrete(self) -> dict[str, ConcreteObject]:
+        return {c.name: c for c in self.concrete_objects}
+
+    @functools.cached_property
+    def _typed_name(self) -> re.Pattern[str]:
+        """An undeclared object's name: an object term's spelling and an optional number."""
+        pattern = "|".join(sorted(map(re.escape, self._by_spelling), key=len, reverse=True))
+        return re.compile(rf"({pattern})[0-9]*")
 
     def object_term(self, spelling: str) -> ObjectTerm | None:
         """The object term with this name or abbreviation."""
