@@ -127,7 +127,17 @@ class World:
     def readings(self) -> tuple[World, ...]:
         """This world under every combination of readings of its open points, itself first: a
         task counts only when its solution holds under every one that can change its outcome
-        (`under_readings` runs just those). A world whose files leave nothing open: itself."""
+        (`under_readings` runs just those). A world whose files leave nothing open: itself.
+
+        >>> from physc.domains.angrybirds.worlds import PHYQ
+        >>> [point.setting for point in PHYQ.open_points()]
+        ['rules.relative_velocity', 'rules.platform_mass', 'rules.near_tie']
+        >>> readings = PHYQ.readings()
+        >>> len(readings), readings[0] is PHYQ
+        (8, True)
+        >>> readings[1].name, readings[1].changed
+        ('phyq, near ties: other attacks', ('rules.near_tie',))
+        """
         points = self.open_points()
         own = self.open_values()
         combos = itertools.product(

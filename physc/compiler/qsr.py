@@ -63,7 +63,21 @@ class Atom:
     """`a.feature_a  op  b.feature_b + gap` on one axis; op is "<=" or "=".
 
     `gap` names a domain distance, signed: "0", "+clearance", "-clearance",
-    "+far", "-far".
+    "+far", "-far". A relation is a conjunction of atoms (`RELATIONS`): a pig in the middle
+    third of a plank's top, and a bird far to the left of a pig, read
+
+    >>> for atom in RELATIONS["MeetN"]:
+    ...     print(atom.text("pig", "plank"))
+    pig.min.y = plank.max.y
+    plank.min.x ≤ pig.min.x
+    pig.max.x ≤ plank.max.x
+    plank.low_third.x ≤ pig.c.x
+    pig.c.x ≤ plank.high_third.x
+    >>> for atom in RELATIONS["FarW"]:
+    ...     print(atom.text("bird", "pig"))
+    bird.max.x ≤ pig.min.x - far
+    bird.min.y ≤ pig.max.y
+    pig.min.y ≤ bird.max.y
     """
 
     axis: str  # "x" | "y"
