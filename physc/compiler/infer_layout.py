@@ -14,6 +14,7 @@ from __future__ import annotations
 import attrs
 
 from physc.compiler.layout_graph import IN_DIRECTION, LayoutEdge, LayoutGraph
+from physc.compiler.passes import LayoutDomain, PassContext, rules_of
 from physc.dsl.scenario import ScenarioIR
 
 _MIRROR = {"left": "right", "right": "left", "above": "below", "below": "above"}
@@ -28,6 +29,7 @@ def _oriented(edge: LayoutEdge) -> LayoutEdge:
 
 
 def remove_redundant(edges: tuple[LayoutEdge, ...]) -> tuple[LayoutEdge, ...]:
+    """The edges without those another implies, each kept edge with their provenance."""
     kept: list[LayoutEdge] = []
     for edge in edges:
         merged = False
@@ -53,11 +55,13 @@ def remove_redundant(edges: tuple[LayoutEdge, ...]) -> tuple[LayoutEdge, ...]:
 class InferLayout:
     name = "infer-layout"
 
-    def __init__(self, domain, structure: str = "flat"):
+    def __init__(self, domain: LayoutDomain, structure: str = "flat"):
         self.domain = domain
         self.structure = structure  # the layout rules' reading (physc.compiler.layout_rules, "Structures")
 
-    def run(self, scenario: ScenarioIR) -> LayoutGraph:
-        rules = self.domain.layout_rules
+    def run(self, ir: ScenarioIR, context: PassContext) -> LayoutGraph:
+        """The layout graph of the scenario `ir` (the context's scenario) in this pass's structure."""
+        scenario = ir
+        rules = rules_of(self.domain)
         graph = rules.infer(scenario) if self.structure == "flat" else rules.infer(scenario, self.structure)
         return attrs.evolve(graph, edges=remove_redundant(graph.edges))

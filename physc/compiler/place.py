@@ -27,9 +27,11 @@ from physc.compiler.concrete_layout import (
     ConcreteLayout,
     PlacedObject,
 )
-from physc.compiler.difference import Inconsistent
+from physc.compiler.difference import DifferenceSystem, Inconsistent
 from physc.compiler.dimension_graphs import DimensionGraphs, point, relation_constraints
 from physc.compiler.geometry import overlapping_pair, polygon
+from physc.compiler.layout_graph import LayoutEdge
+from physc.compiler.passes import LayoutDomain, PassContext, parameters_of
 from physc.compiler.qsr import joined
 
 ATTEMPTS = 12
@@ -40,11 +42,14 @@ PRECISION = 6  # decimals kept in the layout
 class Place:
     name = "place"
 
-    def __init__(self, domain, attempts: int = ATTEMPTS):
+    def __init__(self, domain: LayoutDomain, attempts: int = ATTEMPTS):
         self.domain = domain
         self.attempts = attempts
 
-    def _sample(self, systems, bodies: list[Body], rng: random.Random) -> dict[str, tuple[float, float]]:
+    def _sample(
+        self, systems: dict[str, DifferenceSystem], bodies: list[Body], rng: random.Random
+    ) -> dict[str, tuple[float, float]]:
+        """Each free body's centre drawn in the bounds left by those drawn before it (seeded order)."""
         current = {axis: system.copy() for axis, system in systems.items()}
         order = [b for b in bodies if b.fixed is None]
         rng.shuffle(order)
@@ -59,13 +64,17 @@ class Place:
             centres[body.name] = (values[0], values[1])
         return centres
 
-    def run(self, graphs: DimensionGraphs, scenario, deferred, rng: random.Random) -> ConcreteLayout | None:
+    def run(self, ir: DimensionGraphs, context: PassContext) -> ConcreteLayout | None:
+        """A placed layout of the dimension graphs `ir`, or None when no attempt keeps the objects
+        apart and the player's first targets in reach. Reads the context's scenario, its DNF's
+        deferred edges and its generator."""
+        graphs, rng = ir, context.rng
         bodies = list(graphs.bodies)
         by_name = {b.name: b for b in bodies}
-        parameters = self.domain.layout_parameters
+        parameters = parameters_of(self.domain)
         systems = graphs.systems
         separations: list[ChosenRelation] = []
-        targets = self.domain.reach_targets(scenario)
+        targets = self.domain.reach_targets(context.scenario)
         for _attempt in range(self.attempts):
             centres = self._sample(systems, bodies, rng)
             placed = {b.name: b.geometry.points(*centres[b.name]) for b in bodies}
@@ -92,20 +101,28 @@ class Place:
                 continue
             if not all(any(self.domain.reachable(*p) for p in placed[t].values()) for t in targets):
                 continue
-            return self._layout(self.domain.name, graphs, bodies, centres, separations, deferred)
+            return self._layout(self.domain.name, graphs, bodies, centres, separations, context.deferred)
         return None
 
     @staticmethod
-    def _overlap(bodies: list[Body], placed, joints) -> tuple[str, str] | None:
+    def _overlap(bodies: list[Body], placed: dict, joints: frozenset[frozenset[str]]) -> tuple[str, str] | None:
         """The first pair of bodies that overlap; the player's objects may share their place
         (several birds are shot in turn from one slingshot)."""
         outlines = {b.name: polygon(placed[b.name]) for b in bodies if b.concrete != "ground"}
         players = [b.name for b in bodies if b.role == "player"]
         turns = {frozenset(pair) for pair in itertools.combinations(players, 2)}
-        return overlapping_pair(outlines, 1e-6, set(joints) | turns)
+        return overlapping_pair(outlines, 1e-6, joints | turns)
 
     @staticmethod
-    def _layout(domain_name, graphs, bodies, centres, separations, deferred) -> ConcreteLayout:
+    def _layout(
+        domain_name: str,
+        graphs: DimensionGraphs,
+        bodies: list[Body],
+        centres: dict[str, tuple[float, float]],
+        separations: list[ChosenRelation],
+        deferred: tuple[LayoutEdge, ...],
+    ) -> ConcreteLayout:
+        """The layout as placed: the bodies at their centres, rounded to PRECISION."""
         objects = tuple(
             PlacedObject(
                 name=b.name,

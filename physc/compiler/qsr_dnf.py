@@ -48,7 +48,7 @@ class QsrDnf:
     def __extra_dump__(self) -> dict:
         """What `--emit qsr` shows besides the clauses: the exact size, and the first
         conjunctions of the seeded order."""
-        first = [list(c) for _, c in zip(range(3), self.conjunctions())]
+        first = [list(c) for _, c in zip(range(3), self.conjunctions(), strict=False)]
         return {"size": self.size, "first_conjunctions": first}
 
     def remaining(self, depth: int) -> int:

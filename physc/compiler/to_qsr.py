@@ -11,16 +11,16 @@ QSRs. liesOnPath and pathObstructed have no QSRs: they are deferred to simulatio
 
 from __future__ import annotations
 
-import random
-
 from physc.compiler import qsr
 from physc.compiler.layout_graph import (
     IN_DIRECTION,
     LOCATED_FAR,
     ON_LOCATION,
     TOUCHING,
+    LayoutEdge,
     LayoutGraph,
 )
+from physc.compiler.passes import PassContext
 from physc.compiler.qsr_dnf import QsrClause, QsrDnf
 
 TABLE = {
@@ -42,8 +42,11 @@ def relations_for(term: str, values: tuple[str, ...]) -> tuple[str, ...]:
 class ToQsr:
     name = "to-qsr"
 
-    def run(self, graph: LayoutGraph, rng: random.Random, seed: int) -> QsrDnf:
-        clauses, deferred = [], []
+    def run(self, ir: LayoutGraph, context: PassContext) -> QsrDnf:
+        """The DNF of the layout graph `ir`: each clause's relations in the context's seeded order."""
+        graph, rng = ir, context.rng
+        clauses: list[QsrClause] = []
+        deferred: list[LayoutEdge] = []
         edges = sorted(enumerate(graph.edges), key=lambda item: (_PRIORITY.get(item[1].term, 9), item[0]))
         for _, edge in edges:
             if edge.simulated:
@@ -52,4 +55,4 @@ class ToQsr:
             relations = list(relations_for(edge.term, edge.values))
             rng.shuffle(relations)
             clauses.append(QsrClause(edge, tuple(relations)))
-        return QsrDnf(graph.scenario, graph.domain, seed, tuple(clauses), tuple(deferred))
+        return QsrDnf(graph.scenario, graph.domain, context.seed, tuple(clauses), tuple(deferred))

@@ -16,6 +16,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import random
+from collections.abc import Callable, Iterator
 
 import attrs
 
@@ -25,17 +26,20 @@ from physc.compiler.dimension_graphs import DimensionGraphs
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.infer_layout import InferLayout
 from physc.compiler.layout_graph import LayoutGraph
+from physc.compiler.passes import PassContext, rules_of
 from physc.compiler.place import Place
 from physc.compiler.qsr_dnf import QsrDnf
 from physc.compiler.task import Task
 from physc.compiler.to_dimension_graphs import ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.domains import world_name
-from physc.driver.layout_loop import LayoutLoop
+from physc.domains.base import Domain
+from physc.driver.layout_loop import LayoutLoop, Progress
 from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
+DEFAULT_SETTINGS = RunSettings()  # a run's budgets and checks when none are given
 
 
 @attrs.frozen
@@ -48,12 +52,12 @@ class Placed:
 class Pipeline:
     def __init__(
         self,
-        domain,
+        domain: Domain,
         scenario: ScenarioIR,
         seed: int = 0,
-        settings: RunSettings = RunSettings(),
+        settings: RunSettings = DEFAULT_SETTINGS,
         source: str = "",
-        progress=None,
+        progress: Callable[[Progress], None] | None = None,
     ):
         self.domain = domain
         self.scenario = scenario
@@ -87,24 +91,29 @@ class Pipeline:
             ) from None
 
     @functools.cached_property
+    def context(self) -> PassContext:
+        """What every pass reads besides its input: the scenario, the one generator, the seed."""
+        return PassContext(self.scenario, self.rng, self.seed)
+
+    @functools.cached_property
     def layout_graph(self) -> LayoutGraph:
-        return InferLayout(self.domain).run(self.scenario)
+        return InferLayout(self.domain).run(self.scenario, self.context)
 
     @functools.cached_property
     def qsr(self) -> QsrDnf:
-        return ToQsr().run(self.layout_graph, self.rng, self.seed)
+        return ToQsr().run(self.layout_graph, self.context)
 
     @functools.cached_property
     def structures(self) -> tuple[str, ...]:
         """The structures the scenario can be laid out in (physc.compiler.layout_rules,
         "Structures"): the paper's reading first."""
-        return self.domain.layout_rules.structures(self.scenario)
+        return rules_of(self.domain).structures(self.scenario)
 
     @functools.cached_property
     def placed(self) -> Placed:
         return next(self.placements())
 
-    def placements(self):
+    def placements(self) -> Iterator[Placed]:
         """Placed layouts, one after the other: with one structure, from its next consistent
         conjunctions; with several, a layout of each in turn, so that simulation decides which
         structure carries the chain (a structure whose placements run out drops out; the
@@ -113,8 +122,11 @@ class Pipeline:
         if len(self.structures) == 1:
             yield from self._placements("flat", self.layout_graph, self.qsr)
             return
-        streams = [self._placements(s, InferLayout(self.domain, s).run(self.scenario), None) for s in self.structures]
-        failures = []
+        streams = [
+            self._placements(s, InferLayout(self.domain, s).run(self.scenario, self.context), None)
+            for s in self.structures
+        ]
+        failures: list[Infeasible] = []
         while streams:
             for stream in list(streams):
                 try:
@@ -133,20 +145,22 @@ class Pipeline:
         if most is not None and len(players) > most:
             raise Infeasible(
                 "place",
-                f"it has {len(players)} {vocabulary.player}s ({', '.join(players)}); the domain's actions place at most {most}",
+                f"it has {len(players)} {vocabulary.player}s ({', '.join(players)}); "
+                f"the domain's actions place at most {most}",
                 budget=Exhausted.VERSION,
             )
 
-    def _placements(self, structure: str, graph: LayoutGraph, dnf: QsrDnf | None):
+    def _placements(self, structure: str, graph: LayoutGraph, dnf: QsrDnf | None) -> Iterator[Placed]:
         """The placed layouts of one structure's layout graph."""
-        dnf = dnf or ToQsr().run(graph, self.rng, self.seed)
-        search = ToDimensionGraphs(self.domain, self.settings.clause_budget).run(dnf, graph, self.scenario, self.rng)
+        dnf = dnf or ToQsr().run(graph, self.context)
+        context = attrs.evolve(self.context, layout_graph=graph, deferred=dnf.deferred)
+        search = ToDimensionGraphs(self.domain, self.settings.clause_budget).run(dnf, context)
         place = Place(self.domain)
         consistent = 0
         try:
             for graphs in search:
                 consistent += 1
-                layout = place.run(graphs, self.scenario, dnf.deferred, self.rng)
+                layout = place.run(graphs, context)
                 if layout is not None:
                     yield Placed(graphs, layout, structure)
                 if consistent >= PLACEMENT_BUDGET:

@@ -9,13 +9,14 @@ from middle_end import DOMAIN, paper_scenarios, scenario_from_text
 from physc.compiler.concrete_layout import ChosenRelation
 from physc.compiler.geometry import Geometry, overlap_depth, polygon
 from physc.compiler.infer_layout import InferLayout
+from physc.compiler.passes import PassContext
 from physc.compiler.qsr import joined
 from physc.domains.angrybirds.preferences import choose_concrete
 
 
 def draws(name: str, seeds=range(40)):
     scenario = paper_scenarios()[name]
-    graph = InferLayout(DOMAIN).run(scenario)
+    graph = InferLayout(DOMAIN).run(scenario, PassContext(scenario, random.Random(0), 0))
     return [choose_concrete(scenario, graph, random.Random(seed)) for seed in seeds]
 
 
@@ -40,7 +41,7 @@ def test_a_declared_pig_is_kept_at_the_end_of_a_chain():
         "  interactions {\n    hit(bird, rBlock1, left) > roll(rBlock1, surface1, right) > hit(rBlock1, rBlock2, left)\n"
         "    > roll(rBlock2, surface2, right) > hit(rBlock2, pig, left) > destroy(rBlock2, pig)\n  }\n}\n"
     )
-    graph = InferLayout(DOMAIN).run(scenario)
+    graph = InferLayout(DOMAIN).run(scenario, PassContext(scenario, random.Random(0), 0))
     assert {choose_concrete(scenario, graph, random.Random(s))["pig"] for s in range(20)} == {"pigMedium"}
 
 
@@ -50,7 +51,7 @@ def test_declared_objects_are_kept():
         "  interactions {\n    hit(bird, rBlock1, left) > roll(rBlock1, surface1, right) > hit(rBlock1, rBlock2, left)\n"
         "    > roll(rBlock2, surface2, right) > hit(rBlock2, pig, left) > destroy(rBlock2, pig)\n  }\n}\n"
     )
-    graph = InferLayout(DOMAIN).run(scenario)
+    graph = InferLayout(DOMAIN).run(scenario, PassContext(scenario, random.Random(0), 0))
     chosen = [choose_concrete(scenario, graph, random.Random(s)) for s in range(20)]
     assert {d["rBlock1"] for d in chosen} == {"circle", "circleSmall"}
     assert {d["rBlock2"] for d in chosen} == {"circle"}
@@ -72,7 +73,7 @@ def test_joined_platforms_may_overlap_at_the_joint_and_nothing_else_may():
 
 def materials_drawn(name: str, seeds=range(30)):
     scenario = paper_scenarios()[name]
-    graph = InferLayout(DOMAIN).run(scenario)
+    graph = InferLayout(DOMAIN).run(scenario, PassContext(scenario, random.Random(0), 0))
     out = []
     for seed in seeds:
         bodies = DOMAIN.concretize(graph, scenario, random.Random(seed))
@@ -107,7 +108,12 @@ def test_a_moving_block_keeps_both_light_materials():
 
 def test_a_block_set_moving_by_a_rolling_or_sliding_block_is_ice():
     # Ball against ball, wood grips at friction 4 and turns the struck ball the wrong way.
-    for name, blocks in (("RRR", ("rBlock2", "rBlock3")), ("RS", ("sBlock",)), ("SR", ("rBlock",)), ("RRF", ("rBlock2", "fBlock"))):
+    for name, blocks in (
+        ("RRR", ("rBlock2", "rBlock3")),
+        ("RS", ("sBlock",)),
+        ("SR", ("rBlock",)),
+        ("RRF", ("rBlock2", "fBlock")),
+    ):
         for drawn in materials_drawn(name):
             assert all(drawn[b] == "ice" for b in blocks), (name, drawn)
 
