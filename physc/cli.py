@@ -12,7 +12,8 @@ import argparse
 import os
 import sys
 import traceback
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from physc import __version__, budget
 from physc.commands import arguments
@@ -36,12 +37,15 @@ from physc.commands.verify import add_command as add_verify_command
 from physc.diagnostics import safe
 from physc.driver.stages import STAGES
 
+if TYPE_CHECKING:
+    from physc.commands.common import Commands
 
-def command(module: str, name: str):
+
+def command(module: str, name: str) -> Callable[[argparse.Namespace], int]:
     """The command `name` of `module`, imported when it runs: building the parser loads no
     command's work (the compiler, the engines, pictures), so `physc -V` answers at once."""
 
-    def run(args):
+    def run(args: argparse.Namespace) -> int:
         import importlib
 
         return getattr(importlib.import_module(module), name)(args)
@@ -60,13 +64,43 @@ def usage_errors() -> tuple[type[Exception], ...]:
 
 # ---- the parser -----------------------------------------------------------------------
 def build_parser() -> argparse.ArgumentParser:
+    """physc's whole parser: the top level's options and every command, group by group."""
+    top, common = _global_options()
+    parser = Parser(
+        prog="physc",
+        description="Compile physical scenarios (.phys) into physics tasks.",
+        epilog=EXIT_STATUSES,
+        parents=[top],
+    )
+    parser.add_argument("-V", "--version", action="version", version=f"physc {__version__}")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
+
+    _add_source_commands(commands, common)
+    _add_compile_command(commands, common)
+
+    add_play_commands(commands, common)
+    add_generate_command(commands, common)
+    add_eval_command(commands, common)
+    add_verify_command(commands, common)
+
+    add_lsp_command(commands, common)
+    add_completion_command(commands, common)
+    commands.choices["completion"].set_defaults(root=parser)  # the completion script is made from this parser
+
+    _add_listing_commands(commands, common)
+    return parser
+
+
+def _global_options() -> tuple[Parser, Parser]:
+    """The options every command takes (--color, --traceback): the top level's, and the copy
+    each subcommand takes as a parent."""
     # --color and --traceback go before or after the command: a subcommand sets them only
     # when given there (SUPPRESS), so its defaults never undo the top level's.
-    top = argparse.ArgumentParser(add_help=False)
+    top = Parser(add_help=False)
     top.add_argument("--color", choices=("auto", "always", "never"), default="auto", help="colour diagnostics")
     top.add_argument("--no-color", dest="color", action="store_const", const="never", help="the same as --color never")
     top.add_argument("--traceback", action="store_true", help="show Python tracebacks of internal errors")
-    common = argparse.ArgumentParser(add_help=False)
+    common = Parser(add_help=False)
     common.add_argument(
         "--color", choices=("auto", "always", "never"), default=argparse.SUPPRESS, help="colour diagnostics"
     )
@@ -81,16 +115,11 @@ def build_parser() -> argparse.ArgumentParser:
     common.add_argument(
         "--traceback", action="store_true", default=argparse.SUPPRESS, help="show Python tracebacks of internal errors"
     )
+    return top, common
 
-    parser = Parser(
-        prog="physc",
-        description="Compile physical scenarios (.phys) into physics tasks.",
-        epilog=EXIT_STATUSES,
-        parents=[top],
-    )
-    parser.add_argument("-V", "--version", action="version", version=f"physc {__version__}")
-    commands = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
 
+def _add_source_commands(commands: Commands, common: Parser) -> None:
+    """`physc check` and `physc fmt`: the commands that read .phys files as text."""
     check = commands.add_parser("check", parents=[common], help="check .phys files and report every problem")
     check.add_argument("files", nargs="+", metavar="FILE", help="files to check ('-' reads standard input)")
     add_format(check, "the diagnostics")
@@ -105,6 +134,9 @@ def build_parser() -> argparse.ArgumentParser:
     add_format(fmt, "each file's canonical form")
     fmt.set_defaults(run=command("physc.commands.fmt", "cmd_fmt"))
 
+
+def _add_compile_command(commands: Commands, common: Parser) -> None:
+    """`physc compile`: one task from a scenario, or a stage of its compile (--emit)."""
     stage_names = ", ".join(s.name for s in STAGES)
     compile_ = commands.add_parser(
         "compile", parents=[common], help="generate a task from a scenario (or print a stage with --emit)"
@@ -132,20 +164,15 @@ def build_parser() -> argparse.ArgumentParser:
     compile_.add_argument(
         "--format",
         choices=("json", "dot", "xml"),
-        help="the printed stage's format: by default its own (a level: the domain's level file; the other stages: json); dot (Graphviz) for graph stages",
+        help="the printed stage's format: by default its own (a level: the domain's level file; the other stages:"
+        " json); dot (Graphviz) for graph stages",
     )
     compile_.add_argument("--png", metavar="PATH", help="draw the layout or the task (.png or .svg)")
     compile_.set_defaults(run=command("physc.commands.compile", "cmd_compile"))
 
-    add_play_commands(commands, common)
-    add_generate_command(commands, common)
-    add_eval_command(commands, common)
-    add_verify_command(commands, common)
 
-    add_lsp_command(commands, common)
-    add_completion_command(commands, common)
-    commands.choices["completion"].set_defaults(root=parser)  # the completion script is made from this parser
-
+def _add_listing_commands(commands: Commands, common: Parser) -> None:
+    """`physc backends`, `physc worlds`, `physc domains`: what is installed, listed."""
     backends = commands.add_parser(
         "backends", parents=[common], help="list installed physics engines, their versions and what each honours"
     )
@@ -176,7 +203,6 @@ def build_parser() -> argparse.ArgumentParser:
     domains.add_argument("name", nargs="*", help="only these domains")
     add_format(domains, "the domains")
     domains.set_defaults(run=command("physc.commands.domains", "cmd_domains"))
-    return parser
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -6,9 +6,9 @@ from __future__ import annotations
 import io
 
 import matplotlib
+import matplotlib.pyplot as plt
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+matplotlib.use("Agg")  # pictures are drawn off-screen; pyplot resolves its backend lazily, so Agg it is
 
 FORMATS = ("png", "svg")
 

@@ -139,7 +139,7 @@ def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
     )
 
 
-def compile(  # noqa: A001 - the library's verb is the command's
+def compile(  # the library's verb is the command's, though it shadows the builtin
     source: str | os.PathLike,
     scenario: str | None = None,
     *,

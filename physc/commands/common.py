@@ -7,10 +7,19 @@ import os
 import re
 import sys
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from physc import diagnostics
 from physc.diagnostics import Diagnostic
-from physc.exits import EXIT_INFEASIBLE, EXIT_INPUT, EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_OK, EXIT_STATUSES, EXIT_USAGE  # noqa: F401
+
+# The exit statuses, re-exported (`X as X`): the commands and plugins import them from here.
+from physc.exits import EXIT_INFEASIBLE as EXIT_INFEASIBLE
+from physc.exits import EXIT_INPUT as EXIT_INPUT
+from physc.exits import EXIT_INTERNAL as EXIT_INTERNAL
+from physc.exits import EXIT_INTERRUPTED as EXIT_INTERRUPTED
+from physc.exits import EXIT_OK as EXIT_OK
+from physc.exits import EXIT_STATUSES as EXIT_STATUSES
+from physc.exits import EXIT_USAGE as EXIT_USAGE
 
 
 class UsageError(Exception):
@@ -34,6 +43,13 @@ class Parser(argparse.ArgumentParser):
         self.print_usage(sys.stderr)
         print(f"{self.prog}: error: {diagnostics.safe(message)}", file=sys.stderr)  # the value as typed: escaped
         raise SystemExit(EXIT_USAGE)
+
+
+if TYPE_CHECKING:
+    from typing import TypeAlias
+
+    Commands: TypeAlias = argparse._SubParsersAction[Parser]
+    """The subcommands of physc's parser, which each command module adds its own to."""
 
 
 def reporter(args):

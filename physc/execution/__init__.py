@@ -43,6 +43,7 @@ class Executor(abc.ABC):
 
     def close(self) -> None:
         """End the workers this executor started (nothing by default)."""
+        return None
 
     def describe(self) -> str:
         """Where jobs run, in words, for progress lines and reports."""

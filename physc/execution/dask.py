@@ -9,11 +9,14 @@ and `run_job` holds a lock while it runs, so a worker started with more threads 
 
 from __future__ import annotations
 
+import importlib
 import logging
 import threading
+from collections.abc import Callable, Iterable
+from typing import Any, cast
 
 from physc import budget
-from physc.execution import Executor, ExecutorError
+from physc.execution import Executor, ExecutorError, Keep
 
 CONNECT_SECONDS = 5  # how long to try to reach a scheduler before giving up
 WORKER_WAIT = 60.0  # seconds to wait for the first worker of a scheduler that has none
@@ -31,7 +34,7 @@ def _dashboard() -> str | None:
     """Where a cluster started here serves its dashboard: a free port when bokeh (the `dask`
     extra) is installed, else none (Dask would serve a placeholder page)."""
     try:
-        import bokeh  # noqa: F401
+        importlib.import_module("bokeh")
     except ImportError:
         return None
     return "127.0.0.1:0"
@@ -58,11 +61,12 @@ class DaskCluster(Executor):
 
     def __init__(self, scheduler: str | None = None, workers: int | None = None):
         try:
-            import dask
+            import dask.config
             from distributed import Client, LocalCluster
         except ImportError as error:
             raise ExecutorError(
-                f"--scheduler and --dask-workers need Dask ({error.name} is missing): pip install -e '.[dask]' in physc's checkout"
+                f"--scheduler and --dask-workers need Dask ({error.name} is missing):"
+                " pip install -e '.[dask]' in physc's checkout"
             ) from error
         self.cluster = None
         self.address = scheduler
@@ -75,13 +79,15 @@ class DaskCluster(Executor):
             self._same_code(scheduler)
         else:
             self.workers = max(1, workers or 1)
+            # dashboard_address None: no dashboard (as distributed documents it; its signature is unannotated)
+            dashboard: dict[str, Any] = {"dashboard_address": _dashboard()}
             with dask.config.set(LOCAL_SETTINGS):  # the workers are handed the settings when they start
                 self.cluster = LocalCluster(
                     n_workers=self.workers,
                     threads_per_worker=1,
                     processes=True,
-                    dashboard_address=_dashboard(),
                     silence_logs=logging.ERROR,
+                    **dashboard,
                 )
             self.client = Client(self.cluster)
 
@@ -90,7 +96,8 @@ class DaskCluster(Executor):
         import sys
 
         print(
-            f"physc: the Dask scheduler at {scheduler} has no workers; waiting up to {WORKER_WAIT:g} s for one (dask worker {scheduler})",
+            f"physc: the Dask scheduler at {scheduler} has no workers; waiting up to {WORKER_WAIT:g} s for one"
+            f" (dask worker {scheduler})",
             file=sys.stderr,
         )
         try:
@@ -98,7 +105,8 @@ class DaskCluster(Executor):
         except TimeoutError:
             self.client.close()
             raise ExecutorError(
-                f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s): start some with `dask worker {scheduler}`"
+                f"the Dask scheduler at {scheduler} has no workers (none joined in {WORKER_WAIT:g} s):"
+                f" start some with `dask worker {scheduler}`"
             ) from None
         except BaseException:  # Ctrl-C while waiting, a lost connection: the client goes too
             self.client.close()
@@ -109,18 +117,21 @@ class DaskCluster(Executor):
         """Refuse workers that run other physc code than this process: their tasks would differ
         from what the manifest's code fingerprint says."""
         try:
-            theirs = self.client.run(physc_code)
+            # a synchronous client: {worker address: what it returned}
+            theirs = cast("dict[str, str]", self.client.run(physc_code))
         except Exception as error:  # a worker that cannot even import physc
             self.client.close()
             raise ExecutorError(
-                f"the workers of {scheduler} cannot run physc ({type(error).__name__}: {error}); install it on every machine"
+                f"the workers of {scheduler} cannot run physc ({type(error).__name__}: {error});"
+                " install it on every machine"
             ) from None
         mine = physc_code()
         others = sorted(worker for worker, code in theirs.items() if code != mine)
         if others:
             self.client.close()
             raise ExecutorError(
-                f"{len(others)} of the workers of {scheduler} ({', '.join(others[:3])}) run other physc code than this machine: "
+                f"{len(others)} of the workers of {scheduler} ({', '.join(others[:3])}) run other physc code"
+                " than this machine: "
                 "install the same physc (and domain plugins) on every machine"
             )
 
@@ -131,7 +142,7 @@ class DaskCluster(Executor):
             f"; dashboard {link})" if link else ")"
         )
 
-    def map(self, function, jobs, keep) -> None:
+    def map(self, function: Callable, jobs: Iterable, keep: Keep) -> None:
         from distributed import KilledWorker, wait
 
         futures = [self.client.submit(run_job, function, job, pure=False) for job in jobs]
@@ -139,7 +150,8 @@ class DaskCluster(Executor):
         try:
             while pending:
                 try:
-                    done, pending = wait(pending, timeout=0.2, return_when="FIRST_COMPLETED")
+                    # a synchronous client: the futures (done, not done), not a coroutine
+                    done, pending = cast("tuple[set, set]", wait(pending, timeout=0.2, return_when="FIRST_COMPLETED"))
                 except TimeoutError:  # none completed meanwhile
                     done = set()
                 for future in done:

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import multiprocessing
+from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 
 from physc import budget
-from physc.execution import Executor, ExecutorError
+from physc.execution import Executor, ExecutorError, Keep
 
 RUNS = 3  # how often a job may be under way in a pool that breaks before the run stops
 
@@ -20,7 +21,7 @@ class LocalProcesses(Executor):
     def __init__(self, workers: int = 1):
         self.workers = max(1, workers)
 
-    def map(self, function, jobs, keep) -> None:
+    def map(self, function: Callable, jobs: Iterable, keep: Keep) -> None:
         jobs = list(jobs)
         if self.workers == 1 or len(jobs) <= 1:
             for job in jobs:
@@ -42,11 +43,12 @@ class LocalProcesses(Executor):
                     breaks[index] += 1
                 lost = [i for i in suspects if breaks[i] >= RUNS]
                 if lost:
+                    job = jobs[lost[0]]
                     raise ExecutorError(
-                        f"a worker process died {RUNS} times while running the job {getattr(jobs[lost[0]], 'key', jobs[lost[0]])}"
+                        f"a worker process died {RUNS} times while running the job {getattr(job, 'key', job)}"
                     ) from None
 
-    def _pool(self, function, jobs, left: dict, running: set, keep) -> None:
+    def _pool(self, function: Callable, jobs: list, left: dict[int, None], running: set[int], keep: Keep) -> None:
         """Run the jobs `left` in one pool, removing each from `left` once kept and noting in
         `running` those seen under way. Workers ignore Ctrl-C; on an interrupt (or any error)
         here they are ended at once: only this process writes, so nothing is left half-written."""
