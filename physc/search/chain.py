@@ -127,7 +127,7 @@ def raise_stage(
         else weakest.index
     )
     if weakest is None:
-        weakest = Margin(interactions[k].text, k, -1.0, "", 1.0, "", False)
+        weakest = Margin.failed(interactions[k].text, k, what="", unit="")
     space = Coordinates.of(problem, layout, attempt.action, *weak_parts(problem, weakest))
 
     def judge(candidate, action, notes) -> Candidate:

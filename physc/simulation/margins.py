@@ -35,6 +35,10 @@ weakest link of a chain is the one with the smallest share:
 The margins are read from the trace alone (poses, contacts, damage records, the bodies'
 outlines and radii) with the world's recognition thresholds, so every domain has them; a
 domain whose physics says more extends `MarginReader` (SimulatedDomain.margin_reader).
+
+Three modules: the values (`Margin`, `Margins`: physc.simulation.margin), each declared link's
+margin (physc.simulation.link_margins) and, here, the reading of a whole trace: which link a
+margin is of, the lives that must outlast the blows before a link, and the restrictions.
 """
 
 from __future__ import annotations
@@ -44,68 +48,22 @@ import math
 import attrs
 
 from physc.simulation.fidelity import Declared, matches
+from physc.simulation.link_margins import ALL_SIDES, GERUND, SIDES, LinkMargins, side_margin
+from physc.simulation.margin import Margin, Margins
 from physc.simulation.recognise import Recogniser, approach
 from physc.simulation.trace import Interaction, Trace
 from physc.simulation.where import Where
 
-SIDES = {"right": 0.0, "above": 90.0, "left": 180.0, "below": 270.0}  # the direction each side of a body faces
-ALL_SIDES = frozenset(SIDES)
-
-
-GERUND = {"roll": "rolling", "slide": "sliding"}  # a motion's name in a margin's words
-
-
-@attrs.frozen
-class Margin:
-    """How far one link was from failing: `value` in `unit`s (positive: held with that much to
-    spare), `scale` the value that counts as one whole margin, `what` the quantity in words."""
-
-    term: str  # the declared term or restriction, in .phys syntax
-    index: int | None  # its place in the declared sequence; None for a restriction
-    value: float
-    unit: str
-    scale: float
-    what: str
-    held: bool = True  # whether the link held in this trace
-
-    @property
-    def share(self) -> float:
-        return self.value / self.scale if self.scale else self.value
-
-    def text(self) -> str:
-        """ "`fall(fBlock2, pig)`: −0.12 units of overhang (…)"."""
-        return f"`{self.term}`: {self.value:+.3g} {self.unit} ({self.what})"
-
-    def record(self) -> dict:
-        return {
-            "term": self.term,
-            "value": round(self.value, 4),
-            "unit": self.unit,
-            "share": round(self.share, 4),
-            "what": self.what,
-            "held": self.held,
-        }
-
-
-@attrs.frozen
-class Margins:
-    """The margins of one trace: one per declared link it reached, one per restriction."""
-
-    links: tuple[Margin, ...] = ()
-
-    @property
-    def weakest(self) -> Margin | None:
-        """The link with the least to spare: a failed one first, then the smallest share."""
-        return min(self.links, key=lambda m: (m.held, m.share), default=None)
-
-    @property
-    def lowest(self) -> float:
-        """The weakest link's share (−inf when a link failed to be reached at all)."""
-        weakest = self.weakest
-        return -math.inf if weakest is None else weakest.share
-
-    def record(self) -> list[dict]:
-        return [m.record() for m in self.links]
+__all__ = [
+    "ALL_SIDES",
+    "GERUND",
+    "SIDES",
+    "Margin",
+    "MarginReader",
+    "Margins",
+    "Recognised",
+    "side_margin",
+]
 
 
 @attrs.frozen
@@ -132,25 +90,9 @@ class Recognised:
         )
 
 
-def _angle(dx: float, dy: float) -> float:
-    return math.degrees(math.atan2(dy, dx)) % 360.0
-
-
-def _apart(a: float, b: float) -> float:
-    d = abs(a - b) % 360.0
-    return min(d, 360.0 - d)
-
-
-def side_margin(dx: float, dy: float, sides) -> float:
-    """Degrees the direction (dx, dy) lies inside the nearest of `sides`' 90° sectors (negative:
-    outside all of them)."""
-    angle = _angle(dx, dy)
-    return max(45.0 - _apart(angle, SIDES[s]) for s in sides)
-
-
-class MarginReader:
+class MarginReader(LinkMargins):
     """The margins of a domain's traces (module docstring): generic, from the trace and the
-    world's recognition thresholds; a domain may extend a term's method."""
+    world's recognition thresholds; a domain may extend a term's method (physc.simulation.link_margins)."""
 
     def __init__(self, recogniser: Recogniser):
         self.recogniser = recogniser
@@ -192,7 +134,7 @@ class MarginReader:
             if margin is not None:
                 out.append(attrs.evolve(margin, index=k, held=k < len(found) and margin.held))
             elif k == len(found):
-                out.append(Margin(declared.text, k, -1.0, "of a link", 1.0, "not realised", False))
+                out.append(Margin.failed(declared.text, k, what="not realised"))
         until = found[-1].time if len(found) == len(terms) and found else trace.duration
         terms = tuple(scenario.interactions)
         for restriction in getattr(scenario, "restrictions", ()):
@@ -212,13 +154,12 @@ class MarginReader:
         left = whole - sum(d.most if d.most is not None else d.amount for d in blows)
         if not math.isfinite(whole):
             return None
-        return Margin(
+        return Margin.life(
             text,
             k,
-            left,
-            "life",
-            max(whole / 2, 1e-6),
-            f"the life {name} has left under the worst reading (scale: half its life)",
+            value=left,
+            scale=max(whole / 2, 1e-6),
+            what=f"the life {name} has left under the worst reading (scale: half its life)",
         )
 
     def destroyed_first(self, trace: Trace, declared, since: float, k: int) -> Margin | None:
@@ -251,239 +192,6 @@ class MarginReader:
             what=f"the life {target} had left under the worst reading when destroyed first {by} (scale: half its life)",
         )
 
-    # ---- the terms -------------------------------------------------------------------------
-    def hit(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
-        actor, target = declared.objects[0], declared.objects[1]
-        text = declared.text
-        sides = set(declared.directions or ()) & ALL_SIDES
-        contacts = self.where.contacts(actor, target, since)
-        if found is not None:
-            contacts = [c for c in contacts if abs(c.time - found.time) < trace.dt / 2] or contacts
-        if not contacts:
-            gap = self.where.gap(actor, target, self.where.row(since), trace.steps)
-            if gap is None:
-                return Margin(text, k, -1.0, "of a link", 1.0, f"{actor} never came near {target}", False)
-            return Margin(
-                text, k, -max(gap, 0.0), "units", self.where.size(actor), f"the nearest {actor} came to {target}", False
-            )
-        contact = contacts[0]
-        parts = []
-        speed = abs(contact.relative_velocity[0] * contact.normal[0] + contact.relative_velocity[1] * contact.normal[1])
-        parts.append(
-            Margin(
-                text,
-                k,
-                speed - self.recogniser.hit_speed,
-                "units/s",
-                self.recogniser.hit_speed,
-                "approach speed beyond a hit's least",
-            )
-        )
-        if sides and sides != ALL_SIDES:
-            vx, vy = approach(trace, contact, self.where.party(contact, actor), self.where.party(contact, target))
-            parts.append(Margin(text, k, side_margin(-vx, -vy, sides), "degrees", 45.0, "from striking another side"))
-        return min(parts, key=lambda m: m.share)
-
-    def _motion(self, declared, trace: Trace, found, since: float, matched, k: int, name: str) -> Margin | None:
-        mover, surface = declared.objects[0], declared.objects[1]
-        text, dt = declared.text, trace.dt
-        if mover not in trace.names:
-            return None
-        index = trace.index(mover)
-        spans = [
-            span
-            for span in self.recogniser.travels_on(trace, self.where.intervals, mover, surface)
-            if span[1] >= since - 1e-9
-        ]
-        if found is not None:
-            spans = [span for span in spans if span[0] - dt <= found.time <= span[1] + dt] or spans
-        best = None  # (seconds, distance) of the travel that did most of the motion
-        for span in spans:
-            rows, rolling, sliding = self.recogniser.motion(trace, index, span, trace.radii.get(mover))
-            frames = rolling if name == "roll" else sliding
-            measured = (float(frames.sum()) * dt, self.recogniser.covered(rows, frames))
-            best = measured if best is None else max(best, measured)
-        need, far = self.recogniser.motion_time, self.recogniser.travel
-        if best is None:
-            return Margin(text, k, -need, "s", need, f"{mover} never touched {surface}", False)
-        parts = [
-            Margin(
-                text, k, best[0] - need, "s", need, f"seconds of {GERUND.get(name, name)} beyond the least recognised"
-            )
-        ]
-        if far > 0:
-            parts.append(
-                Margin(
-                    text,
-                    k,
-                    best[1] - far,
-                    "units",
-                    far,
-                    f"distance of {GERUND.get(name, name)} beyond the least recognised",
-                )
-            )
-        after = next(
-            (i for i in range(k + 1, len(matched)) if matched[i].objects and matched[i].objects[0] == mover), None
-        )
-        if after is not None and matched[after].name != "hit":
-            after = None  # only a meeting has a speed to arrive at
-        if found is not None and after is not None:
-            start = trace.states[self.where.row(found.time), index]
-            arrive = trace.states[self.where.row(matched[after].time) - 1, index]
-            v0, v1 = math.hypot(start[3], start[4]), math.hypot(arrive[3], arrive[4])
-            if v0 > 0 and not math.isnan(v1):
-                parts.append(
-                    Margin(
-                        text,
-                        k,
-                        v1,
-                        "units/s",
-                        max(v0, self.recogniser.moving),
-                        f"speed left when it reached {matched[after].objects[1] if len(matched[after].objects) > 1 else 'the next body'}",
-                    )
-                )
-        return min(parts, key=lambda m: m.share)
-
-    def roll(self, declared, trace, found, since, matched, k):
-        return self._motion(declared, trace, found, since, matched, k, "roll")
-
-    def slide(self, declared, trace, found, since, matched, k):
-        return self._motion(declared, trace, found, since, matched, k, "slide")
-
-    def fall(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
-        faller, target = declared.objects[0], declared.objects[1]
-        text = declared.text
-        if faller not in trace.names:
-            return None
-        index = trace.index(faller)
-        half = self.where.size(faller)
-        rec = self.recogniser
-        spells = self.where.spells(faller, since, trace.duration)
-        if found is not None:
-            spells = [s for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt] or spells
-        parts = []
-        if not spells:  # it never left its support: how far its centre came to the edge
-            support = self.where.support_before(faller, self.where.row(since))
-            over = None if support is None else self.where.overhang(faller, support, self.where.row(since))
-            if over is None:
-                return Margin(
-                    text, k, -rec.fall_height, "units", rec.fall_height, f"{faller} never left what it rested on", False
-                )
-            return Margin(
-                text,
-                k,
-                min(over, 0.0),
-                "units of overhang",
-                half,
-                f"{faller}'s centre past the edge of {support}",
-                False,
-            )
-        if spells:
-            seconds, drop = max(
-                (self.where.drop(index, s) for s in spells),
-                key=lambda d: min(d[0] / rec.fall_time, d[1] / rec.fall_height),
-            )
-            parts.append(
-                Margin(text, k, seconds - rec.fall_time, "s", rec.fall_time, "seconds in the air beyond a fall's least")
-            )
-            parts.append(
-                Margin(
-                    text, k, drop - rec.fall_height, "units", rec.fall_height, "height dropped beyond a fall's least"
-                )
-            )
-            landing = (
-                spells[0][1]
-                if found is None
-                else next((s[1] for s in spells if abs((s[0] + 1) * trace.dt - found.time) < trace.dt), spells[0][1])
-            )
-            pa, pb = self.where.pose(faller, landing), self.where.pose(target, landing)
-            if pa is not None and pb is not None:
-                overlap = self.where.extents(pa)[0] + self.where.extents(pb)[0] - abs(pa[0] - pb[0])
-                parts.append(Margin(text, k, overlap, "units of overlap", half, f"its landing from missing {target}"))
-        if not parts:
-            return None
-        worst = min(parts, key=lambda m: m.share)
-        return attrs.evolve(worst, held=found is not None)
-
-    def bounce(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
-        mover, surface = declared.objects[0], declared.objects[1]
-        text, rec = declared.text, self.recogniser
-        if mover not in trace.names:
-            return None
-        index = trace.index(mover)
-        spans = [s for s in self.where.intervals.get(frozenset((mover, surface)), ()) if s[1] >= since - 1e-9]
-        if found is not None:
-            spans = [s for s in spans if abs(s[1] - found.time) < trace.dt / 2] or spans
-        if not spans:
-            gap = self.where.gap(mover, surface, self.where.row(since), trace.steps)
-            return Margin(
-                text,
-                k,
-                -max(gap or 0.0, 0.0),
-                "units",
-                self.where.size(mover),
-                f"the nearest {mover} came to {surface}",
-                False,
-            )
-        begin, end = spans[0]
-        parts = [
-            Margin(
-                text,
-                k,
-                rec.bounce_time - (end - begin),
-                "s",
-                rec.bounce_time,
-                "seconds its touch was short of a bounce's most",
-            )
-        ]
-        sides = set(declared.directions or ()) & ALL_SIDES
-        after = int(round(end / trace.dt))
-        if sides and sides != ALL_SIDES and after < trace.steps and not math.isnan(trace.states[after, index, 3]):
-            vx, vy = trace.states[after, index, 3:5]
-            parts.append(
-                Margin(text, k, side_margin(float(vx), float(vy), sides), "degrees", 45.0, "from leaving another way")
-            )
-        return min(parts, key=lambda m: m.share)
-
-    def destroy(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
-        attacker, target = declared.objects[0], declared.objects[1]
-        text = declared.text
-        if found is not None:
-            blow = [d for d in trace.damage if d.target == target and abs(d.time - found.time) <= trace.dt * 1.5]
-            if not blow:
-                return None
-            before = blow[0].life + blow[0].amount
-            worst = sum(d.least if d.least is not None else d.amount for d in blow)
-            return Margin(
-                text,
-                k,
-                worst - before,
-                "damage",
-                max(before, 1e-6),
-                f"the blow under the worst reading beyond the {before:.3g} life {target} had left",
-            )
-        dealt = [
-            d
-            for d in trace.damage
-            if d.target == target and d.by in self.where.bodies(attacker) and d.time >= since - 1e-9
-        ]
-        if not dealt:
-            return Margin(text, k, -1.0, "of its life", 1.0, f"{attacker} dealt {target} no damage", False)
-        left = min(d.life for d in dealt)
-        before = dealt[0].life + dealt[0].amount
-        return Margin(text, k, -left, "damage", max(before, 1e-6), f"the life {target} had left", False)
-
-    def touch(self, declared, trace: Trace, found, since: float, matched, k: int) -> Margin | None:
-        need = self.recogniser.touch_time
-        if need is None or trace.goal_met is not None:
-            return None
-        a, b = declared.objects[0], declared.objects[1]
-        spans = self.where.intervals.get(frozenset((a, b)), ())
-        longest = max((min(end, trace.duration) - begin for begin, end in spans), default=0.0)
-        return Margin(
-            declared.text, k, longest - need, "s", need, "seconds touching beyond the goal's", found is not None
-        )
-
     # ---- restrictions ------------------------------------------------------------------------
     def cannot_hit(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
         a, b = restriction.objects[0], restriction.objects[1]
@@ -508,15 +216,20 @@ class MarginReader:
                 side_margin(*(-v for v in approach(trace, c, self.where.party(c, a), self.where.party(c, b))), allowed)
                 for c in hits
             )
-            return Margin(
-                text, None, worst, "degrees", 45.0, "its hits from a forbidden side", not broken and worst > 0
+            return Margin.angle(
+                text, None, value=worst, what="its hits from a forbidden side", held=not broken and worst > 0
             )
         gap = self.where.gap(a, b, 0, self.where.row(end) + 1)
         if gap is None:
             return None
         value = min(gap, 0.0) if broken else gap
-        return Margin(
-            text, None, value, "units of clearance", self.where.size(a), f"the clearance {a} kept from {b}", not broken
+        return Margin.clearance(
+            text,
+            None,
+            value=value,
+            scale=self.where.size(a),
+            what=f"the clearance {a} kept from {b}",
+            held=not broken,
         )
 
     def cannot_fall(self, restriction, trace: Trace, until: float, terms) -> Margin | None:
@@ -531,6 +244,6 @@ class MarginReader:
             seconds, drop = self.where.drop(index, spell)
             worst = max(worst, min(seconds / rec.fall_time, drop / rec.fall_height))
         broken = any(v.restriction == text and v.interaction.time <= until for v in trace.violations)
-        return Margin(
-            text, None, 1.0 - worst, "of a fall", 1.0, "how far its longest drop was from a recognised fall", not broken
+        return Margin.fall_share(
+            text, None, value=1.0 - worst, what="how far its longest drop was from a recognised fall", held=not broken
         )

@@ -315,7 +315,7 @@ class Recogniser:
                 continue
             airborne = np.concatenate([airborne_all[:, index], [False]])
             edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne]).astype(int)))
-            for start, stop in zip(edges[::2], edges[1::2]):
+            for start, stop in zip(edges[::2], edges[1::2], strict=True):  # edges padded: rises and falls pair up
                 duration = (stop - start) * dt
                 drop = trace.states[start, index, 1] - trace.states[stop - 1, index, 1]
                 if duration < self.fall_time or drop < self.fall_height:

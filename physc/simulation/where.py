@@ -120,7 +120,7 @@ class Where:
         edges = np.flatnonzero(np.diff(np.concatenate([[False], airborne, [False]]).astype(int)))
         return [
             (int(a), int(b))
-            for a, b in zip(edges[::2], edges[1::2])
+            for a, b in zip(edges[::2], edges[1::2], strict=True)
             if since - 1e-9 <= (a + 1) * trace.dt <= until + 1e-9
         ]
 
