@@ -212,10 +212,8 @@ class MarginReader(LinkMargins):
         hits = [c for c in self.where.contacts(a, b, 0.0) if c.time <= end]
         if hits and sides != ALL_SIDES:
             allowed = ALL_SIDES - sides
-            worst = min(
-                side_margin(*(-v for v in approach(trace, c, self.where.party(c, a), self.where.party(c, b))), allowed)
-                for c in hits
-            )
+            approaches = (approach(trace, c, self.where.party(c, a), self.where.party(c, b)) for c in hits)
+            worst = min(side_margin(-vx, -vy, allowed) for vx, vy in approaches)
             return Margin.angle(
                 text, None, value=worst, what="its hits from a forbidden side", held=not broken and worst > 0
             )

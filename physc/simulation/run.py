@@ -238,7 +238,7 @@ def run_to_outcome(
     arrivals = rules.arrivals
     end = steps * dt
     row = np.full((len(dynamic), 6), np.nan)
-    values = None
+    values: list = []  # the rows the rules read: none for rules that read no states (`reads_states` False)
     engine.listen(hears)
     rules.on_start(engine)
     if arrivals:

@@ -5,7 +5,8 @@ never realised. This says what the simulation shows about it: how fast the actor
 moved, how near it came to its target, how much damage it dealt. For example: "rBlock3
 moved at most 0.21 units/s after `hit(rBlock2, rBlock3, left)`, too slow to roll on
 surface3"; for a strike that did not destroy its target, also whose mass set the damage and
-the speed that would have (the domain's damage records say). It reads only the scenario and the trace, so any domain's traces will do.
+the speed that would have (the domain's damage records say). It reads only the scenario and
+the trace, so any domain's traces will do.
 """
 
 from __future__ import annotations
@@ -47,7 +48,8 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         if dealt:
             left = min(d.life for d in dealt)
             return (
-                f"{actor} struck {target} at up to {speed:.2f} units/s{after}, dealing {sum(d.amount for d in dealt):.2f} damage: "
+                f"{actor} struck {target} at up to {speed:.2f} units/s{after}, "
+                f"dealing {sum(d.amount for d in dealt):.2f} damage: "
                 f"not enough to destroy it ({left:.2f} of its life left{_needed(dealt[0])})"
             )
         return f"{actor} moved at up to {speed:.2f} units/s{after} but dealt {declared.objects[1]} no damage"
@@ -67,7 +69,10 @@ def why_stopped(scenario: Declared, trace: Trace, fidelity: Fidelity) -> str:
         gaps = np.hypot(*(rows[: len(other), :2] - other).T)
         gaps = gaps[~np.isnan(gaps)]
         if len(gaps):
-            return f"{actor} came no nearer than {float(gaps.min()):.2f} units (centre to centre) to {target}{after}, moving at up to {speed:.2f} units/s"
+            return (
+                f"{actor} came no nearer than {float(gaps.min()):.2f} units (centre to centre) to {target}{after}, "
+                f"moving at up to {speed:.2f} units/s"
+            )
     return f"{actor} moved at up to {speed:.2f} units/s{after}"
 
 
@@ -78,7 +83,10 @@ def _never_came(trace: Trace, actor: str, after: str) -> str:
     if trace.solved and trace.goal and all(g in gone for g in trace.goal):
         last = max((gone[g] for g in trace.goal), key=lambda d: d.time)
         by = f" by {last.by}" if last.by else ""
-        return f"{actor} never came into the run{after}: the goal was met first ({last.name} destroyed at {last.time:.2f} s{by})"
+        return (
+            f"{actor} never came into the run{after}: "
+            f"the goal was met first ({last.name} destroyed at {last.time:.2f} s{by})"
+        )
     return f"{actor} never came into the run{after}: it ended at {trace.duration:.2f} s before {actor} was due"
 
 

@@ -9,6 +9,8 @@ reach into an engine.
 
 from __future__ import annotations
 
+from typing import Protocol
+
 import attrs
 import numpy as np
 
@@ -109,15 +111,28 @@ class Run:
     __slots__ = ()
 
     @property
-    def duration(self) -> float:
+    def duration(self: RunFacts) -> float:
         return self.steps * self.dt
 
     @property
-    def destroyed(self) -> set[str]:
+    def destroyed(self: RunFacts) -> set[str]:
         return {d.name for d in self.destructions}
 
-    def index(self, name: str) -> int:
+    def index(self: RunFacts, name: str) -> int:
         return self.names.index(name)
+
+
+class RunFacts(Protocol):
+    """What `Run`'s methods read of the run they are of: a field or a property of each kind of run."""
+
+    @property
+    def steps(self) -> int: ...
+    @property
+    def dt(self) -> float: ...
+    @property
+    def names(self) -> tuple[str, ...]: ...
+    @property
+    def destructions(self) -> tuple[DestructionRecord, ...]: ...
 
 
 @attrs.frozen
