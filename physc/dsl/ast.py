@@ -16,6 +16,13 @@ from physc.diagnostics import Span
 _span = attrs.field(eq=False, default=None, repr=False)
 
 
+def located(span: Span | None) -> Span:
+    """The span of a node of a parsed tree, which the parser always gives one (only a tree built by
+    hand, to compare or format, has none): what the checks read where a message points at it."""
+    assert span is not None, "a node without a span: only a parsed tree is checked"
+    return span
+
+
 @attrs.frozen
 class Name:
     """An identifier: an object, term, direction, domain or concrete-object name."""

@@ -10,20 +10,20 @@ from __future__ import annotations
 
 import attrs
 
-from physc.diagnostics import Diagnostic, Fix, Label, Span
+from physc.diagnostics import Diagnostic, Label, Span
 from physc.dsl import ast
-from physc.dsl.fixes import Advice, Use, replacements, suggestion
+from physc.dsl.check_state import Resolved
+from physc.dsl.fixes import replacements, suggestion
 from physc.dsl.fmt import format_term
-from physc.dsl.objects import KnownObject, ObjectChecks
 from physc.dsl.scenario import ObjectIR, ScenarioIR, TermIR
 from physc.dsl.sequence import SequenceChecks
 from physc.dsl.vocabularies import (
     DIRECTION,
     INTERACTION,
     RESTRICTION,
+    Parameter,
     TermSignature,
     Vocabularies,
-    Vocabulary,
     VocabularyError,
 )
 from physc.gc_pause import gc_paused
@@ -55,7 +55,7 @@ def _check_file(file: ast.File, path: str, vocabularies: Vocabularies) -> CheckR
                     f"a scenario named '{scenario.name.text}' is already defined in this file",
                     scenario.name.span,
                     help="give each scenario of a file its own name",
-                    notes=(Label(first.name.span, "first defined here"),),
+                    notes=(Label(ast.located(first.name.span), "first defined here"),),
                 )
             )
         domain_name = scenario.domain.text if scenario.domain else vocabularies.default
@@ -74,60 +74,12 @@ def _check_file(file: ast.File, path: str, vocabularies: Vocabularies) -> CheckR
     return CheckResult(tuple(scenarios), tuple(diagnostics))
 
 
-@attrs.define
-class _Resolved:
-    """A term whose arguments all resolved: ready for the causal checks."""
-
-    node: ast.Term
-    signature: TermSignature
-    objects: tuple[str, ...]
-    object_spans: tuple[Span, ...]
-    directions: tuple[str, ...]
-    direction_span: Span | None
-
-
-class _ScenarioChecker(ObjectChecks, SequenceChecks):
-    """Checks one scenario: its terms here, its objects in `ObjectChecks`, its sequence in `SequenceChecks`."""
-
-    def __init__(self, scenario: ast.Scenario, domain: str, vocabulary: Vocabulary, path: str):
-        self.scenario = scenario
-        self.domain = domain
-        self.vocabulary = vocabulary
-        self.path = path
-        self.diagnostics: list[Diagnostic] = []
-        self.objects: dict[str, KnownObject] = {}
-        self.unknown: set[str] = set()
-        self.uses: dict[str, list[Use]] = {}  # every (term, parameter) an object appears as
-        # E0203 for a parameter's object term: (diagnostic index, object, term asked for); the help
-        # is written once every use of the object is known (fixes.fit_help).
-        self.misfits: list[tuple[int, KnownObject, str]] = []
-        # E0203 for a static object where one that moves is needed: (diagnostic index, position in
-        # the sequence or None, parameter, object); the help names an object in motion there.
-        self.immobile: list[tuple] = []
-        self.position: int | None = None  # of the interaction being resolved
-        self.helps: dict[int, Advice] = {}
-        self.fresh_names: dict[str, str] = {}
-        # E0301: (diagnostic index, first use, the names it may be a misspelling of) by name; its
-        # quick fixes rename every use, found in the tree once the scenario is resolved.
-        self.misspelt: dict[str, tuple[int, ast.Name, list[str]]] = {}
-        self.comparisons = 0
-
-    def error(self, code, message, span, help=None, notes=(), fixes=()):
-        self.diagnostics.append(Diagnostic(code, message, span, help=help, notes=tuple(notes), fixes=tuple(fixes)))
-
-    def advise(self, code, message, span, advice: Advice, term: ast.Term | None = None) -> None:
-        """An error whose help is `advice`, with its proposals as quick fixes; `term` is the term
-        the error is about (where `advice.before` goes)."""
-        self.error(code, message, span, help=advice.text, fixes=self.fixes(advice, span, term))
-
-    def fixes(
-        self, advice: Advice, span: Span, term: ast.Term | None = None, declaration: Span | None = None
-    ) -> tuple[Fix, ...]:
-        interactions = self.scenario.interactions
-        return advice.fixes(span, term, declaration, interactions[-1] if interactions else None)
+class _ScenarioChecker(SequenceChecks):
+    """Checks one scenario: its terms here, its objects in `ObjectChecks`, its sequence in
+    `SequenceChecks` (which builds on `ObjectChecks`), on the state of `ScenarioState`."""
 
     # ---- terms -------------------------------------------------------------
-    def resolve_term(self, term: ast.Term, kind: str) -> _Resolved | None:
+    def resolve_term(self, term: ast.Term, kind: str) -> Resolved | None:
         vocabulary = self.vocabulary
         signature = vocabulary.term(term.name.text)
         if signature is None:
@@ -162,8 +114,11 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             )
             return None
         ok = True
-        objects, spans, directions, direction_span = [], [], (), None
-        for parameter, argument in zip(signature.parameters, term.arguments):
+        objects: list[str] = []
+        spans: list[Span] = []
+        directions: tuple[str, ...] = ()
+        direction_span: Span | None = None
+        for parameter, argument in zip(signature.parameters, term.arguments, strict=False):  # fewer: defaults
             if parameter.kind == DIRECTION:
                 resolved = self.resolve_directions(signature, parameter, argument)
                 ok = ok and resolved is not None
@@ -195,16 +150,18 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             if not self.check_fit(signature, parameter, found, name):
                 ok = False
             objects.append(found.name)
-            spans.append(name.span)
+            spans.append(ast.located(name.span))
         if len(term.arguments) < total:
             parameter = signature.direction_parameter
             if parameter is not None and parameter.default is not None:
                 directions = parameter.default
         if not ok:
             return None
-        return _Resolved(term, signature, tuple(objects), tuple(spans), tuple(directions), direction_span)
+        return Resolved(term, signature, tuple(objects), tuple(spans), tuple(directions), direction_span)
 
-    def resolve_directions(self, signature, parameter, argument) -> tuple[str, ...] | None:
+    def resolve_directions(
+        self, signature: TermSignature, parameter: Parameter, argument: ast.Argument
+    ) -> tuple[str, ...] | None:
         vocabulary = self.vocabulary
         chosen: list[str] = []
         ok = True
@@ -248,7 +205,7 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
     def run(self) -> ScenarioIR | None:
         for declaration in self.scenario.objects:
             self.declare(declaration)
-        interactions = []
+        interactions: list[Resolved | None] = []
         for position, term in enumerate(self.scenario.interactions):
             self.position = position
             interactions.append(self.resolve_term(term, INTERACTION))
@@ -271,6 +228,12 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
         self.check_players()
         if any(d.is_error for d in self.diagnostics):
             return None
+        return self._scenario_ir(_all_resolved(interactions), _all_resolved(restrictions), narrowed)
+
+    def _scenario_ir(
+        self, interactions: list[Resolved], restrictions: list[Resolved], narrowed: dict[int, tuple[str, ...]]
+    ) -> ScenarioIR:
+        """The IR of a scenario without errors, from its resolved terms and narrowed directions."""
         return ScenarioIR(
             name=self.scenario.name.text,
             title=self.scenario.title.value if self.scenario.title else None,
@@ -300,14 +263,16 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             self.diagnostics.append(
                 Diagnostic(
                     "W0302",
-                    f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} in this domain and gives no task for this scenario",
+                    f"'{extra.name}' is a {ordinal(most + 1)} {player}: physc compile places {count(most)} "
+                    "in this domain and gives no task for this scenario",
                     extra.span,
-                    help=f'the domain\'s actions place at most {count(most)} (docs/language.md, "Static checks"): name fewer, or keep the scenario for another domain',
+                    help=f"the domain's actions place at most {count(most)} "
+                    '(docs/language.md, "Static checks"): name fewer, or keep the scenario for another domain',
                 )
             )
 
     @staticmethod
-    def _term_ir(resolved: _Resolved, directions: tuple[str, ...]) -> TermIR:
+    def _term_ir(resolved: Resolved, directions: tuple[str, ...]) -> TermIR:
         return TermIR(
             name=resolved.signature.name,
             objects=resolved.objects,
@@ -316,6 +281,13 @@ class _ScenarioChecker(ObjectChecks, SequenceChecks):
             text=format_term(resolved.node),
             span=resolved.node.span,
         )
+
+
+def _all_resolved(terms: list[Resolved | None]) -> list[Resolved]:
+    """The terms of a scenario without errors: every one resolved (one that did not reported one)."""
+    resolved = [t for t in terms if t is not None]
+    assert len(resolved) == len(terms), "a term that did not resolve reported no error"
+    return resolved
 
 
 def ordinal(n: int) -> str:

@@ -10,14 +10,18 @@ vocabulary's object terms.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Container, Sequence
+from collections.abc import Callable, Container, Iterable, Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import attrs
 
 from physc.diagnostics import Edit, Fix, Span
-from physc.dsl.ast import Term
+from physc.dsl.ast import Name, Term, located
 from physc.dsl.vocabularies import INTERACTION, ObjectTerm, Parameter, TermSignature, Vocabulary
 from physc.suggest import article, asking, closest
+
+if TYPE_CHECKING:  # the checks' state imports this module: only its types are read here
+    from physc.dsl.check_state import KnownObject, Resolved
 
 Use = tuple[TermSignature, Parameter]
 
@@ -32,24 +36,32 @@ class Advice:
     before: str | None = None  # insert this term before the one the error is about
     after: tuple[str, ...] = ()  # add these terms after the last interaction
 
-    def fixes(self, span: Span, term: Term | None, declaration: Span | None, last: Term | None) -> tuple[Fix, ...]:
+    def fixes(
+        self, span: Span | None, term: Term | None, declaration: Span | None, last: Term | None
+    ) -> tuple[Fix, ...]:
         """The edits proposed for an error at `span` about the term `term`, of an object declared
         at `declaration`, in a scenario whose last interaction is `last`. An inserted term is
         written in brackets where its neighbour is (`[hit(bird, pig, any)] > [destroy(…)]`)."""
         fixes = []
         if self.declaration and declaration is not None:
             fixes.append(Fix.replace(declaration, self.declaration, f"declare it as `{self.declaration}`"))
-        if self.other:
+        if self.other and span is not None:
             fixes.append(Fix.replace(span, self.other, f"use `{self.other}` here"))
         if self.before and term is not None:
             written = _beside(term, self.before)
             fixes.append(
-                Fix(f"insert `{self.before}` before it", (Edit((term.outer or term.span).first(0), f"{written} > "),))
+                Fix(
+                    f"insert `{self.before}` before it",
+                    (Edit(located(term.outer or term.span).first(0), f"{written} > "),),
+                )
             )
         if self.after and last is not None:
             added = "".join(f" > {_beside(last, t)}" for t in self.after)
             fixes.append(
-                Fix(f"add `> {' > '.join(self.after)}` at the end", (Edit((last.outer or last.span).last(0), added),))
+                Fix(
+                    f"add `> {' > '.join(self.after)}` at the end",
+                    (Edit(located(last.outer or last.span).last(0), added),),
+                )
             )
         return tuple(fixes)
 
@@ -59,13 +71,13 @@ def _beside(neighbour: Term, text: str) -> str:
     return f"[{text}]" if neighbour.outer is not None else text
 
 
-def replacements(name, found, uses: tuple[Span, ...] = ()) -> tuple[Fix, ...]:
+def replacements(name: Name, found: Iterable[str], uses: tuple[Span, ...] = ()) -> tuple[Fix, ...]:
     """Quick fixes that replace a misspelt name (an ast.Name, and its other `uses`) with each name found."""
-    spans = (name.span, *uses)
+    spans = (located(name.span), *uses)
     return tuple(Fix(f"change '{name.text}' to '{other}'", tuple(Edit(s, other) for s in spans)) for other in found)
 
 
-def suggestion(name, candidates) -> tuple[str | None, tuple[Fix, ...]]:
+def suggestion(name: Name, candidates: Iterable[str]) -> tuple[str | None, tuple[Fix, ...]]:
     """ "did you mean …?" for a misspelt name (an ast.Name), and its quick fixes."""
     found = closest(name.text, candidates)
     return asking(found), replacements(name, found)
@@ -90,9 +102,9 @@ def noun(term: ObjectTerm) -> str:
 
 
 def _admits(vocabulary: Vocabulary, parameter: Parameter, concrete: str) -> bool:
-    if parameter.fits and concrete not in vocabulary.object_term(parameter.fits).concrete:
+    if parameter.fits and concrete not in vocabulary.object_term_named(parameter.fits).concrete:
         return False
-    return not (parameter.dynamic and vocabulary.concrete(concrete).static)
+    return not (parameter.dynamic and vocabulary.is_static((concrete,)))
 
 
 def allowed_concrete(vocabulary: Vocabulary, uses: Sequence[Use]) -> tuple[str, ...]:
@@ -118,7 +130,7 @@ def _separate(vocabulary: Vocabulary, name: str, fits: ObjectTerm, uses: Sequenc
     why = ""
     for signature, parameter in uses:
         if not any(_admits(vocabulary, parameter, c) for c in fits.concrete):
-            needs = noun(vocabulary.object_term(parameter.fits)) if parameter.fits else "an object that moves"
+            needs = noun(vocabulary.object_term_named(parameter.fits)) if parameter.fits else "an object that moves"
             why = f": '{signature.name}' needs it as {needs}"
             break
     return Advice(
@@ -137,7 +149,7 @@ def fit_help(
     """
     allowed = allowed_concrete(vocabulary, uses)
     if declared_term is not None:
-        declared = vocabulary.object_term(declared_term)
+        declared = vocabulary.object_term_named(declared_term)
         narrowed = [c for c in declared.concrete if c in allowed]
         if narrowed:
             declaration = f"{name}: {declared.name} = {' | '.join(narrowed)}"
@@ -170,7 +182,7 @@ def moving_help(vocabulary: Vocabulary, parameter: Parameter, mover: str | None,
     if mover is not None:
         other = mover
     elif parameter.fits:
-        fits = vocabulary.object_term(parameter.fits)
+        fits = vocabulary.object_term_named(parameter.fits)
         other = fresh(fits.abbreviation or fits.name)
     else:
         other = vocabulary.player
@@ -231,7 +243,13 @@ def motion_help(vocabulary: Vocabulary, obj: str, actor: str | None) -> Advice:
     return Advice(f"add an earlier interaction that sets it in motion, e.g. `{example}`", before=example)
 
 
-def goal_help(vocabulary: Vocabulary, goal: str, last, actor: str | None, objects=None) -> Advice:
+def goal_help(
+    vocabulary: Vocabulary,
+    goal: str,
+    last: Resolved | None,
+    actor: str | None,
+    objects: Mapping[str, KnownObject] | None = None,
+) -> Advice:
     """Help for a goal object that no interaction completes (E0404): interactions to add at the
     end of the sequence.
 

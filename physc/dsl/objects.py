@@ -1,8 +1,8 @@
 """The checks of a scenario's objects (spec section 5, items 1-2): declarations, names whose type
 is inferred, and whether an object fits the parameter it is given to.
 
-A mixin of the scenario checker (physc/dsl/check.py), like `SequenceChecks`. The help texts that
-need every use of an object (E0203's declaration, E0301's renames) are written by `explain` once the
+A part of the scenario checker (physc/dsl/check.py) on its state (check_state.ScenarioState); the
+sequence's checks (`SequenceChecks`) build on it. The help texts that need every use of an object (E0203's declaration, E0301's renames) are written by `explain` once the
 whole scenario is resolved.
 """
 
@@ -12,7 +12,9 @@ import attrs
 
 from physc.diagnostics import Label, Span
 from physc.dsl import ast
+from physc.dsl.check_state import Immobile, KnownObject, ScenarioState
 from physc.dsl.fixes import Advice, fit_help, fresh_name, latest, moving_help, replacements, suggestion
+from physc.dsl.vocabularies import ObjectTerm, Parameter, TermSignature
 from physc.suggest import article, asking, closest
 
 # 'Did you mean' for an unknown object compares it with every object of the scenario. Past this
@@ -21,34 +23,19 @@ from physc.suggest import article, asking, closest
 SUGGESTION_COMPARISONS = 20_000
 
 
-@attrs.define
-class KnownObject:
-    """An object of the scenario as the checks know it: declared, or typed by its name."""
-
-    name: str
-    term: str
-    concrete: tuple[str, ...]
-    static: bool
-    declared: bool
-    span: Span
-    used: bool = False
-    declaration: Span | None = None  # the whole declaration, for a quick fix that rewrites it
-    materials: tuple[str, ...] = ()  # the materials declared (version 2; none: any it may be made of)
-
-
 @attrs.frozen
 class _Names:
     """The object names of a scenario, declared or used, known or not (for `in`)."""
 
-    objects: dict
-    unknown: set
+    objects: dict[str, KnownObject]
+    unknown: set[str]
 
     def __contains__(self, name: str) -> bool:
         return name in self.objects or name in self.unknown
 
 
-class ObjectChecks:
-    """Declarations and object arguments; mixed into the scenario checker, whose state they use."""
+class ObjectChecks(ScenarioState):
+    """Declarations and object arguments: a part of the scenario checker, on its state."""
 
     def declare(self, declaration: ast.Declaration) -> None:
         name = declaration.name
@@ -107,14 +94,14 @@ class ObjectChecks:
             concrete,
             vocabulary.is_static(concrete),
             True,
-            name.span,
+            ast.located(name.span),
             declaration=declaration.span,
             materials=materials,
         )
         self.unknown.discard(name.text)
 
     def declared_materials(
-        self, declaration: ast.Declaration, term, concrete: tuple[str, ...]
+        self, declaration: ast.Declaration, term: ObjectTerm, concrete: tuple[str, ...]
     ) -> tuple[str, ...] | None:
         """The materials a declaration names (version 2), in the vocabulary's order; None after
         E0306 for one that every concrete object it may become cannot be made of."""
@@ -174,7 +161,13 @@ class ObjectChecks:
             )
             return None
         found = KnownObject(
-            name.text, term.name, term.concrete, self.vocabulary.is_static(term.concrete), False, name.span, True
+            name.text,
+            term.name,
+            term.concrete,
+            self.vocabulary.is_static(term.concrete),
+            False,
+            ast.located(name.span),
+            True,
         )
         self.objects[name.text] = found
         return found
@@ -182,11 +175,11 @@ class ObjectChecks:
     def is_object_word(self, text: str) -> bool:
         return text in self.objects or self.vocabulary.term_of_name(text) is not None
 
-    def check_fit(self, signature, parameter, found: KnownObject, name: ast.Name) -> bool:
+    def check_fit(self, signature: TermSignature, parameter: Parameter, found: KnownObject, name: ast.Name) -> bool:
         vocabulary = self.vocabulary
         self.uses.setdefault(found.name, []).append((signature, parameter))
         if parameter.dynamic and found.static:
-            self.immobile.append((len(self.diagnostics), self.position, parameter, found.name))
+            self.immobile.append(Immobile(len(self.diagnostics), self.position, parameter, found.name))
             self.error(
                 "E0203",
                 f"'{signature.name}' expects a dynamic object as '{parameter.name}', "
@@ -195,7 +188,7 @@ class ObjectChecks:
             )
             return False
         if parameter.fits and not vocabulary.fits(found.concrete, parameter.fits):
-            fits = vocabulary.object_term(parameter.fits)
+            fits = vocabulary.object_term_named(parameter.fits)
             self.misfits.append((len(self.diagnostics), found, parameter.fits))
             self.error(
                 "E0203",
@@ -206,10 +199,10 @@ class ObjectChecks:
             return False
         return True
 
-    def explain_immobile(self, item, movers: dict[str, None]) -> None:
+    def explain_immobile(self, item: Immobile, movers: dict[str, None]) -> None:
         """The help of an E0203 for a static object where a moving one is needed: an object in
         motion at that point of the sequence that fits (`movers`, in the order they started)."""
-        index, _, parameter, name = item
+        index, parameter, name = item.diagnostic, item.parameter, item.name
         vocabulary = self.vocabulary
 
         def fits(other: str) -> bool:
@@ -236,13 +229,13 @@ class ObjectChecks:
         """Write the help texts and fixes that needed the whole scenario: E0203 for an object term
         (every use of the object must be known), for a static object outside the sequence, and the
         renames of E0301 (every use of the unknown name)."""
+        uses: dict[str, list[Span]] = {}
         if self.misspelt:
-            uses: dict[str, list[Span]] = {}
             for term in self.scenario.interactions + self.scenario.restrictions:
                 for argument in term.arguments:
                     for other in argument.alternatives:
                         if other.text in self.misspelt and other.span != self.misspelt[other.text][1].span:
-                            uses.setdefault(other.text, []).append(other.span)
+                            uses.setdefault(other.text, []).append(ast.located(other.span))
         for name, (index, first, found) in self.misspelt.items():
             fixes = replacements(first, found, tuple(uses.get(name, ())))
             self.diagnostics[index] = attrs.evolve(self.diagnostics[index], fixes=fixes)
@@ -254,7 +247,7 @@ class ObjectChecks:
             key = (found.name, fits)
             if key not in written:
                 declared = found.term if found.declared else None
-                term = self.vocabulary.object_term(fits)
+                term = self.vocabulary.object_term_named(fits)
                 written[key] = fit_help(self.vocabulary, found.name, declared, term, self.uses[found.name], self.fresh)
             self.helps[index] = written[key]
             declarations[index] = found.declaration
@@ -262,7 +255,7 @@ class ObjectChecks:
             o.name: None for o in self.objects.values() if self.vocabulary.fits(o.concrete, self.vocabulary.player)
         }
         for item in self.immobile:
-            if item[0] not in self.helps:
+            if item.diagnostic not in self.helps:
                 self.explain_immobile(item, players)
         for index, advice in self.helps.items():
             diagnostic = self.diagnostics[index]

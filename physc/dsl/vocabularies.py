@@ -163,6 +163,11 @@ class Vocabulary:
         """The object term with this name or abbreviation."""
         return self._by_spelling.get(spelling)
 
+    def object_term_named(self, spelling: str) -> ObjectTerm:
+        """The object term that the vocabulary itself names (a parameter's `fits`, its `player` or
+        `goal`): a KeyError if it has none, a fault of the vocabulary."""
+        return self._by_spelling[spelling]
+
     def term_of_name(self, name: str) -> ObjectTerm | None:
         """The object term an undeclared object name implies (`rBlock2` → rollableBlock)."""
         match = self._typed_name.fullmatch(name)
@@ -194,7 +199,7 @@ class Vocabulary:
         return all(self._concrete[c].static for c in concrete)
 
     def fits(self, concrete: tuple[str, ...], term_name: str) -> bool:
-        term = self._by_spelling[term_name]
+        term = self.object_term_named(term_name)
         allowed = term.allowed + tuple(c for t in self.object_terms if term.name in t.fits_as for c in t.concrete)
         return all(c in allowed for c in concrete)
 
