@@ -10,6 +10,8 @@ was made with: one made with other settings is made again.
 
 from __future__ import annotations
 
+from typing import Any
+
 import attrs
 
 from physc import __version__
@@ -82,7 +84,7 @@ def jobs_for(files: list[str], tasks: int, seed: int, **settings) -> tuple[list[
         world = world_name(
             bound(load_domain(scenario.domain), settings.get("world") or None)
         )  # WorldError: not this domain's
-        common = dict(
+        common: dict[str, Any] = dict(  # Job's other fields, by name: the caller's, then these
             settings,
             world=world,
             domain=scenario.domain,

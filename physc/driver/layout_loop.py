@@ -12,19 +12,36 @@ fallbacks (`--min-robustness`). Nothing here depends on a domain.
 from __future__ import annotations
 
 import contextlib
+import random
 import time
 from collections.abc import Callable, Iterator
+from typing import Protocol
 
 import attrs
 
 from physc import budget
+from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
+from physc.domains.base import Domain
 from physc.driver.run_settings import RunSettings
+from physc.dsl.scenario import ScenarioIR
 from physc.search import elsewhere, search
+from physc.search.outcome import Outcome
 from physc.search.verify import noisy_replays, verify
+from physc.simulation.margins import Margin
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
+
+
+class Placement(Protocol):
+    """What the loop reads of a placed layout (the pipeline's Placed)."""
+
+    @property
+    def layout(self) -> ConcreteLayout: ...
+
+    @property
+    def structure(self) -> str: ...  # the layout rules' structure it was placed in
 
 
 @attrs.frozen
@@ -43,19 +60,69 @@ class Generated:
     """The outcome of the layout loop: the search's satisfied outcome, the layout it
     came from, and what the search cost."""
 
-    outcome: object  # the search's Outcome (search.satisfy), satisfied
-    placed: object  # what it came from (the pipeline's Placed: its `layout`, and its `structure`)
+    outcome: Outcome  # the search's Outcome (search.satisfy), satisfied
+    placed: Placement  # what it came from (the pipeline's Placed: its `layout`, and its `structure`)
     layouts: int
     simulations: int
-    given_up: dict  # why → {"layouts": n, "simulations": n}
-    seconds: dict  # "layout" (placement), "satisfy", and the stages after satisfaction
+    given_up: dict[str, dict[str, int]]  # why → {"layouts": n, "simulations": n}
+    seconds: dict[str, float]  # "layout" (placement), "satisfy", and the stages after satisfaction
+
+
+@attrs.define
+class Tally:
+    """What the layout loop has counted and kept over the layouts it tried, as the search's
+    Ledger is for one layout: the costs, why layouts were given up, and what a failure's
+    explanation reports."""
+
+    layouts: int = 0
+    simulations: int = 0
+    seconds: dict[str, float] = attrs.field(factory=lambda: {"layout": 0.0, "satisfy": 0.0})
+    fragile: list[tuple[int, int, Placement]] = attrs.field(factory=list)  # (-replays passed, order, placed)
+    nearest: int = 0  # most noisy replays passed by a solution given up as too fragile
+    best: int = 0  # most interactions of the sequence realised, in order, in any simulation
+    stopped: str = ""  # what the first simulation that got that far shows about the next interaction
+    lost: dict[str, tuple[int, str]] = attrs.field(factory=dict)  # the noisy replays' losses: term → (count, why)
+    weakest: Margin | None = None  # of the chains realised but not robust, the strongest weakest link
+    # The plays that came furthest, one a layout: (score, level, action, placed), replayed
+    # elsewhere on failure.
+    furthest: list[tuple] = attrs.field(factory=list)
+    given_up: dict[str, dict[str, int]] = attrs.field(factory=dict)  # why → {"layouts": n, "simulations": n}
+
+    def note(self, result: Outcome) -> None:
+        """What one layout's search showed of how far the sequence gets and how robustly."""
+        self.simulations += result.simulations
+        if result.best > self.best or (result.best == self.best and not self.stopped):
+            self.best, self.stopped = result.best, result.stopped
+        for term, count, why in result.lost:
+            before, first_why = self.lost.get(term, (0, why))
+            self.lost[term] = (before + count, first_why)
+        weakest = result.weakest
+        if isinstance(weakest, Margin) and (
+            self.weakest is None or (weakest.held, weakest.share) > (self.weakest.held, self.weakest.share)
+        ):
+            self.weakest = weakest
+        if result.furthest is not None:
+            plays = sorted([*self.furthest, result.furthest], key=lambda play: play[0], reverse=True)
+            self.furthest = plays[: elsewhere.PLAYS]
+
+    def give_up(self, result: Outcome, placed: Placement, min_robustness: int) -> None:
+        """A layout given up: why, and as a fallback if its solution was robust enough."""
+        self.nearest = max(self.nearest, result.nearest)
+        why = self.given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
+        why["layouts"] += 1
+        why["simulations"] += result.simulations
+        if result.nearest >= min_robustness:
+            self.fragile.append((-result.nearest, self.layouts, placed))
+
+
+Found = tuple[Outcome, Placement]  # the satisfied outcome, and the layout it came from
 
 
 @attrs.define
 class LayoutLoop:
-    domain: object
-    scenario: object
-    rng: object
+    domain: Domain
+    scenario: ScenarioIR
+    rng: random.Random  # the run's one generator (physc.driver.pipeline)
     settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
     progress: Callable[[Progress], None] | None = None
 
@@ -65,13 +132,13 @@ class LayoutLoop:
         are fallbacks."""
         return self.settings.robustness(self.domain)
 
-    def satisfy(self, layout, accept: int | None = None):
+    def satisfy(self, layout: ConcreteLayout, accept: int | None = None) -> Outcome:
         """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
         noisy replays, for a fallback), then the checks that it holds where it is played."""
         result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.settings.checks, accept)
         return self.checked(result, accept) if result.satisfied else result
 
-    def checked(self, result, accept: int | None):
+    def checked(self, result: Outcome, accept: int | None) -> Outcome:
         """`result`, if its solution passes what `physc verify` runs (the recorded solution
         and the domain's noisy replays, drawn as verify draws them) under every reading of
         what the world's files leave open that can change a replay (physc.worlds.under_readings),
@@ -79,9 +146,10 @@ class LayoutLoop:
         reason (the search goes on to the next layout). `accept`: a fallback needs K of the
         noisy replays."""
         parts = result.parts
+        assert parts is not None, "a satisfied outcome has its parts"
         replays = noisy_replays(self.domain)
         needed = accept if accept is not None else replays
-        places = [(self.domain, None)]
+        places: list[tuple[Domain, str | None]] = [(self.domain, None)]
         if self.settings.verify_backend is not None:
             places.append((self.domain, self.settings.verify_backend))
         spent = 0
@@ -101,110 +169,91 @@ class LayoutLoop:
                 )
         return attrs.evolve(result, simulations=result.simulations + spent)
 
-    def run(self, placements: Iterator) -> Generated:
+    def run(self, placements: Iterator[Placement]) -> Generated:
         """Satisfy the placed layouts in turn (`placements` yields objects with a
         `layout`); Infeasible when none gives a task within the budgets."""
         started = time.perf_counter()
-        seconds = {"layout": 0.0, "satisfy": 0.0}
-        layouts = simulations = 0
-        fragile: list[tuple[int, int, object]] = []  # (-replays passed, order, placed)
-        nearest = 0  # most noisy replays passed by a solution given up as too fragile
-        best = 0  # most interactions of the sequence realised, in order, in any simulation
-        stopped = ""  # what the first simulation that got that far shows about the next interaction
-        lost: dict[str, list] = {}  # the noisy replays' losses over the layouts: term → [count, why]
-        weakest = None  # of the chains realised but not robust, the strongest weakest link
-        furthest: list = []  # the plays that came furthest, one a layout: (score, level, action, placed), replayed elsewhere on failure
-        given_up: dict[str, dict[str, int]] = {}
-        clock = time.perf_counter()
+        tally = Tally()
         kept = elsewhere.reserve(self.domain, self.settings.time_budget)
         left = budget.remaining()
         inner = budget.deadline(left - kept) if kept and left is not None and left > kept else contextlib.nullcontext()
-        fallback = None
         with inner:  # the search stops early enough to leave the reserve
-            while True:
-                try:
-                    placed = next(placements)
-                except Infeasible as error:
-                    if not layouts:
-                        raise
-                    failure = Infeasible(
-                        "satisfy",
-                        f"{layouts} layouts were placed, but in none did the simulated solution realise the sequence",
-                        tried=error.tried,
-                        budget=error.budget or Exhausted.ALLOWED,
-                    )
-                    break
-                except budget.OutOfTime:
-                    failure = self._out_of_time(layouts)
-                    break
-                layouts += 1
-                seconds["layout"] += time.perf_counter() - clock
-                clock = time.perf_counter()
-                try:
-                    result = self.satisfy(placed.layout)
-                except budget.OutOfTime:
-                    failure = self._out_of_time(layouts)
-                    break
-                finally:
-                    seconds["satisfy"] += time.perf_counter() - clock
-                simulations += result.simulations
-                if result.best > best or (result.best == best and not stopped):
-                    best, stopped = result.best, result.stopped
-                for term, count, why in result.lost:
-                    lost.setdefault(term, [0, why])[0] += count
-                if result.weakest is not None and (
-                    weakest is None or (result.weakest.held, result.weakest.share) > (weakest.held, weakest.share)
-                ):
-                    weakest = result.weakest
-                if result.furthest is not None:
-                    furthest = sorted(furthest + [result.furthest], key=lambda play: play[0], reverse=True)[
-                        : elsewhere.PLAYS
-                    ]
-                if result.satisfied:
-                    failure, used = None, placed
-                    break
-                nearest = max(nearest, result.nearest)
-                why = given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
-                why["layouts"] += 1
-                why["simulations"] += result.simulations
-                if result.nearest >= self.min_robustness:
-                    fragile.append((-result.nearest, layouts, placed))
-                if self.progress is not None:
-                    self.progress(
-                        Progress(
-                            layouts, simulations, time.perf_counter() - started, best, len(self.scenario.interactions)
-                        )
-                    )
-                if layouts >= self.settings.layouts:
-                    failure = Infeasible(
-                        "satisfy",
-                        f"no layout realised the sequence in simulation within the budget ({layouts} layouts)",
-                        tried=placed.layout.conjunctions_tried,
-                        budget=Exhausted.LAYOUTS,
-                    )
-                    break
-                clock = time.perf_counter()
-            if failure is not None:
-                clock = time.perf_counter()
-                try:
-                    fallback = None if failure.budget is Exhausted.TIME else self.fallback(fragile)
-                except budget.OutOfTime:
-                    failure, fallback = self._out_of_time(layouts), None
-                seconds["satisfy"] += time.perf_counter() - clock
-        if failure is not None and fallback is None:
-            other = elsewhere.elsewhere(self.domain, self.scenario, furthest, best, weakest, self.min_robustness)
-            raise self.explained(failure, nearest, given_up, best, stopped, lost, weakest, other)
-        if failure is not None:
-            simulated, result, used = fallback
-            simulations += simulated
+            found = self._search(placements, tally, started)
+            if isinstance(found, Infeasible):
+                found = self._fall_back(found, tally)
+        if isinstance(found, Infeasible):
+            other = elsewhere.elsewhere(
+                self.domain, self.scenario, tally.furthest, tally.best, tally.weakest, self.min_robustness
+            )
+            raise self.explained(found, tally, other)
+        result, used = found
         # The stages after satisfaction (distract, validate, accept), counted apart from it.
         for stage, spent in result.seconds.items():
-            seconds["satisfy"] -= spent
-            seconds[stage] = spent
-        seconds["total"] = time.perf_counter() - started
-        return Generated(result, used, layouts, simulations, given_up, seconds)
+            tally.seconds["satisfy"] -= spent
+            tally.seconds[stage] = spent
+        tally.seconds["total"] = time.perf_counter() - started
+        return Generated(result, used, tally.layouts, tally.simulations, tally.given_up, tally.seconds)
 
-    def fallback(self, fragile: list):
+    def _search(self, placements: Iterator[Placement], tally: Tally, started: float) -> Found | Infeasible:
+        """The placed layouts satisfied in turn until one gives a task, or why none did within
+        the budgets of layouts and time."""
+        clock = time.perf_counter()
+        while True:
+            try:
+                placed = next(placements)
+            except Infeasible as error:
+                if not tally.layouts:
+                    raise
+                return Infeasible(
+                    "satisfy",
+                    f"{tally.layouts} layouts were placed, but in none did the simulated solution realise the sequence",
+                    tried=error.tried,
+                    budget=error.budget or Exhausted.ALLOWED,
+                )
+            except budget.OutOfTime:
+                return self._out_of_time(tally.layouts)
+            tally.layouts += 1
+            tally.seconds["layout"] += time.perf_counter() - clock
+            clock = time.perf_counter()
+            try:
+                result = self.satisfy(placed.layout)
+            except budget.OutOfTime:
+                return self._out_of_time(tally.layouts)
+            finally:
+                tally.seconds["satisfy"] += time.perf_counter() - clock
+            tally.note(result)
+            if result.satisfied:
+                return result, placed
+            tally.give_up(result, placed, self.min_robustness)
+            if self.progress is not None:
+                elapsed = time.perf_counter() - started
+                interactions = len(self.scenario.interactions)
+                self.progress(Progress(tally.layouts, tally.simulations, elapsed, tally.best, interactions))
+            if tally.layouts >= self.settings.layouts:
+                return Infeasible(
+                    "satisfy",
+                    f"no layout realised the sequence in simulation within the budget ({tally.layouts} layouts)",
+                    tried=placed.layout.conjunctions_tried,
+                    budget=Exhausted.LAYOUTS,
+                )
+            clock = time.perf_counter()
+
+    def _fall_back(self, failure: Infeasible, tally: Tally) -> Found | Infeasible:
+        """After `failure`, the first fragile layout that a second try accepts (unless the time
+        is spent); else the failure."""
+        clock = time.perf_counter()
+        try:
+            fallback = None if failure.budget is Exhausted.TIME else self.fallback(tally.fragile)
+        except budget.OutOfTime:
+            failure, fallback = self._out_of_time(tally.layouts), None
+        tally.seconds["satisfy"] += time.perf_counter() - clock
+        if fallback is None:
+            return failure
+        simulated, result, used = fallback
+        tally.simulations += simulated
+        return result, used
+
+    def fallback(self, fragile: list[tuple[int, int, Placement]]) -> tuple[int, Outcome, Placement] | None:
         """No solution survived every noisy replay: the layouts given up as fragile, most
         robust first, satisfied again accepting min_robustness replays. (simulations, the
         outcome, what it was placed from) of the first that succeeds, or None."""
@@ -219,32 +268,24 @@ class LayoutLoop:
     def _out_of_time(self, layouts: int) -> Infeasible:
         return Infeasible(
             "satisfy",
-            f"the time budget of {self.settings.time_budget:g} s ran out after {layouts} {'layout' if layouts == 1 else 'layouts'}",
+            f"the time budget of {self.settings.time_budget:g} s ran out after {layouts} "
+            f"{'layout' if layouts == 1 else 'layouts'}",
             budget=Exhausted.TIME,
         )
 
-    def explained(
-        self,
-        failure: Infeasible,
-        nearest: int,
-        given_up: dict,
-        best: int = 0,
-        stopped: str = "",
-        lost: dict | None = None,
-        weakest=None,
-        other=None,
-    ) -> Infeasible:
+    def explained(self, failure: Infeasible, tally: Tally, other: elsewhere.Elsewhere | None = None) -> Infeasible:
         """The failure, with how far the best simulation got, why the layouts were given up,
         which link noise broke and its best margin, the most robust fragile solution found
         and what would accept it."""
         message = failure.message
         interactions = self.scenario.interactions
+        best, stopped, lost, weakest, nearest = tally.best, tally.stopped, tally.lost, tally.weakest, tally.nearest
         if best:
             message += f"; the best simulation realised {best} of the {len(interactions)} interactions in order"
             if best < len(interactions):
                 message += f" (never `{interactions[best].text}` after them" + (f": {stopped})" if stopped else ")")
-        if given_up:
-            message += f"; given up: {given_up_summary(given_up)}"
+        if tally.given_up:
+            message += f"; given up: {given_up_summary(tally.given_up)}"
         if lost and best >= len(interactions):  # every link was made, but not robustly: say which one noise breaks
             term, (count, why) = max(lost.items(), key=lambda item: item[1][0])
             total = sum(n for n, _ in lost.values())
@@ -252,7 +293,10 @@ class LayoutLoop:
                 f" ({why})" if why else ""
             )
         if weakest is not None and best >= len(interactions):
-            message += f"; the weakest link was `{weakest.term}`: best margin {weakest.value:+.3g} {weakest.unit} ({weakest.what})"
+            message += (
+                f"; the weakest link was `{weakest.term}`: "
+                f"best margin {weakest.value:+.3g} {weakest.unit} ({weakest.what})"
+            )
         if nearest:
             if nearest < self.min_robustness:
                 hint = f"--min-robustness {nearest} accepts such a one"
@@ -260,7 +304,10 @@ class LayoutLoop:
                 hint = "no time was left to try it again as a fallback"
             else:
                 hint = "tried again as a fallback, it failed"
-            message += f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} noisy replays ({hint})"
+            message += (
+                f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} "
+                f"noisy replays ({hint})"
+            )
         if other is not None:
             message += f"; {other.text()}"
         return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)

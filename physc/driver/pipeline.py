@@ -192,6 +192,7 @@ class Pipeline:
         with self.within_budget():
             generated = loop.run(self.placements())
         parts = generated.outcome.parts
+        assert parts is not None, "the layout loop's outcome is satisfied"
         # The search's Parts are the Task's own fields, passed whole; the rest is what only the
         # run knows (the scenario, seed, world and engine) and what the layout loop counted.
         return Task(

@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from physc.compiler.layout_graph import LayoutGraph
     from physc.compiler.qsr_dnf import QsrDnf
     from physc.compiler.task import Task
+    from physc.driver.pipeline import Placed
     from physc.dsl.ast import Scenario
     from physc.dsl.scenario import ScenarioIR
 
@@ -33,7 +34,7 @@ class Unit:
 
 class Run(Protocol):
     """What a stage reads of the run that compiles a scenario (physc.driver.pipeline.Pipeline,
-    handed down by the command: the compiler does not import the generation above it)."""
+    handed down by the command)."""
 
     @property
     def layout_graph(self) -> LayoutGraph: ...
@@ -42,7 +43,7 @@ class Run(Protocol):
     def qsr(self) -> QsrDnf: ...
 
     @property
-    def placed(self): ...  # the placed layout: `graphs` (the dimension graphs) and `layout`
+    def placed(self) -> Placed: ...  # the placed layout: `graphs` (the dimension graphs) and `layout`
 
     @property
     def task(self) -> Task: ...
