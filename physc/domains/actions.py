@@ -6,6 +6,7 @@ of `Actions` with what differs and names it `actions = part(MyActions)`."""
 from __future__ import annotations
 
 import random
+from collections.abc import Sequence
 
 from physc.domains.errors import MissingCapability
 from physc.domains.part import Part
@@ -15,7 +16,7 @@ class Actions(Part):
     """The player's actions in one domain (module docstring); `self.domain` is the domain bound
     to its world and engine."""
 
-    def candidates(self, level, scenario, start: int = 0, before=None, after=None) -> list[tuple[str, object]]:
+    def candidates(self, level, scenario, start: int = 0, before=None, after=None) -> Sequence[tuple[str, object]]:
         """(label, action) for every candidate action, in the order they are tried (the paper's
         points of interest of the first target). A domain whose player acts several times
         (`starts`) gives, with `start`, `before` and `after`, the candidates of the action that
@@ -44,13 +45,13 @@ class Actions(Part):
         default has none: noisy replays are exact replays."""
         return level, action
 
-    def nudged(self, action, step: int):
+    def nudged(self, action, step: int) -> object | None:
         """`action` moved `step` whole steps along a line (one of the coordinates the search moves
         to raise a weak chain's margins, physc.search.coordinates); None: no such line, or no
         such action there (the default: no line)."""
         return None
 
-    def contrasted(self, level, action, counterpart: str, contrast: str):
+    def contrasted(self, level, action, counterpart: str, contrast: str) -> object | None:
         """`action` aimed at `contrast` as it is aimed at `counterpart` (language version 2's
         `contrast(a, b)`, physc.search.contrasts); None: the domain cannot say (the default),
         or the action is not aimed at the counterpart."""
@@ -60,7 +61,7 @@ class Actions(Part):
         """Whether `action` may be taken in `level` (PHYRE: the ball occludes nothing)."""
         return True
 
-    def random_action(self, level, rng: random.Random):
+    def random_action(self, level, rng: random.Random) -> object | None:
         """An action for `level` drawn as the evaluation's random agent draws one (None: the
         domain has no random agent; it declares `random_action` when it has one)."""
         return None
@@ -89,11 +90,11 @@ class Actions(Part):
         game launches it at); None: they send the solution's own action (the default)."""
         return None
 
-    def sent_record(self, solution):
+    def sent_record(self, solution) -> object | None:
         """The same as plain data for `physc verify --format json` (`sent`); None: as recorded."""
         return None
 
-    def sent_action(self, solution):
+    def sent_action(self, solution) -> object | None:
         """The action `played_as` recorded, as the world plays it (`physc verify` replays it beside
         the solution); None: the solution's own action is what players send (default)."""
         return None

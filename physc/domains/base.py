@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import abc
 import copy
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from physc.domains.errors import DomainError, LevelError, MissingCapability
 from physc.domains.evaluation import Evaluation
@@ -48,6 +48,7 @@ if TYPE_CHECKING:
     from physc.compiler.layout_rules import LayoutRules
     from physc.domains.playing import Playing
     from physc.dsl.scenario import ScenarioIR
+    from physc.simulation.trace import Trace
     from physc.worlds import World
 
 __all__ = [
@@ -119,27 +120,33 @@ def require(domain: Domain, hooks: tuple[str, ...], asked: str) -> None:
         raise MissingCapability(domain.name, lacking, asked)
 
 
+class _Required:
+    """What every domain must say (REQUIRED) and a subclass has not said yet: abstract to `abc`,
+    so that a Domain subclass that leaves one out cannot be instantiated (E0702 names it)."""
+
+    __isabstractmethod__ = True
+
+    def __init__(self, doc: str) -> None:
+        self.__doc__ = doc
+
+
+def _required(doc: str) -> Any:
+    """An attribute every domain must set (`_Required`), typed as the value a subclass sets."""
+    return _Required(doc)
+
+
 class Domain(abc.ABC):
     """A domain of physics tasks. Subclass it and set at least `name`, `description`
     and `vocabulary`; set or override the generation hooks the domain has."""
 
     # --- the front end: every domain says these --------------------------------
 
-    @property
-    @abc.abstractmethod
-    def name(self) -> str:
-        """What a scenario selects the domain by (`domain phyre`): its entry point's name."""
-
-    @property
-    @abc.abstractmethod
-    def description(self) -> str:
-        """One line for `physc domains`."""
-
-    @property
-    @abc.abstractmethod
-    def vocabulary(self) -> Vocabulary:
-        """The object and interaction terms of `.phys` in this domain: all the static
-        checks need (physc.domains.vocabulary)."""
+    name: str = _required("What a scenario selects the domain by (`domain phyre`): its entry point's name.")
+    description: str = _required("One line for `physc domains`.")
+    vocabulary: Vocabulary = _required(
+        "The object and interaction terms of `.phys` in this domain: all the static checks need "
+        "(physc.domains.vocabulary)."
+    )
 
     capabilities: frozenset[str] = frozenset()
     """The capabilities (CAPABILITIES) the domain has: each names the hook it writes, and
@@ -199,14 +206,18 @@ class Domain(abc.ABC):
 
     # --- generation: capabilities without a default ----------------------------
 
-    layout_rules: LayoutRules | None = None
-    """The layout inference (stage layout-graph, physc.compiler.layout_rules): its `infer(scenario,
-    structure)` gives the `LayoutGraph` of the scenario's objects and QSRs, each with its
-    provenance. None: the domain does not lay out."""
+    @property
+    def layout_rules(self) -> LayoutRules | None:
+        """The layout inference (stage layout-graph, physc.compiler.layout_rules): its `infer(scenario,
+        structure)` gives the `LayoutGraph` of the scenario's objects and QSRs, each with its
+        provenance. None: the domain does not lay out."""
+        return None
 
-    layout_parameters: LayoutParameters | None = None
-    """The distances of the QSRs (clearance, far) and the area objects are placed in
-    (stages dimension-graphs and layout). None: the domain does not place."""
+    @property
+    def layout_parameters(self) -> LayoutParameters | None:
+        """The distances of the QSRs (clearance, far) and the area objects are placed in
+        (stages dimension-graphs and layout). None: the domain does not place."""
+        return None
 
     def concretize(self, graph: LayoutGraph, scenario: ScenarioIR, rng) -> dict[str, Body]:
         """The concrete game object, material and shape of every node of the layout graph,
@@ -214,7 +225,7 @@ class Domain(abc.ABC):
         shapes."""
         raise MissingCapability(self.name, ("concretize",), "placing objects")
 
-    def replay(self, level, solution, scenario: ScenarioIR, rng=None):
+    def replay(self, level, solution, scenario: ScenarioIR, rng=None) -> Trace:
         """The solution played in `level`, in the domain's world and backend (`at`): a
         physc.simulation.trace.Trace with its interactions
         recognised and its restrictions checked. With `rng`, a noisy replay: the domain's
@@ -244,9 +255,11 @@ class Domain(abc.ABC):
     at most this many. None (the default): the domain makes no noisy replays, so
     --min-robustness has nothing to count and is not checked."""
 
-    playing: Playing | None = None
-    """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
-    Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
+    @property
+    def playing(self) -> Playing | None:
+        """How agents play the domain's tasks (a physc.domains.playing.Playing): what gives it a
+        Gymnasium environment and an ActionSimulator (physc.envs). None: agents cannot play it."""
+        return None
 
     def reach_targets(self, scenario: ScenarioIR) -> list[str]:
         """The objects the player's action must reach directly (angrybirds: the first hit's

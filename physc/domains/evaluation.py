@@ -25,11 +25,16 @@ class Verdict(Protocol):
     def reason(self) -> str:
         """Why the task is not kept, in a few words ("" when it is): the search gives the
         layout up under these words (PHYRE's: "random actions solve it too often (TRIVIAL)")."""
+        ...
 
-    simulations: int  # the plays the verdict cost
+    @property
+    def simulations(self) -> int:
+        """The plays the verdict cost."""
+        ...
 
     def record(self) -> dict:
         """The figures a task file and `physc eval` keep (`flags`, `solution_stable`, `solve_rate`, …)."""
+        ...
 
 
 class Evaluation(Part):

@@ -6,7 +6,7 @@ commands ask. A domain writes a subclass of `LevelFiles` with what it has, names
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from physc.domains.errors import MissingCapability
 from physc.domains.part import Part
@@ -32,7 +32,7 @@ class LevelFiles(Part):
         draw a format raises MissingCapability (E0703) for it."""
         raise MissingCapability(self.domain.name, ("picture",), "--png")
 
-    def read_level(self, data: bytes):
+    def read_level(self, data: bytes) -> Any:
         """The level of a level file's bytes (`physc simulate`, `trace`, `render`); LevelError
         (a diagnostic's code, message, line and column) for a file that cannot be played."""
         raise MissingCapability(self.domain.name, ("read_level",), "reading a level file")
@@ -70,10 +70,12 @@ class LevelFiles(Part):
     (physc.serialize.from_data, `physc verify`). Empty: task files of this domain cannot be
     read back."""
 
-    solution_class: type | tuple[type, ...] | None = None
-    """The attrs class of a task's solution, or a tuple of them when a domain has several
-    kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
-    verify`). None: a task file's solution cannot be read back."""
+    @property
+    def solution_class(self) -> type | tuple[type, ...] | None:
+        """The attrs class of a task's solution, or a tuple of them when a domain has several
+        kinds of action (PHYRE: one ball or two), for reading it back from a task file (`physc
+        verify`). None: a task file's solution cannot be read back."""
+        return None
 
     def benchmark_files(self, tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         """The files of the target world's own benchmark format that a dataset of this domain

@@ -11,7 +11,7 @@ simulates in; read from the class, it is the declaration.
 
 from __future__ import annotations
 
-from typing import Generic, TypeVar
+from typing import Generic, TypeVar, overload
 
 P = TypeVar("P", bound="Part")
 
@@ -30,5 +30,11 @@ class part(Generic[P]):
     def __init__(self, kind: type[P]) -> None:
         self.kind = kind
 
-    def __get__(self, domain, owner=None):
+    @overload
+    def __get__(self, domain: None, owner: type | None = None) -> part[P]: ...
+
+    @overload
+    def __get__(self, domain: object, owner: type | None = None) -> P: ...
+
+    def __get__(self, domain: object, owner: type | None = None) -> part[P] | P:
         return self if domain is None else self.kind(domain)

@@ -11,8 +11,12 @@ noise, the task sources) is physc's own (physc/envs: env.py, simulator.py).
 from __future__ import annotations
 
 import abc
+from typing import TYPE_CHECKING
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from gymnasium import spaces
 
 
 def states_at(trace, step: int) -> dict[str, tuple[float, float, float] | None]:
@@ -82,11 +86,11 @@ class Playing(abc.ABC):
         return mode
 
     @abc.abstractmethod
-    def action_space(self, mode: str, world):
+    def action_space(self, mode: str, world) -> spaces.Space:
         """The Gymnasium space of an action in `mode`, in `world`."""
 
     @abc.abstractmethod
-    def action(self, domain, level, mode: str, action):
+    def action(self, domain, level, mode: str, action) -> object | None:
         """The domain's action (what `Domain.play` takes) for the agent's `action`, or None when
         the action is invalid in `level` (not played, as PHYRE does not play an occluding ball)."""
 

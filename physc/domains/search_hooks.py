@@ -5,6 +5,7 @@ so a domain writes a subclass only for what it has (docs/plugins.md, "What the s
 from __future__ import annotations
 
 import random
+from collections.abc import Iterable, Sequence
 
 from physc.domains.part import Part
 
@@ -32,7 +33,7 @@ class SearchHooks(Part):
     blocker_length: float = 1.0
     blocker_thickness: float = 0.1
 
-    def actions_at(self, level, name: str) -> list[tuple[str, object]]:
+    def actions_at(self, level, name: str) -> Sequence[tuple[str, object]]:
         """(label, action) aimed at the object `name`: what the guards try against forbidden
         direct hits and shortcuts (the default: none, so nothing is guarded)."""
         return []
@@ -63,7 +64,7 @@ class SearchHooks(Part):
         `most` at random (the paper's), else none."""
         return rng.randint(0, most) if "distractors" in self.domain.capabilities else 0
 
-    def distractors(self, layout, index: int, rng: random.Random):
+    def distractors(self, layout, index: int, rng: random.Random) -> Iterable:
         """Candidate distractors (PlacedObjects named for `index`), tried in turn until one is
         kept (the default: none)."""
         return ()

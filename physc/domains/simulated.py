@@ -29,6 +29,8 @@ evaluation's measurements of intended solvability and fidelity.
 
 from __future__ import annotations
 
+from typing import Any
+
 from physc.domains.actions import Actions
 from physc.domains.base import Domain, MissingCapability
 from physc.domains.part import part
@@ -97,7 +99,7 @@ class SimulatedDomain(Domain):
     `random_action` (the evaluation's random agent)."""
 
     # ---- what the domain writes ---------------------------------------------------------
-    def level_from_layout(self, layout, scenario):
+    def level_from_layout(self, layout, scenario) -> Any:
         """The placed layout (a ConcreteLayout) of `scenario` as the domain's level."""
         raise MissingCapability(self.name, ("level_from_layout",), "generating a task")
 
@@ -160,7 +162,7 @@ class SimulatedDomain(Domain):
         scene, rules = self.simulation(level, action, ending)
         return playout(scene, self.backend, rules, seconds or self.seconds, ending is not Ending.SETTLED)
 
-    def replay(self, level, solution, scenario, rng=None):
+    def replay(self, level, solution, scenario, rng=None) -> Trace:
         """The solution played in `level`, judged against `scenario`; with `rng`, a noisy replay
         under the domain's noise model (`actions.noisy`, the one the search's replays draw)."""
         action = self.actions.action_of(solution)

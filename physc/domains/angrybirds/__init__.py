@@ -9,6 +9,8 @@ obstacles (a platform) and distractors, its level file and picture.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import attrs
 
 from physc.domains.angrybirds.evaluation import ScienceBirdsEvaluation
@@ -18,10 +20,16 @@ from physc.domains.angrybirds.noise import ROBUSTNESS_REPLAYS
 from physc.domains.angrybirds.search_hooks import ScienceBirdsSearch
 from physc.domains.angrybirds.shooting import ScienceBirdsActions
 from physc.domains.angrybirds.vocabulary import VOCABULARY
-from physc.domains.angrybirds.worlds import PHYQ, WORLDS
+from physc.domains.angrybirds.worlds import PHYQ, WORLDS, ScienceBirdsWorld
 from physc.domains.part import part
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.ending import Ending
+
+if TYPE_CHECKING:
+    from physc.compiler.dimension_graphs import LayoutParameters
+    from physc.compiler.layout_rules import LayoutRules
+    from physc.domains.angrybirds.game import Game
+    from physc.domains.playing import Playing
 
 PLAY_SECONDS = 10.0  # a play's simulated time at most, each shot's (the evaluation's replays; the paper's stability)
 READ_SETTLE = 0.3  # seconds a play for reading the chain goes on after the last pig goes, once nothing falls
@@ -60,7 +68,15 @@ class AngryBirds(SimulatedDomain):
     }
 
     @property
-    def layout_rules(self):
+    def world(self) -> ScienceBirdsWorld:
+        """The Science Birds world it simulates in (`Domain.world`): one of WORLDS, or a variant
+        derived from one, so a ScienceBirdsWorld."""
+        world = super().world
+        assert isinstance(world, ScienceBirdsWorld), world
+        return world
+
+    @property
+    def layout_rules(self) -> LayoutRules:
         """The layout graph's rules in Science Birds (the compiler loads when a scenario is compiled)."""
         from physc.compiler.layout_rules import LayoutRules
 
@@ -75,14 +91,14 @@ class AngryBirds(SimulatedDomain):
     seconds = PLAY_SECONDS
 
     @property
-    def playing(self):
+    def playing(self) -> Playing:
         """How agents play its levels (playing.py; physc/AngryBirds-v0)."""
         from physc.domains.angrybirds.playing import PLAYING
 
         return PLAYING
 
     @property
-    def layout_parameters(self):
+    def layout_parameters(self) -> LayoutParameters:
         """The QSRs' distances, and the world's placement area."""
         from physc.compiler.dimension_graphs import LayoutParameters
 
@@ -98,8 +114,7 @@ class AngryBirds(SimulatedDomain):
 
         return concretize(graph, scenario, rng, self.world)
 
-    @staticmethod
-    def reach_targets(scenario) -> list[str]:
+    def reach_targets(self, scenario) -> list[str]:
         """The objects the birds must hit directly: what each bird's shot starts by hitting."""
         from physc.domains.angrybirds.shots import birds, first_hit, shot_starts
 
@@ -122,7 +137,7 @@ class AngryBirds(SimulatedDomain):
             level_from_layout(layout), birds=birds, world=self.world.name, generator=f"physc {__version__}"
         )
 
-    def game(self, level):
+    def game(self, level: Level) -> Game:
         """`level` as the game plays it in this domain's world and engine."""
         from physc.domains.angrybirds.game import Game
 

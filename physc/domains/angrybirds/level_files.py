@@ -17,24 +17,21 @@ class ScienceBirdsFiles(LevelFiles):
         "LevelLoader.cs) loads it (physc's docs/angrybirds.md)"
     )
 
-    @staticmethod
-    def level_world(level) -> str | None:
+    def level_world(self, level) -> str | None:
         return level.world
 
     @property
-    def solution_class(self):
+    def solution_class(self) -> tuple[type, ...]:
         from physc.domains.angrybirds.shots import BirdShot, ShotsSolution, Solution
 
         return (Solution, ShotsSolution, BirdShot)
 
-    @staticmethod
-    def read_level(data: bytes) -> Level:
+    def read_level(self, data: bytes) -> Level:
         from physc.domains.angrybirds.level_xml import read_level
 
         return read_level(data)
 
-    @staticmethod
-    def level_text(data: bytes) -> str:
+    def level_text(self, data: bytes) -> str:
         """The level file's text as `read_level` decodes it (UTF-16 by its byte-order mark, else UTF-8)."""
         from physc.domains.angrybirds.level_xml import decode
         from physc.domains.base import LevelError
@@ -49,15 +46,13 @@ class ScienceBirdsFiles(LevelFiles):
 
         return save(draw_level(level, self.domain.world, title, paths), fmt)
 
-    @staticmethod
-    def benchmark_files(tasks) -> dict[str, bytes]:
+    def benchmark_files(self, tasks) -> dict[str, bytes]:
         """The tasks as a level set Phy-Q's game loads, with the shots its agents send (phyq_levels.py)."""
         from physc.domains.angrybirds.phyq_levels import benchmark_files
 
         return benchmark_files(tasks)
 
-    @staticmethod
-    def emit_level(level) -> str:
+    def emit_level(self, level) -> str:
         from physc.domains.angrybirds.level_xml import emit_level
 
         return emit_level(level)
@@ -67,12 +62,15 @@ class ScienceBirdsFiles(LevelFiles):
         placed layout (`--emit layout --png`) as the level it becomes."""
         from physc.compiler.concrete_layout import ConcreteLayout
         from physc.domains.angrybirds.picture import draw_level, render, save
+        from physc.domains.angrybirds.shots import BirdShot, ShotsSolution, Solution
 
         if isinstance(task, ConcreteLayout):
             return render(task, fmt, self.domain.world)
-        trace = self.domain.game(task.level).simulate(
-            self.domain.actions.action_of(task.solution), self.domain.seconds, settle_after_solved=0.5
+        level, solution = task.level, task.solution
+        assert isinstance(level, Level) and isinstance(solution, Solution | ShotsSolution | BirdShot)  # a Science Birds task
+        trace = self.domain.game(level).simulate(
+            self.domain.actions.action_of(solution), self.domain.seconds, settle_after_solved=0.5
         )
-        supports = frozenset(o.name for o in task.level.objects if o.name.startswith(("support_", "obstacle")))
-        title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return save(draw_level(task.level, self.domain.world, title, trace.paths(), supports), fmt)
+        supports = frozenset(o.name for o in level.objects if o.name.startswith(("support_", "obstacle")))
+        title = f"{task.scenario} (seed {task.seed}): {solution.aimed_at}"
+        return save(draw_level(level, self.domain.world, title, trace.paths(), supports), fmt)

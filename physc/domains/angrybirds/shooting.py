@@ -18,15 +18,13 @@ NUDGE_STEP = (
 class ScienceBirdsActions(Actions):
     """The birds' shots in the bound domain's world."""
 
-    @staticmethod
-    def starts(scenario) -> tuple[int, ...]:
+    def starts(self, scenario) -> tuple[int, ...]:
         """The interactions at which a later bird's shot starts (shots.py)."""
         from physc.domains.angrybirds.shots import shot_starts
 
         return shot_starts(scenario, VOCABULARY.player)
 
-    @staticmethod
-    def resumes(action) -> bool:
+    def resumes(self, action) -> bool:
         """The game's run goes on from a snapshot for one untapped shot (`play` passes it on)."""
         from physc.domains.angrybirds.shots import simple
 
@@ -76,20 +74,17 @@ class ScienceBirdsActions(Actions):
 
         return shots.played_as(level, solution)
 
-    @staticmethod
-    def sent_action(solution):
+    def sent_action(self, solution):
         from physc.domains.angrybirds import shots
 
         return shots.sent_action(solution)
 
-    @staticmethod
-    def action_of(solution):
+    def action_of(self, solution):
         from physc.domains.angrybirds import shots
 
         return shots.action_of(solution)
 
-    @staticmethod
-    def sent_text(solution) -> str | None:
+    def sent_text(self, solution) -> str | None:
         """Each shot as Phy-Q's agents send it, which `physc verify` replays too."""
         from physc.domains.angrybirds.shots import each_shot
 
@@ -99,8 +94,7 @@ class ScienceBirdsActions(Actions):
         steps = ", ".join(f"env.step({list(action)}), launched at {angle:g}°" for action, angle in sent)
         return f"as Phy-Q's agents send it (replayed too): {steps}"
 
-    @staticmethod
-    def sent_record(solution):
+    def sent_record(self, solution):
         """Each shot's `[dx, dy, tap in ms]`, as Phy-Q's agents send it (one shot: the list itself)."""
         from physc.domains.angrybirds.shots import each_shot
 

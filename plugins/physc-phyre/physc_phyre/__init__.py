@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import random
+from collections.abc import Sequence
 
 import attrs
 
@@ -20,6 +21,7 @@ from physc.compiler.layout_rules import LayoutRules
 from physc.domains.actions import Actions
 from physc.domains.part import part
 from physc.domains.search_hooks import SearchHooks
+from physc.domains.playing import Playing
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.scene import Scene
 from physc_phyre import actions, two_balls, world
@@ -32,6 +34,17 @@ from physc_phyre.vocabulary import VOCABULARY
 from physc_phyre.worlds import PHYRE
 
 __all__ = ["DOMAIN", "Phyre", "BallAction", "TwoBallAction", "PhyreLevel", "SceneBody"]
+
+
+LAYOUT_RULES = LayoutRules(
+    player="redBall",
+    flat="blackBar",
+    ground="floor",
+    player_placed=False,
+    continuous_paths=True,
+    fall_ahead_after_motion=True,
+)
+LAYOUT_PARAMETERS = LayoutParameters(clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE)
 
 
 class PhyreSearch(SearchHooks):
@@ -49,33 +62,29 @@ class PhyreSearch(SearchHooks):
 class PhyreActions(Actions):
     """PHYRE's actions: one red ball placed, or two (actions.py, two_balls.py)."""
 
-    @staticmethod
-    def candidates(level: PhyreLevel, scenario) -> list[tuple[str, BallAction | TwoBallAction]]:
+    def candidates(
+        self, level: PhyreLevel, scenario, start: int = 0, before=None, after=None
+    ) -> Sequence[tuple[str, BallAction | TwoBallAction]]:
         """Every valid drop onto the first target's points of interest (actions.py); in the
         two-ball tier, pairs of such drops (two_balls.py)."""
         if len(level.players) == 2:
             return two_balls.candidate_pairs(level, scenario)
         return actions.drops(level, scenario.interactions[0])
 
-    @staticmethod
-    def noisy(level: PhyreLevel, action, rng: random.Random):
+    def noisy(self, level: PhyreLevel, action, rng: random.Random):
         return level, actions.noisy(action, rng)
 
-    @staticmethod
-    def nudged(action, step: int):
+    def nudged(self, action, step: int):
         """The balls `step` whole pixels sideways."""
         return actions.moved(action, lambda ball: (step, 0))
 
-    @staticmethod
-    def random_action(level: PhyreLevel, rng: random.Random):
+    def random_action(self, level: PhyreLevel, rng: random.Random):
         return actions.random_action(level, rng)
 
-    @staticmethod
-    def neighbours(action) -> list:
+    def neighbours(self, action) -> list:
         return actions.neighbours(action)
 
-    @staticmethod
-    def valid(level: PhyreLevel, action) -> bool:
+    def valid(self, level: PhyreLevel, action) -> bool:
         return actions.valid(level, action)
 
 
@@ -99,21 +108,21 @@ class Phyre(SimulatedDomain):
         "picture",
         "score_agent",
     }
-    layout_rules = LayoutRules(
-        player="redBall",
-        flat="blackBar",
-        ground="floor",
-        player_placed=False,
-        continuous_paths=True,
-        fall_ahead_after_motion=True,
-    )
-    layout_parameters = LayoutParameters(
-        clearance=2.0, far=25.0, left=0.0, right=world.SCENE, bottom=0.0, top=world.SCENE
-    )
+
+    @property
+    def layout_rules(self) -> LayoutRules:
+        """PHYRE's layout inference: the red ball is dropped, not placed; paths are continuous."""
+        return LAYOUT_RULES
+
+    @property
+    def layout_parameters(self) -> LayoutParameters:
+        """The QSRs' distances and the whole scene as the placement area, in pixels."""
+        return LAYOUT_PARAMETERS
+
     seconds = world.MAX_STEPS / world.FPS
 
     @property
-    def playing(self):
+    def playing(self) -> Playing:
         """How agents play its tasks (playing.py; physc/PhyreLike-v0)."""
         from physc_phyre.playing import PLAYING
 
@@ -129,8 +138,7 @@ class Phyre(SimulatedDomain):
     def concretize(self, graph, scenario, rng):
         return concretize(graph, scenario, rng, self.world.incline)
 
-    @staticmethod
-    def level_from_layout(layout, scenario) -> PhyreLevel:
+    def level_from_layout(self, layout, scenario) -> PhyreLevel:
         return level_from_layout(layout, scenario)
 
     def scene(self, level: PhyreLevel, action: BallAction | TwoBallAction | None) -> Scene:
@@ -147,8 +155,7 @@ class Phyre(SimulatedDomain):
             radii[name] = ball.radius / world.PIXELS_PER_METRE
         return Scene(tuple(specs), kinds, self.world.gravity, self.world.engine, radii, goal=level.goal)
 
-    @staticmethod
-    def rules(level: PhyreLevel) -> GoalRules:
+    def rules(self, level: PhyreLevel) -> GoalRules:
         """PHYRE's goal: two balls touch by its distance rule, other pairs by contact (rules.py)."""
         return GoalRules.of(level)
 

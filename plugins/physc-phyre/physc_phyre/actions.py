@@ -136,7 +136,7 @@ def from_unit(action) -> BallAction | TwoBallAction | None:
     if len(balls) == 2 and not apart(*balls):
         return None
     placed = [BallAction(int(ball.x), int(ball.y), round(ball.radius)) for ball in balls]
-    return placed[0] if len(placed) == 1 else TwoBallAction(*placed)
+    return placed[0] if len(placed) == 1 else TwoBallAction(placed[0], placed[1])
 
 
 def random_action(level: PhyreLevel, rng: random.Random) -> BallAction | TwoBallAction:
@@ -172,7 +172,7 @@ def moved(action, shift):
     for ball in action.balls:
         dx, dy = shift(ball)
         balls.append(BallAction(ball.x + dx, ball.y + dy, ball.radius, ball.aimed_at))
-    return balls[0] if len(balls) == 1 else TwoBallAction(*balls, action.aimed_at)
+    return balls[0] if len(balls) == 1 else TwoBallAction(balls[0], balls[1], action.aimed_at)
 
 
 # PHYRE's occlusion test, the one `simulate_action` makes before it simulates (an occluding ball:
@@ -261,7 +261,7 @@ def _edge_distance(points, x: float, y: float) -> float:
 def _phyre_circle(circle_radius: float, px: float, py: float, angle: float, x: float, y: float, radius: float) -> bool:
     """geometry.h's isPointInsideCircle(ball, body position, r + circle radius) (lines 158-163),
     in its float arithmetic."""
-    return F32(np.sqrt(_square_distance(x, y, px, py))) + INSIDENESS_EPS < F32(radius + circle_radius)
+    return bool(F32(np.sqrt(_square_distance(x, y, px, py))) + INSIDENESS_EPS < F32(radius + circle_radius))
 
 
 def _phyre_polygon(points, px: float, py: float, angle: float, x: float, y: float, radius: float) -> bool:
@@ -278,7 +278,7 @@ def _phyre_polygon(points, px: float, py: float, angle: float, x: float, y: floa
     ):
         return True
     best = min(_square_distance_to_segment(p0, p1, qx, qy) for p0, p1 in zip(points[-1:] + points[:-1], points))
-    return F32(np.sqrt(best)) + INSIDENESS_EPS < F32(radius)
+    return bool(F32(np.sqrt(best)) + INSIDENESS_EPS < F32(radius))
 
 
 def _square_distance(x0: float, y0: float, x1: float, y1: float):

@@ -164,9 +164,10 @@ def score(domain, folder: Path, agent: Callable, setup: str, folds: Iterable[int
     for fold in folds:
         parts = split_of[str(fold)]
         trained = parts["train"] + (parts["dev"] if split == "test" else [])
-        if hasattr(agent, "fit"):
+        fit = getattr(agent, "fit", None)
+        if fit is not None:
             with calling("in fit"):
-                agent.fit([seen[t] for t in trained])
+                fit([seen[t] for t in trained])
         scores = {}
         for task_id in parts[split]:
             scores[task_id] = auccess(first_solved(domain, level_of(task_id), seen[task_id], agent))

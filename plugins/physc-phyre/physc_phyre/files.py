@@ -24,19 +24,19 @@ class PhyreFiles(LevelFiles):
         "in PHYRE's own binary TaskCollection is phyre/tasks50.bin.lzma"
     )
 
-    solution_class = (BallAction, TwoBallAction)
+    @property
+    def solution_class(self) -> tuple[type, ...]:
+        """A task's solution: one ball, or two (PHYRE's two-ball tier)."""
+        return (BallAction, TwoBallAction)
 
-    @staticmethod
-    def with_solution(level: PhyreLevel, solution) -> PhyreLevel:
+    def with_solution(self, level: PhyreLevel, solution) -> PhyreLevel:
         return attrs.evolve(level, solutions=(solution,))
 
-    @staticmethod
-    def emit_level(level: PhyreLevel) -> str:
+    def emit_level(self, level: PhyreLevel) -> str:
         """The task in PHYRE's task structure, as JSON (task_file.py)."""
         return task_json(level)
 
-    @staticmethod
-    def benchmark_files(tasks) -> dict[str, bytes]:
+    def benchmark_files(self, tasks) -> dict[str, bytes]:
         """PHYRE's own benchmark files beside the dataset (benchmark.py)."""
         from physc_phyre.benchmark import benchmark_files
 
@@ -51,6 +51,8 @@ class PhyreFiles(LevelFiles):
             raise MissingCapability(self.domain.name, (f"picture in {fmt}",), f"--png as {fmt}")
         if isinstance(task, ConcreteLayout):
             return picture(level_from_layout(task, None), f"{task.scenario} (seed {task.seed})", None, None, fmt)
-        trace = self.domain.play(task.level, task.solution, ending=Ending.OUTCOME)
-        title = f"{task.scenario} (seed {task.seed}): {task.solution.aimed_at}"
-        return picture(task.level, title, task.solution, trace.paths(threshold=0.5), fmt)
+        level, solution = task.level, task.solution
+        assert isinstance(level, PhyreLevel) and isinstance(solution, BallAction | TwoBallAction)  # PHYRE's own task
+        trace = self.domain.play(level, solution, ending=Ending.OUTCOME)
+        title = f"{task.scenario} (seed {task.seed}): {solution.aimed_at}"
+        return picture(level, title, solution, trace.paths(threshold=0.5), fmt)

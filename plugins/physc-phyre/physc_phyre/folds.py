@@ -60,7 +60,10 @@ def cross_template(ids: Iterable[str], seed: int) -> tuple[list[str], list[str],
     test = order[kept:]
     order = stable_shuffle(order[:kept], f"dev_ball_cross_template_half_{seed}")
     trained = int(len(order) * TRAIN_SHARE)
-    return tuple(sorted(t for tpl in group for t in per[tpl]) for group in (order[:trained], order[trained:], test))
+    train, dev, tested = (
+        sorted(t for tpl in group for t in per[tpl]) for group in (order[:trained], order[trained:], test)
+    )
+    return train, dev, tested
 
 
 def within_template(ids: Iterable[str], seed: int) -> tuple[list[str], list[str], list[str]]:
@@ -75,7 +78,7 @@ def within_template(ids: Iterable[str], seed: int) -> tuple[list[str], list[str]
         test += group[n:]
     kept = stable_shuffle(kept, f"make_dev{seed}")
     trained = int(len(kept) * TRAIN_SHARE)
-    return tuple(sorted(part) for part in (kept[:trained], kept[trained:], test))
+    return sorted(kept[:trained]), sorted(kept[trained:]), sorted(test)
 
 
 def fold(name: str, ids: Iterable[str], seed: int) -> tuple[list[str], list[str], list[str]]:

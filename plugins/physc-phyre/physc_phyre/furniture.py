@@ -74,7 +74,7 @@ def geometry(concrete: str, rng: random.Random, heading: str | None = None) -> G
         )
     if concrete == "purpleRamp":
         tilt = rng.uniform(*PURPLE_RAMP_TILT)
-        sign = {"right": 1, "left": -1}.get(heading) or rng.choice((-1, 1))
+        sign = {"right": 1, "left": -1}.get(heading or "") or rng.choice((-1, 1))
         return Geometry(round(rng.uniform(*PURPLE_RAMP_LENGTH), 1), BAR_HEIGHT, round(sign * tilt, 2))
     if concrete == "pegRow":
         return peg_row(round(rng.uniform(*PEG_ROW_LENGTH), 1))

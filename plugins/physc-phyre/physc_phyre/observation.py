@@ -129,7 +129,7 @@ def jar_offset(diameter: float) -> float:
     return moment / area
 
 
-def features(task: dict, *balls: tuple[float, float, float]) -> np.ndarray:
+def features(task: dict, *balls: tuple[float, float, float] | tuple[float, float, float, float]) -> np.ndarray:
     """PHYRE's feature vectors (float32, one row of 14 per body with a shape type; the
     agent's `balls` last: x, y, radius in pixels, and the angle where a ball has turned)."""
     rows = []

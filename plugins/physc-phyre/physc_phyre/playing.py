@@ -93,7 +93,7 @@ class PhyrePlaying(Playing):
         return observation.raster(json.loads(task_json(level)))
 
     @staticmethod
-    def _frame(level, action, trace, step: int) -> tuple[dict, list[tuple[float, ...]]]:
+    def _frame(level, action, trace, step: int) -> tuple[dict, list[tuple[float, float, float, float]]]:
         """(the task in PHYRE's structure with its bodies where the trace has them after `step`,
         the agent's balls there: x, y, radius in pixels, angle)."""
         import attrs
@@ -102,13 +102,8 @@ class PhyrePlaying(Playing):
 
         states = states_at(trace, step)
         moved = tuple(
-            attrs.evolve(
-                b,
-                x=states[b.name][0] * PIXELS_PER_METRE,
-                y=states[b.name][1] * PIXELS_PER_METRE,
-                angle=states[b.name][2],
-            )
-            if states.get(b.name)
+            attrs.evolve(b, x=s[0] * PIXELS_PER_METRE, y=s[1] * PIXELS_PER_METRE, angle=s[2])
+            if (s := states.get(b.name))
             else b
             for b in level.bodies
         )
@@ -126,7 +121,7 @@ class PhyrePlaying(Playing):
 
     def frame_picture(self, domain, level, action, trace, step: int) -> np.ndarray:
         task, balls = self._frame(level, action, trace, step)
-        return observation.raster(task, *[ball[:3] for ball in balls])
+        return observation.raster(task, *[(x, y, radius) for x, y, radius, _ in balls])
 
     def reward(self, trace) -> tuple[float, dict]:
         return float(trace.solved), {}

@@ -127,5 +127,5 @@ def cache_bytes(actions: np.ndarray, statuses_per_task: dict[str, np.ndarray]) -
         "actions": np.asarray(actions, np.float32),
     }
     buffer = io.BytesIO()
-    joblib.dump(cache, buffer, compress=COMPRESSION)
+    joblib.dump(cache, buffer, compress=COMPRESSION)  # pyright: ignore[reportArgumentType]  # joblib takes (method, level); its stub reads int from the default 0
     return buffer.getvalue()

@@ -29,8 +29,9 @@ def first_acts(scenario, name: str):
 def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallAction]]:
     """(label, action) for pairs of drops of the two red balls (module docstring); none when
     the second ball never acts, or its first target is not in the level yet."""
-    firsts = [first_acts(scenario, name) for name in level.players]
-    if any(term is None for term in firsts):
+    acting = [first_acts(scenario, name) for name in level.players]
+    firsts = [term for term in acting if term is not None]
+    if len(firsts) < len(acting):
         return []
     one, two = (drops(level, term) for term in firsts)
     tops = [outline_box(level.body(term.objects[1]))[3] for term in firsts]

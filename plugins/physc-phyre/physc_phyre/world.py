@@ -146,11 +146,17 @@ def outline(shape: str, size: float) -> Circle | Polygon | Compound:
 
 
 def _metres(shape: Circle | Polygon | Compound) -> Circle | Polygon | Compound:
+    """`shape` in metres (PHYRE's shapes are in pixels)."""
+    if isinstance(shape, Compound):
+        return Compound(tuple(_part_metres(part) for part in shape.parts))
+    return _part_metres(shape)
+
+
+def _part_metres(shape: Circle | Polygon) -> Circle | Polygon:
+    """One convex part in metres."""
     m = 1 / PIXELS_PER_METRE
     if isinstance(shape, Circle):
         return Circle(shape.radius * m)
-    if isinstance(shape, Compound):
-        return Compound(tuple(_metres(part) for part in shape.parts))
     return Polygon(tuple((x * m, y * m) for x, y in shape.points))
 
 
