@@ -14,15 +14,23 @@ points where stopping is safe. Two things stop it there:
   or between an engine call and its bookkeeping. Outside such a block SIGINT raises at
   once, as Python's default does.
 
+A deadline is scoped to the context that entered it: the stack of deadlines is a
+`contextvars.ContextVar` (a tuple, innermost last) that each `deadline` block sets and
+resets, so work in another thread or asyncio task (which runs in a context of its own)
+keeps its own budget and never sees, nor pops, another's. Ctrl-C is the process's, as
+signals are.
+
 Nothing here is specific to a domain or an engine.
 """
 
 from __future__ import annotations
 
 import contextlib
+import contextvars
 import signal
 import threading
 import time
+from collections.abc import Iterator
 
 
 class OutOfTime(Exception):
@@ -33,7 +41,11 @@ class OutOfTime(Exception):
         self.seconds = seconds
 
 
-_deadlines: list[tuple[float, float]] = []  # (monotonic end, budget in seconds), innermost last
+# The deadlines of this context: (monotonic end, budget in seconds), innermost last.
+_deadlines: contextvars.ContextVar[tuple[tuple[float, float], ...]] = contextvars.ContextVar(
+    "physc.budget.deadlines", default=()
+)
+_current = _deadlines.get  # bound once: `check` runs every simulated step
 _interrupted = False
 _stopping_since: float | None = None  # when a KeyboardInterrupt of ours began its way up
 _polling = 0  # depth of interruptible() blocks
@@ -44,15 +56,17 @@ def check() -> None:
     """Stop here if Ctrl-C was pressed or the innermost deadline has passed."""
     if _interrupted:
         _raise_interrupt()
-    if _deadlines:
-        end, seconds = _deadlines[-1]
+    deadlines = _current()
+    if deadlines:
+        end, seconds = deadlines[-1]
         if time.monotonic() > end:
             raise OutOfTime(seconds)
 
 
 def remaining() -> float | None:
     """Seconds left before the innermost deadline (None: no deadline)."""
-    return _deadlines[-1][0] - time.monotonic() if _deadlines else None
+    deadlines = _deadlines.get()
+    return deadlines[-1][0] - time.monotonic() if deadlines else None
 
 
 class Deadline:
@@ -65,19 +79,20 @@ class Deadline:
 
 
 @contextlib.contextmanager
-def deadline(seconds: float | Deadline):
+def deadline(seconds: float | Deadline) -> Iterator[None]:
     """Work inside the block raises OutOfTime at its next `check()` after `seconds`, or at
     the end of a `Deadline` started before (or at an enclosing block's deadline, whichever
-    comes first)."""
+    comes first). The block's deadline is its context's (module docstring)."""
     started = seconds if isinstance(seconds, Deadline) else Deadline(seconds)
     end, seconds = started.end, started.seconds
-    if _deadlines and _deadlines[-1][0] < end:
-        end, seconds = _deadlines[-1]
-    _deadlines.append((end, seconds))
+    enclosing = _deadlines.get()
+    if enclosing and enclosing[-1][0] < end:
+        end, seconds = enclosing[-1]
+    token = _deadlines.set((*enclosing, (end, seconds)))
     try:
         yield
     finally:
-        _deadlines.pop()
+        _deadlines.reset(token)
 
 
 def _raise_interrupt() -> None:
@@ -116,7 +131,7 @@ def ignore_in_workers() -> None:
 
 
 @contextlib.contextmanager
-def interruptible():
+def interruptible() -> Iterator[None]:
     """Inside the block Ctrl-C is a request that the next `check()` honours (and the
     block's end, if no check came). In the main thread only; elsewhere a no-op."""
     global _polling
