@@ -7,7 +7,7 @@ import os
 import re
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol, cast
 
 from physc import diagnostics
 from physc.diagnostics import Diagnostic
@@ -67,6 +67,19 @@ def reporter(args):
             print(diagnostics.render(diagnostic, source, analysis_path, color=color), file=sys.stderr)
 
     return report
+
+
+class Aimed(Protocol):
+    """A task's solution as the commands describe it: every domain's solution (angrybirds' shots,
+    PHYRE's balls) names the point of interest it was aimed at."""
+
+    aimed_at: str
+
+
+def aimed_at(solution: object) -> str:
+    """What a task's solution was aimed at, in words (`Task.solution` is typed `object`: the
+    domain's own class, which is `Aimed`)."""
+    return cast(Aimed, solution).aimed_at
 
 
 def plural(n: int, word: str) -> str:
