@@ -113,15 +113,19 @@ class World:
         if tuple(values) == own:
             return self
         world = self
-        for point, value in zip(points, values):
+        for point, value in zip(points, values, strict=False):  # values may come from elsewhere: as many as both
             world = _set(world, point.setting, value)
-        changed = [point.describe(value) for point, value, mine in zip(points, values, own) if value != mine]
+        changed = [
+            point.describe(value) for point, value, mine in zip(points, values, own, strict=False) if value != mine
+        ]
         return attrs.evolve(
             world,
             name=f"{self.name}, {', '.join(changed)}",
             parent=self.name,
             reading="a reading of what the world's files leave open",
-            changed=tuple(point.setting for point, value, mine in zip(points, values, own) if value != mine),
+            changed=tuple(
+                point.setting for point, value, mine in zip(points, values, own, strict=False) if value != mine
+            ),
         )
 
     def readings(self) -> tuple[World, ...]:
@@ -141,7 +145,7 @@ class World:
         points = self.open_points()
         own = self.open_values()
         combos = itertools.product(
-            *(sorted(p.readings, key=lambda v, mine=mine: v != mine) for p, mine in zip(points, own))
+            *(sorted(p.readings, key=lambda v, mine=mine: v != mine) for p, mine in zip(points, own, strict=True))
         )
         return tuple(self.read_as(values) for values in combos)
 
