@@ -12,7 +12,7 @@ ask of a domain (physc.domains.base.Domain has it; the compiler does not import 
 from __future__ import annotations
 
 import random
-from typing import TYPE_CHECKING, ClassVar, Protocol, TypeVar
+from typing import TYPE_CHECKING, Protocol, TypeVar
 
 import attrs
 
@@ -48,7 +48,8 @@ class PassContext:
 class Pass(Protocol[In, Out]):
     """A compiler pass: anything with a name and this `run`."""
 
-    name: ClassVar[str]
+    @property
+    def name(self) -> str: ...  # the pass's name in diagnostics ("to-qsr")
 
     def run(self, ir: In, context: PassContext) -> Out: ...
 
