@@ -37,7 +37,7 @@ def candidate_shots(target: LevelObject, world) -> list[tuple[str, Shot]]:
     return out
 
 
-def agent_targets(level, excluded: str):
+def agent_targets(level, excluded: str | None):
     """What the paper's heuristic agent shoots at: every block, pig and TNT of the level
     except `excluded` (the solution's target)."""
     return [obj for obj in level.objects if obj.element in ("Block", "Pig", "TNT") and obj.name != excluded]

@@ -69,9 +69,8 @@ def concretize(graph: LayoutGraph, scenario: ScenarioIR, rng: random.Random, wor
             ramp = name in graph.ramps and incline.ramp is not None
             length = _length(rng, incline.ramp_length if ramp and incline.ramp_length else INCLINED_LENGTH)
             if name in headings:
-                angle = rng.uniform(*(incline.ramp if ramp else incline.descending)) * (
-                    -1 if headings[name] == "right" else 1
-                )
+                span = incline.ramp if ramp and incline.ramp is not None else incline.descending
+                angle = rng.uniform(*span) * (-1 if headings[name] == "right" else 1)
             else:
                 angle = rng.uniform(*world.incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, chosen, Geometry(length, PLATFORM_THICKNESS, round(angle, 2)))

@@ -45,7 +45,7 @@ class Flights:
         self.shots = shots
         self.birds: list[Bird] = [bird(prefabs[k] if k < len(prefabs) else "BirdRed") for k in range(len(shots))]
         self.names = [shot.bird for shot in shots]
-        self.extras = {
+        self.extras: dict[str, tuple[str, ...]] = {
             name: extra(name, b.power) if shots[k].tap is not None else ()
             for k, (name, b) in enumerate(zip(self.names, self.birds))
         }
@@ -129,8 +129,9 @@ class Flights:
         if name not in self.names or self.names.index(name) != self.next - 1 or self.ready_at is not None:
             return
         self.ready_at = time
-        if self.waiting() and self.shots[self.next].wait is not None:
-            self.due_at = time + self.shots[self.next].wait
+        wait = self.shots[self.next].wait if self.waiting() else None
+        if wait is not None:
+            self.due_at = time + wait
 
     # ---- contacts and checks ---------------------------------------------------------------
     def on_contact(self, a: str, b: str, time: float) -> None:
@@ -176,9 +177,10 @@ class Flights:
         out = []
         for name in list(self.flying):
             k = self.names.index(name) if name in self.names else None
-            if k is None or self.shots[k].tap is None or name in self.tried:
+            tap = self.shots[k].tap if k is not None else None
+            if tap is None or name in self.tried:
                 continue
-            if time >= self.launched[name] + self.shots[k].tap - 1e-9:
+            if time >= self.launched[name] + tap - 1e-9:
                 out.append(name)
         return out
 

@@ -101,6 +101,7 @@ class Shot:
         """The release angle in degrees in `world` (physc.domains.angrybirds.worlds)."""
         if self.angle is not None:
             return self.angle
+        assert self.target is not None, "a shot has a target point or a release angle"
         x, y = self.target
         angle = world.launch.aim(x, y, self.trajectory, world.gravity)
         if angle is None:
@@ -112,6 +113,7 @@ class Shot:
         flight above the same x as this shot's target, on the trajectory (low or high) whose aim
         at that point is this angle again (a shot turned far enough passes the point on the
         other branch); None when no point names it (the flight never gets there)."""
+        assert self.target is not None, "a shot turned to another angle is named by its target's x"
         x = self.target[0]
         origin = world.launch.point(angle)
         speed, gravity = world.launch.speed, world.gravity
@@ -141,11 +143,12 @@ class Shot:
         return self.start(world)[1]
 
     def text(self) -> str:
-        aim = (
-            f"angle {self.angle:g}°"
-            if self.angle is not None
-            else f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
-        )
+        if self.angle is not None:
+            aim = f"angle {self.angle:g}°"
+        else:
+            assert self.target is not None, "a shot has a target point or a release angle"
+            aim = f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
+
         return aim + ("" if self.tap is None else f", tap at {self.tap:g} s")
 
     @property

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 import re
+from typing import Literal, overload
 
 from physc.diagnostics import SourceText
 from physc.domains.angrybirds.catalogue import BIRD_PREFABS, BY_PREFAB, MATERIALS
@@ -100,6 +101,12 @@ class Source:
         return LevelError(code, message, *self.position(element, attribute), help=help)
 
     # ---- values ----------------------------------------------------------------------
+    @overload
+    def number(self, element, attribute: str, required: Literal[True] = True) -> float: ...
+
+    @overload
+    def number(self, element, attribute: str, required: bool) -> float | None: ...
+
     def number(self, element, attribute: str, required: bool = True) -> float | None:
         """The finite number of an attribute (None when it is absent and not required)."""
         text = element.get(attribute)
@@ -120,6 +127,14 @@ class Source:
                 "E0902", f'<{element.tag}> {attribute}="{_short(text)}" is not a finite number', element, attribute
             )
         return value
+
+    @overload
+    def bounded(
+        self, element, attribute: str, low: float, high: float, what: str, required: Literal[True] = True
+    ) -> float: ...
+
+    @overload
+    def bounded(self, element, attribute: str, low: float, high: float, what: str, required: bool) -> float | None: ...
 
     def bounded(
         self, element, attribute: str, low: float, high: float, what: str, required: bool = True

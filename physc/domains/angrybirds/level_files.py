@@ -67,7 +67,9 @@ class ScienceBirdsFiles(LevelFiles):
         if isinstance(task, ConcreteLayout):
             return render(task, fmt, self.domain.world)
         level, solution = task.level, task.solution
-        assert isinstance(level, Level) and isinstance(solution, Solution | ShotsSolution | BirdShot)  # a Science Birds task
+        assert isinstance(level, Level) and isinstance(
+            solution, Solution | ShotsSolution | BirdShot
+        )  # a Science Birds task
         trace = self.domain.game(level).simulate(
             self.domain.actions.action_of(solution), self.domain.seconds, settle_after_solved=0.5
         )

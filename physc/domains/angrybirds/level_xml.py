@@ -22,8 +22,8 @@ import re
 from importlib import resources
 from typing import TYPE_CHECKING
 
+import lxml.etree as etree
 import numpy as np
-from lxml import etree
 
 from physc.domains.angrybirds.catalogue import BY_PREFAB
 from physc.domains.angrybirds.level import ELEMENTS, Camera, Level, LevelObject

@@ -18,7 +18,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import patches  # noqa: E402
 
 from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
-from physc.domains.angrybirds.catalogue import by_prefab, extent  # noqa: E402
+from physc.domains.angrybirds.catalogue import BY_PREFAB, extent  # noqa: E402
 from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
 from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
 from physc.picture import save  # noqa: E402,F401  (angrybirds' pictures are saved as every domain's)
@@ -29,7 +29,7 @@ KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt
 
 def _outline(obj: LevelObject):
     """The patch of a level object, from its catalogue shape."""
-    catalogue = by_prefab(obj.type)
+    catalogue = BY_PREFAB[obj.type]
     angle = math.radians(obj.rotation or 0.0)
     cos, sin = math.cos(angle), math.sin(angle)
     if catalogue.kind == "platform":
@@ -74,11 +74,11 @@ def draw_level(
             )
         )
     for obj in level.objects:
-        kind = by_prefab(obj.type).kind
+        kind = BY_PREFAB[obj.type].kind
         if kind == "platform":
             colour = "#b5b5b5" if obj.name in supports else KIND_COLOURS["platform"]
         elif kind == "block":
-            colour = MATERIAL_COLOURS.get(obj.material, "#c8914b")
+            colour = MATERIAL_COLOURS.get(obj.material or "", "#c8914b")
         else:
             colour = KIND_COLOURS[kind]
         artist = _outline(obj)

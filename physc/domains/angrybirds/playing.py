@@ -109,13 +109,16 @@ class AngryBirdsPlaying(Playing):
     def _rendered(domain, level, bird, top: float | None = None) -> np.ndarray:
         """picture.py's drawing of the level as an RGB array of PICTURE's shape."""
         import matplotlib.pyplot as plt
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
 
         from physc.domains.angrybirds.picture import draw_level
 
         figure = draw_level(level, domain.world, bird=bird, top=top)
         try:
-            figure.canvas.draw()
-            image = np.asarray(figure.canvas.buffer_rgba())[..., :3].copy()
+            canvas = figure.canvas
+            assert isinstance(canvas, FigureCanvasAgg), canvas  # picture.py draws with Agg
+            canvas.draw()
+            image = np.asarray(canvas.buffer_rgba())[..., :3].copy()
         finally:
             plt.close(figure)
         return image

@@ -174,12 +174,13 @@ def light_chain_materials(scenario: ScenarioIR, materials: dict[str, str | None]
         if term.name != "hit":
             continue
         hitter, target = term.objects
-        if materials.get(target) is None:
+        own, hitting = materials.get(target), materials.get(hitter)
+        if own is None:
             continue
         if hitter in player:
-            if target in movers and materials[target] == "stone":
+            if target in movers and own == "stone":
                 materials[target] = "wood"
-        elif materials.get(hitter) is not None and target in movers and hitter in rolled:
+        elif hitting is not None and target in movers and hitter in rolled:
             materials[target] = "ice"
-        elif materials.get(hitter) is not None and DENSITY[materials[target]] > DENSITY[materials[hitter]]:
-            materials[target] = materials[hitter]
+        elif hitting is not None and DENSITY[own] > DENSITY[hitting]:
+            materials[target] = hitting

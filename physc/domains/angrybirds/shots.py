@@ -193,6 +193,7 @@ def where_left(level, trace):
 def tap_time(shot: Shot, world, share: float) -> float:
     """When the bird of `shot` is `share` of the way (in x) to its target, in whole milliseconds."""
     (x, _), (vx, _) = shot.start(world)
+    assert shot.target is not None, "a candidate shot is aimed at a point"
     return round(max(share * (shot.target[0] - x) / vx, 0.001), 3) if vx > 0 else 0.001
 
 
@@ -228,11 +229,15 @@ def nudged(action, world, step: int, degrees: float):
 def solution(label: str, action, world):
     """The task's record of `action` (module docstring)."""
     if simple(action):
+        if action.target is None:  # as Solution's own check says of a shot without a target
+            raise ValueError("the solution's target and release angle must be finite numbers")
         return Solution(label, action.target, action.trajectory, round(action.release_angle(world), 5))
     labels = label.split("; ")
     parts = []
     for k, shot in enumerate(shots_of(action)):
         aimed = labels[k].split(": ", 1)[-1] if k < len(labels) else label
+        if shot.target is None:  # as BirdShot's own check says of a shot without a target
+            raise ValueError("a shot's target, release angle, tap and wait must be finite numbers")
         parts.append(
             BirdShot(
                 shot.bird, aimed, shot.target, shot.trajectory, round(shot.release_angle(world), 5), shot.tap, shot.wait
@@ -253,7 +258,7 @@ def action_of(solution, noise=None):
         shots = []
         for s in solution.shots:
             if noise is None:
-                shots.append(Shot(target=tuple(s.target), trajectory=s.trajectory, tap=s.tap, bird=s.bird, wait=s.wait))
+                shots.append(Shot(target=s.target, trajectory=s.trajectory, tap=s.tap, bird=s.bird, wait=s.wait))
             else:
                 shots.append(
                     Shot(angle=s.release_angle + noise[0].gauss(0.0, noise[1]), tap=s.tap, bird=s.bird, wait=s.wait)
@@ -321,6 +326,7 @@ def contrasted(domain, level, action, counterpart: str, contrast: str):
         return None
     k = min(near)[1]
     shot = shots[k]
+    assert shot.target is not None  # `near` holds only shots aimed at a point
     point = (round(b.x + (shot.target[0] - a.x) * bw / aw, 5), round(b.y + (shot.target[1] - a.y) * bh / ah, 5))
     other = "high" if shot.trajectory == "low" else "low"
     for trajectory in (shot.trajectory, other):

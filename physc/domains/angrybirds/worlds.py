@@ -163,9 +163,11 @@ def catalogue_model(colliders: str) -> ScienceBirdsWorld:
     density × area), for the benchmarks that compare them with the game's own ("game": PHYQ)."""
     if colliders == "game":
         return PHYQ
-    return PHYQ.derive(
+    model = PHYQ.derive(
         f"phyq-{colliders}",
         f"Phy-Q's game with physc's '{colliders}' catalogue bodies",
         "physc's catalogue model (benchmarks only)",
         bodies=attrs.evolve(PHYQ.bodies, colliders=colliders),
     )
+    assert isinstance(model, ScienceBirdsWorld)  # a variant keeps its parent's class (attrs.evolve)
+    return model
