@@ -13,6 +13,8 @@ comment goes on its own lines before the next node. Formatting is idempotent.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import attrs
 
 from physc.diagnostics import SourceText, Span
@@ -82,22 +84,22 @@ def _scenario_lines(scenario: ast.Scenario) -> list[_Line]:
     return lines
 
 
-def _attach(lines: list[_Line], comments) -> list[ast.Comment]:
+def _attach(lines: list[_Line], comments: Iterable[ast.Comment]) -> list[ast.Comment]:
     """Attach each comment to a line (trailing or leading); return those after the last node."""
-    anchored = sorted((line for line in lines if line.anchor is not None), key=lambda l: l.anchor.start)
-    ends_on: dict[int, _Line] = {}
-    for line in anchored:  # the last node that ends on a source line owns its end-of-line comment
-        ends_on[line.anchor.end_line] = line
+    anchored = sorted(((line.anchor, line) for line in lines if line.anchor is not None), key=lambda a: a[0].start)
+    ends_on: dict[int, tuple[Span, _Line]] = {}
+    for anchor, line in anchored:  # the last node that ends on a source line owns its end-of-line comment
+        ends_on[anchor.end_line] = (anchor, line)
     tail: list[ast.Comment] = []
     cursor = 0
     for comment in sorted(comments, key=lambda c: c.span.start):
         owner = ends_on.get(comment.span.line)
-        if owner is not None and owner.anchor.end <= comment.span.start:
-            owner.trailing.append(comment)
+        if owner is not None and owner[0].end <= comment.span.start:
+            owner[1].trailing.append(comment)
             continue
-        while cursor < len(anchored) and anchored[cursor].anchor.start < comment.span.start:
+        while cursor < len(anchored) and anchored[cursor][0].start < comment.span.start:
             cursor += 1
-        (anchored[cursor].leading if cursor < len(anchored) else tail).append(comment)
+        (anchored[cursor][1].leading if cursor < len(anchored) else tail).append(comment)
     return tail
 
 
@@ -109,8 +111,13 @@ def _gap(source: SourceText | None, after_line: int, before_line: int) -> bool:
 
 
 def _render_comments(
-    out: list[str], comments: list[ast.Comment], indent: str, source, next_line: int | None, keep_gaps: bool
-):
+    out: list[str],
+    comments: list[ast.Comment],
+    indent: str,
+    source: SourceText | None,
+    next_line: int | None,
+    keep_gaps: bool,
+) -> None:
     for index, comment in enumerate(comments):
         out.append(indent + comment.text)
         following = comments[index + 1].span.line if index + 1 < len(comments) else next_line
@@ -134,6 +141,7 @@ def format_file(file: ast.File, source: SourceText | None = None) -> str:
                 # Comments before a closing brace are inside the block it closes.
                 inner = INDENT * (line.depth + 1) if line.text == "}" else indent
                 top = line.depth == 0 and line.text != "}"
+                assert line.anchor is not None  # comments are attached to the lines of source nodes only
                 _render_comments(out, line.leading, inner, source, line.anchor.line, keep_gaps=top)
             text = indent + line.text
             if line.trailing:

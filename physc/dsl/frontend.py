@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import attrs
 
 from physc.diagnostics import Diagnostic, SourceText, sort_key
 from physc.dsl import ast
 from physc.dsl.check import check_file
+from physc.dsl.fmt import format_file
 from physc.dsl.parser import parse_source, read_source
 from physc.dsl.scenario import ScenarioIR
 from physc.dsl.vocabularies import Vocabularies
@@ -60,22 +63,21 @@ def _analyzed(path: str, source: SourceText, check: bool, vocabularies: Vocabula
 
 
 def analyze_files(
-    paths, vocabularies: Vocabularies
+    paths: Iterable[str], vocabularies: Vocabularies
 ) -> tuple[list[tuple[str, ScenarioIR, str]], list[tuple[str, Analysis, list[Diagnostic]]]]:
     """The checked scenarios of several files, each with its file's path and its own text in
     block form (what a worker on another machine is sent), in order; and, for each file with
     errors, (path, its analysis, its errors): a batch command (eval, generate) reports those and
     runs nothing."""
-    from physc.dsl import ast
-    from physc.dsl.fmt import format_file
-
-    scenarios, problems = [], []
+    scenarios: list[tuple[str, ScenarioIR, str]] = []
+    problems: list[tuple[str, Analysis, list[Diagnostic]]] = []
     for path in paths:
         analysis = analyze(path, vocabularies)
         errors = [d for d in analysis.diagnostics if d.is_error]
         if errors:
             problems.append((path, analysis, errors))
             continue
+        assert analysis.file is not None  # a file without errors was read and parsed
         written = {s.name.text: format_file(ast.File((s,))) for s in analysis.file.scenarios}
         scenarios += [(path, scenario, written[scenario.name]) for scenario in analysis.scenarios]
     return scenarios, problems

@@ -13,7 +13,9 @@ Keywords: a string terminal that the NAME pattern also matches (`scenario`,
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
+from lark.common import LexerConf
 from lark.exceptions import UnexpectedCharacters
 from lark.lexer import Lexer, PatternStr, Token
 
@@ -21,9 +23,9 @@ _new_token = Token._future_new
 
 
 class FastLexer(Lexer):
-    __future_interface__ = 0  # lex(self, text)
+    __future_interface__ = 0  # lark calls lex(self, text), not the base class's lex(lexer_state, parser_state)
 
-    def __init__(self, lexer_conf):
+    def __init__(self, lexer_conf: LexerConf):
         terminals = lexer_conf.terminals
         self.ignore = frozenset(lexer_conf.ignore)
         name_terminal = next(t for t in terminals if t.name == "NAME")
@@ -45,7 +47,7 @@ class FastLexer(Lexer):
         self.scanner = re.compile(alternation)
         self.terminal_names = frozenset(t.name for t in terminals) - self.ignore
 
-    def lex(self, text):
+    def lex(self, text: str) -> Iterator[Token]:  # pyright: ignore[reportIncompatibleMethodOverride]  # interface 0
         match = self.scanner.match
         ignore, keywords = self.ignore, self.keywords
         position, end = 0, len(text)

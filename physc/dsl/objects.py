@@ -2,8 +2,8 @@
 is inferred, and whether an object fits the parameter it is given to.
 
 A part of the scenario checker (physc/dsl/check.py) on its state (check_state.ScenarioState); the
-sequence's checks (`SequenceChecks`) build on it. The help texts that need every use of an object (E0203's declaration, E0301's renames) are written by `explain` once the
-whole scenario is resolved.
+sequence's checks (`SequenceChecks`) build on it. The help texts that need every use of an object
+(E0203's declaration, E0301's renames) are written by `explain` once the whole scenario is resolved.
 """
 
 from __future__ import annotations

@@ -53,7 +53,8 @@ def phys_lexer(vocabularies) -> type[RegexLexer]:
         filenames = ["*.phys"]
         mimetypes = ["text/x-phys"]
 
-        def analyse_text(text):
+        @staticmethod
+        def analyse_text(text: str) -> float:
             """How sure it is that `text` is a .phys file (Pygments' guess_lexer asks every lexer)."""
             if _SCENARIO.search(text):
                 return 0.9 if ("interactions" in text or "restrictions" in text) else 0.6
