@@ -22,11 +22,16 @@ __all__ = ["check", "compile", "scenarios"]
 
 # What would help when a budget ran out (Infeasible.budget names it).
 BUDGET_HELP = {
-    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --clause-budget or another --seed, or simplify the scenario",
-    Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try another --seed",
-    Exhausted.TIME: "the time ran out before every layout allowed was tried: more time may help (--time-budget), or another --seed",
-    Exhausted.ALLOWED: "every layout the scenario's constraints allow was tried: more time or layouts cannot help; another --seed draws other shapes, or change the scenario (or the world, where one is named above)",
-    Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the scenario",
+    Exhausted.CLAUSES: "the layout search's clause choices ran out: try a larger --clause-budget or another --seed, or"
+    " simplify the scenario",
+    Exhausted.LAYOUTS: "every layout allowed was tried: allow more with --layouts (and a larger --time-budget), or try"
+    " another --seed",
+    Exhausted.TIME: "the time ran out before every layout allowed was tried: more time may help (--time-budget), or"
+    " another --seed",
+    Exhausted.ALLOWED: "every layout the scenario's constraints allow was tried: more time or layouts cannot help;"
+    " another --seed draws other shapes, or change the scenario (or the world, where one is named above)",
+    Exhausted.PLACEMENTS: "no placement of the consistent conjunctions worked: try another --seed, or simplify the"
+    " scenario",
     Exhausted.SIZE: "split the chain into shorter scenarios; the earlier stages (--emit layout-graph, qsr) still work",
     Exhausted.VERSION: "physc check warns of it (W0302); the earlier stages (--emit layout-graph, qsr) still work",
 }
@@ -84,7 +89,9 @@ def selected(source: str | os.PathLike, scenario: str | None):
             (), analysis.source, analysis.path, f"{analysis.path} has no scenario named '{name}'; {hint}"
         )
     ast_node = next(s for s in analysis.file.scenarios if s.name.text == name)
-    own = [d for d in analysis.diagnostics if d.span is None or ast_node.span.start <= d.span.start < ast_node.span.end]
+    where = ast_node.span
+    assert where is not None, "a parsed scenario has its span"
+    own = [d for d in analysis.diagnostics if d.span is None or where.start <= d.span.start < where.end]
     if any(d.is_error for d in own):
         raise ScenarioError(tuple(own), analysis.source, analysis.path)
     ir = next(s for s in analysis.scenarios if s.name == name)
@@ -97,7 +104,8 @@ def check_min_robustness(value: int | None, domain, name: str = "min_robustness"
     replays = domain.robustness_replays
     if value is not None and replays is not None and not 1 <= value <= replays:
         raise ValueError(
-            f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'), not {value}"
+            f"{name} takes a whole number from 1 to {replays} (the noisy replays of domain '{domain.name}'),"
+            f" not {value}"
         )
 
 
@@ -122,14 +130,15 @@ def no_task(error: Infeasible, scenario_ast) -> Diagnostic:
             else:
                 notes.append(Label(scenario_ast.name.span, f"{edge.text()} comes from the {why.rule} rule: {why.text}"))
     codes = {Exhausted.SIZE: "E0803", Exhausted.VERSION: "E0804"}
-    code = codes.get(error.budget, "E0802" if error.budget else "E0801")
+    code = "E0801" if error.budget is None else codes.get(error.budget, "E0802")
     tried = (
         f"; {readable(error.tried)} conjunctions tried" if error.tried and "conjunctions" not in error.message else ""
     )
     if error.conflicts:
         help_text = "these layout constraints cannot all hold: change or remove one of the terms they come from"
     else:
-        help_text = BUDGET_HELP.get(error.budget, "try another --seed, or simplify the scenario")
+        fallback = "try another --seed, or simplify the scenario"
+        help_text = fallback if error.budget is None else BUDGET_HELP.get(error.budget, fallback)
     return Diagnostic(
         code,
         f"no task for scenario '{scenario_ast.name.text}': {error.message} (stage {error.stage}{tried})",

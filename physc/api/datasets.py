@@ -10,14 +10,18 @@ records and summary.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, TypedDict
 
 import attrs
 
 from physc.api.errors import FileError, ScenarioError
 from physc.compiler.task import Task
 from physc.driver.run_settings import RunSettings, overridden
+
+if TYPE_CHECKING:
+    from physc.driver.job import Job
 
 __all__ = ["Dataset", "Evaluation", "evaluate", "generate", "load_dataset"]
 
@@ -67,41 +71,41 @@ def load_dataset(folder: str | os.PathLike) -> Dataset:
 
 
 def _jobs(
-    files: Sequence[str | os.PathLike],
+    files: str | os.PathLike | Sequence[str | os.PathLike],
     tasks: int,
     seed: int,
     scenarios: Sequence[str] | None,
     needs: tuple[str, ...],
-    **settings,
-):
-    """The jobs of `files` (ScenarioError for files with errors, or a scenario not there;
-    physc.domains.base.MissingCapability for a domain that lacks a hook in `needs`)."""
+    settings: RunSettings,
+    **fields: object,
+) -> list[Job]:
+    """The jobs of `files` made under the run's `settings`, with the jobs' other `fields`
+    (physc.driver.job.Job: where they are made, what else they do); ScenarioError for files with
+    errors, or a scenario not there; physc.domains.base.MissingCapability for a domain that
+    lacks a hook in `needs`, ValueError for a `min_robustness` the domain cannot count."""
     from physc.api.compiling import check_min_robustness
     from physc.domains import load_domain
     from physc.domains.base import require
     from physc.driver.job import jobs_for
 
-    if isinstance(files, (str, os.PathLike)):
-        files = [files]
-    jobs, problems = jobs_for([os.fspath(f) for f in files], tasks, seed, **settings)
+    paths = [os.fspath(f) for f in ([files] if isinstance(files, (str, os.PathLike)) else files)]
+    jobs, problems = jobs_for(paths, tasks, seed, settings=settings, **fields)
     if problems:
         path, analysis, found = problems[0]
         raise ScenarioError(tuple(found), analysis.source if analysis else None, path)
     if scenarios:
         missing = sorted(set(scenarios) - {job.scenario for job in jobs})
         if missing:
-            raise ScenarioError(
-                (), None, ", ".join(map(os.fspath, files)), f"no scenario named {', '.join(missing)} in the files"
-            )
+            raise ScenarioError((), None, ", ".join(paths), f"no scenario named {', '.join(missing)} in the files")
         jobs = [job for job in jobs if job.scenario in scenarios]
     for name in sorted({job.domain for job in jobs}):
         domain = load_domain(name)
         require(domain, needs, "this run")
-        check_min_robustness(settings.get("min_robustness"), domain)
+        check_min_robustness(settings.min_robustness, domain)
     return jobs
 
 
-def clashes(jobs) -> str | None:
+def clashes(jobs: Iterable[Job]) -> str | None:
     """What stops the jobs from making one dataset, in words, or None: a dataset names its
     folders after scenarios, so two files may not have a scenario of one name."""
     files_of: dict[str, set] = {}
@@ -111,15 +115,26 @@ def clashes(jobs) -> str | None:
     if not both:
         return None
     where = ", ".join(f"'{name}' ({' and '.join(sorted(files_of[name]))})" for name in both)
-    return f"a dataset names its folders after scenarios, and two files have a scenario named {where}; pick one with -s or rename"
+    return (
+        f"a dataset names its folders after scenarios, and two files have a scenario named {where};"
+        " pick one with -s or rename"
+    )
 
 
-def job_settings(world, backend, settings: RunSettings) -> dict:
+class JobSettings(TypedDict):
+    """The fields of a job (physc.driver.job.Job) that generation's options set."""
+
+    world: str
+    backend: str
+    settings: RunSettings
+
+
+def job_settings(world: str | None, backend: str | None, settings: RunSettings) -> JobSettings:
     """The fields of a job (physc.driver.job.Job) that generation's options set: where it
     is made (None: the default world, box2d) and the run's settings."""
     from physc.backends import DEFAULT_BACKEND
 
-    return dict(world=world or "", backend=backend or DEFAULT_BACKEND, settings=settings)
+    return JobSettings(world=world or "", backend=backend or DEFAULT_BACKEND, settings=settings)
 
 
 def generation_needs(png: bool, verify_backend: str | None) -> tuple[str, ...]:
@@ -217,9 +232,8 @@ def evaluate(
     from physc.evaluation.run import run
     from physc.execution import executor_for
 
-    settings = attrs.evolve(
-        overridden(settings, "evaluate", **overrides), validate=False
-    )  # the paper's evaluation skips it
+    # the paper's evaluation skips the final validation
+    settings = attrs.evolve(overridden(settings, "evaluate", **overrides), validate=False)
     made = _jobs(files, tasks, seed, scenarios, evaluation_needs(), **job_settings(world, backend, settings))
     started = time.perf_counter()
     with executor_for(jobs, scheduler, dask_workers) as executor:

@@ -15,6 +15,8 @@ import random
 from physc.api.errors import FileError
 from physc.api.tasks import domain_of, scenario_of
 from physc.compiler.task import Task
+from physc.domains.base import Domain
+from physc.domains.simulated import SimulatedDomain
 from physc.simulation.ending import Ending
 
 __all__ = ["read_level", "render", "simulate", "verify"]
@@ -58,7 +60,8 @@ def simulate(
     `level` is a Task (its level, played in the world and engine it was made in, judged
     against its scenario's restrictions) or a domain's level (`read_level`; `domain` names
     its domain, angrybirds by default, or is the domain itself, bound to a world and engine;
-    named, it plays in the world the level names, if it names one, unless `world` says otherwise). `action` is the domain's action (angrybirds:
+    named, it plays in the world the level names, if it names one, unless `world` says
+    otherwise). `action` is the domain's action (angrybirds:
     `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
     a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
     `random.Random`, plays it under the domain's noise model (angrybirds: objects and
@@ -66,12 +69,12 @@ def simulate(
     scenario (physc.check's), judges a level's play against its restrictions (a Task's is its own)."""
     if isinstance(level, Task):
         scenario = scenario_of(level)
-        played = domain_of(level, world, backend)
+        played = _playable(domain_of(level, world, backend))
         level = level.level
     else:
-        played = bound_domain(domain, world, backend)
+        played = _playable(bound_domain(domain, world, backend))
         if world is None and (domain is None or isinstance(domain, str)) and played.files.level_world(level):
-            played = played.at(played.files.level_world(level))  # the world the level names
+            played = _playable(played.at(played.files.level_world(level)))  # the world the level names
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
         action = played.actions.action_of(action)
     if noise is not None:
@@ -80,13 +83,20 @@ def simulate(
     return play_to_rest(played, level, action, scenario, seconds)
 
 
-def play_to_rest(domain, level, action, scenario=None, seconds: float | None = None):
+def _playable(domain: Domain) -> SimulatedDomain:
+    """`domain` as one that plays levels: every domain that simulates is a SimulatedDomain
+    (physc.domains.simulated), the base of angrybirds, PHYRE's and the stand-ins."""
+    assert isinstance(domain, SimulatedDomain), f"the domain '{domain.name}' plays no levels"
+    return domain
+
+
+def play_to_rest(domain: SimulatedDomain, level, action, scenario=None, seconds: float | None = None):
     """`domain.play` of the level with the action, judged against `scenario`, until everything
     rests as the target world plays it (`Ending.WHOLE`), within `seconds` (default: the domain's)."""
     return domain.play(level, action, scenario, seconds or domain.seconds, ending=Ending.WHOLE)
 
 
-def bound_domain(domain=None, world: str | None = None, backend: str | None = None):
+def bound_domain(domain: str | Domain | None = None, world: str | None = None, backend: str | None = None) -> Domain:
     """A domain in `world` with `backend`: `domain` a name (default angrybirds) or a Domain
     (physc.domains.base.Domain) already bound, kept as it is where `world` and `backend` are None."""
     from physc.domains import bound, load_domain

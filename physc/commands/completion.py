@@ -33,7 +33,8 @@ def add_command(commands, common) -> None:
         "completion",
         parents=[common],
         help="print the shell completion script (bash, zsh, tcsh, fish, powershell)",
-        description="Print physc's completion script for SHELL. bash: `physc completion bash > ~/.local/share/bash-completion/completions/physc`; "
+        description="Print physc's completion script for SHELL. bash: `physc completion bash >"
+        " ~/.local/share/bash-completion/completions/physc`; "
         "zsh: `physc completion zsh > ~/.zfunc/_physc` (with ~/.zfunc in $fpath).",
     )
     parser.add_argument("shell", choices=SHELLS, metavar="SHELL", help=f"one of {', '.join(SHELLS)}")

@@ -51,7 +51,8 @@ def _describe_domain(domain) -> str:
     materials = vocabulary.materials(every=False)
     if materials:
         lines.append(
-            f"  materials: {', '.join(materials)} (a declaration may name them: `name: term({' | '.join(materials[:2])})`)"
+            f"  materials: {', '.join(materials)}"
+            f" (a declaration may name them: `name: term({' | '.join(materials[:2])})`)"
         )
     aliases = "; ".join(f"{a} = {' | '.join(v)}" for a, v in vocabulary.direction_aliases.items())
     lines.append(f"  directions: {', '.join(vocabulary.directions)}" + (f" ({aliases})" if aliases else ""))

@@ -49,7 +49,8 @@ def cmd_agent(args) -> int:
         domain = load_domain(domains[0])
         if "score_agent" not in domain.capabilities:
             raise UsageError(
-                f"the domain '{domain.name}' scores no agent (it has no score_agent); the PHYRE-like plugin's datasets can be scored"
+                f"the domain '{domain.name}' scores no agent (it has no score_agent);"
+                " the PHYRE-like plugin's datasets can be scored"
             )
     except DomainError as error:
         raise UsageError(f"{folder}: {error.message}") from None
@@ -77,7 +78,8 @@ def cmd_agent(args) -> int:
         print_json(record)
     elif not args.quiet:
         print(
-            f"{args.agent}: AUCCESS {scored['auccess']} on the {args.split} split of {args.setup}, folds 0-{args.folds - 1}; {out / 'agent.json'}",
+            f"{args.agent}: AUCCESS {scored['auccess']} on the {args.split} split of {args.setup},"
+            f" folds 0-{args.folds - 1}; {out / 'agent.json'}",
             file=sys.stderr,
         )
     return EXIT_OK
@@ -145,13 +147,15 @@ def add_command(commands, common) -> None:
     agent.add_argument(
         "--agent",
         metavar="MODULE:NAME",
-        help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first (physc_phyre.agents:random_agent)",
+        help="a Python callable: a task's observation in, actions in [0, 1]^3 out, best first"
+        " (physc_phyre.agents:random_agent)",
     )
     agent.add_argument(
         "--setup",
         default="ball_cross_template",
         metavar="NAME",
-        help="PHYRE's evaluation setup, as the dataset's phyre/folds.json names them (ball_cross_template, ball_within_template, two_balls_…; default ball_cross_template)",
+        help="PHYRE's evaluation setup, as the dataset's phyre/folds.json names them (ball_cross_template,"
+        " ball_within_template, two_balls_…; default ball_cross_template)",
     )
     agent.add_argument(
         "--folds",

@@ -30,6 +30,7 @@ def cmd_fmt(args) -> int:
             report(path, analysis.source, analysis.diagnostics)
             status = max(status, diagnostics.exit_status(analysis.diagnostics))
             continue
+        assert analysis.source is not None, "a parsed file was read"
         formatted = format_file(analysis.file, analysis.source)
         canonical = formatted == analysis.source.text
         printing = not (args.check or args.write)

@@ -17,7 +17,8 @@ def cmd_lsp(args) -> int:
         from physc.lsp.server import serve
     except ImportError as error:
         raise UsageError(
-            f"the language server needs the 'lsp' extra ({error.name} is missing): pip install -e '.[lsp]' in physc's checkout"
+            f"the language server needs the 'lsp' extra ({error.name} is missing):"
+            " pip install -e '.[lsp]' in physc's checkout"
         ) from error
     if args.log_file:
         try:

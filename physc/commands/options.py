@@ -8,9 +8,14 @@ to the same, in every command.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from physc.backends import DEFAULT_BACKEND
 from physc.commands import arguments
-from physc.driver.run_settings import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET
+from physc.driver.run_settings import CLAUSE_BUDGET, LAYOUT_BUDGET, MIN_ROBUSTNESS, TIME_BUDGET, RunSettings
+
+if TYPE_CHECKING:
+    from physc.api.datasets import JobSettings
 
 
 def add_target(parser, verify: bool = True, replay: bool = False) -> None:
@@ -82,7 +87,8 @@ def add_generation(parser, validate: bool = True) -> None:
         type=arguments.count,
         default=CLAUSE_BUDGET,
         metavar="N",
-        help=f"clause choices the layout search may try per shape draw (default {CLAUSE_BUDGET}; --budget is its old name)",
+        help=f"clause choices the layout search may try per shape draw (default {CLAUSE_BUDGET};"
+        " --budget is its old name)",
     )
     if validate:
         parser.add_argument(
@@ -90,12 +96,10 @@ def add_generation(parser, validate: bool = True) -> None:
         )
 
 
-def run_settings(args, validate: bool | None = None):
+def run_settings(args, validate: bool | None = None) -> RunSettings:
     """The run's settings (physc.driver.run_settings.RunSettings) that `add_generation` and
     `add_target` parsed, under the options' own names; `validate` where the command decides it
     (eval: never, as the paper's evaluation)."""
-    from physc.driver.run_settings import RunSettings
-
     return RunSettings(
         time_budget=args.time_budget,
         layouts=args.layouts,
@@ -107,7 +111,7 @@ def run_settings(args, validate: bool | None = None):
     )
 
 
-def generation_settings(args, validate: bool | None = None) -> dict:
+def generation_settings(args, validate: bool | None = None) -> JobSettings:
     """The fields of a job (physc.driver.job.Job) that `add_generation` and `add_target` set:
     the world, the engine and the run's settings."""
     from physc.api.datasets import job_settings

@@ -12,6 +12,10 @@ paths of the objects that moved.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Protocol
+
+import attrs
+
 from physc import budget
 from physc.commands import arguments
 from physc.commands.common import EXIT_OK, UsageError, add_format, plural, print_json, reporter
@@ -19,10 +23,42 @@ from physc.commands.options import add_target
 from physc.diagnostics import Diagnostic, SourceText, safe
 from physc.files import check_output, read_input, write_atomic
 
+if TYPE_CHECKING:
+    from physc.domains.angrybirds import AngryBirds
+    from physc.domains.angrybirds.level import Level
+    from physc.domains.base import Domain
+    from physc.simulation.trace import Trace
+
 LEVEL_DOMAIN = "angrybirds"  # the domain whose level files these commands play
 
 
-def _domain(args, level=None):
+class Action(Protocol):
+    """A Science Birds action as these commands show it: a shot, or several (launch.Shot, Shots)."""
+
+    def text(self) -> str: ...
+
+
+@attrs.frozen
+class Played:
+    """A level file played (`_play`): in the domain bound to its world and engine, with the shot
+    (None: none) and what happened."""
+
+    domain: AngryBirds
+    level: Level
+    shot: Action | None
+    trace: Trace
+
+
+def _birds(domain: Domain) -> AngryBirds:
+    """The Science Birds domain as the class these commands play its levels with (what
+    LEVEL_DOMAIN loads, wherever it is bound)."""
+    from physc.domains.angrybirds import AngryBirds
+
+    assert isinstance(domain, AngryBirds), f"the domain '{LEVEL_DOMAIN}' is Science Birds'"
+    return domain
+
+
+def _domain(args, level=None) -> AngryBirds:
     """The Science Birds domain in the world and engine the level is played in: --world and
     --backend where given, else the task file's (--task), else the world the level names
     (`level`, read already), else the defaults."""
@@ -50,17 +86,18 @@ def _domain(args, level=None):
     return _noted(replaying(domain, recorded, args, args.command), named, args)
 
 
-def _noted(bound, named: str | None, args):
+def _noted(bound: Domain, named: str | None, args) -> AngryBirds:
     """`bound`, after a note on stderr when the level names another world than the one it is
     played in (its solution, if it has one, was found there)."""
     import sys
 
     if named and named != bound.world.name:
         print(
-            f"physc {args.command}: note: the level was made for the world '{named}'; playing it in '{bound.world.name}'",
+            f"physc {args.command}: note: the level was made for the world '{named}';"
+            f" playing it in '{bound.world.name}'",
             file=sys.stderr,
         )
-    return bound
+    return _birds(bound)
 
 
 def _level(args):
@@ -78,6 +115,7 @@ def load_level(args, domain):
     limit = domain.files.max_level_bytes
     data, problem = read_input(args.level, "the level", limit=limit + 1)
     if data is None:
+        assert problem is not None, "read_input says why it read nothing"
         return None, _fail(args, Diagnostic("E0001", problem))
     if len(data) > limit:
         return None, _fail(args, Diagnostic("E0906", f"the level file is larger than physc reads ({limit:,} bytes)"))
@@ -120,16 +158,17 @@ def _scenario(args):
     return scenario, level, text, solution
 
 
-def _play(args, task=None):
-    """(domain, level, shot, trace) of the level file played with the shot, in the world
-    _domain picks; with `task` (_scenario's) and the task's own level file, the task's
-    level, named as its scenario names its objects, judged against the scenario."""
+def _play(args, task=None) -> Played | int:
+    """The level file played with the shot (`Played`), in the world _domain picks, or the exit
+    status after reporting why it cannot be; with `task` (_scenario's) and the task's own level
+    file, the task's level, named as its scenario names its objects, judged against the
+    scenario."""
     from physc.api.simulating import simulate
     from physc.commands.verify import _normalised
 
     level, status = _level(args)
     if level is None:
-        return None, None, None, status
+        return status
     domain = _domain(args, level)
     scenario = None
     shot = domain.shot(args.shot, args.angle)
@@ -144,13 +183,13 @@ def _play(args, task=None):
             scenario = None  # another level: its objects have other names
     if shot is not None and not level.has_birds:
         help_text = 'add <Bird type="BirdRed" /> inside <Birds>, or play the level without --shot and --angle'
-        return None, None, None, _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
+        return _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
             trace = simulate(level, shot, domain=domain, seconds=args.seconds, scenario=scenario)
     except ValueError as error:  # a target out of reach of the launch
         raise UsageError(str(error)) from None
-    return domain, level, shot, trace
+    return Played(domain, level, shot, trace)
 
 
 def _angle(shot, domain) -> float | None:
@@ -159,9 +198,10 @@ def _angle(shot, domain) -> float | None:
 
 
 def cmd_simulate(args) -> int:
-    domain, level, shot, trace = _play(args, _scenario(args))
-    if level is None:
-        return trace
+    played = _play(args, _scenario(args))
+    if isinstance(played, int):
+        return played
+    domain, level, shot, trace = played.domain, played.level, played.shot, played.trace
     pigs = list(trace.goal)
     destroyed = [d for d in trace.destructions if d.name in pigs]
     if args.format == "json":
@@ -188,7 +228,8 @@ def cmd_simulate(args) -> int:
         + ("" if _angle(shot, domain) is None else f" (release angle {_angle(shot, domain):.2f}°)")
     )
     print(
-        f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what}; world {domain.world.name}"
+        f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what};"
+        f" world {domain.world.name}"
     )
     verdict = "solved" if trace.solved else "not solved"
     print(f"after {trace.duration:.2f} s: {len(destroyed)} of {plural(len(pigs), 'pig')} destroyed: {verdict}")
@@ -202,9 +243,10 @@ def cmd_trace(args) -> int:
     from physc.simulation.margins import Recognised
 
     task = _scenario(args)
-    domain, level, shot, trace = _play(args, task)
-    if level is None:
-        return trace
+    played = _play(args, task)
+    if isinstance(played, int):
+        return played
+    domain, level, shot, trace = played.domain, played.level, played.shot, played.trace
     scenario = task[0] if task is not None and level is task[1] else None
     margins = domain.margins(scenario or Recognised.of(trace), trace)
     by_time = {}
@@ -243,7 +285,8 @@ def cmd_trace(args) -> int:
     print(f"# {safe(args.level)}, shot {shot.text() if shot else 'none'}: {'solved' if trace.solved else 'not solved'}")
     lines = [("> " if index else "") + interaction.text() for index, interaction in enumerate(trace.interactions)]
     width = max((len(line) for line in lines), default=0)
-    for line, interaction in zip(lines, trace.interactions):  # the times in one column, whatever the terms' lengths
+    # the times in one column, whatever the terms' lengths (a line per interaction)
+    for line, interaction in zip(lines, trace.interactions, strict=True):
         margin = by_time.get(id(interaction))
         note = f"; margin {margin.value:+.3g} {margin.unit} ({margin.what})" if margin is not None else ""
         print(f"{line:<{width}}  # t = {interaction.time:.2f} s{note}")
@@ -267,10 +310,10 @@ def cmd_render(args) -> int:
             return status
         domain, paths = _domain(args, level), {}
     else:  # a shot, or the task's solution
-        domain, level, _, trace = _play(args, _scenario(args))
-        if level is None:
-            return trace
-        paths = trace.paths()
+        played = _play(args, _scenario(args))
+        if isinstance(played, int):
+            return played
+        domain, level, paths = played.domain, played.level, played.trace.paths()
     kind = "svg" if args.output.lower().endswith(".svg") else "png"
     write_atomic(args.output, domain.files.draw(level, args.title or args.level, paths, kind))
     if args.format == "json":
@@ -286,7 +329,8 @@ def add_commands(commands, common) -> None:
             "--shot",
             type=arguments.shot,
             metavar="X,Y[,low|high]",
-            help="shoot at a target point, on the low (default) or high trajectory (a negative X as it is: --shot -9,0.5)",
+            help="shoot at a target point, on the low (default) or high trajectory"
+            " (a negative X as it is: --shot -9,0.5)",
         )
         shot.add_argument("--angle", type=arguments.angle, metavar="DEG", help="shoot at a release angle (degrees)")
         parser.add_argument(
@@ -299,7 +343,8 @@ def add_commands(commands, common) -> None:
         parser.add_argument(
             "--task",
             metavar="TASK.json",
-            help="the level's task file (`physc compile --task`): the level is played in its world and engine unless --world or --backend says otherwise",
+            help="the level's task file (`physc compile --task`): the level is played in its world and engine"
+            " unless --world or --backend says otherwise",
         )
         add_target(parser, verify=False, replay=True)
 

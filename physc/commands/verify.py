@@ -11,7 +11,7 @@ interactions it realised. Exit 0 when it passes, 1 when it does not.
 from __future__ import annotations
 
 from physc import budget
-from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, print_json
+from physc.commands.common import EXIT_INPUT, EXIT_OK, UsageError, add_format, aimed_at, print_json
 from physc.diagnostics import safe
 from physc.files import read_input
 
@@ -83,7 +83,7 @@ def cmd_verify(args) -> int:
     else:
         verdict = "passes" if result.passes(replays) else "fails"
         print(
-            f"{safe(args.level)}: scenario {scenario.name}, solution {solution.aimed_at}: {verdict} {result.summary()}"
+            f"{safe(args.level)}: scenario {scenario.name}, solution {aimed_at(solution)}: {verdict} {result.summary()}"
         )
         if result.why:
             print(f"  why: {result.why}")
