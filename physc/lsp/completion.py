@@ -75,6 +75,7 @@ def _keyword(word: str, snippet: str | None) -> types.CompletionItem:
 
 def _concrete(vocabulary: Vocabulary, name: str) -> types.CompletionItem:
     concrete = vocabulary.concrete(name)
+    assert concrete is not None  # a term's concrete objects are the vocabulary's
     detail = "static" if concrete.static else "dynamic"
     return types.CompletionItem(
         label=name, kind=Kind.EnumMember, detail=detail, documentation=concrete.description or None

@@ -82,6 +82,7 @@ def tokens(text: str, start: int, end: int):
             position += 1
             continue
         kind, stop = found.lastgroup, found.end()
+        assert kind is not None  # the scanner is an alternation of named groups
         if kind not in ignore and kind != "COMMENT":
             value = found.group()
             yield Token(keywords.get(value, "NAME") if kind == "NAME" else kind, value, position, stop)

@@ -12,6 +12,7 @@ analysis of its latest version, so memory does not grow with the number of edits
 from __future__ import annotations
 
 import threading
+from collections.abc import Iterable
 
 import attrs
 from lsprotocol import types
@@ -101,7 +102,7 @@ class Documents:
     def open(self, uri: str, version: int | None, text: str) -> None:
         self._open[uri] = Document(version, text)
 
-    def change(self, uri: str, version: int | None, changes) -> None:
+    def change(self, uri: str, version: int | None, changes: Iterable[types.TextDocumentContentChangeEvent]) -> None:
         """Apply the editor's changes (whole texts, or ranges and their new text), in order."""
         document = self._open.get(uri)
         if document is None:
@@ -132,6 +133,11 @@ class Documents:
         if document.positions is None:
             document.positions = Positions(document.text, self.encoding)
         return document.positions
+
+    def opened(self, uri: str) -> tuple[Document, Positions] | None:
+        """The open document and the positions of its current text; None if it is not open."""
+        document, positions = self.current(uri), self.positions(uri)
+        return None if document is None or positions is None else (document, positions)
 
     # ---- analyses ----------------------------------------------------------------------------
     def snapshot(self, uri: str, version: int | None, text: str) -> Snapshot:

@@ -30,20 +30,20 @@ def _argument_names(scenario: ast.Scenario):
 def name_at(scenario: ast.Scenario, offset: int) -> ast.Name | None:
     """The object name (a declaration's or an argument's) whose span holds `offset`."""
     names = [d.name for d in scenario.objects] + list(_argument_names(scenario))
-    return next((n for n in names if n.span.start <= offset <= n.span.end), None)
+    return next((n for n in names if ast.located(n.span).start <= offset <= ast.located(n.span).end), None)
 
 
 def occurrences(scenario: ast.Scenario, name: str) -> tuple[list[Span], list[Span]]:
     """The spans of the declarations of `name` and of its uses as an argument, in the scenario."""
-    declarations = [d.name.span for d in scenario.objects if d.name.text == name]
-    uses = [n.span for n in _argument_names(scenario) if n.text == name]
+    declarations = [ast.located(d.name.span) for d in scenario.objects if d.name.text == name]
+    uses = [ast.located(n.span) for n in _argument_names(scenario) if n.text == name]
     return declarations, uses
 
 
 def definition(file: ast.File, offset: int) -> Span | None:
     scenario = scenario_at(file, offset)
-    found = scenario and name_at(scenario, offset)
-    if not found:
+    found = None if scenario is None else name_at(scenario, offset)
+    if scenario is None or found is None:
         return None
     declarations, uses = occurrences(scenario, found.text)
     return (declarations or uses or [None])[0]
@@ -51,8 +51,8 @@ def definition(file: ast.File, offset: int) -> Span | None:
 
 def references(file: ast.File, offset: int, include_declaration: bool) -> list[Span]:
     scenario = scenario_at(file, offset)
-    found = scenario and name_at(scenario, offset)
-    if not found:
+    found = None if scenario is None else name_at(scenario, offset)
+    if scenario is None or found is None:
         return []
     declarations, uses = occurrences(scenario, found.text)
     return (declarations if include_declaration else []) + uses

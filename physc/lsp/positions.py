@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import bisect
 import re
+from collections.abc import Callable
 
 from lsprotocol import types
 
 from physc.diagnostics import Span
 
 # Code units per encoding; "surrogatepass" because a JSON string may carry a lone surrogate.
-_UNITS = {
+_UNITS: dict[str, Callable[[str], int]] = {
     types.PositionEncodingKind.Utf8: lambda text: len(text.encode("utf-8", "surrogatepass")),
     types.PositionEncodingKind.Utf16: lambda text: len(text.encode("utf-16-le", "surrogatepass")) // 2,
     types.PositionEncodingKind.Utf32: len,
@@ -34,7 +35,7 @@ class Positions:
         self.units = _UNITS.get(encoding, _UNITS[types.PositionEncodingKind.Utf16])
         self.utf32 = self.units is len
         self.starts = [0]  # the offset where each line starts
-        self.ends = []  # the offset where each line's text ends (its line break excluded)
+        self.ends: list[int] = []  # the offset where each line's text ends (its line break excluded)
         for found in _LINE_END.finditer(text):
             self.ends.append(found.start())
             self.starts.append(found.end())

@@ -15,6 +15,7 @@ import functools
 import logging
 import sys
 from concurrent.futures import ThreadPoolExecutor
+from typing import TYPE_CHECKING
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
@@ -22,6 +23,9 @@ from pygls.lsp.server import LanguageServer
 from physc import __version__
 from physc.lsp import completion, context, edits, hover, navigation, semantic
 from physc.lsp.documents import Documents, Snapshot
+
+if TYPE_CHECKING:
+    from physc.dsl import ast
 
 log = logging.getLogger("physc.lsp")
 # How long the checking thread may hold the interpreter before the thread that answers requests
@@ -38,7 +42,7 @@ class PhyscServer(LanguageServer):
         super().__init__("physc", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental)
         self.documents = Documents()
         self.checker = ThreadPoolExecutor(max_workers=1, thread_name_prefix="physc-check")
-        self.checking: dict[str, asyncio.Future] = {}
+        self.checking: dict[str, asyncio.Future[None]] = {}
         self.stale: set[str] = set()  # changed while being checked
 
     # ---- checks ------------------------------------------------------------------------------
@@ -86,10 +90,11 @@ class PhyscServer(LanguageServer):
         loop = asyncio.get_running_loop()
         return await loop.run_in_executor(self.checker, self.documents.snapshot, uri, document.version, document.text)
 
-    async def parsed(self, uri: str) -> Snapshot | None:
-        """`current`, when the document's text gave a syntax tree (what navigation reads)."""
+    async def parsed(self, uri: str) -> tuple[Snapshot, ast.File] | None:
+        """`current` and its syntax tree, when the document's text gave one (what navigation reads)."""
         snapshot = await self.current(uri)
-        return snapshot if snapshot is not None and snapshot.analysis.file is not None else None
+        file = None if snapshot is None else snapshot.analysis.file
+        return None if snapshot is None or file is None else (snapshot, file)
 
     def close(self, uri: str) -> None:
         self.documents.close(uri)
@@ -97,10 +102,14 @@ class PhyscServer(LanguageServer):
         self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri=uri, diagnostics=[]))
 
     def snippets(self) -> bool:
+        """Whether the client takes completions written as snippets."""
         try:
-            return bool(self.client_capabilities.text_document.completion.completion_item.snippet_support)
-        except AttributeError:
+            document = self.client_capabilities.text_document
+        except AttributeError:  # asked before the client said what it can do
             return False
+        abilities = document.completion if document is not None else None
+        item = abilities.completion_item if abilities is not None else None
+        return bool(item is not None and item.snippet_support)
 
 
 def guarded(handler):
@@ -118,7 +127,16 @@ def guarded(handler):
 
 
 def build() -> PhyscServer:
+    """The server with its features: the documents' life, then help while editing, then navigation."""
     server = PhyscServer()
+    _follow_documents(server)
+    _help_editing(server)
+    _navigate(server)
+    return server
+
+
+def _follow_documents(server: PhyscServer) -> None:
+    """The features that keep the server's copy of each document as the editor has it, and check it."""
 
     @server.feature(types.INITIALIZE)
     def initialize(ls: PhyscServer, params: types.InitializeParams) -> None:
@@ -140,6 +158,10 @@ def build() -> PhyscServer:
     def did_close(ls: PhyscServer, params: types.DidCloseTextDocumentParams) -> None:
         ls.close(params.text_document.uri)
 
+
+def _help_editing(server: PhyscServer) -> None:
+    """The features that help while typing: completion, hover, formatting and quick fixes."""
+
     @server.feature(types.TEXT_DOCUMENT_COMPLETION, types.CompletionOptions(trigger_characters=TRIGGERS))
     @guarded
     async def complete(ls: PhyscServer, params: types.CompletionParams):
@@ -153,12 +175,10 @@ def build() -> PhyscServer:
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     @guarded
     async def on_hover(ls: PhyscServer, params: types.HoverParams):
-        document, positions = (
-            ls.documents.current(params.text_document.uri),
-            ls.documents.positions(params.text_document.uri),
-        )
-        if document is None:
+        opened = ls.documents.opened(params.text_document.uri)
+        if opened is None:
             return None
+        document, positions = opened
         text, offset = document.text, positions.offset(params.position)
         inside = offset < len(text) and (text[offset].isalnum() or text[offset] == "_")
         place = context.locate(text, offset + 1 if inside else offset)
@@ -171,39 +191,14 @@ def build() -> PhyscServer:
         where = types.Range(start=positions.position(word.start), end=positions.position(word.end)) if word else None
         return types.Hover(contents=types.MarkupContent(kind=types.MarkupKind.Markdown, value=found), range=where)
 
-    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
-    @guarded
-    async def definition(ls: PhyscServer, params: types.DefinitionParams):
-        snapshot = await ls.parsed(params.text_document.uri)
-        if snapshot is None:
-            return None
-        span = navigation.definition(snapshot.analysis.file, snapshot.positions.offset(params.position))
-        return None if span is None else types.Location(uri=params.text_document.uri, range=snapshot.range(span))
-
-    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
-    @guarded
-    async def references(ls: PhyscServer, params: types.ReferenceParams):
-        snapshot = await ls.parsed(params.text_document.uri)
-        if snapshot is None:
-            return None
-        offset = snapshot.positions.offset(params.position)
-        spans = navigation.references(snapshot.analysis.file, offset, params.context.include_declaration)
-        return [types.Location(uri=params.text_document.uri, range=snapshot.range(s)) for s in spans]
-
-    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
-    @guarded
-    async def document_symbols(ls: PhyscServer, params: types.DocumentSymbolParams):
-        snapshot = await ls.parsed(params.text_document.uri)
-        if snapshot is None:
-            return None
-        return navigation.symbols(snapshot.analysis.file, snapshot.range)
-
     @server.feature(types.TEXT_DOCUMENT_FORMATTING)
     @guarded
     async def formatting(ls: PhyscServer, params: types.DocumentFormattingParams):
         snapshot = await ls.current(params.text_document.uri)
-        analysis = None if snapshot is None else snapshot.analysis
-        if analysis is None or analysis.file is None or any(d.is_error for d in analysis.syntax):
+        if snapshot is None:
+            return None
+        analysis = snapshot.analysis
+        if analysis.file is None or analysis.source is None or any(d.is_error for d in analysis.syntax):
             return None  # physc fmt formats only what parses
         return edits.formatting(analysis.file, analysis.source, snapshot.text)
 
@@ -215,25 +210,62 @@ def build() -> PhyscServer:
         snapshot = await ls.current(params.text_document.uri)
         if snapshot is None:
             return None
-        start, end = (snapshot.positions.offset(p) for p in (params.range.start, params.range.end))
+        positions = snapshot.positions
+        start, end = (positions.offset(p) for p in (params.range.start, params.range.end))
         found = [(d, snapshot.lsp_diagnostic(d)) for d in snapshot.diagnostics_at(start, end) if d.fixes]
         return edits.quick_fixes(params.text_document.uri, found, snapshot.range)
+
+
+def _navigate(server: PhyscServer) -> None:
+    """The features that read the syntax tree: definition, references, symbols, semantic tokens."""
+
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    @guarded
+    async def definition(ls: PhyscServer, params: types.DefinitionParams):
+        parsed = await ls.parsed(params.text_document.uri)
+        if parsed is None:
+            return None
+        snapshot, file = parsed
+        span = navigation.definition(file, snapshot.positions.offset(params.position))
+        return None if span is None else types.Location(uri=params.text_document.uri, range=snapshot.range(span))
+
+    @server.feature(types.TEXT_DOCUMENT_REFERENCES)
+    @guarded
+    async def references(ls: PhyscServer, params: types.ReferenceParams):
+        parsed = await ls.parsed(params.text_document.uri)
+        if parsed is None:
+            return None
+        snapshot, file = parsed
+        offset = snapshot.positions.offset(params.position)
+        spans = navigation.references(file, offset, params.context.include_declaration)
+        return [types.Location(uri=params.text_document.uri, range=snapshot.range(s)) for s in spans]
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    @guarded
+    async def document_symbols(ls: PhyscServer, params: types.DocumentSymbolParams):
+        parsed = await ls.parsed(params.text_document.uri)
+        if parsed is None:
+            return None
+        snapshot, file = parsed
+        return navigation.symbols(file, snapshot.range)
 
     @server.feature(types.TEXT_DOCUMENT_SEMANTIC_TOKENS_FULL, semantic.LEGEND)
     @guarded
     async def semantic_tokens(ls: PhyscServer, params: types.SemanticTokensParams):
-        snapshot = await ls.parsed(params.text_document.uri)
-        if snapshot is None or snapshot.analysis.file is None:
+        parsed = await ls.parsed(params.text_document.uri)
+        if parsed is None:
             return None
-        return semantic.tokens(snapshot.analysis.file, snapshot.positions)
-
-    return server
+        snapshot, file = parsed
+        return semantic.tokens(file, snapshot.positions)
 
 
 def _place(ls: PhyscServer, uri: str, position: types.Position) -> context.Place | None:
     """The place of a position in the document as it is now (read from its text: no analysis)."""
-    document, positions = ls.documents.current(uri), ls.documents.positions(uri)
-    return None if document is None else context.locate(document.text, positions.offset(position))
+    opened = ls.documents.opened(uri)
+    if opened is None:
+        return None
+    document, positions = opened
+    return context.locate(document.text, positions.offset(position))
 
 
 class _OneLine(logging.Formatter):
