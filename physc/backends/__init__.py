@@ -281,6 +281,11 @@ class ContactLog:
     def touches(self, a: str, b: str) -> bool:
         return b in self._touching.get(a, ())
 
+    def states(self, names: Sequence[str], out: np.ndarray | None = None) -> np.ndarray:
+        """Each body's (x, y, angle, vx, vy, ω), a row each (EngineWorld.states): the engine's
+        world that subclasses this reads them."""
+        raise NotImplementedError
+
     def moving(self, names: Sequence[str], speed: float) -> bool:
         """From the bodies' states (`states`, which a world subclassing this has); a world whose
         engine says which bodies sleep reads only the others."""

@@ -23,7 +23,7 @@ EPSILON = 1e-9
 def signed_area(points: Sequence[Point]) -> float:
     """The signed area of an outline (positive when counter-clockwise)."""
     total = 0.0
-    for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]]):
+    for (x0, y0), (x1, y1) in zip(points, [*points[1:], points[0]], strict=False):
         total += x0 * y1 - x1 * y0
     return total / 2
 

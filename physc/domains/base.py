@@ -135,7 +135,7 @@ def _required(doc: str) -> Any:
     return _Required(doc)
 
 
-class Domain(abc.ABC):
+class Domain(abc.ABC):  # noqa: B024 - abstract through its `_required` attributes, which abc counts
     """A domain of physics tasks. Subclass it and set at least `name`, `description`
     and `vocabulary`; set or override the generation hooks the domain has."""
 

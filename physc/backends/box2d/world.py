@@ -32,6 +32,7 @@ import math
 from collections.abc import Sequence
 
 import Box2D
+import Box2D._Box2D as _Box2D
 import numpy as np
 
 from physc.backends import BackendError, BodySpec, Circle, ContactEvent, ContactLog, colliders, group_number, parts
@@ -40,13 +41,13 @@ from physc.backends.settings import EngineSettings
 
 # pybox2d's C accessors, called directly: its Python properties add a call each (the states
 # of every awake body are read every step).
-_position = Box2D._Box2D.b2Body___GetPosition
-_velocity = Box2D._Box2D.b2Body___GetLinearVelocity
-_angle = Box2D._Box2D.b2Body___GetAngle
-_spin = Box2D._Box2D.b2Body___GetAngularVelocity
-_awake = Box2D._Box2D.b2Body___IsAwake
-_x = Box2D._Box2D.b2Vec2_x_get
-_y = Box2D._Box2D.b2Vec2_y_get
+_position = _Box2D.b2Body___GetPosition
+_velocity = _Box2D.b2Body___GetLinearVelocity
+_angle = _Box2D.b2Body___GetAngle
+_spin = _Box2D.b2Body___GetAngularVelocity
+_awake = _Box2D.b2Body___IsAwake
+_x = _Box2D.b2Vec2_x_get
+_y = _Box2D.b2Vec2_y_get
 
 # Each setting, the Box2D constant it must equal (pybox2d exposes them), and how it is honoured.
 COMPILED = {
@@ -223,7 +224,7 @@ class Box2DWorld(ContactLog):
             count = contact.manifold.pointCount
             point = tuple(manifold.points[0]) if count else tuple(body_a.worldCenter)
             if count > 1:  # the middle of the two points of a face contact
-                point = tuple((p + q) / 2 for p, q in zip(manifold.points[0], manifold.points[1]))
+                point = tuple((p + q) / 2 for p, q in zip(manifold.points[0], manifold.points[1], strict=False))
             va = body_a.GetLinearVelocityFromWorldPoint(point)
             vb = body_b.GetLinearVelocityFromWorldPoint(point)
             normal = tuple(manifold.normal)
@@ -255,7 +256,7 @@ def _definitions(spec: BodySpec) -> tuple:
     )
     shapes = [
         (shape, collider)
-        for part, collider in zip(parts(spec.shape), colliders(spec.shape))
+        for part, collider in zip(parts(spec.shape), colliders(spec.shape), strict=False)
         for shape in _box2d_shapes(part)
     ]
     area = sum(_area(shape) for shape, _ in shapes)  # of the shapes as Box2D holds them (float32 corners)
@@ -277,6 +278,8 @@ def _definitions(spec: BodySpec) -> tuple:
 class _Fixtures(tuple):
     """A body's fixture definitions, holding their shapes (a definition points at its shape
     without keeping it alive)."""
+
+    shapes: tuple
 
     def __new__(cls, fixtures: tuple, shapes: tuple):
         made = super().__new__(cls, fixtures)

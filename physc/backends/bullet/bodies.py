@@ -7,7 +7,7 @@ import math
 
 import pybullet
 
-from physc.backends import BodySpec, Circle, Compound
+from physc.backends import BodySpec, Circle, Compound, Polygon
 from physc.backends.bullet.shapes import Extent
 from physc.backends.convex import hull
 
@@ -28,7 +28,10 @@ def collision_shape(client: int, spec: BodySpec) -> int:
     if isinstance(spec.shape, Compound):
         if all(isinstance(part, Circle) or Extent.turned(part.points) is not None for part in spec.shape.parts):
             return _compound(client, spec.shape)
-        points = [point for part in spec.shape.parts for point in part.points]
+        polygons = [part for part in spec.shape.parts if isinstance(part, Polygon)]
+        if len(polygons) < len(spec.shape.parts):
+            raise ValueError(f"{spec.name}: Bullet's hull of a compound is of polygons, not of circles among them")
+        points = [point for part in polygons for point in part.points]
         return _mesh(client, hull(points))
     if isinstance(spec.shape, Circle):
         return pybullet.createCollisionShape(pybullet.GEOM_SPHERE, radius=spec.shape.radius, physicsClientId=client)
@@ -112,7 +115,7 @@ def planar_body(client: int, spec: BodySpec, shape: int, mass: float, inertia: f
         linkJointAxis=AXES,
         physicsClientId=client,
     )
-    for joint, value in zip(JOINTS, (spec.x, spec.y, spec.angle)):
+    for joint, value in zip(JOINTS, (spec.x, spec.y, spec.angle), strict=False):
         pybullet.resetJointState(body, joint, value, 0.0, physicsClientId=client)
     pybullet.setJointMotorControlArray(
         body, JOINTS, pybullet.VELOCITY_CONTROL, forces=(0.0, 0.0, 0.0), physicsClientId=client

@@ -20,7 +20,7 @@ def area(shape: Circle | Polygon | Compound, skin: float = 0.0) -> float:
     if isinstance(shape, Circle):
         return math.pi * shape.radius**2
     points = shape.points
-    pairs = list(zip(points, points[1:] + points[:1]))
+    pairs = list(zip(points, points[1:] + points[:1], strict=False))
     inner = abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in pairs)) / 2
     perimeter = sum(math.hypot(x1 - x0, y1 - y0) for (x0, y0), (x1, y1) in pairs)
     return inner + perimeter * skin + math.pi * skin * skin
@@ -34,14 +34,14 @@ def centroid(shape: Circle | Polygon | Compound, skin: float = 0.0) -> tuple[flo
         centres = [centroid(part) for part in shape.parts]
         total = sum(weights)
         return (
-            sum(w * c[0] for w, c in zip(weights, centres)) / total,
-            sum(w * c[1] for w, c in zip(weights, centres)) / total,
+            sum(w * c[0] for w, c in zip(weights, centres, strict=False)) / total,
+            sum(w * c[1] for w, c in zip(weights, centres, strict=False)) / total,
         )
     if isinstance(shape, Circle):
         return (0.0, 0.0)
     points = shape.points
     total = sx = sy = 0.0
-    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False):
         cross = x0 * y1 - x1 * y0
         total += cross
         sx += (x0 + x1) * cross
@@ -59,7 +59,7 @@ def polar_moment(shape: Circle | Polygon | Compound, mass: float, skin: float = 
         return mass * shape.radius**2 / 2
     points = shape.points
     numerator = denominator = 0.0
-    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False):
         cross = x0 * y1 - x1 * y0
         numerator += cross * (x0 * x0 + x0 * x1 + x1 * x1 + y0 * y0 + y0 * y1 + y1 * y1)
         denominator += cross

@@ -116,7 +116,7 @@ class BulletWorld(ContactLog):
                 mass, inertia, centre, spec.bounciness, spec.angular_damping, spec.gravity_scale
             )
             if self._dt is not None:
-                self._set_damping(spec.name, body)
+                self._set_damping(spec.name, body, self._dt)
         if spec.group and not spec.static:  # no collision with the group's other bodies (Bullet filters pairs of links)
             for other in self._groups.setdefault(spec.group, []):
                 pybullet.setCollisionFilterPair(
@@ -155,10 +155,10 @@ class BulletWorld(ContactLog):
             physicsClientId=self.client,
         )
         for name in self._dynamic:
-            self._set_damping(name, self._id[name])
+            self._set_damping(name, self._id[name], dt)
         self._separate()
         for name in sorted(self._unlagged & self._dynamic.keys()):
-            self._unlag(name)
+            self._unlag(name, dt)
         self._unlagged.clear()
 
     def _separate(self) -> None:
@@ -189,14 +189,14 @@ class BulletWorld(ContactLog):
         """Whether two bodies overlap by more than SLOP (as Bullet's last collision detection found)."""
         return any(point[8] < -SLOP for point in pybullet.getContactPoints(physicsClientId=self.client))
 
-    def _set_damping(self, name: str, body: int) -> None:
+    def _set_damping(self, name: str, body: int, dt: float) -> None:
         """Box2D's ω ← ω / (1 + dt·c) each game step, as the revolute joint's damping: Bullet
         applies ω ← ω (1 − h·d/I) each of its SUBSTEPS steps of h."""
         dynamic = self._dynamic[name]
         if not dynamic.damping:
             return
-        h = self._dt / SUBSTEPS
-        rate = (1.0 - (1.0 + self._dt * dynamic.damping) ** (-1.0 / SUBSTEPS)) / h
+        h = dt / SUBSTEPS
+        rate = (1.0 - (1.0 + dt * dynamic.damping) ** (-1.0 / SUBSTEPS)) / h
         pybullet.changeDynamics(body, BODY_LINK, jointDamping=rate * dynamic.inertia, physicsClientId=self.client)
 
     def step(self, dt: float) -> None:
@@ -352,11 +352,11 @@ class BulletWorld(ContactLog):
         if self._dt is None:
             self._unlagged.add(name)  # done at the first step, when dt is known
         else:
-            self._unlag(name)
+            self._unlag(name, self._dt)
 
-    def _unlag(self, name: str) -> None:
+    def _unlag(self, name: str, dt: float) -> None:
         vx, vy, w = self.state(name)[3:]
-        lag = self.gravity * self._dynamic[name].gravity_scale * self._dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
+        lag = self.gravity * self._dynamic[name].gravity_scale * dt * (SUBSTEPS + 1) / (2 * SUBSTEPS)
         self._velocity(name, vx, vy + lag, w)
 
     def _velocity(self, name: str, vx: float, vy: float, angular: float) -> None:
@@ -369,7 +369,7 @@ class BulletWorld(ContactLog):
         rx, ry = self._arm(name, pose[2])
         vx, vy, w = velocity
         body = self._id[name]
-        for joint, value, speed in zip(JOINTS, pose, (vx + w * ry, vy - w * rx, w)):
+        for joint, value, speed in zip(JOINTS, pose, (vx + w * ry, vy - w * rx, w), strict=False):
             pybullet.resetJointState(body, joint, value, speed, physicsClientId=self.client)
 
     def mass(self, name: str) -> float:

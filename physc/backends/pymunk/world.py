@@ -29,6 +29,8 @@ from collections.abc import Sequence
 import numpy as np
 import pymunk
 import pymunk.batch
+from pymunk._chipmunk_cffi import ffi, lib
+from pymunk.constraints import Constraint, DampedRotarySpring
 
 from physc.backends import BodySpec, Circle, ContactEvent, ContactLog, colliders, group_number, parts
 from physc.backends.settings import EngineSettings
@@ -83,16 +85,16 @@ class PymunkWorld(ContactLog):
         self._name_of: dict[int, str] = {}
         self._collider_of: dict[int, int] = {}  # a shape → the collider of its body it belongs to (Compound.colliders)
         self._bounciness: dict[int, float] = {}
-        self._drags: dict[str, pymunk.Constraint] = {}
+        self._drags: dict[str, Constraint] = {}
         # One batched read of every body per step (pymunk.batch's own call, without
         # building its request anew each time): the buffer, the request, the reader, and
         # numpy views of the buffer's two arrays (`_ids`, `_floats`; renewed when one grows).
         self._buffer = pymunk.batch.Buffer()
-        self._request = pymunk.batch.ffi.new("pmBatchedData *")
+        self._request = ffi.new("pmBatchedData *")
         self._request.fields = BATCH_FIELDS.value
         self._request.floatArray = self._buffer._float_arr
         self._request.intArray = self._buffer._int_arr
-        self._reader = pymunk.batch.ffi.addressof(pymunk.batch.lib, "pmSpaceBodyGetIteratorFuncBatched")
+        self._reader = ffi.addressof(lib, "pmSpaceBodyGetIteratorFuncBatched")
         self._capacity = (-1, -1)  # the arrays' capacities when the views were made
         self._ids = self._floats = np.empty(0)
         self._read_order: tuple | None = None  # (body ids as read, names asked, a copy) of the last read,
@@ -101,7 +103,7 @@ class PymunkWorld(ContactLog):
         # bodies, releasing removed shapes) has nothing to do: after the first step
         # following an `add` or a `remove`. The callbacks never add or remove bodies.
         self._cp_space = self.space._space
-        self._cp_step = pymunk.batch.lib.cpSpaceStep
+        self._cp_step = lib.cpSpaceStep
         self._changed = True
         self.space.on_collision(begin=self._on_begin, separate=self._on_separate)
 
@@ -135,13 +137,13 @@ class PymunkWorld(ContactLog):
         if not spec.static and spec.angular_damping:
             # Box2D's angular damping, dω/dt = −c·ω, is the torque −c·I·ω: a rotary
             # spring of no stiffness to the static body applies it, in C.
-            drag = pymunk.DampedRotarySpring(body, self.space.static_body, 0.0, 0.0, spec.angular_damping * body.moment)
+            drag = DampedRotarySpring(body, self.space.static_body, 0.0, 0.0, spec.angular_damping * body.moment)
             self.space.add(drag)
             self._drags[spec.name] = drag
         self.names.append(spec.name)
         self.bodies[spec.name] = body
         self.shapes[spec.name] = shapes
-        for shape, collider in zip(shapes, colliders(spec.shape)):
+        for shape, collider in zip(shapes, colliders(spec.shape), strict=False):
             self._name_of[id(shape)] = spec.name
             self._collider_of[id(shape)] = collider
             self._bounciness[id(shape)] = spec.bounciness
@@ -180,10 +182,9 @@ class PymunkWorld(ContactLog):
         world), from one batched read of the space; into `out` if given."""
         floats, ints = self._buffer._float_arr, self._buffer._int_arr
         floats.num = ints.num = 0
-        pymunk.batch.lib.cpSpaceEachBody(self._cp_space, self._reader, self._request)
+        lib.cpSpaceEachBody(self._cp_space, self._reader, self._request)
         if (ints.max, floats.max) != self._capacity:  # an array grew (was reallocated): view them anew
             self._capacity = (ints.max, floats.max)
-            ffi = pymunk.batch.ffi
             self._ids = np.frombuffer(ffi.buffer(ints.arr, ffi.sizeof("uintptr_t") * ints.max), dtype=np.uintp)
             self._floats = np.frombuffer(ffi.buffer(floats.arr, ffi.sizeof("cpFloat") * floats.max), dtype=np.float64)
         count = ints.num

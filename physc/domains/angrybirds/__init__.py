@@ -119,7 +119,11 @@ class AngryBirds(SimulatedDomain):
         from physc.domains.angrybirds.shots import birds, first_hit, shot_starts
 
         order, starts = birds(scenario, VOCABULARY.player), (0, *shot_starts(scenario, VOCABULARY.player))
-        return [t for t in (first_hit(scenario, name, start) for name, start in zip(order, starts)) if t is not None]
+        return [
+            t
+            for t in (first_hit(scenario, name, start) for name, start in zip(order, starts, strict=False))
+            if t is not None
+        ]
 
     def reachable(self, x: float, y: float) -> bool:
         return self.world.reachable(x, y)

@@ -98,7 +98,15 @@ class Shape:
 
 def _block(name, prefab, width, height, life, outline="box", points=()):
     return Shape(
-        name, prefab, "block", width, height, outline, points, materials=MATERIALS, life=dict(zip(MATERIALS, life))
+        name,
+        prefab,
+        "block",
+        width,
+        height,
+        outline,
+        points,
+        materials=MATERIALS,
+        life=dict(zip(MATERIALS, life, strict=False)),
     )
 
 

@@ -47,7 +47,7 @@ class Flights:
         self.names = [shot.bird for shot in shots]
         self.extras: dict[str, tuple[str, ...]] = {
             name: extra(name, b.power) if shots[k].tap is not None else ()
-            for k, (name, b) in enumerate(zip(self.names, self.birds))
+            for k, (name, b) in enumerate(zip(self.names, self.birds, strict=False))
         }
         self.parent = {clone: name for name, clones in self.extras.items() for clone in clones}
         self.next = 0  # the shot to come
@@ -206,7 +206,7 @@ class Flights:
             # the same place at the same speed); the other two come in.
             engine.set_velocity(name, speed * math.cos(angles[1]), speed * math.sin(angles[1]), w)
             specs = []
-            for clone, angle in zip(self.extras[name], (angles[0], *angles[2:])):
+            for clone, angle in zip(self.extras[name], (angles[0], *angles[2:]), strict=False):
                 specs.append((self.body(clone, (x, y)), (speed * math.cos(angle), speed * math.sin(angle))))
                 self.flying[clone] = self.launched[name] + self.rules.bird_lifetime
             return specs

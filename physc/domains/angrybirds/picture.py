@@ -97,10 +97,10 @@ def draw_level(
                 zorder=6,
                 bbox={"boxstyle": "round,pad=0.1", "fc": "white", "alpha": 0.6, "lw": 0},
             )
-    for name, points in (paths or {}).items():
+    for points in (paths or {}).values():
         if len(points) < 2:
             continue
-        xs, ys = zip(*points)
+        xs, ys = zip(*points, strict=False)
         axes.plot(xs, ys, linestyle="--", linewidth=1.0, color="#333333", zorder=4)
         axes.annotate(
             "", points[-1], points[-2], arrowprops={"arrowstyle": "->", "color": "#333333", "lw": 1.2}, zorder=4

@@ -14,14 +14,12 @@ import functools
 import random
 from collections.abc import Sequence
 
-import attrs
-
 from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.layout_rules import LayoutRules
 from physc.domains.actions import Actions
 from physc.domains.part import part
-from physc.domains.search_hooks import SearchHooks
 from physc.domains.playing import Playing
+from physc.domains.search_hooks import SearchHooks
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.scene import Scene
 from physc_phyre import actions, two_balls, world
@@ -149,7 +147,7 @@ class Phyre(SimulatedDomain):
             raise ValueError(
                 f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}"
             )
-        for name, ball in zip(level.players, balls):
+        for name, ball in zip(level.players, balls, strict=False):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))
             kinds[name] = "agent"
             radii[name] = ball.radius / world.PIXELS_PER_METRE

@@ -128,7 +128,7 @@ def from_unit(action) -> BallAction | TwoBallAction | None:
     if len(values) not in (3, 6) or not all(0.0 <= v <= 1.0 for v in values):
         return None
     balls = []  # as PHYRE scales them, before quantising
-    for a, b, c in zip(values[0::3], values[1::3], values[2::3]):
+    for a, b, c in zip(values[0::3], values[1::3], values[2::3], strict=False):
         x, y, r = a * (SCENE - 1), b * (SCENE - 1), MIN_RADIUS + c * (MAX_RADIUS - MIN_RADIUS)
         if not (r <= x <= SCENE - r and r <= y <= SCENE - r):
             return None
@@ -158,7 +158,9 @@ def neighbours(action: BallAction | TwoBallAction) -> list:
     ±NEIGHBOUR_SHIFT px along x, y or both (action_simulator.py's
     `_yield_user_input_neighborhood`), the radii kept."""
     d = NEIGHBOUR_SHIFT
-    return [moved(action, lambda ball: (dx, dy)) for dx in (-d, 0.0, d) for dy in (-d, 0.0, d) if dx or dy]
+    return [
+        moved(action, lambda ball, dx=dx, dy=dy: (dx, dy)) for dx in (-d, 0.0, d) for dy in (-d, 0.0, d) if dx or dy
+    ]
 
 
 def noisy(action: BallAction | TwoBallAction, rng: random.Random):
@@ -242,7 +244,7 @@ def _reads(data: dict) -> tuple:
 def _strictly_inside(points, x: float, y: float) -> bool:
     """geometry.h's isInsidePolygon (lines 131-142): (x, y) left of every edge, none on it
     (a polygon listed clockwise has no inside)."""
-    for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points):
+    for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points, strict=False):
         if (x1 - x0) * (y - y0) - (y1 - y0) * (x - x0) <= 0:
             return False
     return True
@@ -251,7 +253,7 @@ def _strictly_inside(points, x: float, y: float) -> bool:
 def _edge_distance(points, x: float, y: float) -> float:
     """The distance from (x, y) to a polygon's nearest edge."""
     nearest = math.inf
-    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+    for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False):
         ex, ey = x1 - x0, y1 - y0
         t = max(0.0, min(1.0, ((x - x0) * ex + (y - y0) * ey) / (ex * ex + ey * ey)))
         nearest = min(nearest, math.hypot(x - x0 - t * ex, y - y0 - t * ey))
@@ -274,10 +276,12 @@ def _phyre_polygon(points, px: float, py: float, angle: float, x: float, y: floa
     qx, qy = tx * c - ty * s, tx * s + ty * c
     if all(
         F32((x1 - x0) * (qy - y0) - (y1 - y0) * (qx - x0)) > 0
-        for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points)
+        for (x0, y0), (x1, y1) in zip(points[-1:] + points[:-1], points, strict=False)
     ):
         return True
-    best = min(_square_distance_to_segment(p0, p1, qx, qy) for p0, p1 in zip(points[-1:] + points[:-1], points))
+    best = min(
+        _square_distance_to_segment(p0, p1, qx, qy) for p0, p1 in zip(points[-1:] + points[:-1], points, strict=False)
+    )
     return bool(F32(np.sqrt(best)) + INSIDENESS_EPS < F32(radius))
 
 

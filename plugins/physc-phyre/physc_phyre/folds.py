@@ -99,7 +99,7 @@ def folds(ids: Iterable[str], seeds: int = SEEDS, tiers: dict[str, str] | None =
         groups.setdefault((tiers or {}).get(task, "BALL"), []).append(task)
 
     def split(kind: str, group: list[str], seed: int) -> dict:
-        return dict(zip(("train", "dev", "test"), fold(kind, group, seed)))
+        return dict(zip(("train", "dev", "test"), fold(kind, group, seed), strict=False))
 
     return {
         setup(tier, kind): {str(seed): split(kind, group, seed) for seed in range(seeds)}

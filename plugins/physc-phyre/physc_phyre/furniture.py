@@ -89,7 +89,7 @@ def peg_row(length: float) -> Geometry:
 def bodies(placed, body_class) -> list:
     """The bodies (`body_class`: level.SceneBody) of a placed piece of furniture, the main one
     first, from its outline box (centre placed.x, placed.y; placed.width × placed.height)."""
-    name, (color, dynamic) = placed.name, KINDS[placed.concrete]
+    name, (color, _) = placed.name, KINDS[placed.concrete]
     cx, bottom = placed.x, placed.y - placed.height / 2
     if placed.concrete in ("seesaw", "blueSeesaw", "teeter"):
         r = FULCRUM if placed.concrete != "teeter" else TEETER_FULCRUM

@@ -255,7 +255,7 @@ def dropped(bodies: list[SceneBody], names: set[str], seed: int) -> list[SceneBo
         boxes = [outline_box(out[k]) for k in parts]
         left, right, top = min(b[0] for b in boxes), max(b[2] for b in boxes), max(b[3] for b in boxes)
         others = [outline_box(b) for j, b in enumerate(out) if j not in parts]
-        room = min([SCENE] + [bottom for l, bottom, r, _ in others if l < right and r > left and bottom >= top])
+        room = min([SCENE] + [bottom for lo, bottom, hi, _ in others if lo < right and hi > left and bottom >= top])
         lift = min(random.Random(f"dropped/{seed}/{name}").uniform(*DROP_HEIGHT), room - top - 1.0)
         if lift >= 1.0:
             for k in parts:

@@ -45,7 +45,7 @@ def _fill_polygon(image: np.ndarray, points, color: int) -> None:
     for row in range(max(0, int(np.rint(min(ys)))), min(height, int(np.rint(max(ys))))):
         line = row + 0.5
         xs = []
-        for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]):
+        for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False):
             if abs(y1 - y0) < 1e-3 or not min(y0, y1) <= line <= max(y0, y1):
                 continue
             xs.append(x0 + (line - y0) * (x1 - x0) / (y1 - y0))
@@ -121,10 +121,10 @@ def jar_offset(diameter: float) -> float:
     area = moment = 0.0
     for part in jar_parts(jar_height(diameter)):
         points = part.points
-        a = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / 2
-        cy = sum((y0 + y1) * (x0 * y1 - x1 * y0) for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / (
-            6 * a
-        )
+        a = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False)) / 2
+        cy = sum(
+            (y0 + y1) * (x0 * y1 - x1 * y0) for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=False)
+        ) / (6 * a)
         area, moment = area + a, moment + a * cy
     return moment / area
 

@@ -49,7 +49,7 @@ def draw(level: PhyreLevel, title: str = "", action: BallAction | TwoBallAction 
         _draw(axes, outline(body.shape, body.size), body.x, body.y, body.angle, PALETTE[body.color])
     for ball in action.balls if action is not None else ():
         axes.add_patch(patches.Circle((ball.x, ball.y), ball.radius, color=PALETTE["red"], zorder=3))
-    for name, points in (paths or {}).items():
+    for points in (paths or {}).values():
         xs = [p[0] * PIXELS_PER_METRE for p in points]
         ys = [p[1] * PIXELS_PER_METRE for p in points]
         axes.plot(xs, ys, linestyle="--", linewidth=1.0, color="#555555", zorder=4)

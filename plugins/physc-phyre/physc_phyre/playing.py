@@ -107,7 +107,7 @@ class PhyrePlaying(Playing):
             else b
             for b in level.bodies
         )
-        radii = {name: ball.radius for name, ball in zip(level.players, action.balls)}
+        radii = {name: ball.radius for name, ball in zip(level.players, action.balls, strict=False)}
         balls = [
             (s[0] * PIXELS_PER_METRE, s[1] * PIXELS_PER_METRE, radii[name], s[2])
             for name in level.players

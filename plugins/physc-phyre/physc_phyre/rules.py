@@ -111,7 +111,7 @@ class GoalRules(RunRules):
                 else [engine.state(n)[:2]] * snapshot.step
                 for n in self.goal
             ]
-            pairs = list(zip(*rows))[::-1]
+            pairs = list(zip(*rows, strict=False))[::-1]
             self.held = next((k for k, (a, b) in enumerate(pairs) if not balls_touch(a, b, *self.radii)), len(pairs))
             return
         pair = frozenset(self.goal)

@@ -35,7 +35,10 @@ def candidate_pairs(level: PhyreLevel, scenario) -> list[tuple[str, TwoBallActio
         return []
     one, two = (drops(level, term) for term in firsts)
     tops = [outline_box(level.body(term.objects[1]))[3] for term in firsts]
-    heights = [[ball.y - ball.radius - top for _, ball in candidates] for candidates, top in zip((one, two), tops)]
+    heights = [
+        [ball.y - ball.radius - top for _, ball in candidates]
+        for candidates, top in zip((one, two), tops, strict=False)
+    ]
     pairs = sorted(
         ((i, j) for i in range(len(one)) for j in range(len(two))),
         key=lambda p: (heights[1][p[1]] <= heights[0][p[0]], p[0] + p[1], p[0]),
