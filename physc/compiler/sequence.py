@@ -7,6 +7,8 @@ They read the terms alone (TermIR: name, objects, directions), never a layout or
 
 from __future__ import annotations
 
+from collections.abc import Set
+
 from physc.dsl.scenario import TermIR
 
 OPPOSITE = {"left": "right", "right": "left", "above": "below", "below": "above"}
@@ -22,7 +24,7 @@ def falls_between(interactions, mover: str, first: str, second: str) -> bool:
     return any(t.name == "fall" and t.objects[0] == mover for t in interactions[start + 1 : onto[0]])
 
 
-def pushes(interactions, position: int, players: set[str], heading: str | None = "right") -> str | None:
+def pushes(interactions, position: int, players: Set[str], heading: str | None = "right") -> str | None:
     """The way (left or right) that the hit `interactions[position]` pushes its target, if
     known: away from the one side it is declared from (from the left: to the right). A hit
     declared otherwise (`left ∨ above`, `any`) pushes the way its actor flies, if that is

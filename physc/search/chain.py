@@ -23,6 +23,7 @@ import attrs
 import numpy as np
 
 from physc import budget
+from physc.compiler.concrete_layout import ConcreteLayout
 from physc.search.attempt import Attempt, reaches
 from physc.search.chain_stages import ChainStage, prefix
 from physc.search.coordinates import Coordinates, weak_parts
@@ -38,8 +39,8 @@ class Node:
     """A layout that realises the sequence up to the end of stage `stage`, with the attempts
     that realise it (best first), the steps that built it and the least strength of its stages."""
 
-    layout: object
-    attempts: tuple
+    layout: ConcreteLayout
+    attempts: tuple[Attempt, ...]
     stage: int
     steps: tuple[str, ...] = ()
     strength: float = float("inf")
@@ -94,12 +95,13 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     if ledger.stages_raised < settings.raise_stages and ledger.variants_tried < settings.variants:
         ledger.stages_raised += 1
         ledger.variants_tried += 1
-        base = (
-            (weak[0][2].layout, weak[0][2].attempts[0])
-            if weak
-            else (ledger.failed_layout.get(stage.index), ledger.failed.get(stage.index))
+        if weak:
+            base, lost = weak[0][2].layout, weak[0][2].attempts[0]
+        else:  # the best play of a variant that failed here, and its layout (noted together)
+            base, lost = ledger.failed_layout.get(stage.index), ledger.failed.get(stage.index)
+        node = (
+            raise_stage(problem, ledger, parent, stage, base, lost) if base is not None and lost is not None else None
         )
-        node = raise_stage(problem, ledger, parent, stage, *base) if base[1] is not None else None
         if node is not None:
             found = chain(problem, ledger, node, i + 1)
             if found is not None:
@@ -112,7 +114,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
 
 
 def raise_stage(
-    problem: Problem, ledger: Ledger, parent: Node, stage: ChainStage, layout, attempt: Attempt
+    problem: Problem, ledger: Ledger, parent: Node, stage: ChainStage, layout: ConcreteLayout, attempt: Attempt
 ) -> Node | None:
     """The stage's failed or weak link raised (raising.py): the coordinates of the link the
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
@@ -130,7 +132,7 @@ def raise_stage(
         weakest = Margin.failed(interactions[k].text, k, what="", unit="")
     space = Coordinates.of(problem, layout, attempt.action, *weak_parts(problem, weakest))
 
-    def judge(candidate, action, notes) -> Candidate:
+    def judge(candidate: ConcreteLayout, action: object, notes: str) -> Candidate[Attempt]:
         scene = prefix(candidate, problem.entry, stage.start)
         played = attrs.evolve(simulate(problem, ledger, scene, action), label=attempt.label)
         if not passes(problem, played, stage, candidate):
@@ -159,14 +161,18 @@ def raise_stage(
         f"{stage.index}/{attempt.label}",
         settings.raise_stage_evaluations,
         settings.raise_stage_sigma,
+        lambda candidate: candidate,
     )
     if found is None:
         return None
+    assert found.found is not None, "a candidate the climb gives passed, and carries its play"
     step = f"{weakest.term}: margins raised: {found.notes or 'as placed'}"
     return Node(found.layout, (found.found,), stage.index, parent.steps + (step,), min(parent.strength, found.value))
 
 
-def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, attempt: Attempt) -> float:
+def stage_strength(
+    problem: Problem, ledger: Ledger, layout: ConcreteLayout, stage: ChainStage, attempt: Attempt
+) -> float:
     """The least margin (`score`) that `attempt`'s action leaves the links up to the stage's end
     in the stage's scene of `layout`, as played and in `stage_replays` noisy replays."""
     domain = problem.domain
@@ -189,7 +195,9 @@ def stage_strength(problem: Problem, ledger: Ledger, layout, stage: ChainStage, 
     return strength
 
 
-def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: ChainStage, lead: int = 0) -> tuple | None:
+def realised(
+    problem: Problem, ledger: Ledger, layout: ConcreteLayout, parent: Node, stage: ChainStage, lead: int = 0
+) -> tuple[Attempt, ...] | None:
     """The attempts, best first, that realise every interaction up to the stage's end in the
     stage's scene of `layout`: the parent's actions (the lead's first), or at the first stage
     every candidate action (those that came nearest before, first). Among those that realise
@@ -209,6 +217,7 @@ def realised(problem: Problem, ledger: Ledger, layout, parent: Node, stage: Chai
         order = [parent.attempts[lead]] + [a for j, a in enumerate(parent.attempts) if j != lead]
         actions, screen = [(a.label, a.action) for a in order], 1
     else:
+        order = []  # no parent: no play to resume from
         actions = domain.actions.candidates(problem.level_of(scene), problem.scenario)
         actions = [c for c in actions if c[0] in ledger.screened] + [c for c in actions if c[0] not in ledger.screened]
         screen = len(ledger.screened) or len(actions)

@@ -26,6 +26,7 @@ import math
 
 import attrs
 
+from physc.compiler.concrete_layout import PlacedObject
 from physc.search import placing
 from physc.search.chain_stages import prefix
 from physc.search.problem import Problem
@@ -57,7 +58,7 @@ def worth(act: str, mass: float, friction: float, actor_mass: float | None, toug
     return share
 
 
-def refitted(old, new, directions) -> object:
+def refitted(old: PlacedObject, new: PlacedObject, directions: tuple[str, ...]) -> PlacedObject:
     """`new` (a body for `old`'s object) where `old` was: on the same bottom, and touching
     the same side that its actor comes from."""
     x = old.x

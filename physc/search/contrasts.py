@@ -37,7 +37,6 @@ def contrasts(problem: Problem, ledger: Ledger, layout, attempt) -> tuple[str | 
         solved = sum(bool(p.trace.solved) for p in plays)
         if solved:
             return settings.CONTRAST_SOLVES, ()
-        notes.append(
-            f"{term.text or f'contrast({contrast}, {counterpart})'}: {contrast} acted on as {counterpart} solves 0 of {len(plays)} plays"
-        )
+        named = term.text or f"contrast({contrast}, {counterpart})"
+        notes.append(f"{named}: {contrast} acted on as {counterpart} solves 0 of {len(plays)} plays")
     return None, tuple(notes)

@@ -25,11 +25,16 @@ the region is not offered.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import attrs
 
+from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.qsr import joined
 from physc.search import placing
+from physc.search.chain_stages import supports
 from physc.search.problem import Problem
+from physc.simulation.margin import Margin
 
 PROBE = 0.25  # the share of its reach a coordinate is tried at, either way, to be offered
 
@@ -42,10 +47,10 @@ class Coordinate:
     reach: float  # the most it moves either way: layout units, degrees, or the action's steps
     sign: float = 1.0  # +1: a positive value moves rightwards or lengthens (−1: the other way)
     stretch: str = ""  # a length's surface
-    bodies: tuple = ()  # a body's options, lightest first (PlacedObjects), and the current one's place among them
+    bodies: tuple[PlacedObject, ...] = ()  # a body's options, lightest first, and the current one's place among them
     current: int = 0
 
-    def body(self, value: float):
+    def body(self, value: float) -> PlacedObject:
         """The body `value` (in [−1, 1]) picks: the current one at 0, heavier ones above."""
         index = min(max(self.current + int(round(value * (len(self.bodies) - 1))), 0), len(self.bodies) - 1)
         return self.bodies[index]
@@ -60,11 +65,12 @@ class Coordinate:
         return f"{self.name} {self.kind} {value:+.3f}{unit}"
 
 
-def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]]]:
+def weak_parts(problem: Problem, margin: Margin) -> tuple[set[str], list[tuple[str, str]]]:
     """What a weak link depends on: the objects of the link, of the one after it and of the hit
     that set its actor moving (what strikes it sets its speed), and the pairs a hit, a fall, a touch
-    or a destroy among them meets (the gap between them); for a restriction, its objects and the surfaces the first of them rolls
-    or slides on (a body that must not fall stays on what it moves along)."""
+    or a destroy among them meets (the gap between them); for a restriction, its objects and the
+    surfaces the first of them rolls or slides on (a body that must not fall stays on what it
+    moves along)."""
     interactions = problem.interactions
     names: set[str] = set()
     pairs: list[tuple[str, str]] = []
@@ -78,9 +84,9 @@ def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]
             if (
                 term.name in ("hit", "fall", "touch", "destroy")
                 and len(term.objects) > 1
-                and tuple(term.objects[:2]) not in pairs
+                and (term.objects[0], term.objects[1]) not in pairs
             ):
-                pairs.append(tuple(term.objects[:2]))
+                pairs.append((term.objects[0], term.objects[1]))
         return names, pairs
     restriction = next((r for r in problem.scenario.restrictions if r.text == margin.term), None)
     if restriction is not None:
@@ -91,10 +97,10 @@ def weak_parts(problem: Problem, margin) -> tuple[set[str], list[tuple[str, str]
     return names, pairs
 
 
-def structures(layout) -> dict[str, frozenset[str]]:
+def structures(layout: ConcreteLayout) -> dict[str, frozenset[str]]:
     """Each object's structure: what is joined to it or rests on it, transitively."""
     links: dict[str, set[str]] = {o.name: {o.name} for o in layout.objects}
-    pairs = [tuple(pair) for pair in joined(layout.conjunction)] + [(a, b) for a, b in placing_supports(layout).items()]
+    pairs = [tuple(pair) for pair in joined(layout.conjunction)] + [(a, b) for a, b in supports(layout).items()]
     for a, b in pairs:
         if a in links and b in links and links[a] is not links[b]:
             merged = links[a] | links[b]
@@ -103,23 +109,24 @@ def structures(layout) -> dict[str, frozenset[str]]:
     return {name: frozenset(group) for name, group in links.items()}
 
 
-def placing_supports(layout) -> dict[str, str]:
-    from physc.search.chain_stages import supports
-
-    return supports(layout)
-
-
 @attrs.frozen
 class Coordinates:
     """The coordinates of one layout and action (module docstring)."""
 
     problem: Problem
-    layout: object
-    action: object
+    layout: ConcreteLayout
+    action: object  # the domain's action (its `actions` part's), opaque to the search
     axes: tuple[Coordinate, ...]
 
     @classmethod
-    def of(cls, problem: Problem, layout, action, names, pairs=()) -> Coordinates:
+    def of(
+        cls,
+        problem: Problem,
+        layout: ConcreteLayout,
+        action: object,
+        names: set[str],
+        pairs: Sequence[tuple[str, str]] = (),
+    ) -> Coordinates:
         """The coordinates of the objects `names` (the weak links' objects), of the gaps between
         the object pairs `pairs` (what a weak link meets), and of the action."""
         settings = problem.settings
@@ -197,7 +204,7 @@ class Coordinates:
         ranges = [incline.descending, incline.other] + ([incline.ramp] if incline.ramp else [])
         return min(r[0] for r in ranges), max(r[1] for r in ranges)
 
-    def nearest(self, point) -> tuple[object, object, str] | None:
+    def nearest(self, point: Sequence[float]) -> tuple[ConcreteLayout, object, str] | None:
         """(layout, action, what moved) at `point`, or, where that leaves the region, at the
         point brought back towards the origin: scaled by a half, then a quarter, then with its
         largest coordinates dropped one by one (a point's moves are each allowed alone more
@@ -215,16 +222,16 @@ class Coordinates:
                 return found
         return None
 
-    def apply(self, point) -> tuple[object, object, str] | None:
+    def apply(self, point: Sequence[float]) -> tuple[ConcreteLayout, object, str] | None:
         """(layout, action, what moved) at `point` (in [−1, 1]ⁿ), or None outside the region."""
         problem = self.problem
         shift: dict[str, list[float]] = {}
         stretch: dict[str, tuple[float, float]] = {}
         turn: dict[str, float] = {}
-        bodies: dict[str, object] = {}
+        bodies: dict[str, PlacedObject] = {}
         steps = 0
         notes = []
-        for axis, value in zip(self.axes, point):
+        for axis, value in zip(self.axes, point, strict=True):  # one value per axis
             amount = float(value) * axis.reach
             if axis.kind == "action":
                 steps = int(round(amount))

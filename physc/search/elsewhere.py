@@ -7,17 +7,26 @@ are replayed in each other world the domain has, and a world is named when it re
 declared sequence there, or the whole of it with a stronger weakest link: the play's own action
 first, then the domain's candidate actions for that level (a shot lands elsewhere in another
 world's physics), then the chain built there by the search's stages from the layout as placed
-(the layout was built for this world's physics: later objects stand where its actor went). The replays take a slice of the time budget kept for them (`reserve`), and
-stop when it is spent, so that the budget stays a promise.
+(the layout was built for this world's physics: later objects stand where its actor went). The
+replays take a slice of the time budget kept for them (`reserve`), and stop when it is spent,
+so that the budget stays a promise.
 """
 
 from __future__ import annotations
 
+from typing import cast
+
 import attrs
 
 from physc import budget
-from physc.search.problem import search_seconds
+from physc.compiler.concrete_layout import ConcreteLayout
+from physc.domains.simulated import SimulatedDomain
+from physc.dsl.scenario import ScenarioIR
+from physc.search.chain import Node, chain
+from physc.search.problem import Ledger, Problem, search_seconds
 from physc.simulation.fidelity import fidelity
+from physc.simulation.margin import Margin
+from physc.simulation.trace import Trace
 
 RESERVE_SHARE = 0.1  # of the time budget, kept for the replays elsewhere
 RESERVE_MOST = 5.0  # seconds at most
@@ -29,7 +38,7 @@ class Elsewhere:
     world: str
     matched: int
     total: int
-    weakest: object | None  # physc.simulation.margins.Margin of the replay there
+    weakest: Margin | None  # the weakest link of the replay there
     built: bool = False  # whether the chain was built there by the search's stages (else: a play replayed)
 
     def text(self) -> str:
@@ -45,12 +54,19 @@ class Elsewhere:
         )
 
 
-def reserve(domain, time_budget: float) -> float:
+def reserve(domain: SimulatedDomain, time_budget: float) -> float:
     """Seconds of the budget kept for replays elsewhere: none for a domain of one world."""
     return min(RESERVE_MOST, RESERVE_SHARE * time_budget) if len(domain.worlds) > 1 else 0.0
 
 
-def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int = 1) -> Elsewhere | None:
+def elsewhere(
+    domain: SimulatedDomain,
+    scenario: ScenarioIR,
+    furthest: list[tuple[tuple, object, object, ConcreteLayout | None]],
+    best: int,
+    weakest: Margin | None,
+    accept: int = 1,
+) -> Elsewhere | None:
     """The first other world of `domain` where a play of `furthest` ((score, level, action,
     the layout as placed), the furthest first) gets further than `best` interactions here, or
     realises the whole sequence with every link held where here its weakest link (`weakest`)
@@ -63,7 +79,7 @@ def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int 
     for world in domain.worlds:
         if world.name == domain.world.name:
             continue
-        there = domain.at(world.name)
+        there = cast(SimulatedDomain, domain.at(world.name))  # a copy of `domain` (Domain.at): its class
         try:
             for _, level, action, placed in furthest:
                 for tried in [action] + [a for a in _candidates(there, level, scenario) if a != action]:
@@ -82,7 +98,15 @@ def elsewhere(domain, scenario, furthest: list, best: int, weakest, accept: int 
     return None
 
 
-def _judged(there, scenario, trace, best: int, total: int, here: float, built: bool = False) -> Elsewhere | None:
+def _judged(
+    there: SimulatedDomain,
+    scenario: ScenarioIR,
+    trace: Trace,
+    best: int,
+    total: int,
+    here: float,
+    built: bool = False,
+) -> Elsewhere | None:
     """The world `there` named by `trace` if it gets further than `best`, or realises the
     whole sequence with a weakest link stronger than `here` (and held)."""
     check = fidelity(scenario, trace)
@@ -94,13 +118,10 @@ def _judged(there, scenario, trace, best: int, total: int, here: float, built: b
     return None
 
 
-def _built(there, scenario, placed, accept: int):
+def _built(there: SimulatedDomain, scenario: ScenarioIR, placed: ConcreteLayout | None, accept: int) -> Trace | None:
     """The trace of the chain the search builds in the world `there` from the layout as
     placed: the whole sequence's best attempt, else the furthest play it made; None for a
     domain the search cannot run in."""
-    from physc.search.chain import Node, chain
-    from physc.search.problem import Ledger, Problem
-
     if placed is None or "satisfy" not in there.capabilities:
         return None
     problem = Problem.of(there, scenario, placed, accept)
@@ -111,6 +132,6 @@ def _built(there, scenario, placed, accept: int):
     return None if ledger.furthest is None else ledger.furthest.trace
 
 
-def _candidates(domain, level, scenario) -> list:
+def _candidates(domain: SimulatedDomain, level: object, scenario: ScenarioIR) -> list[object]:
     """The domain's candidate actions for the level (the search's first stage), without their labels."""
     return [action for _, action in domain.actions.candidates(level, scenario)]

@@ -12,10 +12,14 @@ An obstacle is a placed object of the layout like any other, role "obstacle".
 from __future__ import annotations
 
 import math
+import random
+from collections.abc import Callable, Sequence
 
 import attrs
+import numpy as np
 
-from physc.compiler.concrete_layout import PlacedObject
+from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
+from physc.dsl.scenario import TermIR
 from physc.search import placing
 from physc.search.attempt import Attempt
 from physc.search.problem import Ledger, Problem, replayed, simulate
@@ -25,12 +29,14 @@ BACKS = (0.9, 1.3, 1.8, 2.4, 3.0, 3.7, 4.5)  # layout units back along the fligh
 SHORTCUT_BACKS = (0.9, 1.3, 1.8)
 
 
-def breaks(attempt: Attempt, restriction) -> bool:
+def breaks(attempt: Attempt, restriction: TermIR) -> bool:
     """Whether `attempt`'s play breaks `restriction`."""
     return any(v.restriction == restriction.text for v in attempt.trace.violations)
 
 
-def obstruct(problem: Problem, ledger: Ledger, layout, solution: Attempt) -> tuple[object, list[str]] | None:
+def obstruct(
+    problem: Problem, ledger: Ledger, layout: ConcreteLayout, solution: Attempt
+) -> tuple[ConcreteLayout, list[str]] | None:
     """`layout` with every action at a restricted object that breaks its cannotHit
     blocked, and the obstacles' descriptions; None when one cannot be blocked."""
     added: list[str] = []
@@ -49,7 +55,7 @@ def obstruct(problem: Problem, ledger: Ledger, layout, solution: Attempt) -> tup
                 restriction.objects[0],
                 solution,
                 BACKS,
-                lambda a: breaks(a, restriction),
+                lambda a, restriction=restriction: breaks(a, restriction),
                 len(added),
             )
             if blocked is None:
@@ -61,7 +67,7 @@ def obstruct(problem: Problem, ledger: Ledger, layout, solution: Attempt) -> tup
     return layout, added
 
 
-def offending(problem: Problem, ledger: Ledger, layout, restriction) -> Attempt | None:
+def offending(problem: Problem, ledger: Ledger, layout: ConcreteLayout, restriction: TermIR) -> Attempt | None:
     """An action at the restricted object that breaks the restriction in `layout`."""
     for label, action in problem.domain.search.actions_at(problem.level_of(layout), restriction.objects[1]):
         attempt = attrs.evolve(simulate(problem, ledger, layout, action), label=label)
@@ -71,8 +77,16 @@ def offending(problem: Problem, ledger: Ledger, layout, restriction) -> Attempt 
 
 
 def block(
-    problem: Problem, ledger: Ledger, layout, offending: Attempt, actor: str, solution: Attempt, backs, bad, count: int
-):
+    problem: Problem,
+    ledger: Ledger,
+    layout: ConcreteLayout,
+    offending: Attempt,
+    actor: str,
+    solution: Attempt,
+    backs: Sequence[float],
+    bad: Callable[[Attempt], bool],
+    count: int,
+) -> tuple[ConcreteLayout, str] | None:
     """(`layout` with an obstacle across `actor`'s flight in `offending` after which the
     solution still works and `bad` no longer holds of the offending action, its
     description), or None."""
@@ -112,18 +126,25 @@ def block(
     return None
 
 
-def back_along(path, distance: float, scale: float):
+def back_along(path: np.ndarray, distance: float, scale: float) -> tuple[float, float, float, float] | None:
     """(x, y, vx, vy) in layout units `distance` back along `path` from its end."""
     travelled = 0.0
     rows = [row for row in path if not math.isnan(row[0])]
-    for later, earlier in zip(reversed(rows), list(reversed(rows))[1:]):
+    for later, earlier in zip(reversed(rows), list(reversed(rows))[1:], strict=False):  # each row and the one before
         travelled += math.hypot(later[0] - earlier[0], later[1] - earlier[1]) * scale
         if travelled >= distance:
             return earlier[0] * scale, earlier[1] * scale, earlier[3], earlier[4]
     return None
 
 
-def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: int) -> tuple[object, list[str]]:
+def _shortcut(attempt: Attempt) -> bool:
+    """Whether `attempt` solves the task without the sequence (a shortcut the guard blocks)."""
+    return attempt.trace.solved and not attempt.fidelity.valid
+
+
+def guard(
+    problem: Problem, ledger: Ledger, layout: ConcreteLayout, solution: Attempt, count: int
+) -> tuple[ConcreteLayout, list[str]]:
     """`layout` with shortcuts blocked (actions at other objects than the first target
     that solve the task), each by an obstacle that keeps the solution holding up, at most
     `shortcuts` tried; and the obstacles' descriptions. `count`: obstacles so far."""
@@ -146,9 +167,8 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
             if not attempt.trace.solved or attempt.fidelity.valid:
                 continue
             left -= 1
-            shortcut = lambda a: a.trace.solved and not a.fidelity.valid  # noqa: E731
             blocked = block(
-                problem, ledger, layout, attempt, actor, solution, SHORTCUT_BACKS, shortcut, count + len(added)
+                problem, ledger, layout, attempt, actor, solution, SHORTCUT_BACKS, _shortcut, count + len(added)
             )
             if blocked is not None and holds_up(problem, ledger, solution, blocked[0]):
                 layout = blocked[0]
@@ -157,7 +177,9 @@ def guard(problem: Problem, ledger: Ledger, layout, solution: Attempt, count: in
     return layout, added
 
 
-def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -> tuple[object, list[str]]:
+def distract(
+    problem: Problem, ledger: Ledger, rng: random.Random, layout: ConcreteLayout, solution: Attempt
+) -> tuple[ConcreteLayout, list[str]]:
     """`layout` with the domain's distractors, each kept only if the level still stands,
     the solution still holds up, and it is no way to solve the task; and their names."""
     added: list[str] = []
@@ -172,7 +194,9 @@ def distract(problem: Problem, ledger: Ledger, rng, layout, solution: Attempt) -
                 continue
             if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
                 continue
-            if not ledger.evaluator.run(lambda: problem.domain.stability(problem.level_of(candidate)))[0]:
+            if not ledger.evaluator.run(
+                lambda candidate=candidate: problem.domain.stability(problem.level_of(candidate))
+            )[0]:
                 continue
             if not holds_up(problem, ledger, solution, candidate):
                 continue

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import attrs
 
+from physc.simulation.margin import Margin
+
 
 @attrs.frozen
 class Parts:
@@ -48,7 +50,7 @@ class Outcome:
     # what the first such replay shows about it, physc.simulation.stopped), most often lost first.
     lost: tuple[tuple[str, int, str], ...] = ()
     # Of the chains realised but not robust, the strongest weakest link (physc.simulation.margins).
-    weakest: object | None = None
+    weakest: Margin | None = None
     # The play that came furthest: (its fidelity score, its level, its action, the layout as
     # placed), replayed in the domain's other worlds when no task is found (physc.search.elsewhere).
     furthest: tuple | None = None

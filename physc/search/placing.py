@@ -16,10 +16,13 @@ domain's level, so it serves every domain: lengths of a trace times the domain's
 from __future__ import annotations
 
 import math
+from collections.abc import Set
 
 import attrs
 import numpy as np
 
+from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
+from physc.compiler.dimension_graphs import LayoutParameters
 from physc.compiler.geometry import overlapping_pair
 from physc.compiler.qsr import joined
 from physc.compiler.qsr_evaluate import five_points, holds
@@ -29,7 +32,7 @@ GROUND = ("ground", "floor")  # concretes of the ground a body may rest on
 FIXED_ROLES = ("support", "obstacle", "player")  # roles of what the search never places on a path
 
 
-def box(placed) -> tuple[float, float, float, float]:
+def box(placed: PlacedObject) -> tuple[float, float, float, float]:
     """(left, bottom, right, top) of a placed object's outline."""
     points = [
         p for k, p in five_points(placed.x, placed.y, placed.width, placed.height, placed.rotation).items() if k != "c"
@@ -38,7 +41,9 @@ def box(placed) -> tuple[float, float, float, float]:
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def consistent(layout, parameters, moved, resting=frozenset()) -> bool:
+def consistent(
+    layout: ConcreteLayout, parameters: LayoutParameters, moved: Set[str], resting: Set[str] = frozenset()
+) -> bool:
     """The objects in `moved` inside the placement area, no two objects overlapping
     (joined platforms aside), and every QSR of the chosen conjunction about a moved object
     holding (any of its clause's; for an object of `resting`, resting on any part of its
@@ -79,13 +84,13 @@ class Supports:
     moves onto a path (supports, obstacles, the player's object, the ground; a scenario's
     own surface may be moved, with what rests on it)."""
 
-    support_of: dict
-    own_support: dict
-    on_ground: frozenset
-    fixed: frozenset
+    support_of: dict[str, str]  # object → what it rests on
+    own_support: dict[str, str]  # object → the support that carries it alone
+    on_ground: frozenset[str]
+    fixed: frozenset[str]
 
     @classmethod
-    def of(cls, layout, scenario, parameters) -> Supports:
+    def of(cls, layout: ConcreteLayout, parameters: LayoutParameters) -> Supports:
         support_of = supports(layout)
         carried: dict[str, int] = {}
         for s in support_of.values():
@@ -119,7 +124,9 @@ class Supports:
         return name in self.on_ground or (name in self.support_of and name not in self.own_support)
 
 
-def shifted(layout, members: set[str], dx: float, dy: float, supports: Supports):
+def shifted(
+    layout: ConcreteLayout, members: set[str], dx: float, dy: float, supports: Supports
+) -> ConcreteLayout | None:
     """`layout` with `members` moved together by (dx, dy) (only sideways if one rests on the
     ground); None if that moves nothing."""
     if members & supports.on_ground:
@@ -223,7 +230,7 @@ def clear(trace, row: int, changed, actor: str, sizes: dict, scale: float, margi
     return approach(trace, changed, sizes, scale, margin, row, actor) is None
 
 
-def beyond(layout, cut: float, sign: float, fixed=frozenset()) -> set[str] | None:
+def beyond(layout: ConcreteLayout, cut: float, sign: float, fixed: Set[str] = frozenset()) -> set[str] | None:
     """The objects wholly beyond `cut` along the heading `sign` (the ground and the player's
     object aside): what moves with a surface brought closer or stretched. None if another
     object straddles the cut, or one of `fixed` lies beyond it."""

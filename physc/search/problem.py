@@ -13,7 +13,12 @@ from __future__ import annotations
 
 import attrs
 
+from physc.compiler.concrete_layout import ConcreteLayout
+from physc.compiler.dimension_graphs import LayoutParameters
+from physc.compiler.layout_rules import LayoutRules
 from physc.compiler.sequence import pushes
+from physc.domains.simulated import SimulatedDomain
+from physc.dsl.scenario import ScenarioIR, TermIR
 from physc.search import placing
 from physc.search.attempt import Attempt
 from physc.search.chain_stages import ChainStage, introduced, stages
@@ -22,14 +27,22 @@ from physc.search.settings import SETTINGS, SearchSettings
 from physc.simulation.fidelity import fidelity
 from physc.simulation.margins import Margin
 from physc.simulation.snapshot import Snapshot
+from physc.simulation.trace import Trace
 
 KEPT_SIMULATIONS = 256  # the search's last simulations, kept: backtracking meets the same scene again
 
 
-def search_seconds(domain) -> float:
+def search_seconds(domain: SimulatedDomain) -> float:
     """A play's simulated time at most while `domain` is searched (each turn's): its search's
     `seconds`, else the domain's."""
     return domain.search.seconds or domain.seconds
+
+
+def _parameters(domain: SimulatedDomain) -> LayoutParameters:
+    """The domain's layout parameters: a layout is searched only after the layout stages, which need them."""
+    parameters = domain.layout_parameters
+    assert parameters is not None, "a layout is searched only after the layout stages, which need its parameters"
+    return parameters
 
 
 @attrs.frozen
@@ -41,27 +54,37 @@ class Checks:
     acceptance: bool = True  # the domain's acceptance rule judges it (`--no-acceptance`: not)
 
 
+ALL_CHECKS = Checks()  # the default: the task validated and judged by the acceptance rule
+
+
 @attrs.frozen
 class Problem:
     """What one search reads and never changes."""
 
-    domain: object  # the bound SimulatedDomain (its world and engine)
-    scenario: object  # the checked scenario (physc.dsl.scenario.ScenarioIR)
-    placed: object  # the layout as placed (a ConcreteLayout); the steps make new ones
+    domain: SimulatedDomain  # bound to its world and engine (Domain.at)
+    scenario: ScenarioIR  # the checked scenario
+    placed: ConcreteLayout  # the layout as placed; the steps make new ones
     settings: SearchSettings
     supports: placing.Supports  # what rests on what, what never moves onto a path
-    entry: dict  # object → the interaction at which it enters the scene
+    entry: dict[str, int]  # object → the interaction at which it enters the scene
     plan: tuple[ChainStage, ...]
     players: frozenset[str]  # the player's objects (the bird)
     accept: int  # noisy replays a solution must pass (fewer: a fallback's)
-    checks: Checks = Checks()  # the run's checks: validation, the acceptance rule
+    checks: Checks = ALL_CHECKS  # the run's checks: validation, the acceptance rule
     action_starts: tuple[int, ...] = ()  # the interactions at which a later action of the player starts
 
     @classmethod
-    def of(cls, domain, scenario, layout, accept: int, checks: Checks = Checks()) -> Problem:
+    def of(
+        cls,
+        domain: SimulatedDomain,
+        scenario: ScenarioIR,
+        layout: ConcreteLayout,
+        accept: int,
+        checks: Checks = ALL_CHECKS,
+    ) -> Problem:
         vocabulary = domain.vocabulary
         carried = [
-            tuple(t.objects[:2])
+            (t.objects[0], t.objects[1])
             for t in scenario.restrictions
             if (term := vocabulary.term(t.name)) is not None and term.carries
         ]
@@ -72,7 +95,7 @@ class Problem:
             scenario,
             layout,
             domain.search.settings or SETTINGS,
-            placing.Supports.of(layout, scenario, domain.layout_parameters),
+            placing.Supports.of(layout, _parameters(domain)),
             entry,
             tuple(stages(scenario.interactions, entry, starts)),
             frozenset(o.name for o in scenario.objects if o.term == domain.vocabulary.player),
@@ -82,7 +105,7 @@ class Problem:
         )
 
     @property
-    def interactions(self):
+    def interactions(self) -> tuple[TermIR, ...]:
         return self.scenario.interactions
 
     @property
@@ -91,22 +114,29 @@ class Problem:
         return search_seconds(self.domain)
 
     @property
-    def parameters(self):
+    def parameters(self) -> LayoutParameters:
         """The layout's QSR distances and placement area (the domain's)."""
-        return self.domain.layout_parameters
+        return _parameters(self.domain)
+
+    @property
+    def rules(self) -> LayoutRules:
+        """The domain's layout rules (what placed the layout searched)."""
+        rules = self.domain.layout_rules
+        assert rules is not None, "a layout is searched only after the layout stages, which need the domain's rules"
+        return rules
 
     @property
     def scale(self) -> float:
         """Layout lengths per length of the simulation."""
         return self.domain.search.trace_scale
 
-    def level_of(self, layout):
+    def level_of(self, layout: ConcreteLayout) -> object:
         return self.domain.level_from_layout(layout, self.scenario)
 
     def pushed_by(self, k: int) -> str | None:
         """The way ("left" or "right") the hit `interactions[k]` pushes its target, if known
         (physc.compiler.sequence.pushes, with the domain's heading of the player's object)."""
-        pushed = pushes(self.interactions, k, self.players, self.domain.layout_rules.player_heading)
+        pushed = pushes(self.interactions, k, self.players, self.rules.player_heading)
         return pushed if pushed in ("left", "right") else None
 
     def heading_after(self, name: str, index: int) -> str | None:
@@ -124,16 +154,15 @@ class Ledger:
     evaluator: Evaluator = attrs.field(factory=lambda: Evaluator(KEPT_SIMULATIONS))
     best: int = 0  # most interactions realised in order by one play
     furthest: Attempt | None = None  # the play that came furthest
-    furthest_layout: object | None = None  # the layout it was played in
+    furthest_layout: ConcreteLayout | None = None  # the layout it was played in
     nearest: int = 0  # most noisy replays passed by a working action given up as fragile
     tried: int = 0  # working actions put through the noisy replays
-    lost: dict = attrs.field(
-        factory=dict
-    )  # declared term → (failed noisy replays that lost it first, what the first shows)
+    # declared term → (failed noisy replays that lost it first, what the first shows)
+    lost: dict[str, tuple[int, str]] = attrs.field(factory=dict)
     variants_tried: int = 0
-    screened: list = attrs.field(factory=list)  # labels of the first stage's actions that came nearest
-    failed: dict = attrs.field(factory=dict)  # stage → the best attempt of a variant that failed there
-    failed_layout: dict = attrs.field(factory=dict)  # stage → the layout it failed in
+    screened: list[str] = attrs.field(factory=list)  # labels of the first stage's actions that came nearest
+    failed: dict[int, Attempt] = attrs.field(factory=dict)  # stage → the best attempt of a variant that failed there
+    failed_layout: dict[int, ConcreteLayout] = attrs.field(factory=dict)  # stage → the layout it failed in
     weakest: Margin | None = None  # the strongest weakest link of a chain realised but not robust (exit 3 names it)
     raised: int = 0  # candidates the raising of margins judged (raising.py)
     stages_raised: int = 0  # stages whose margins were raised (physc.search.chain)
@@ -144,19 +173,25 @@ class Ledger:
 
 
 def simulate(
-    problem: Problem, ledger: Ledger, layout, action, seconds: float | None = None, resume: Snapshot | None = None
+    problem: Problem,
+    ledger: Ledger,
+    layout: ConcreteLayout,
+    action: object,
+    seconds: float | None = None,
+    resume: Snapshot | None = None,
 ) -> Attempt:
     """`action` played in `layout`'s level for `seconds` (default: the search's, `Problem.seconds`), from the
     snapshot `resume` if given, judged against the scenario; run once while among the last
     KEPT_SIMULATIONS asked for. The ledger notes how far it got."""
     key = (seconds, layout.objects, action, resume is not None and resume.step)
-    options = {} if resume is None else {"resume": resume}
-    trace = ledger.evaluator.kept(
-        key,
-        lambda: problem.domain.play(
-            problem.level_of(layout), action, problem.scenario, seconds or problem.seconds, **options
-        ),
-    )
+
+    def play() -> Trace:  # `resume` passed only when given: a domain's own `play` may not take it
+        level, time = problem.level_of(layout), seconds or problem.seconds
+        if resume is None:
+            return problem.domain.play(level, action, problem.scenario, time)
+        return problem.domain.play(level, action, problem.scenario, time, resume=resume)
+
+    trace = ledger.evaluator.kept(key, play)
     attempt = Attempt("", action, trace, fidelity(problem.scenario, trace))
     ledger.best = max(ledger.best, attempt.fidelity.matched)
     if ledger.furthest is None or attempt.fidelity.score > ledger.furthest.fidelity.score:
@@ -164,7 +199,7 @@ def simulate(
     return attempt
 
 
-def replayed(problem: Problem, ledger: Ledger, level, action, label: str = "") -> Attempt:
+def replayed(problem: Problem, ledger: Ledger, level: object, action: object, label: str = "") -> Attempt:
     """`action` played in `level` once more, judged against the scenario (uncached: a noisy
     replay, a guard's try, the final play)."""
     trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario, problem.seconds))

@@ -21,8 +21,11 @@ chosen conjunction about what moved still holds.
 
 from __future__ import annotations
 
+from collections.abc import Set
+
 import attrs
 
+from physc.compiler.concrete_layout import ConcreteLayout, PlacedObject
 from physc.compiler.sequence import last_hit_at, last_hit_on
 from physc.search import choosing, placing
 from physc.search.chain_stages import prefix
@@ -66,11 +69,14 @@ def offered(problem: Problem, layout, failed, start: int):
             yield from turned(problem, layout, objects, bounce.objects[1], start, mirror=True)
 
 
-def _kept(problem: Problem, layout, start: int, moved, resting=frozenset()):
+def _kept(
+    problem: Problem, layout: ConcreteLayout, start: int, moved: Set[str], resting: Set[str] = frozenset()
+) -> bool:
+    """Whether `layout`, as the scene of stage `start`, keeps every relation of the moved objects."""
     return placing.consistent(prefix(layout, problem.entry, start), problem.parameters, moved, resting)
 
 
-def _with(layout, changed):
+def _with(layout: ConcreteLayout, changed: dict[str, PlacedObject]) -> ConcreteLayout:
     return attrs.evolve(layout, objects=tuple(changed.get(o.name, o) for o in layout.objects))
 
 
@@ -94,7 +100,13 @@ def to_the_edge(problem: Problem, layout, objects, faller: str, index: int, star
     support cut to end just beyond it there."""
     hit_at = last_hit_at(problem.interactions[:index], faller)
     support = problem.supports.support_of.get(faller)
-    if hit_at is None or faller not in objects or support not in objects or objects[support].concrete in placing.GROUND:
+    if (
+        hit_at is None
+        or faller not in objects
+        or support is None
+        or support not in objects
+        or objects[support].concrete in placing.GROUND
+    ):
         return
     pushed = problem.pushed_by(hit_at)
     if pushed is None:
@@ -214,7 +226,7 @@ def exposed(problem: Problem, layout, objects, declared, start: int):
     out beyond it on that side and shields it, so it gets shorter."""
     target = declared.objects[1]
     support = problem.supports.own_support.get(target)
-    if target not in objects or support not in objects or objects[support].rotation:
+    if target not in objects or support is None or support not in objects or objects[support].rotation:
         return
     left, _, right, _ = placing.box(objects[target])
     s_left, _, s_right, _ = placing.box(objects[support])

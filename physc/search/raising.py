@@ -11,54 +11,60 @@ gives a slope to climb, how far it fell short). Only what counts as good differs
 
 The optimiser is CMA-ES (pycma): derivative-free, made for rugged objectives of a few to a few
 dozen continuous coordinates, with bounds, and deterministic for a generator of its own (here
-seeded with the CRC of the action's label). It adapts its step and the correlation of the coordinates from the ranks of
-the candidates alone, so the jumps where a link starts or stops happening do not mislead it.
+seeded with the CRC of the action's label). It adapts its step and the correlation of the
+coordinates from the ranks of the candidates alone, so the jumps where a link starts or stops
+happening do not mislead it.
 """
 
 from __future__ import annotations
 
 import zlib
 from collections.abc import Callable
+from typing import Generic, TypeVar
 
 import attrs
 import numpy as np
 
+from physc.compiler.concrete_layout import ConcreteLayout
 from physc.search.coordinates import Coordinates
 from physc.search.problem import Ledger, Problem
 
 OUTSIDE = 3.0  # the value (to be minimised) of a point outside the region: worse than any play
 
+F = TypeVar("F")  # what a judge found of a candidate
+R = TypeVar("R")  # what the climb gives: a candidate its `accept` took, as `accept` makes it
+
 
 @attrs.frozen
-class Candidate:
+class Candidate(Generic[F]):
     """A judged candidate: its layout, action and what moved, its value (higher is better),
     whether it is good (holds with the margin asked), whether it will do when nothing better
-    comes (`passing`), and what the judge found (`found`)."""
+    comes (`passing`), and what the judge found (`found`: set for every passing candidate)."""
 
-    layout: object
-    action: object
+    layout: ConcreteLayout
+    action: object  # the domain's action
     notes: str
     value: float
     good: bool
     passing: bool
-    found: object = None
+    found: F | None = None
 
 
 def climb(
     problem: Problem,
     ledger: Ledger,
     space: Coordinates,
-    judge: Callable[[object, object, str], Candidate | None],
+    judge: Callable[[ConcreteLayout, object, str], Candidate[F] | None],
     label: str,
     evaluations: int,
     sigma: float,
-    accept: Callable[[Candidate], object | None] = lambda candidate: candidate,
-):
+    accept: Callable[[Candidate[F]], R | None],
+) -> R | None:
     """CMA-ES over `space` from its origin, its first step `sigma` (a share of each coordinate's
     reach): each point's layout and action judged (`judge`: None for one that cannot be
     played). The first good candidate that `accept` takes is the result; when none is within
     `evaluations` candidates, `accept` of the best passing one; else None."""
-    import cma
+    import cma  # here, not at the top: importing it takes about 0.9 s, which a run that raises nothing never pays
 
     if not space.axes or evaluations <= 0:
         return None
@@ -83,7 +89,7 @@ def climb(
         "maxstd_boundrange": np.inf,
     }
     strategy = cma.CMAEvolutionStrategy(np.zeros(len(space.axes)), sigma, options)
-    best: Candidate | None = None
+    best: Candidate[F] | None = None
     evaluated = 0
     while not strategy.stop() and evaluated < evaluations:
         points = strategy.ask()

@@ -26,21 +26,32 @@ label, so a seed gives the same task in any process.
 
 from __future__ import annotations
 
+import random
 import time
 
+from physc.compiler.concrete_layout import ConcreteLayout
 from physc.domains.base import require
-from physc.domains.simulated import search_needs
+from physc.domains.simulated import SimulatedDomain, search_needs
+from physc.dsl.scenario import ScenarioIR
 from physc.search import guards, settings
 from physc.search.chain import Node, chain
 from physc.search.contrasts import contrasts
 from physc.search.outcome import Outcome, Parts
-from physc.search.problem import Checks, Ledger, Problem, replayed
+from physc.search.problem import ALL_CHECKS, Checks, Ledger, Problem, replayed
 from physc.search.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.ending import Ending
 from physc.simulation.stopped import why_stopped
+from physc.simulation.trace import Trace
 
 
-def satisfy(domain, scenario, layout, rng, checks: Checks = Checks(), accept: int | None = None) -> Outcome:
+def satisfy(
+    domain: SimulatedDomain,
+    scenario: ScenarioIR,
+    layout: ConcreteLayout,
+    rng: random.Random,
+    checks: Checks = ALL_CHECKS,
+    accept: int | None = None,
+) -> Outcome:
     """One placed layout made a task by the search with `domain`'s hooks (a SimulatedDomain),
     or why not, under the run's `checks` (whether the task is validated and judged by the
     domain's acceptance rule); `accept`: the noisy replays a solution must pass (default:
@@ -51,7 +62,7 @@ def satisfy(domain, scenario, layout, rng, checks: Checks = Checks(), accept: in
     return search(problem, Ledger(), rng)
 
 
-def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
+def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     """The steps of the module docstring, in turn, for one placed layout."""
     domain = problem.domain
     if not domain.actions.candidates(problem.level_of(problem.placed), problem.scenario):
@@ -119,7 +130,7 @@ def search(problem: Problem, ledger: Ledger, rng) -> Outcome:
     return Outcome(True, ledger.simulations, parts, seconds=seconds, best=ledger.best, stopped=stopped(problem, ledger))
 
 
-def margins_record(problem: Problem, ledger: Ledger, trace, strong: Strong, steps: tuple[str, ...]) -> dict:
+def margins_record(problem: Problem, ledger: Ledger, trace: Trace, strong: Strong, steps: tuple[str, ...]) -> dict:
     """What the task file says of its margins: every link's as the solution plays, the weakest
     over the noisy replays it passed, what raising them moved (the search's `steps` that did)
     and the candidates it judged."""
@@ -141,7 +152,7 @@ def stopped(problem: Problem, ledger: Ledger) -> str:
 
 
 def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
-    furthest = ledger.furthest
+    furthest, layout = ledger.furthest, ledger.furthest_layout  # (noted together)
     return Outcome(
         False,
         ledger.simulations,
@@ -152,12 +163,12 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
         lost=lost_links(ledger),
         weakest=ledger.weakest,
         furthest=None
-        if furthest is None
-        else (furthest.fidelity.score, problem.level_of(ledger.furthest_layout), furthest.action, problem.placed),
+        if furthest is None or layout is None
+        else (furthest.fidelity.score, problem.level_of(layout), furthest.action, problem.placed),
     )
 
 
-def solves(domain, level, action, ledger: Ledger) -> bool:
+def solves(domain: SimulatedDomain, level: object, action: object, ledger: Ledger) -> bool:
     """Whether `action` solves `level`: one play of the benchmark's acceptance, counted by the
     search's evaluator within its budget."""
     return ledger.evaluator.run(lambda: domain.playout(level, action, ending=Ending.SETTLED)).solved

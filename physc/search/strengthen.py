@@ -22,6 +22,7 @@ from collections import Counter
 import attrs
 import numpy as np
 
+from physc.compiler.concrete_layout import ConcreteLayout
 from physc.search.attempt import Attempt
 from physc.search.chain import Node, score
 from physc.search.coordinates import Coordinates, weak_parts
@@ -56,9 +57,9 @@ def replays(
     problem: Problem,
     ledger: Ledger,
     attempt: Attempt,
-    layout,
+    layout: ConcreteLayout,
     stream: str = NOISE_STREAMS[0],
-    action=None,
+    action: object = None,
     count: bool = True,
 ) -> Replays:
     """The domain's noisy replays of `attempt` (or of `action`, with the attempt's noise) in
@@ -110,7 +111,7 @@ def lost_links(ledger: Ledger) -> tuple[tuple[str, int, str], ...]:
     return tuple(sorted(((term, n, why) for term, (n, why) in ledger.lost.items()), key=lambda item: -item[1]))
 
 
-def holds_up(problem: Problem, ledger: Ledger, attempt: Attempt, layout) -> bool:
+def holds_up(problem: Problem, ledger: Ledger, attempt: Attempt, layout: ConcreteLayout) -> bool:
     """Whether the solution in `layout` still passes as many noisy replays as it must, in both
     noise streams (a change made after the confirmation is itself chosen for passing the
     replays it is checked with)."""
@@ -122,7 +123,7 @@ class Strong:
     """A solution that holds under noise: its layout, its attempt, the replays it passed (the
     fewer of the two streams), the weakest link over them, and how the margins were raised."""
 
-    layout: object
+    layout: ConcreteLayout
     attempt: Attempt
     passed: int
     weakest: Margin | None
@@ -159,7 +160,7 @@ def strengthen(problem: Problem, ledger: Ledger, node: Node) -> Strong | None:
 
 
 def confirmed(
-    problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Replays, raised: str = ""
+    problem: Problem, ledger: Ledger, layout: ConcreteLayout, attempt: Attempt, first: Replays, raised: str = ""
 ) -> Strong | None:
     """`attempt` in `layout` if it passes as many fresh replays as it must (the second stream)."""
     fresh = replays(problem, ledger, attempt, layout, NOISE_STREAMS[1])
@@ -195,7 +196,7 @@ def weak_objects(problem: Problem, measured: Replays) -> tuple[set[str], list[tu
     return names, pairs
 
 
-def raised(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Replays) -> Strong | None:
+def raised(problem: Problem, ledger: Ledger, layout: ConcreteLayout, attempt: Attempt, first: Replays) -> Strong | None:
     """The chain's weakest margins raised (raising.py) over the weak links' coordinates: the
     first candidate whose every replay keeps every link with `raise_enough` to spare and that
     passes the fresh replays, else the best that passes every replay."""
@@ -203,7 +204,7 @@ def raised(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Re
     total = len(problem.interactions)
     space = Coordinates.of(problem, layout, attempt.action, *weak_objects(problem, first))
 
-    def judge(candidate, action, notes) -> Candidate:
+    def judge(candidate: ConcreteLayout, action: object, notes: str) -> Candidate[tuple[Attempt, Replays]]:
         nominal = simulate(problem, ledger, candidate, action)
         own = score(problem.domain.margins(problem.scenario, nominal.trace), total, nominal.fidelity.matched)
         if not nominal.fidelity.valid:
@@ -223,7 +224,8 @@ def raised(problem: Problem, ledger: Ledger, layout, attempt: Attempt, first: Re
             (better, measured),
         )
 
-    def accept(candidate: Candidate) -> Strong | None:
+    def accept(candidate: Candidate[tuple[Attempt, Replays]]) -> Strong | None:
+        assert candidate.found is not None, "a candidate the climb gives passed, and carries its plays"
         better, measured = candidate.found
         return confirmed(problem, ledger, candidate.layout, better, measured, candidate.notes)
 

@@ -88,10 +88,9 @@ def with_bodies(problem: Problem, layout, parent, stage: ChainStage, lead: int):
         return
     declared = problem.interactions[stage.start]
     attempt = parent.attempts[min(lead, len(parent.attempts) - 1)]
-    for note, changed in itertools.islice(
+    yield from itertools.islice(
         choosing.alternatives(problem, layout, declared, stage, attempt), problem.settings.bodies - 1
-    ):
-        yield note, changed
+    )
 
 
 def on_path(problem: Problem, layout, declared, stage: ChainStage, attempt: Attempt):
