@@ -109,29 +109,57 @@ def parse_level(text: str) -> Level:
     check_size(text)
     root = _tree(text)
     source = Source(text)
-    camera = Camera()
-    camera_element = root.find("Camera")
-    if camera_element is not None:
-        camera = Camera(
-            source.coordinate(camera_element, "x"),
-            source.coordinate(camera_element, "y"),
-            source.bounded(camera_element, "minWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
-            source.bounded(camera_element, "maxWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
-        )
+    camera = _camera(root, source)
     score = root.find("Score")
     birds = tuple(source.bird_type(bird) for bird in root.iter("Bird"))
     sling = root.find("Slingshot")
     slingshot = (-12.0, -2.5) if sling is None else (source.coordinate(sling, "x"), source.coordinate(sling, "y"))
-    width = 2.0
-    if root.get("width") is not None:
-        width = source.number(root, "width")
-        if not 0 < width <= MAX_WIDTH:
-            raise source.error(
-                "E0904",
-                f'<Level> width="{root.get("width")}" is out of range: more than 0 and at most {MAX_WIDTH:g}',
-                root,
-                "width",
-            )
+    width = _width(root, source)
+    objects, elements = _game_objects(root, source)
+    _check_stacking(source, objects, elements)
+    return Level(
+        width=width,
+        camera=camera,
+        high_score=None if score is None else source.number(score, "highScore"),
+        birds=birds,
+        slingshot=slingshot,
+        objects=tuple(objects),
+        world=root.get("world"),
+        generator=root.get("generator"),
+    )
+
+
+def _camera(root, source: Source) -> Camera:
+    """The level's <Camera>, its coordinates and widths checked (the default camera without one)."""
+    element = root.find("Camera")
+    if element is None:
+        return Camera()
+    return Camera(
+        source.coordinate(element, "x"),
+        source.coordinate(element, "y"),
+        source.bounded(element, "minWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
+        source.bounded(element, "maxWidth", 0.0, MAX_CAMERA_WIDTH, CAMERA_WIDTHS),
+    )
+
+
+def _width(root, source: Source) -> float:
+    """The <Level>'s width, checked (2 when it has none)."""
+    if root.get("width") is None:
+        return 2.0
+    width = source.number(root, "width")
+    if not 0 < width <= MAX_WIDTH:
+        raise source.error(
+            "E0904",
+            f'<Level> width="{root.get("width")}" is out of range: more than 0 and at most {MAX_WIDTH:g}',
+            root,
+            "width",
+        )
+    return width
+
+
+def _game_objects(root, source: Source) -> tuple[list[LevelObject], list]:
+    """The level's <GameObjects>, each checked and named as physc names them (its base name and
+    a count), with the element each came from (for a diagnostic's position)."""
     objects, elements = [], []
     counts: dict[str, int] = {}
     container = root.find("GameObjects")
@@ -150,7 +178,8 @@ def parse_level(text: str) -> Level:
                 "E0906",
                 f"the level has more than {MAX_BODIES} game objects, the most physc plays",
                 element,
-                help="the largest real levels have a few dozen (docs/angrybirds.md: the limit keeps a play within a minute and 2 GB)",
+                help="the largest real levels have a few dozen (docs/angrybirds.md: the limit keeps a play "
+                "within a minute and 2 GB)",
             )
         prefab = source.object_type(element)
         found = BY_PREFAB[prefab]
@@ -170,24 +199,22 @@ def parse_level(text: str) -> Level:
             )
         )
         elements.append(element)
+    return objects, elements
+
+
+def _check_stacking(source: Source, objects: list[LevelObject], elements: list) -> None:
+    """E0908 for a level with more objects stacked into one another than physc plays."""
     stacked = deep_overlaps(objects)
     if len(stacked) > MAX_DEEP_OVERLAPS:
         raise source.error(
             "E0908",
-            f"{len(stacked):,} pairs of objects are stacked into one another (centres nearer than half the smaller one), more than the {MAX_DEEP_OVERLAPS} physc plays",
+            f"{len(stacked):,} pairs of objects are stacked into one another (centres nearer than half the "
+            f"smaller one), more than the {MAX_DEEP_OVERLAPS} physc plays",
             elements[stacked[MAX_DEEP_OVERLAPS][1]],
-            help='real levels have none: objects touch, they do not sit inside one another; a pile of bodies at one spot takes Box2D minutes a step at the game\'s 100 iterations (docs/angrybirds.md, "Level files")',
+            help="real levels have none: objects touch, they do not sit inside one another; a pile of bodies "
+            "at one spot takes Box2D minutes a step at the game's 100 iterations "
+            '(docs/angrybirds.md, "Level files")',
         )
-    return Level(
-        width=width,
-        camera=camera,
-        high_score=None if score is None else source.number(score, "highScore"),
-        birds=birds,
-        slingshot=slingshot,
-        objects=tuple(objects),
-        world=root.get("world"),
-        generator=root.get("generator"),
-    )
 
 
 def read_level(data: bytes) -> Level:
