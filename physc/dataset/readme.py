@@ -24,7 +24,7 @@ def render(folder: Path, jobs: list, rows: list[dict], command: str) -> str:
     """The README for the dataset in `folder`: `jobs` (each carrying its scenario as written) and
     their `rows`, in order."""
     by_scenario: dict[str, list] = collections.defaultdict(list)
-    for job, row in zip(jobs, rows):
+    for job, row in zip(jobs, rows, strict=True):  # a row per job, in order (build)
         by_scenario[job.scenario].append((job, row))
     scenarios = [_scenario(name, pairs) for name, pairs in by_scenario.items()]
     made = [r for r in rows if r["outcome"] != NO_TASK]

@@ -68,8 +68,9 @@ def make(job: Job) -> dict:
     seconds = round(time.perf_counter() - started, 4)
     names = file_names(job, domain.files.level_suffix)
     data = to_data(task)
+    assert isinstance(data, dict), "an attrs value dumps to an object"
     data.pop("seconds", None)  # times are the manifest's: the task file's bytes depend on its seed only
-    files = {
+    files: dict[str, str | bytes] = {
         names["level"]: domain.files.emit_level(task.level),
         names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n",
     }

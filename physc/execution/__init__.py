@@ -17,8 +17,11 @@ from __future__ import annotations
 
 import abc
 from collections.abc import Callable, Iterable
+from typing import TypeVar
 
-Keep = Callable[[object], None]  # called here with each job's result, as it completes
+J = TypeVar("J")  # a job
+R = TypeVar("R")  # its result
+Keep = Callable[[R], None]  # called here with each job's result, as it completes
 
 
 class ExecutorError(Exception):
@@ -37,7 +40,7 @@ class Executor(abc.ABC):
     workers: int = 1
 
     @abc.abstractmethod
-    def map(self, function: Callable, jobs: Iterable, keep: Keep) -> None:
+    def map(self, function: Callable[[J], R], jobs: Iterable[J], keep: Keep[R]) -> None:
         """Run every job; return when all have been kept. Ctrl-C (and the time budget's
         stopping points, physc.budget) stop it between results."""
 

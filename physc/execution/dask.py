@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterable
 from typing import Any, cast
 
 from physc import budget
-from physc.execution import Executor, ExecutorError, Keep
+from physc.execution import Executor, ExecutorError, J, Keep, R
 
 CONNECT_SECONDS = 5  # how long to try to reach a scheduler before giving up
 WORKER_WAIT = 60.0  # seconds to wait for the first worker of a scheduler that has none
@@ -142,7 +142,7 @@ class DaskCluster(Executor):
             f"; dashboard {link})" if link else ")"
         )
 
-    def map(self, function: Callable, jobs: Iterable, keep: Keep) -> None:
+    def map(self, function: Callable[[J], R], jobs: Iterable[J], keep: Keep[R]) -> None:
         from distributed import KilledWorker, wait
 
         futures = [self.client.submit(run_job, function, job, pure=False) for job in jobs]

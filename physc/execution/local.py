@@ -8,7 +8,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 
 from physc import budget
-from physc.execution import Executor, ExecutorError, Keep
+from physc.execution import Executor, ExecutorError, J, Keep, R
 
 RUNS = 3  # how often a job may be under way in a pool that breaks before the run stops
 
@@ -21,7 +21,7 @@ class LocalProcesses(Executor):
     def __init__(self, workers: int = 1):
         self.workers = max(1, workers)
 
-    def map(self, function: Callable, jobs: Iterable, keep: Keep) -> None:
+    def map(self, function: Callable[[J], R], jobs: Iterable[J], keep: Keep[R]) -> None:
         jobs = list(jobs)
         if self.workers == 1 or len(jobs) <= 1:
             for job in jobs:
@@ -48,7 +48,9 @@ class LocalProcesses(Executor):
                         f"a worker process died {RUNS} times while running the job {getattr(job, 'key', job)}"
                     ) from None
 
-    def _pool(self, function: Callable, jobs: list, left: dict[int, None], running: set[int], keep: Keep) -> None:
+    def _pool(
+        self, function: Callable[[J], R], jobs: list[J], left: dict[int, None], running: set[int], keep: Keep[R]
+    ) -> None:
         """Run the jobs `left` in one pool, removing each from `left` once kept and noting in
         `running` those seen under way. Workers ignore Ctrl-C; on an interrupt (or any error)
         here they are ended at once: only this process writes, so nothing is left half-written."""
