@@ -1,13 +1,13 @@
 """The examples in the small value types' docstrings run as written: a QSR's atoms
 (physc.compiler.qsr), a world's readings (physc.worlds) and a link's margin
-(physc.simulation.margins)."""
+(physc.simulation.margin)."""
 
 import doctest
 import importlib
 
 import pytest
 
-MODULES = ("physc.compiler.qsr", "physc.worlds", "physc.simulation.margins")
+MODULES = ("physc.compiler.qsr", "physc.worlds", "physc.simulation.margin")
 
 
 @pytest.mark.parametrize("name", MODULES)
