@@ -69,12 +69,12 @@ def simulate(
     scenario (physc.check's), judges a level's play against its restrictions (a Task's is its own)."""
     if isinstance(level, Task):
         scenario = scenario_of(level)
-        played = _playable(domain_of(level, world, backend))
+        played = playable(domain_of(level, world, backend))
         level = level.level
     else:
-        played = _playable(bound_domain(domain, world, backend))
+        played = playable(bound_domain(domain, world, backend))
         if world is None and (domain is None or isinstance(domain, str)) and played.files.level_world(level):
-            played = _playable(played.at(played.files.level_world(level)))  # the world the level names
+            played = playable(played.at(played.files.level_world(level)))  # the world the level names
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
         action = played.actions.action_of(action)
     if noise is not None:
@@ -83,7 +83,7 @@ def simulate(
     return play_to_rest(played, level, action, scenario, seconds)
 
 
-def _playable(domain: Domain) -> SimulatedDomain:
+def playable(domain: Domain) -> SimulatedDomain:
     """`domain` as one that plays levels: every domain that simulates is a SimulatedDomain
     (physc.domains.simulated), the base of angrybirds, PHYRE's and the stand-ins."""
     assert isinstance(domain, SimulatedDomain), f"the domain '{domain.name}' plays no levels"

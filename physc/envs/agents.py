@@ -24,9 +24,8 @@ def heuristic_agent(env, observation, attempt: int):
     first, on the low then the high trajectory; PHYRE-like drops a ball on the green object."""
     playing = env.unwrapped.playing
     if playing.heuristic is None:
-        raise ValueError(
-            f"the domain of {env.unwrapped.spec.id if env.unwrapped.spec else 'this environment'} has no heuristic agent"
-        )
+        which = env.unwrapped.spec.id if env.unwrapped.spec else "this environment"
+        raise ValueError(f"the domain of {which} has no heuristic agent")
     return playing.heuristic(env.unwrapped, observation, attempt)
 
 

@@ -67,6 +67,7 @@ class TaskEnv(gymnasium.Env):
         self.action_space = self.simulator.action_space
         # Unbounded: even PHYRE's normalised features pass 1 (a bar longer than the scene).
         features = spaces.Box(-np.inf, np.inf, (playing.max_objects, len(playing.feature_names)), np.float32)
+        self._features_space = features  # its shape is every features observation's, in "both" too
         picture = spaces.Box(0, 255, playing.picture_shape, np.uint8)
         self.observation_space = {
             "features": features,
@@ -77,7 +78,8 @@ class TaskEnv(gymnasium.Env):
             rows = len(self.simulator.features(index))
             if rows > playing.max_objects:
                 raise ValueError(
-                    f"the task {self.simulator.task_ids[index]} has {rows} objects, more than the {playing.max_objects} an observation holds"
+                    f"the task {self.simulator.task_ids[index]} has {rows} objects, more than the"
+                    f" {playing.max_objects} an observation holds"
                 )
         self.task_index = 0
         self._last = None  # the last valid play of the episode
@@ -92,12 +94,7 @@ class TaskEnv(gymnasium.Env):
         features = picture = None
         if self.observation_kind != "picture":
             rows = self.simulator.features(self.task_index) if result is None else self.simulator.frame(result)
-            shape = (
-                self.observation_space["features"].shape
-                if self.observation_kind == "both"
-                else self.observation_space.shape
-            )
-            features = np.zeros(shape, np.float32)
+            features = np.zeros(self._features_space.shape, np.float32)
             features[: len(rows)] = rows
         if self.observation_kind != "features":
             picture = (

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import enum
 import random
+from typing import TYPE_CHECKING
 
 import attrs
 import numpy as np
@@ -23,6 +24,11 @@ import numpy as np
 from physc.compiler.task import Task
 from physc.envs import sources
 from physc.simulation.ending import Ending
+from physc.simulation.trace import Playout, Trace
+
+if TYPE_CHECKING:
+    from physc.domains.playing import Playing
+    from physc.domains.simulated import SimulatedDomain
 
 
 class SimulationStatus(enum.IntEnum):
@@ -58,12 +64,11 @@ class Simulation:
     status: SimulationStatus
     reward: float
     info: dict = attrs.field(eq=False)
-    trace: object = attrs.field(default=None, eq=False, repr=False)
+    trace: Trace | Playout | None = attrs.field(default=None, eq=False, repr=False)
     images: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
     featurized_objects: np.ndarray | None = attrs.field(default=None, eq=False, repr=False)
-    played: tuple = attrs.field(
-        default=(), eq=False, repr=False
-    )  # (the domain, the level and the action as played: noisy ones under noise)
+    # (the domain, the level and the action as played: noisy ones under noise)
+    played: tuple = attrs.field(default=(), eq=False, repr=False)
 
 
 class ActionSimulator:
@@ -81,17 +86,19 @@ class ActionSimulator:
         world: str | None = None,
         backend: str | None = None,
     ):
+        from physc.api.simulating import playable
         from physc.api.tasks import domain_of, scenario_of
 
         gathered = sources.gather(tasks)
         name = domain or gathered[0].domain
         self.tasks: list[Task] = sources.of_domain(gathered, name)
         self.task_ids: list[str] = sources.task_ids(self.tasks)
-        self._domains = [domain_of(t, world, backend) for t in self.tasks]
+        self._domains: list[SimulatedDomain] = [playable(domain_of(t, world, backend)) for t in self.tasks]
         self.domain = self._domains[0]
-        self.playing = self.domain.playing
-        if self.playing is None:
+        playing = self.domain.playing
+        if playing is None:
             raise ValueError(f"the domain '{name}' cannot be played by agents (it has no `playing`)")
+        self.playing: Playing = playing
         self.mode = self.playing.mode_of(self.tasks, mode)
         self.action_space = self.playing.action_space(self.mode, self.domain.world)
         self._scenarios = [scenario_of(t) for t in self.tasks]
@@ -163,6 +170,7 @@ class ActionSimulator:
             rng = noise if isinstance(noise, random.Random) else random.Random(noise)
             level, played = domain.actions.noisy(level, played, rng)
         scenario = self._scenarios[index]
+        trace: Trace | Playout
         if need_interactions or need_images or need_featurized_objects:
             trace = play_to_rest(domain, level, played, scenario)
         else:
@@ -170,6 +178,7 @@ class ActionSimulator:
         reward, told = self.playing.reward(trace)
         info = {"valid": True, "solved": bool(trace.solved), **told}
         if need_interactions:
+            assert isinstance(trace, Trace), "played to rest: a whole trace"
             info.update(interactions=[i.text() for i in trace.interactions], realised=fidelity(scenario, trace).valid)
         images = featurized = None
         if need_images or need_featurized_objects:
@@ -186,10 +195,10 @@ class ActionSimulator:
         """The features (or, with `picture`, the picture) of a valid play's level after step
         `step` (-1: the last, when everything rests)."""
         from physc.api.simulating import play_to_rest
-        from physc.simulation.trace import Playout
 
         domain, level, played = result.played
         trace = result.trace
+        assert trace is not None, "a valid play has its trace (an invalid one has no frames)"
         if isinstance(trace, Playout) and 0 <= step < trace.steps - 1:  # an outcome playout: the whole play, again
             trace = play_to_rest(domain, level, played)
         make = self.playing.frame_picture if picture else self.playing.frame_features
