@@ -86,7 +86,10 @@ def _not_a_domain(domain, name: str) -> str | None:
     if not isinstance(domain, Domain):
         return f"is a {type(domain).__name__}, not a physc.domains.base.Domain: subclass Domain (or SimulatedDomain)"
     if not isinstance(domain.vocabulary, Vocabulary):
-        return f"has a 'vocabulary' that is a {type(domain.vocabulary).__name__}, not a physc.domains.vocabulary.Vocabulary"
+        return (
+            f"has a 'vocabulary' that is a {type(domain.vocabulary).__name__}, "
+            "not a physc.domains.vocabulary.Vocabulary"
+        )
     if domain.name != name:
         return f"calls itself '{domain.name}': its 'name' must be its entry point's name, '{name}'"
     return None

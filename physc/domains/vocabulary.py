@@ -141,7 +141,8 @@ def structure_terms() -> tuple[TermSignature, TermSignature]:
         "on",
         RESTRICTION,
         (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, dynamic=True)),
-        "a rests on b in the level: a structure of several bodies, whose weak point is what the chain knocks out (version 2)",
+        "a rests on b in the level: a structure of several bodies, whose weak point is what the chain knocks out "
+        "(version 2)",
         carries=True,
     )
     return contrast, on

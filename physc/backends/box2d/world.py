@@ -14,8 +14,8 @@ Contacts are Box2D's own events: `BeginContact` (called while the step finds new
 pairs, before the solver, so the bodies' velocities are still those before the impact) and
 `EndContact` (also called when a body is destroyed). A compound body begins a contact when
 its first part touches and ends it when its last part parts; each pair of its colliders
-(Compound.colliders) that begins touching after that is an event of its own (`first` False). A concave polygon, or one with
-more than Unity's eight corners, is split into convex parts (physc.backends.convex). A
+(Compound.colliders) that begins touching after that is an event of its own (`first` False). A concave polygon, or
+one with more than Unity's eight corners, is split into convex parts (physc.backends.convex). A
 `continuous` body is a Box2D bullet (Unity's Continuous collision detection): swept against
 moving bodies too, not only static ones.
 

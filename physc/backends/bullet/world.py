@@ -12,8 +12,8 @@ Shapes are extrusions (bodies.py): boxes for rectangles, convex hulls for other 
 spheres for circles (a sphere's single contact point rolls on a platform as the game's
 circle does; see docs/performance.md for the calibration). Mass is set from the *area* (a
 polygon's with its skin, as pymunk counts it), and the inertia about z from the 2-D shape, so
-they mean what they mean in pymunk whatever the depth. Bullet multiplies the friction of two bodies and multiplies their restitution; each
-body gets the square root of its friction (the pair's product is the geometric mean, as
+they mean what they mean in pymunk whatever the depth. Bullet multiplies the friction of two bodies and multiplies
+their restitution; each body gets the square root of its friction (the pair's product is the geometric mean, as
 Box2D's), and its own bounciness against a static body of restitution 1 (exact against the
 static world); a game step in which two dynamic bodies strike each other is taken again, from
 the bodies' poses and velocities at its start (Bullet keeps its own contact caches), with Box2D's

@@ -119,7 +119,8 @@ BIRDS = (
 )
 BIRD_SOURCES = (
     "Resources/Prefabs/GameWorld/Characters/Birds/Bird*.prefab: CircleCollider2D m_Radius and m_Offset × m_LocalScale, "
-    "`_density`, the `_woodDamageMultiplier`, `_stoneDamageMultiplier`, `_iceDamageMultiplier`; Resources/Materials/*Bird.physicsMaterial2D"
+    "`_density`, the `_woodDamageMultiplier`, `_stoneDamageMultiplier`, `_iceDamageMultiplier`; "
+    "Resources/Materials/*Bird.physicsMaterial2D"
 )
 BY_PREFAB = {bird.prefab: bird for bird in BIRDS}
 BY_NAME = {bird.name: bird for bird in BIRDS}

@@ -13,7 +13,8 @@ class ScienceBirdsFiles(LevelFiles):
     level_classes = (Level, Camera, LevelObject)
     level_suffix = "xml"  # Science Birds level files
     level_format = (
-        "a Science Birds level: XML in UTF-8 (ASCII; the game's own files declare utf-16 over the same bytes), as the Science Birds of the Phy-Q testbed (phy-q/benchmark, "
+        "a Science Birds level: XML in UTF-8 (ASCII; the game's own files declare utf-16 over the same bytes), as "
+        "the Science Birds of the Phy-Q testbed (phy-q/benchmark, "
         "LevelLoader.cs) loads it (physc's docs/angrybirds.md)"
     )
 

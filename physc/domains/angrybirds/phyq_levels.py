@@ -105,8 +105,10 @@ def config(names: list[str]) -> str:
         "<evaluation>",
         '  <novelty_detection_measurement step="1" measure_in_training="True" measure_in_testing="True" />',
         "  <trials>",
-        '    <trial id="0" number_of_executions="1" checkpoint_time_limit="200" checkpoint_interaction_limit="200" notify_novelty="False">',
-        '      <game_level_set mode="training" time_limit="6000" total_interaction_limit="6000" attempt_limit_per_level="1" allow_level_selection="False">',
+        '    <trial id="0" number_of_executions="1" checkpoint_time_limit="200" checkpoint_interaction_limit="200"'
+        ' notify_novelty="False">',
+        '      <game_level_set mode="training" time_limit="6000" total_interaction_limit="6000"'
+        ' attempt_limit_per_level="1" allow_level_selection="False">',
     ]
     for name in names + names[-1:]:
         lines.append(f'        <game_levels level_path="{GAME_FOLDER}/{name}" />')
@@ -151,7 +153,8 @@ def main():
                 level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
                 action = aimed_again(float(shot["release_angle"]), level_text, live) + [int(shot["tap_time"])]
             _, _, _, info = env.step(action)
-            out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], live[0], live[1], bool(info[0])])
+            out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], \
+live[0], live[1], bool(info[0])])
 
 
 def aimed_again(angle, level_text, reference):
@@ -172,7 +175,11 @@ if __name__ == "__main__":
 
 def replay_script() -> str:
     """replay_shots.py: agent_action.py's functions as they are, and a main for sciencebirdsagents/."""
-    header = '"""Replay physc\'s shots in Phy-Q\'s game with its agent framework (written by physc generate).\n\nRun from phy-q/benchmark\'s sciencebirdsagents/ with the game\'s config.xml listing these levels\n(README.md beside this file): python path/to/replay_shots.py --out replayed.csv\n"""\n\n'
+    header = (
+        '"""Replay physc\'s shots in Phy-Q\'s game with its agent framework (written by physc generate).\n\n'
+        "Run from phy-q/benchmark's sciencebirdsagents/ with the game's config.xml listing these levels\n"
+        '(README.md beside this file): python path/to/replay_shots.py --out replayed.csv\n"""\n\n'
+    )
     body = inspect.getsource(agent_action).split('"""', 2)[2].lstrip("\n")
     return header + body.rstrip("\n") + "\n" + REPLAY_MAIN
 

@@ -47,7 +47,8 @@ CONCRETE_OBJECTS = (
     ConcreteObject("triangle", description="a right triangle, 0.75 (Triangle)", materials=MATERIALS),
     ConcreteObject(
         "tnt",
-        description="a TNT box (TNT): any blow destroys it, and its blast damages and pushes what lies within 2.5 units",
+        description="a TNT box (TNT): any blow destroys it, and its blast damages and pushes what lies within 2.5 "
+        "units",
     ),
     ConcreteObject("flatPlatform", static=True, description="a horizontal platform (Platform)"),
     ConcreteObject("inclinedPlatform", static=True, description="a rotated platform (Platform)"),
@@ -108,7 +109,8 @@ TERMS = (
             "tap",
             INTERACTION,
             (Parameter("a", OBJECT, fits="bird", acts=True),),
-            "the player taps bird a in flight, setting off its power: a blue bird splits in three, a yellow one speeds up, "
+            "the player taps bird a in flight, setting off its power: a blue bird splits in three, a yellow one "
+            "speeds up, "
             "a black one blasts, a white one drops an egg (version 2)",
         ),
         TermSignature(

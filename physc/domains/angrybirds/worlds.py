@@ -131,13 +131,20 @@ PHYQ = ScienceBirdsWorld(
         "engine.linear_slop": "Physics2DSettings.asset: m_DefaultContactOffset 0.01, halved (Box2D's slop)",
         "engine.max_translation": "Physics2DSettings.asset: m_MaxTranslationSpeed 100 units/s × the step",
         "gravity": "Physics2DSettings.asset m_Gravity 9.81 × the prefabs' gravity scale 0.48",
-        "recogniser": "physc's thresholds in level units, kept by the calibration on Phy-Q's levels (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.travel": "calibrated on Phy-Q's levels: the smallest block's width, SquareTiny 0.22 (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.hop_rise": "calibrated on Phy-Q's levels: a hop rises within the body's own size (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.roll_slip": "calibrated on Phy-Q's levels: the spin carries at least half the speed, more rolling than skidding (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.slide_spin": "calibrated on Phy-Q's levels: a slide rocks, a tumble turns (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.bounce_walls": "Phy-Q's bouncing templates 2_4_1, 2_4_2 and 2_4_4: the bird bounces off walls and ceilings to reach a sheltered pig (docs/angrybirds.md, 'What the motion words mean')",
-        "recogniser.round_slides": "the object grammar: a round body rolls, a block slides (docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser": "physc's thresholds in level units, kept by the calibration on Phy-Q's levels "
+        "(docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.travel": "calibrated on Phy-Q's levels: the smallest block's width, SquareTiny 0.22 "
+        "(docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.hop_rise": "calibrated on Phy-Q's levels: a hop rises within the body's own size "
+        "(docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.roll_slip": "calibrated on Phy-Q's levels: the spin carries at least half the speed, more "
+        "rolling than skidding (docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.slide_spin": "calibrated on Phy-Q's levels: a slide rocks, a tumble turns (docs/angrybirds.md, "
+        "'What the motion words mean')",
+        "recogniser.bounce_walls": "Phy-Q's bouncing templates 2_4_1, 2_4_2 and 2_4_4: the bird bounces off walls "
+        "and ceilings to reach a sheltered pig (docs/angrybirds.md, 'What the motion words mean')",
+        "recogniser.round_slides": "the object grammar: a round body rolls, a block slides (docs/angrybirds.md, "
+        "'What the motion words mean')",
         "incline.ramp": "Phy-Q's roll templates 2_1_3 (rotation 347.3: 12.7°), 2_1_6 and 2_1_9 (333.18: 26.8°)",
         "incline.ramp_length": "Phy-Q's roll templates: Platform scaleX 8.39 (2_1_6, 2_1_9) and 11.10 (2_1_3) × 0.64",
     },
@@ -145,9 +152,11 @@ PHYQ = ScienceBirdsWorld(
 
 ROLLING = PHYQ.derive(
     "rolling",
-    "Phy-Q's game with its circle colliders enabled and angular drag 0.05: physc's reading of the paper's modified game",
+    "Phy-Q's game with its circle colliders enabled and angular drag 0.05: physc's reading of the paper's modified "
+    "game",
     "physc's reading of the paper's unpublished 'adjusted physics parameters' (patches/rolling/); its words are the "
-    "paper's: a roll or slide is motion in unbroken contact, with no least travel (docs/angrybirds.md, 'What the motion words mean')",
+    "paper's: a roll or slide is motion in unbroken contact, with no least travel (docs/angrybirds.md, 'What the "
+    "motion words mean')",
     bodies=attrs.evolve(PHYQ.bodies, circle_colliders=True, angular_drag=0.05),
     recogniser=attrs.evolve(
         PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True, bounce_walls=False

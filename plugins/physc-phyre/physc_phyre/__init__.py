@@ -145,7 +145,8 @@ class Phyre(SimulatedDomain):
         balls = action.balls if action is not None else ()
         if len(balls) > len(level.players):  # (fewer: the ball tier's actions on a two-ball task, as PHYRE judges it)
             raise ValueError(
-                f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has {len(balls)}"
+                f"the level's tier ({level.tier}) places {len(level.players)} red balls, but the action has "
+                f"{len(balls)}"
             )
         for name, ball in zip(level.players, balls, strict=False):
             specs.append(world.body_spec(name, world.outline("ball", ball.radius), ball.x, ball.y, 0.0, True))

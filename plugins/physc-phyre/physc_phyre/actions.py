@@ -4,7 +4,8 @@ two-ball tier places two at once, under PHYRE's rule that they lie r1 + r2 + 1 p
 Candidate actions follow the paper's points of interest: the ball is dropped onto the
 first target's upper corners, the middle of its top and the quarters between, in three sizes, from just above
 and from higher up (a fall gathers speed); for a first hit, also on the target's shoulders (half a
-radius beyond an upper corner) and from the top of the scene, so that the drop pushes it across. Like PHYRE, an action places the ball at whole
+radius beyond an upper corner) and from the top of the scene, so that the drop pushes it across. Like PHYRE, an
+action places the ball at whole
 pixels with a whole radius from 2 to 32, inside the scene, occluding nothing (touching is
 allowed). The random agent draws actions as PHYRE's evaluation does, uniformly in
 [0, 1]³ (two balls: [0, 1]⁶) scaled to the scene. Noise, for the robustness replays and the evaluation, moves

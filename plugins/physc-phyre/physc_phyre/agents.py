@@ -3,7 +3,8 @@
 An agent is any Python callable that takes an `Observation` of a task (its id, PHYRE's
 256 × 256 picture of colour indices, its 14-number feature vectors, the task itself in PHYRE's
 structure) and yields actions in [0, 1]³ (x, y, radius, as PHYRE's ball tier reads them; six
-numbers, two balls, for a task whose `tier` is TWO_BALLS), best first. An agent that learns has a `fit(observations)` method too: it is called first with the
+numbers, two balls, for a task whose `tier` is TWO_BALLS), best first. An agent that learns has a `fit(observations)`
+method too: it is called first with the
 fold's training tasks (train and dev when the test split is scored, train alone for dev, as
 PHYRE's agents/train.py does). Each action is played until the task is solved or 100 valid
 attempts are spent; an invalid action (outside the scene, or occluding a body) is not counted,

@@ -6,7 +6,8 @@
   indices (observation.py), stacked in task id order (uint8, N × 256 × 256);
 * `tasks.parquet`: one row per task, in task id order: `task_id`, `template`, `instance`, the
   `scenario` and `seed` it came from, its `level` and `task` files, its `tier`, the intended
-  `action` in PHYRE's [0, 1]³ (BALL) or [0, 1]⁶ (TWO_BALLS), the `description`, and `features` (PHYRE's 14 numbers per object);
+  `action` in PHYRE's [0, 1]³ (BALL) or [0, 1]⁶ (TWO_BALLS), the `description`, and `features` (PHYRE's 14
+  numbers per object);
 * `folds.json`: PHYRE's folds 0-9 of the cross- and within-template setups (folds.py).
 
 A scenario is a template, numbered in the order the dataset names them from physc's own
@@ -36,7 +37,8 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
     if len(templates) > phyre_format.TEMPLATES:
         raise DomainError(
             "E0703",
-            f"the dataset has {len(templates)} scenarios, but physc's range of PHYRE templates holds {phyre_format.TEMPLATES}",
+            f"the dataset has {len(templates)} scenarios, but physc's range of PHYRE templates holds "
+            f"{phyre_format.TEMPLATES}",
             help="generate fewer scenarios into one dataset",
         )
     out = []
@@ -45,7 +47,8 @@ def identified(tasks: list[tuple[dict, str]]) -> list[tuple[str, dict, dict]]:
         if len(mine) > phyre_format.INSTANCES:
             raise DomainError(
                 "E0703",
-                f"scenario '{scenario}' has {len(mine)} tasks, but a PHYRE template holds {phyre_format.INSTANCES} at most (its instance ids have three digits)",
+                f"scenario '{scenario}' has {len(mine)} tasks, but a PHYRE template holds {phyre_format.INSTANCES} "
+                "at most (its instance ids have three digits)",
                 help="generate fewer --tasks per scenario",
             )
         for instance, (row, text) in enumerate(mine):

@@ -56,7 +56,8 @@ def parser() -> argparse.ArgumentParser:
         type=_actions,
         default=DEFAULT_ACTIONS,
         metavar="N",
-        help=f"actions per task: the first N of PHYRE's pool of seed 42 (default {DEFAULT_ACTIONS}; PHYRE's own cache: {MAX_ACTIONS})",
+        help=f"actions per task: the first N of PHYRE's pool of seed 42 (default {DEFAULT_ACTIONS}; PHYRE's own "
+        f"cache: {MAX_ACTIONS})",
     )
     add_executor(made)
     made.add_argument("-q", "--quiet", action="store_true", help="no progress lines")
@@ -174,7 +175,8 @@ def main(argv: list[str] | None = None) -> int:
     for path in written:
         say(f"wrote {path}")
     say(
-        f"PHYRE reads it with PHYRE_CACHE_DIR={dataset / 'phyre' / 'cache'}: phyre.SimulationCache(phyre.simulation_cache.get_cache_folder({args.actions}) / tier)"
+        f"PHYRE reads it with PHYRE_CACHE_DIR={dataset / 'phyre' / 'cache'}: "
+        f"phyre.SimulationCache(phyre.simulation_cache.get_cache_folder({args.actions}) / tier)"
     )
     return EXIT_OK
 

@@ -4,11 +4,12 @@ Sizes follow PHYRE's templates: balls of scale 0.06–0.12 (radius int(scale·12
 px), bars 35–70 px, jars 40–60 px tall, standing sticks 45–70 px wide. A ledge that
 carries an object is at least three of its widths long, so the object can rest in its
 left, middle or right third; a surface something rolls or slides on is long enough to
-gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a surface for a bounce
-tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
+gather speed; a purple bar the green object must stay on is long; a ramp declines 15–30° towards the motion on it (a
+surface for a bounce tilts 20–40° either way). The floor and a purple floor lie across the scene's bottom; a purple
 wall stands the scene's height against the edge its toucher heads for; a purple pad lies on the
 floor, placed against that edge (the search may move it along the floor to where the green
-object comes down, as PHYRE's lies anywhere on it); a green stick and a post stand upright; a jar holding a ball is 45–70 px tall; an upside-down jar is turned 180°.
+object comes down, as PHYRE's lies anywhere on it); a green stick and a post stand upright; a jar holding a ball
+is 45–70 px tall; an upside-down jar is turned 180°.
 See-saws, teeters, cradles and purple ramps are furniture (furniture.py); the support of an
 object under `cradled(a)` is a cradle, of one under `pegged(a)` a row of pegs, as long as the
 black bar it stands for would be.

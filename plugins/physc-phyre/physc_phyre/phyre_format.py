@@ -35,7 +35,8 @@ def task_id(template: int, instance: int) -> str:
     """PHYRE's id of instance `instance` of template `template`: "00012:004"."""
     if not 0 <= template < 100_000 or not 0 <= instance < INSTANCES:
         raise ValueError(
-            f"a PHYRE task id needs a template below 100000 and an instance below {INSTANCES}, not {template} and {instance}"
+            f"a PHYRE task id needs a template below 100000 and an instance below {INSTANCES}, not {template} and "
+            f"{instance}"
         )
     return f"{template:05d}:{instance:03d}"
 

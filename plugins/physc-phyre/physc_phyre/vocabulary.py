@@ -37,7 +37,8 @@ CONCRETE_OBJECTS = (
     ConcreteObject(
         "purpleWall",
         static=True,
-        description="a purple upright bar the scene's height against its left or right edge, the static object the green one must touch",
+        description="a purple upright bar the scene's height against its left or right edge, the static object the "
+        "green one must touch",
     ),
     ConcreteObject("blackBall", static=True, description="a black static ball (a peg, a fulcrum)"),
     ConcreteObject("verticalBar", static=True, description="a black static bar, upright (a post)"),
@@ -45,7 +46,8 @@ CONCRETE_OBJECTS = (
     ConcreteObject("blueJar", description="a blue jar, the dynamic object the green one must touch"),
     ConcreteObject(
         "blueBallInJar",
-        description="a blue ball lying in a gray jar (PHYRE's templates 00018, 00022, 00023), the dynamic object the green one must touch",
+        description="a blue ball lying in a gray jar (PHYRE's templates 00018, 00022, 00023), the dynamic object the "
+        "green one must touch",
     ),
     ConcreteObject(
         "greenBallInJar", description="the green goal ball lying in a gray jar (PHYRE's templates 00005, 00010)"
@@ -54,7 +56,8 @@ CONCRETE_OBJECTS = (
     ConcreteObject(
         "purplePad",
         static=True,
-        description="a purple bar 0.1-0.2 of the scene long lying on the floor (PHYRE's templates 00007, 00019), the static object the green one must touch",
+        description="a purple bar 0.1-0.2 of the scene long lying on the floor (PHYRE's templates 00007, 00019), the "
+        "static object the green one must touch",
     ),
     ConcreteObject(
         "purpleBar", static=True, description="a purple static bar, the static object the green one must touch"
@@ -77,26 +80,31 @@ CONCRETE_OBJECTS = (
     ),
     ConcreteObject(
         "blueSeesaw",
-        description="a blue bar balanced on a black static fulcrum ball (PHYRE's template 00004), the dynamic object the green one must touch",
+        description="a blue bar balanced on a black static fulcrum ball (PHYRE's template 00004), the dynamic object "
+        "the green one must touch",
     ),
     ConcreteObject(
         "teeter",
-        description="a gray bar lying level on two black static fulcrum balls, under its middle and its right end: it tips when its left half is weighed down (PHYRE's template 00021)",
+        description="a gray bar lying level on two black static fulcrum balls, under its middle and its right end: "
+        "it tips when its left half is weighed down (PHYRE's template 00021)",
     ),
     ConcreteObject(
         "cradle",
         static=True,
-        description="two short black static bars tilted 5° into a shallow V, which holds a ball (PHYRE's template 00015)",
+        description="two short black static bars tilted 5° into a shallow V, which holds a ball (PHYRE's template "
+        "00015)",
     ),
     ConcreteObject(
         "pegRow",
         static=True,
-        description="small black static balls (pegs) in a level row, which a ball rests and rolls on (PHYRE's templates 00012, 00013)",
+        description="small black static balls (pegs) in a level row, which a ball rests and rolls on (PHYRE's "
+        "templates 00012, 00013)",
     ),
     ConcreteObject(
         "purpleRamp",
         static=True,
-        description="a purple static bar, a slope rising towards where its toucher comes from (PHYRE's templates 00010, 00011), the static object the green one must touch",
+        description="a purple static bar, a slope rising towards where its toucher comes from (PHYRE's templates "
+        "00010, 00011), the static object the green one must touch",
     ),
 )
 
@@ -181,32 +189,37 @@ TERMS = (
             "dropped",
             RESTRICTION,
             (Parameter("a", OBJECT, fits="fallableObject"),),
-            "a starts in the air above where it rests and falls there as the scene starts, before the action (PHYRE's templates drop their objects)",
+            "a starts in the air above where it rests and falls there as the scene starts, before the action "
+            "(PHYRE's templates drop their objects)",
         ),
         TermSignature(
             "mayBeTrivial",
             RESTRICTION,
             (),
-            "PHYRE's acceptance keeps the task even when random actions solve it trivially often (its templates that do not exclude BALL:TRIVIAL)",
+            "PHYRE's acceptance keeps the task even when random actions solve it trivially often (its templates that "
+            "do not exclude BALL:TRIVIAL)",
         ),
         TermSignature(
             "inside",
             RESTRICTION,
             (Parameter("a", OBJECT, fits="fallableObject"), Parameter("b", OBJECT, fits="container")),
-            "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down (PHYRE's cover jar)",
+            "a starts inside the jar b: on its base if b is upright (a ball in a jar), under it if b is upside down "
+            "(PHYRE's cover jar)",
             carries=True,  # a moves once the jar does
         ),
         TermSignature(
             "cradled",
             RESTRICTION,
             (Parameter("a", OBJECT, fits="rollableObject"),),
-            "a rests in a cradle, two short bars tilted into a shallow V, which a sideways strike knocks it out of (PHYRE's template 00015)",
+            "a rests in a cradle, two short bars tilted into a shallow V, which a sideways strike knocks it out of "
+            "(PHYRE's template 00015)",
         ),
         TermSignature(
             "pegged",
             RESTRICTION,
             (Parameter("a", OBJECT, fits="rollableObject"),),
-            "a rests on a row of pegs, small black static balls, which it rolls along or is knocked off (PHYRE's templates 00012, 00013)",
+            "a rests on a row of pegs, small black static balls, which it rolls along or is knocked off (PHYRE's "
+            "templates 00012, 00013)",
         ),
         structure_terms()[1],  # on(a, b): a rests on b (version 2)
     )

@@ -17,7 +17,8 @@ PHYRE = World(
     recogniser=RECOGNISER,
     incline=Incline(descending=(15.0, 30.0), other=(20.0, 40.0)),
     sources={
-        "engine": "src/simulator/task_utils.h (1/60 s, 15 velocity and 20 position iterations); Box2D 2.3.2's b2Settings.h for the rest",
+        "engine": "src/simulator/task_utils.h (1/60 s, 15 velocity and 20 position iterations); Box2D 2.3.2's "
+        "b2Settings.h for the rest",
         "gravity": "src/simulator/task_utils.h: gravity -9.8 m/s²",
         "recogniser": "physc: recognition thresholds in metres (the goal's 3 s: PHYRE's 180 steps)",
     },
