@@ -14,12 +14,21 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from typing import Protocol
 
 from lark.common import LexerConf
 from lark.exceptions import UnexpectedCharacters
 from lark.lexer import Lexer, PatternStr, Token
 
 _new_token = Token._future_new
+
+
+class OffsetToken(Protocol):
+    """A token as FastLexer makes it: its offsets are always set (lark's Token types them optional)."""
+
+    type: str
+    start_pos: int
+    end_pos: int
 
 
 class FastLexer(Lexer):

@@ -11,10 +11,11 @@ from __future__ import annotations
 import re
 
 import attrs
-from lark import Token, Transformer
+from lark import Transformer
 
 from physc.diagnostics import Diagnostic, Label, SourceText, Span
 from physc.dsl import ast
+from physc.dsl.lexer import OffsetToken
 
 _ESCAPE = re.compile(r"\\(.)")
 
@@ -36,33 +37,28 @@ class Builder(Transformer):
     offset: int
     problems: list[Diagnostic]  # of the chunk, that do not stop it from giving a scenario
 
-    def _span(self, first: Token, last: Token | None = None) -> Span:
+    def _span(self, first: OffsetToken, last: OffsetToken | None = None) -> Span:
         last = first if last is None else last
-        start, end = first.start_pos, last.end_pos
-        assert start is not None and end is not None  # FastLexer gives every token its offsets
-        return Span(start + self.offset, end + self.offset, self.line_starts)
+        return Span(first.start_pos + self.offset, last.end_pos + self.offset, self.line_starts)
 
-    def _name(self, token: Token) -> ast.Name:
-        return ast.Name(str(token), self._span(token))
+    def _name(self, token: OffsetToken) -> ast.Name:
+        offset = self.offset
+        return ast.Name(str(token), Span(token.start_pos + offset, token.end_pos + offset, self.line_starts))
 
     # ---- terms -------------------------------------------------------------
     def group(self, children):
         """[LPAR, NAME, sep, NAME, …, RPAR] → ([Argument, …], RPAR)."""
         arguments = []
-        tokens: list[Token] = []  # of the argument being read
+        names = []
         for token in children[1:-1]:
             if token.type == "NAME":
-                tokens.append(token)
+                names.append(self._name(token))
             elif token.type == "COMMA":
-                arguments.append(self._argument(tokens))
-                tokens = []
-        if tokens:
-            arguments.append(self._argument(tokens))
+                arguments.append(_argument(names))
+                names = []
+        if names:
+            arguments.append(_argument(names))
         return arguments, children[-1]
-
-    def _argument(self, tokens: list[Token]) -> ast.Argument:
-        """An argument from the names of its alternatives, spanning from the first to the last."""
-        return ast.Argument(tuple(self._name(t) for t in tokens), self._span(tokens[0], tokens[-1]))
 
     def call(self, children):
         name = self._name(children[0])
@@ -213,3 +209,10 @@ class Builder(Transformer):
 
     def start(self, children):
         return children[0]
+
+
+def _argument(names: list[ast.Name]) -> ast.Argument:
+    """An argument from the names of its alternatives (made by `Builder._name`, with spans)."""
+    first, last = names[0].span, names[-1].span
+    assert first is not None and last is not None  # every name the builder makes has a span
+    return ast.Argument(tuple(names), first.join(last))
