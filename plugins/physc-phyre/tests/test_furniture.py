@@ -195,7 +195,7 @@ def test_a_peg_row_spreads_small_black_balls_over_its_box_and_holds_a_ball(tmp_p
     there; `pegged(a)` makes a's support such a row."""
     pegs = bodies(placed("pegRow", 128.0, 60.0, seed=3), SceneBody)
     assert len(pegs) >= 3 and all((p.shape, p.color, p.dynamic, p.size) == ("ball", "black", False, PEG) for p in pegs)
-    steps = [b.x - a.x for a, b in zip(pegs, pegs[1:])]
+    steps = [b.x - a.x for a, b in zip(pegs, pegs[1:], strict=False)]
     assert max(steps) <= PEG_SPACING + 1e-3 and max(steps) - min(steps) < 0.01
     ball = SceneBody("green", "ball", 128.0, 60.0 + 2 * PEG + 12.5 + 20.0, 0.0, 12.5, "green", True)
     end = end_of(PhyreLevel(tuple(pegs) + (ball,), ("", "")), "green")

@@ -108,7 +108,7 @@ def test_a_jars_plates_are_phyres_polygons():
     """The jar of a diameter is PHYRE's (shapes.py's Jar): the same vertices in the same order."""
     parts = jar_parts(jar_height(PHYRE_JAR_DIAMETER))
     assert len(parts) == len(PHYRE_JAR)
-    for part, phyre in zip(parts, PHYRE_JAR):
+    for part, phyre in zip(parts, PHYRE_JAR, strict=True):
         assert _flat(part.points) == pytest.approx(_flat(phyre), abs=1e-12)
 
 

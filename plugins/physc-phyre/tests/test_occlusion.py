@@ -73,5 +73,5 @@ def test_every_polygon_is_counter_clockwise(shape, size):
     polygons = getattr(outline(shape, size), "parts", None) or (outline(shape, size),)
     for polygon in polygons:
         points = polygon.points
-        area = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])) / 2
+        area = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1], strict=True)) / 2
         assert area > 0

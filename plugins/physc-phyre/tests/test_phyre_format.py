@@ -89,7 +89,7 @@ def test_the_picture_fills_the_pixels_whose_centres_lie_inside_with_row_0_at_the
     image = observation.raster(task, (30.0, 30.0, 5.0))
     assert image.shape == (256, 256) and image.dtype == np.uint8
     inside = {(x, y) for x in range(256) for y in range(256) if (x + 0.5 - 100.3) ** 2 + (y + 0.5 - 20.7) ** 2 <= 100}
-    assert {(x, y) for y, x in zip(*np.nonzero(image == 2))} == inside
+    assert {(x, y) for y, x in zip(*np.nonzero(image == 2), strict=True)} == inside
     assert image[20, 100] == 2 and image[255 - 20, 100] == 0  # y up: row 20 is 20 px above the bottom
     # the bar turned upright: 5.12 px wide, 40 px tall, about (50, 200)
     rows, columns = np.nonzero(image == 6)
@@ -108,7 +108,7 @@ def test_features_are_phyres_fourteen_numbers_with_the_agents_ball_last(dataset)
     shaped = [b for b in task["scene"]["bodies"] if b["shapeType"]]
     assert rows.shape == (len(shaped) + 1, 14) and rows.dtype == np.float32
     assert rows[-1].tolist() == pytest.approx([0.25, 0.5, 0.0, 16 / 256, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0])
-    for row, body in zip(rows, shaped):
+    for row, body in zip(rows, shaped, strict=False):
         assert row[3] == pytest.approx(body["diameter"] / 256)
         assert (
             row[4 + body["shapeType"] - 1] == 1

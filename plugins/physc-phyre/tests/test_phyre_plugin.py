@@ -271,7 +271,7 @@ def test_shapes_that_cannot_fit_the_scene_are_drawn_again_not_an_internal_error(
 
     monkeypatch.setattr(physc_phyre.Phyre, "concretize", staticmethod(too_big))
     with pytest.raises(Infeasible):
-        _pipeline("task00000.phys").placed
+        _ = _pipeline("task00000.phys").placed  # placing raises
 
 
 def test_distractors_are_static_bars_and_balls_or_gray_balls_on_the_floor(tmp_path, tenth_of_phyres_pool):

@@ -70,7 +70,7 @@ def test_random_actions_and_neighbours_are_phyres_for_two_balls():
     moved = DOMAIN.actions.neighbours(pair)
     assert len(moved) == 8
     for n in moved:  # both balls moved together, by half a pixel (_yield_user_input_neighborhood)
-        (dx1, dy1), (dx2, dy2) = ((b.x - a.x, b.y - a.y) for a, b in zip(pair.balls, n.balls))
+        (dx1, dy1), (dx2, dy2) = ((b.x - a.x, b.y - a.y) for a, b in zip(pair.balls, n.balls, strict=True))
         assert (dx1, dy1) == (dx2, dy2) != (0, 0) and {abs(dx1), abs(dy1)} <= {0.0, 0.5}
 
 
