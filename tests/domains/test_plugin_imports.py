@@ -57,8 +57,8 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
     # balls judged in doubles away from the limit, the level's bodies made once; 1,790 with
     # issue 64's jar that comes to its ball (PHYRE's 00005, 00010) and issue 65's declared
     # capabilities, 1,810 with its search and files as parts; 2,030 as ruff formats the same code,
-    # issue 72, from 1,758 lines the line before; 2,065 with issue 72's types and its long lines
-    # rewrapped); PHYRE's own formats, pools, simulation cache, folds
+    # issue 72, from 1,758 lines the line before; 2,075 with issue 72's types, its long lines
+    # rewrapped and concretize in its parts); PHYRE's own formats, pools, simulation cache, folds
     # and agent scoring, which a PHYRE researcher reads the tasks with (issues 44, 54), and how
     # agents play them (playing.py: PHYRE's action, features and picture, issue 55), and PHYRE's
     # evaluation (its acceptance rule, random agent and AUCCESS, in physc's core until issue 65:
@@ -68,7 +68,7 @@ def test_the_plugin_is_small_and_has_no_loop_of_its_own():
         "playing.py", "acceptance.py", "evaluation.py",
     }
     counted = {path.name: len(path.read_text(encoding="utf-8").splitlines()) for path in PLUGIN.rglob("*.py")}
-    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 2065, counted
+    assert sum(n for name, n in counted.items() if name not in phyres_own) <= 2075, counted
     assert sum(n for name, n in counted.items() if name in phyres_own) <= 1680, counted  # 1,000; 1,100 with playing.py; 1,550 with its evaluation; 1,680 formatted (1,544 before)
     assert issubclass(Phyre, SimulatedDomain)
     # The search, the replays, stability and the agent are physc's: the plugin overrides none.

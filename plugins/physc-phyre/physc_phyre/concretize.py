@@ -72,14 +72,9 @@ def _size(shape: str, rng: random.Random) -> float:
     return round(rng.uniform(45.0, 70.0), 1)
 
 
-def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
-    """The concrete object and shape of every node, drawn from `rng`; ramps at the angles of
-    the world's incline rule (physc.worlds.Incline)."""
-    headings = {t.objects[1]: t.directions[0] for t in scenario.interactions if t.name in ("roll", "slide")}
-    carried: dict[str, list[str]] = {}
-    for edge in graph.edges:
-        if edge.term == ON_LOCATION:
-            carried.setdefault(edge.b, []).append(edge.a)
+def _chosen(graph, scenario, carried: dict[str, list[str]], rng: random.Random) -> dict[str, str]:
+    """The concrete object of every node, drawn from `rng`; a bar that carries a cradled or
+    pegged object becomes that support."""
     # The agent's ball is the action's, never an object of the scene (it is rollable and
     # fallable only so that the red ball may roll and fall).
     chosen = {
@@ -92,6 +87,44 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
         kinds = [under[a] for a in loads if a in under]
         if kinds and chosen.get(support) == "blackBar":
             chosen[support] = kinds[0]
+    return chosen
+
+
+def _ledge(node, concrete: str, bodies: dict[str, Body], carried: dict[str, list[str]], path: bool, rng) -> Body:
+    """A static bar or row of pegs, long enough for what it carries (`bodies` placed so far)
+    and, on a path (`path`: something rolls or slides on it), for the motion."""
+    name = node.name
+    # A load rests in the ledge's left, middle or right third: three of its widths; a
+    # piece of furniture, as wide as a ledge, only needs its centre over an outer third.
+    loads = [
+        (_across(bodies[o].geometry), bodies[o].concrete in furniture.KINDS)
+        for o in carried.get(name, ())
+        if o in bodies
+    ]
+    low, high = (
+        PATH_LENGTH
+        if path
+        else LEDGE_LENGTH
+        if name in carried
+        else TARGET_LENGTH
+        if concrete == "purpleBar"
+        else BAR_LENGTH
+    )
+    low = max([low] + [(1.5 if wide else 3) * across + 6.0 for across, wide in loads])
+    length = round(rng.uniform(low, max(high, low + 30.0)), 1)
+    geometry = furniture.peg_row(length) if concrete == "pegRow" else Geometry(length, BAR_HEIGHT)
+    return Body(name, node.role, concrete, geometry)
+
+
+def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
+    """The concrete object and shape of every node, drawn from `rng`; ramps at the angles of
+    the world's incline rule (physc.worlds.Incline)."""
+    headings = {t.objects[1]: t.directions[0] for t in scenario.interactions if t.name in ("roll", "slide")}
+    carried: dict[str, list[str]] = {}
+    for edge in graph.edges:
+        if edge.term == ON_LOCATION:
+            carried.setdefault(edge.b, []).append(edge.a)
+    chosen = _chosen(graph, scenario, carried, rng)
     bodies: dict[str, Body] = {}
     # Objects first: a ledge's length depends on what it carries.
     for node in sorted(graph.nodes, key=lambda n: n.static):
@@ -128,26 +161,7 @@ def concretize(graph, scenario, rng: random.Random, incline) -> dict[str, Body]:
                 angle = rng.uniform(*incline.other) * rng.choice((-1, 1))
             bodies[name] = Body(name, node.role, concrete, Geometry(length, BAR_HEIGHT, round(angle, 2)))
         elif concrete in ("blackBar", "purpleBar", "pegRow") and node.static:
-            # A load rests in the ledge's left, middle or right third: three of its widths; a
-            # piece of furniture, as wide as a ledge, only needs its centre over an outer third.
-            loads = [
-                (_across(bodies[o].geometry), bodies[o].concrete in furniture.KINDS)
-                for o in carried.get(name, ())
-                if o in bodies
-            ]
-            low, high = (
-                PATH_LENGTH
-                if name in headings
-                else LEDGE_LENGTH
-                if name in carried
-                else TARGET_LENGTH
-                if concrete == "purpleBar"
-                else BAR_LENGTH
-            )
-            low = max([low] + [(1.5 if wide else 3) * across + 6.0 for across, wide in loads])
-            length = round(rng.uniform(low, max(high, low + 30.0)), 1)
-            geometry = furniture.peg_row(length) if concrete == "pegRow" else Geometry(length, BAR_HEIGHT)
-            bodies[name] = Body(name, node.role, concrete, geometry)
+            bodies[name] = _ledge(node, concrete, bodies, carried, name in headings, rng)
         else:
             shape = KINDS[concrete][0]
             size = round(rng.uniform(*HOLDING_HEIGHT), 1) if concrete in HELD else _size(shape, rng)
