@@ -23,7 +23,7 @@ from physc import budget
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
-from physc.domains.base import Domain
+from physc.domains.simulated import SimulatedDomain
 from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
 from physc.search import elsewhere, search
@@ -120,7 +120,7 @@ Found = tuple[Outcome, Placement]  # the satisfied outcome, and the layout it ca
 
 @attrs.define
 class LayoutLoop:
-    domain: Domain
+    domain: SimulatedDomain
     scenario: ScenarioIR
     rng: random.Random  # the run's one generator (physc.driver.pipeline)
     settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
@@ -149,7 +149,7 @@ class LayoutLoop:
         assert parts is not None, "a satisfied outcome has its parts"
         replays = noisy_replays(self.domain)
         needed = accept if accept is not None else replays
-        places: list[tuple[Domain, str | None]] = [(self.domain, None)]
+        places: list[tuple[SimulatedDomain, str | None]] = [(self.domain, None)]
         if self.settings.verify_backend is not None:
             places.append((self.domain, self.settings.verify_backend))
         spent = 0

@@ -17,6 +17,7 @@ import contextlib
 import functools
 import random
 from collections.abc import Callable, Iterator
+from typing import cast
 
 import attrs
 
@@ -34,6 +35,7 @@ from physc.compiler.to_dimension_graphs import ToDimensionGraphs
 from physc.compiler.to_qsr import ToQsr
 from physc.domains import world_name
 from physc.domains.base import Domain
+from physc.domains.simulated import SimulatedDomain
 from physc.driver.layout_loop import LayoutLoop, Progress
 from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
@@ -188,7 +190,9 @@ class Pipeline:
         layouts and time. The time budget covers everything, the fallbacks included: the
         work stops at its next stopping point (a simulated step, a clause choice) once the
         time is spent."""
-        loop = LayoutLoop(self.domain, self.scenario, self.rng, self.settings, self.progress)
+        # The task stage needs `satisfy`, which `require` checked before any work: the capability
+        # SimulatedDomain declares (physc.domains.base), so the domain is one.
+        loop = LayoutLoop(cast(SimulatedDomain, self.domain), self.scenario, self.rng, self.settings, self.progress)
         with self.within_budget():
             generated = loop.run(self.placements())
         parts = generated.outcome.parts

@@ -88,10 +88,10 @@ class _Listener(Box2D.b2ContactListener):
         super().__init__()
         self.world = world
 
-    def BeginContact(self, contact):  # noqa: N802 - Box2D's name
+    def BeginContact(self, contact):  # Box2D's name
         self.world._on_begin(contact)
 
-    def EndContact(self, contact):  # noqa: N802 - Box2D's name
+    def EndContact(self, contact):  # Box2D's name
         self.world._on_end(contact)
 
 

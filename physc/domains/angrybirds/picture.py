@@ -12,16 +12,16 @@ from __future__ import annotations
 import math
 
 import matplotlib
+import matplotlib.pyplot as plt
+from matplotlib import patches
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib import patches  # noqa: E402
+from physc.compiler.concrete_layout import ConcreteLayout
+from physc.domains.angrybirds.catalogue import BY_PREFAB, extent
+from physc.domains.angrybirds.level import Level, LevelObject
+from physc.domains.angrybirds.to_level import level_from_layout
+from physc.picture import save  # noqa: F401 - angrybirds' pictures are saved as every domain's
 
-from physc.compiler.concrete_layout import ConcreteLayout  # noqa: E402
-from physc.domains.angrybirds.catalogue import BY_PREFAB, extent  # noqa: E402
-from physc.domains.angrybirds.level import Level, LevelObject  # noqa: E402
-from physc.domains.angrybirds.to_level import level_from_layout  # noqa: E402
-from physc.picture import save  # noqa: E402,F401  (angrybirds' pictures are saved as every domain's)
+matplotlib.use("Agg")  # drawn off-screen; pyplot resolves its backend lazily, so Agg it is
 
 MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
 KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}

@@ -6,15 +6,15 @@ from __future__ import annotations
 import math
 
 import matplotlib
+import matplotlib.pyplot as plt
+from matplotlib import patches
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib import patches  # noqa: E402
+from physc.backends import Circle, parts
+from physc.picture import save
+from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction
+from physc_phyre.world import PIXELS_PER_METRE, SCENE, outline
 
-from physc.backends import Circle, parts  # noqa: E402
-from physc.picture import save  # noqa: E402
-from physc_phyre.level import BallAction, PhyreLevel, SceneBody, TwoBallAction  # noqa: E402
-from physc_phyre.world import PIXELS_PER_METRE, SCENE, outline  # noqa: E402
+matplotlib.use("Agg")  # drawn off-screen; pyplot resolves its backend lazily, so Agg it is
 
 PALETTE = {
     "red": "#f34f46",
