@@ -7,7 +7,7 @@ from middle_end import DOMAIN, paper_scenarios
 
 from physc.compiler.concrete_layout import PlacedObject
 from physc.compiler.layout_graph import ON_LOCATION, TOUCHING
-from physc.domains.angrybirds.bodies import toughness
+from physc.domains.angrybirds.search_hooks import toughness
 from physc.domains.angrybirds.worlds import PHYQ
 from physc.search.choosing import next_act, worth
 

@@ -146,3 +146,21 @@ def test_every_path_and_module_a_doc_cites_exists(doc):
             missing |= {p for p in paths if not NOT_PATHS.match(p) and not _exists(p)}
         missing |= {m for m in MODULE.findall(line) if m not in NOT_MODULES and not _resolves(m)}
     assert not missing, sorted(missing)
+
+
+MODULE_LINES = 400  # the most lines a module of physc/ has (issue 72)
+FUNCTION_LINES = 80  # the most lines a function of physc/ has, its docstring included
+
+
+def test_modules_and_functions_stay_small():
+    over = []
+    for path in sorted(PHYSC.rglob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        if len(text.splitlines()) > MODULE_LINES:
+            over.append(f"{path.relative_to(ROOT)}: {len(text.splitlines())} lines")
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                length = (node.end_lineno or node.lineno) - node.lineno + 1
+                if length > FUNCTION_LINES:
+                    over.append(f"{path.relative_to(ROOT)}:{node.lineno} {node.name}: {length} lines")
+    assert not over, "\n".join(over)
