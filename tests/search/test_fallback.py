@@ -43,7 +43,7 @@ class Scripted:
 
 def generate(script, min_robustness, layouts=5):
     # The scripted outcomes have no level to replay: the checks in the game are left out here
-    # (tests/generation/test_checked.py has them).
+    # (tests/search/test_checked.py has them).
     with mock.patch.object(search, "satisfy", script.satisfy), mock.patch.object(LayoutLoop, "checked", lambda self, result, accept: result):
         return Pipeline(DOMAIN, paper_scenarios()["R"], 0, RunSettings(layouts=layouts, min_robustness=min_robustness, validate=False)).task
 
