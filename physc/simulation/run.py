@@ -177,16 +177,7 @@ def run(
                 already.discard(pair)
                 resumed.add(pair)
                 continue  # touching at the snapshot already (reported when stepped, or woken): no new contact
-            record = ContactRecord(
-                time,
-                event.a,
-                event.b,
-                event.point,
-                event.normal,
-                event.relative_velocity,
-                event.velocity_a,
-                event.velocity_b,
-            )
+            record = ContactRecord.of(time, event)
             # What touched what; another pair of the same bodies' colliders, and a body that
             # lingers after it left the level, are heard by the rules alone.
             if event.first and not pair & unrecorded:
@@ -251,16 +242,7 @@ def run_to_outcome(
         if hears:
             engine.ended()  # (drained: only the rules read contacts here)
             for event in engine.begun():
-                record = ContactRecord(
-                    time,
-                    event.a,
-                    event.b,
-                    event.point,
-                    event.normal,
-                    event.relative_velocity,
-                    event.velocity_a,
-                    event.velocity_b,
-                )
+                record = ContactRecord.of(time, event)
                 rules.on_contact(engine, record, damage, time)
         if lingering:
             for name in [n for n, until in lingering.items() if until <= time + 1e-9]:

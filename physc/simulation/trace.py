@@ -9,10 +9,13 @@ reach into an engine.
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import attrs
 import numpy as np
+
+if TYPE_CHECKING:
+    from physc.backends import ContactEvent
 
 
 @attrs.frozen
@@ -25,6 +28,20 @@ class ContactRecord:
     relative_velocity: tuple[float, float]  # a's minus b's, before the collision
     velocity_a: tuple[float, float]
     velocity_b: tuple[float, float]
+
+    @classmethod
+    def of(cls, time: float, event: ContactEvent) -> ContactRecord:
+        """The record of a contact the engine reported beginning (`event`) at `time`."""
+        return cls(
+            time,
+            event.a,
+            event.b,
+            event.point,
+            event.normal,
+            event.relative_velocity,
+            event.velocity_a,
+            event.velocity_b,
+        )
 
     @property
     def speed(self) -> float:
