@@ -18,6 +18,7 @@ from physc.compiler.layout_graph import (
     LIES_ON_PATH,
     LOCATED_FAR,
     OBJECT,
+    ON_LOCATION,
     PATH_OBSTRUCTED,
     PLAYER,
     SUPPORT,
@@ -39,6 +40,7 @@ from physc.dsl.scenario import ScenarioIR, TermIR
 
 if TYPE_CHECKING:
     from physc.compiler.layout_rules import LayoutRules
+    from physc.diagnostics import Span
 
 SIDES = ("left", "right", "above", "below")
 AHEAD = {"right": "aboveLeft", "left": "aboveRight"}  # pushed right, a faller starts above its target or up to its left
@@ -121,6 +123,12 @@ class Inference:
 
     def path_of(self, mover: str) -> list[str]:
         return self.paths.get(mover, [])
+
+    def rest_on(self, obj: str, support: str, locations: tuple[str, ...], why: str, span: Span | None) -> None:
+        """`obj` rests on `support`, at one of `locations` on it: the support edge, whose
+        provenance says `why`, and `support` recorded as what `obj` rests on."""
+        self.b.edge(ON_LOCATION, obj, support, locations, Provenance("support", why, span))
+        self.support[obj] = support
 
 
 def infer(scenario: ScenarioIR, rules: LayoutRules, structure: str = "flat") -> LayoutGraph:

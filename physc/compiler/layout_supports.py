@@ -11,7 +11,6 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from physc.compiler.layout_graph import ON_LOCATION, Provenance
 from physc.compiler.sequence import OPPOSITE, pushes
 from physc.dsl.scenario import TermIR
 
@@ -36,14 +35,7 @@ def declared_supports(s: Inference) -> None:
     for term in s.scenario.restrictions:
         if term.name == "on" and term.objects[0] in s.dynamic and term.objects[0] not in s.support:
             top, below = term.objects
-            s.b.edge(
-                ON_LOCATION,
-                top,
-                below,
-                ("over",),
-                Provenance("support", f"{top} rests on {below}: {term.text}", term.span),
-            )
-            s.support[top] = below
+            s.rest_on(top, below, ("over",), f"{top} rests on {below}: {term.text}", term.span)
 
 
 def hit_supports(s: Inference) -> None:
@@ -92,14 +84,13 @@ def _rest_at_ramp_foot(s: Inference, term: TermIR, ramp: str) -> None:
     of its own facing the ramp, which the mover's path continues onto."""
     actor, target = term.objects
     own = s.b.support_node(target, (s.rules.flat,))
-    s.b.edge(
-        ON_LOCATION,
+    s.rest_on(
         target,
         own,
         (OPPOSITE[s.heading[actor]],),
-        Provenance("support", f"{target} rests at the foot of the ramp {ramp}: {term.text}", term.span),
+        f"{target} rests at the foot of the ramp {ramp}: {term.text}",
+        term.span,
     )
-    s.support[target] = own
     s.ramps.append(ramp)
     s.paths[actor].append(own)
 
@@ -114,27 +105,13 @@ def _rest_on_path(s: Inference, term: TermIR, rest: str) -> None:
         # It goes on along the same surface: it rests in its middle, ahead of its
         # hitter and with room ahead of it.
         where = ("centre",)
-    s.b.edge(
-        ON_LOCATION,
-        target,
-        rest,
-        where,
-        Provenance("support", f"{target} lies on the path of {actor}: {term.text}", term.span),
-    )
-    s.support[target] = rest
+    s.rest_on(target, rest, where, f"{target} lies on the path of {actor}: {term.text}", term.span)
 
 
 def _rest_on_ground(s: Inference, term: TermIR, ground: str) -> None:
     """A target that moves along the ground first rests on it, anywhere."""
     target = term.objects[1]
-    s.b.edge(
-        ON_LOCATION,
-        target,
-        ground,
-        ANY_LOCATION,
-        Provenance("support", f"{target} rests on the ground it moves along", term.span),
-    )
-    s.support[target] = ground
+    s.rest_on(target, ground, ANY_LOCATION, f"{target} rests on the ground it moves along", term.span)
 
 
 def _rest_beside_surface(s: Inference, target: str) -> None:
@@ -142,14 +119,9 @@ def _rest_beside_surface(s: Inference, target: str) -> None:
     continues from."""
     first = s.moved_on[target]
     own = s.b.support_node(target, (s.rules.flat,))
-    s.b.edge(
-        ON_LOCATION,
-        target,
-        own,
-        (s.heading[target],),
-        Provenance("support", f"{target} starts beside the surface it moves on: {first.text}", first.span),
+    s.rest_on(
+        target, own, (s.heading[target],), f"{target} starts beside the surface it moves on: {first.text}", first.span
     )
-    s.support[target] = own
 
 
 def _rest_on_new_support(s: Inference, position: int, term: TermIR) -> None:
@@ -164,8 +136,7 @@ def _rest_on_new_support(s: Inference, position: int, term: TermIR) -> None:
     else:
         locations = ANY_LOCATION
         text = f"{target} rests on a support"
-    s.b.edge(ON_LOCATION, target, own, locations, Provenance("support", text, term.span))
-    s.support[target] = own
+    s.rest_on(target, own, locations, text, term.span)
 
 
 def blast_supports(s: Inference) -> None:
@@ -183,14 +154,13 @@ def blast_supports(s: Inference) -> None:
         ):
             source, target = term.objects
             if source in s.support:
-                s.b.edge(
-                    ON_LOCATION,
+                s.rest_on(
                     target,
                     s.support[source],
                     ANY_LOCATION,
-                    Provenance("support", f"{target} lies within the blast of {source}: {term.text}", term.span),
+                    f"{target} lies within the blast of {source}: {term.text}",
+                    term.span,
                 )
-                s.support[target] = s.support[source]
 
 
 def contrast_supports(s: Inference) -> None:
@@ -203,14 +173,13 @@ def contrast_supports(s: Inference) -> None:
             and term.objects[1] in s.support
         ):
             contrast, counterpart = term.objects
-            s.b.edge(
-                ON_LOCATION,
+            s.rest_on(
                 contrast,
                 s.support[counterpart],
                 ANY_LOCATION,
-                Provenance("support", f"{contrast} rests as {counterpart} does: {term.text}", term.span),
+                f"{contrast} rests as {counterpart} does: {term.text}",
+                term.span,
             )
-            s.support[contrast] = s.support[counterpart]
 
 
 def remaining_supports(s: Inference) -> None:
@@ -218,11 +187,4 @@ def remaining_supports(s: Inference) -> None:
     for name in s.dynamic:
         if name not in s.support:
             own = s.b.support_node(name, s.anywhere)
-            s.b.edge(
-                ON_LOCATION,
-                name,
-                own,
-                ANY_LOCATION,
-                Provenance("support", f"{name} rests on a support", None),
-            )
-            s.support[name] = own
+            s.rest_on(name, own, ANY_LOCATION, f"{name} rests on a support", None)
