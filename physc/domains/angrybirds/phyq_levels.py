@@ -15,7 +15,9 @@
   angle the game launches that at and the slingshot reference point it was computed from;
 * `replay_shots.py`: a script for `sciencebirdsagents/` that loads each level, sends its shot
   and writes whether the level was solved (it carries agent_action.py's functions, to compute
-  the shot again if the game's reference point differs from the one expected);
+  the shot again if the game's reference point differs from the one expected); it plays a level
+  with a tapped or timed shot at the game's speed 1, where a tap keeps its time, and starts the
+  game without its window with `--headless`;
 * `README.md`: how to install the levels in the game and replay the shots.
 """
 
@@ -118,6 +120,9 @@ def config(names: list[str]) -> str:
 
 REPLAY_MAIN = '''
 
+TIMED_SPEED = 1  # the game's speed for a level with a tapped or timed shot (README.md beside this file says why)
+
+
 def main():
     """Replay every shot of shots.csv in the running game; write replayed.csv."""
     import argparse
@@ -129,32 +134,74 @@ def main():
     parser.add_argument("--shots", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "shots.csv"))
     parser.add_argument("--out", default="replayed.csv")
     parser.add_argument("--game-version", default="Linux")
+    parser.add_argument("--headless", action="store_true", help="start the game with no window and no terminal "
+                        "(the framework's --headless server, in the background; closed at the end if this started it)")
+    parser.add_argument("--speed", type=int, default=50, help="the game's speed (1 to 50) for a level whose shots are "
+                        f"neither tapped nor timed; a level with a tapped or timed shot is played at {TIMED_SPEED}")
     args = parser.parse_args()
+    if not 1 <= args.speed <= 50:
+        parser.error("--speed is from 1 to 50 (the game caps it at 50)")
     sys.path.insert(0, os.getcwd())  # run from sciencebirdsagents/
     from SBEnvironment.SBEnvironmentWrapper import SBEnvironmentWrapper
     from SBAgent import SBAgent
 
     with open(args.shots, newline="") as handle:
         shots = list(csv.DictReader(handle))
-    env = SBEnvironmentWrapper(reward_type="passing", speed=50, game_version=args.game_version)
+    speeds = level_speeds(shots, args.speed)
+    speed = speeds[shots[0]["level"]] if shots else args.speed
+    started = args.headless and not server_running()
+    env = SBEnvironmentWrapper(reward_type="passing", speed=speed, game_version=args.game_version,
+                               if_head="headless" if args.headless else True, headless_server=args.headless)
     agent = SBAgent(env=env)
     env.make(agent=agent, start_level=1, state_representation_type="symbolic")
-    with open(args.out, "w", newline="") as handle:
-        out = csv.writer(handle)
-        out.writerow(["level", "file", "shot", "dx", "dy", "reference_x", "reference_y", "solved"])
-        for shot in shots:
-            if int(shot.get("shot") or 1) == 1:  # a level's first shot: load it (its later shots go on from there)
-                env.current_level = int(shot["level"])
-                env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
-            action = [int(shot["dx"]), int(shot["dy"]), int(shot["tap_time"])]
-            expected = (int(shot["reference_x"]), int(shot["reference_y"]))
-            live = (env.sling_center.X, env.sling_center.Y)
-            if live != expected:  # another screen or camera than expected: aim from the game's own reference point
-                level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
-                action = aimed_again(float(shot["release_angle"]), level_text, live) + [int(shot["tap_time"])]
-            _, _, _, info = env.step(action)
-            out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], \
-live[0], live[1], bool(info[0])])
+    try:
+        with open(args.out, "w", newline="") as handle:
+            out = csv.writer(handle)
+            out.writerow(["level", "file", "shot", "dx", "dy", "tap_time", "reference_x", "reference_y", "speed",
+                          "solved"])
+            for shot in shots:
+                if int(shot.get("shot") or 1) == 1:  # a level's first shot: load it (its later shots go on from there)
+                    if speeds[shot["level"]] != speed:  # the game takes a new speed at any time (README.md, command 2)
+                        speed = speeds[shot["level"]]
+                        agent.ar.set_game_simulation_speed(speed)
+                    env.current_level = int(shot["level"])
+                    env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
+                action = [int(shot["dx"]), int(shot["dy"]), int(shot["tap_time"])]
+                expected = (int(shot["reference_x"]), int(shot["reference_y"]))
+                live = (env.sling_center.X, env.sling_center.Y)
+                if live != expected:  # another screen or camera than expected: aim from the game's own reference point
+                    level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
+                    action = aimed_again(float(shot["release_angle"]), level_text, live) + [int(shot["tap_time"])]
+                _, _, _, info = env.step(action)
+                out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], action[2],
+                              live[0], live[1], speed, bool(info[0])])
+    finally:
+        if started:  # the game and its server this run started in the background
+            env.close()
+
+
+def level_speeds(shots, fast):
+    """{level: the game's speed to play it at}: TIMED_SPEED for a level with a tapped shot (tap_time > 0) or a
+    timed one (a wait), `fast` for the others. HUD.cs taps tap_time / speed milliseconds of the wall clock
+    after the release, while the game steps its physics at most 0.02 s a frame (TimeManager.asset): the
+    tap keeps its time only where the game makes 50 × speed frames a second."""
+    speeds = {}
+    for shot in shots:
+        timed = int(shot.get("tap_time") or 0) > 0 or (shot.get("wait") or "").strip() != ""
+        speeds[shot["level"]] = TIMED_SPEED if timed or speeds.get(shot["level"]) == TIMED_SPEED else fast
+    return speeds
+
+
+def server_running():
+    """Whether the game's server (game_playing_interface.jar) runs already (the wrapper then starts none);
+    True where `ps` cannot tell, so that nothing this run did not start is closed."""
+    import subprocess
+
+    try:
+        listing = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return True
+    return any("game_playing_interface.jar" in line for line in listing.splitlines())
 
 
 def aimed_again(angle, level_text, reference):
@@ -178,7 +225,7 @@ def replay_script() -> str:
     header = (
         '"""Replay physc\'s shots in Phy-Q\'s game with its agent framework (written by physc generate).\n\n'
         "Run from phy-q/benchmark's sciencebirdsagents/ with the game's config.xml listing these levels\n"
-        '(README.md beside this file): python path/to/replay_shots.py --out replayed.csv\n"""\n\n'
+        '(README.md beside this file): python path/to/replay_shots.py --out replayed.csv [--headless]\n"""\n\n'
     )
     body = inspect.getsource(agent_action).split('"""', 2)[2].lstrip("\n")
     return header + body.rstrip("\n") + "\n" + REPLAY_MAIN
@@ -201,8 +248,15 @@ def readme(count: int, worlds: list[str]) -> str:
         f"mkdir -p sciencebirdsgames/Linux/{GAME_FOLDER}\n"
         f"cp phyq/Levels/*.xml sciencebirdsgames/Linux/{GAME_FOLDER}/\n"
         "cp phyq/config.xml sciencebirdsgames/Linux/config.xml   # keep a copy of the game's own first\n"
-        "cd sciencebirdsagents && python ../phyq/replay_shots.py --out replayed.csv\n"
+        "cd sciencebirdsagents && python ../phyq/replay_shots.py --out replayed.csv   # --headless: no window\n"
         "```\n\n"
+        "`--headless` starts the game with no window and no terminal, in the background (the framework's\n"
+        "`game_playing_interface.jar --headless`), and closes it at the end if it started it; without it the\n"
+        "game is shown. A level with a tapped or timed shot is played at the game's speed 1, the others at\n"
+        "`--speed` (50 by default): the game waits a tap's time divided by the speed on the wall clock but\n"
+        "steps at most 0.02 s a frame, so at a higher speed the tap comes early unless the game makes 50 ×\n"
+        'speed frames a second (physc\'s docs/angrybirds.md, "At a speed under which a tap keeps its time").\n'
+        "`replayed.csv` has the speed of each shot.\n\n"
         "`shots.csv` holds each level's intended solution as physc's release angle and as the action Phy-Q's\n"
         "agents send, `env.step([dx, dy, tap_time])`: whole pixels from the slingshot's reference point on\n"
         "the game's 840 × 480 window, zoomed out fully (what `env.reset()` leaves), and the angle the game\n"
