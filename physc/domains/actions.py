@@ -57,6 +57,24 @@ class Actions(Part):
         or the action is not aimed at the counterpart."""
         return None
 
+    def sweep(self, level, scenario, before=None, after=None, at: str | None = None) -> Sequence[tuple[str, object]]:
+        """(label, action) for every action the player could send next, as a property's check
+        plays them (language version 2's `nonGreedy`, `blocks`: physc.search.properties): the
+        next action after `before` (None: the first), the level as the play of `before` left
+        it (`after`, its trace), swept over the action's range at the domain's resolution, with
+        the candidates aimed at `at` first. The default: none (the domain cannot check them)."""
+        return ()
+
+    def timing(self, action, actor: str) -> float | None:
+        """When `actor`'s part of `action` is taken, in seconds after the part before it (version
+        2's `timed(a)`); None: it is not timed (the default)."""
+        return None
+
+    def retimed(self, action, actor: str, wait: float | None) -> object | None:
+        """`action` with `actor`'s part taken `wait` seconds after the part before it (None: once
+        the level rests); None: the domain cannot retime it (the default)."""
+        return None
+
     def valid(self, level, action) -> bool:
         """Whether `action` may be taken in `level` (PHYRE: the ball occludes nothing)."""
         return True

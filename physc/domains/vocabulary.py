@@ -43,6 +43,7 @@ __all__ = (
     "TermSignature",
     "Vocabulary",
     "paper_terms",
+    "property_terms",
     "structure_terms",
 )
 
@@ -146,3 +147,31 @@ def structure_terms() -> tuple[TermSignature, TermSignature]:
         carries=True,
     )
     return contrast, on
+
+
+def property_terms(player: str, goal: str) -> tuple[TermSignature, TermSignature, TermSignature]:
+    """Language version 2's restrictions on what must fail (Phy-Q's defining properties), which
+    the search checks in simulation against every action the player could send, not only the
+    solution's (physc.search.properties): `nonGreedy(a, b)`, `blocks(a, b)` and `timed(a)`."""
+    non_greedy = TermSignature(
+        "nonGreedy",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits=goal), Parameter("b", OBJECT, fits=goal)),
+        "the solution takes a before b; once b is taken first, no action the player could send next takes a "
+        "(version 2: Phy-Q's non-greedy actions)",
+    )
+    blocks = TermSignature(
+        "blocks",
+        RESTRICTION,
+        (Parameter("a", OBJECT, dynamic=True), Parameter("b", OBJECT, fits=goal)),
+        "a bars the way to b: in the level as laid out, no action the player could send first takes b "
+        "(version 2: Phy-Q's clearing paths)",
+    )
+    timed = TermSignature(
+        "timed",
+        RESTRICTION,
+        (Parameter("a", OBJECT, fits=player),),
+        "a's action is timed: taken while what the earlier actions set going still moves, it solves the task only "
+        "within half a second of its time, and not once the level rests (version 2: Phy-Q's adequate timing)",
+    )
+    return non_greedy, blocks, timed

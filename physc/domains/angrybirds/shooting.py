@@ -66,6 +66,23 @@ class ScienceBirdsActions(Actions):
 
         return shots.contrasted(self.domain, level, action, counterpart, contrast)
 
+    def sweep(self, level, scenario, before=None, after=None, at: str | None = None) -> list:
+        """The next bird's candidate shots at `at`, then every release angle Phy-Q's agents can
+        send, half a degree apart (sweeps.py)."""
+        from physc.domains.angrybirds import sweeps
+
+        return sweeps.sweep(self.domain, level, scenario, before, after, at)
+
+    def timing(self, action, actor: str) -> float | None:
+        from physc.domains.angrybirds import sweeps
+
+        return sweeps.timing(action, actor)
+
+    def retimed(self, action, actor: str, wait: float | None):
+        from physc.domains.angrybirds import sweeps
+
+        return sweeps.retimed(action, actor, wait)
+
     def played_as(self, level, solution):
         """The solution with the shots Phy-Q's agents send for it: for each, the whole-pixel drag
         from the slingshot whose launch is nearest its release angle (agent_action.py), that

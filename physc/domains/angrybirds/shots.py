@@ -131,6 +131,11 @@ def timed(scenario, start: int, player_names) -> bool:
     return any(t.objects and t.objects[0] in before for t in scenario.interactions[start:])
 
 
+def declared_timed(scenario, name: str) -> bool:
+    """Whether a restriction `timed(name)` says the bird's shot is timed (language version 2)."""
+    return any(t.name == "timed" and t.objects[0] == name for t in scenario.restrictions)
+
+
 def tapped(scenario, name: str) -> bool:
     return any(t.name == "tap" and t.objects[0] == name for t in scenario.interactions)
 
@@ -156,7 +161,7 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
             ]
         else:
             variants = [(label, shot)]
-        if before is not None and timed(scenario, start, order):
+        if before is not None and (timed(scenario, start, order) or declared_timed(scenario, name)):
             variants = [
                 (f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS
             ]

@@ -11,6 +11,7 @@ from physc.domains.vocabulary import (
     TermSignature,
     Vocabulary,
     paper_terms,
+    property_terms,
     structure_terms,
 )
 
@@ -92,6 +93,7 @@ OBJECT_TERMS = (
 
 PAPER, RESTRICTIONS = paper_terms(rollable="rollableBlock", slidable="slidableBlock", surface="surface")
 CONTRAST, ON = structure_terms()
+NON_GREEDY, BLOCKS, TIMED = property_terms(player="bird", goal="pig")
 TERMS = (
     (
         PAPER["hit"],
@@ -126,7 +128,7 @@ TERMS = (
         ),
     )
     + RESTRICTIONS
-    + (CONTRAST, ON)
+    + (CONTRAST, ON, NON_GREEDY, BLOCKS, TIMED)
 )
 
 VOCABULARY = Vocabulary(
