@@ -102,6 +102,15 @@ class Actions(Part):
         action itself (angrybirds: the drag Phy-Q's agent framework sends); the default: as it is."""
         return solution
 
+    def agent_variants(self, level, solution) -> list[tuple[str, object]]:
+        """(label, action) for each action the target world's agents may send for `solution`
+        beside the one `played_as` recorded: each must solve the task too, in every reading (the
+        search's precision step, physc.search.precision, and `physc verify`). Angrybirds: for
+        each shot, the 8 pixels around its drag, Phy-Q's trajectory planner's release, a tap
+        20 ms early or late. The default: none. (Not `neighbours`, which a benchmark's
+        acceptance rule asks of any action it judges, PHYRE's stability.)"""
+        return []
+
     def sent_text(self, solution) -> str | None:
         """What the target world's players send for `solution`, in words, for `physc verify` to
         print beside its verdict (angrybirds: Phy-Q's `env.step([dx, dy, tap])` and the angle the

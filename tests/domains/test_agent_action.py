@@ -50,16 +50,70 @@ def test_the_drag_launches_what_physc_simulates(angle):
 
 
 @pytest.mark.parametrize("angle", [x * 2.5 for x in range(-8, 33)])
-def test_the_whole_pixel_action_is_at_full_stretch_on_screen_and_names_its_launch(angle):
+def test_the_whole_pixel_action_is_the_agents_200_pixel_drag_nearest_the_angle(angle):
     action, launched = aa.agent_action(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
     ref = aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH)
     pixel = (ref[0] + action[0], ref[1] - action[1])
     assert all(isinstance(v, int) for v in action) and action[2] == 0
-    assert 0 <= pixel[0] < aa.SCREEN[0] and 0 <= pixel[1] < aa.SCREEN[1]
+    # DQNDiscreteAgent's drag: 200 pixels from the reference point (within a pixel, once whole);
+    # at low angles the release point is left of the screen, as the DQN agent's own drags are.
+    assert abs(math.hypot(action[0], action[1]) - aa.AGENT_DRAG) < math.sqrt(2)
     _, velocity = game_launch(pixel)
     assert math.hypot(*velocity) == pytest.approx(PHYQ.launch.speed)  # full stretch
     assert math.degrees(math.atan2(velocity[1], velocity[0])) == pytest.approx(launched, abs=1e-9)
-    assert abs(launched - angle) < 0.1  # under the evaluation's angle noise (σ 0.1°), which a task survives
+    # the nearest of the whole pixels around the exact drag there (floor and ceiling of each):
+    # the point on the ray at θ + 180° from the rest point 200 pixels from the reference point
+    low, high = 100.0, 300.0
+    for _ in range(60):
+        middle = (low + high) / 2
+        low, high = (middle, high) if math.hypot(*aa.drag(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH, middle)) < 200 else (low, middle)
+    dx, dy = aa.drag(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH, low)
+    around = [
+        abs(aa.launch_angle((x, y), SLINGSHOT, CAMERA_Y, MAX_WIDTH)[0] - angle)
+        for x in (math.floor(dx), math.ceil(dx))
+        for y in (math.floor(dy), math.ceil(dy))
+    ]
+    assert abs(launched - angle) == pytest.approx(min(around)) and abs(launched - angle) < 0.15
+
+
+def test_the_drag_is_the_dqn_agents():
+    # DQNDiscreteAgent.__degToShot: [200·cos(deg), 200·sin(deg)] for deg 90..269, truncated by
+    # the wrapper's step (int()); at 180° the release point is 200 pixels left of the reference.
+    assert aa.AGENT_DRAG == 200
+    sent = [int(aa.AGENT_DRAG * math.cos(math.radians(180.0))), int(aa.AGENT_DRAG * math.sin(math.radians(180.0)))]
+    assert sent == [-200, 0]
+    launched, stretch = aa.launch_angle(sent, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert stretch == 1.0 and abs(launched) < 0.5  # about level: the rest point is not the reference point
+    action, _ = aa.agent_action(0.0, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH)[0] + action[0] < 0  # off the screen, as the DQN's own
+
+
+def find_release_point(sling, theta):
+    """Utils/trajectory_planner.py (phy-q/benchmark 514491c), transcribed: `sling` is the
+    framework's box (X, Y, width, height) after the wrapper's swap."""
+    x, y, width, height = sling
+    mag = height * 5
+    ref = (int(x + 0.45 * width), int(y + 0.35 * width))  # get_reference_point
+    return int(ref[0] - mag * math.cos(theta)), int(ref[1] + mag * math.sin(theta))
+
+
+@pytest.mark.parametrize("angle", [-15.0, 0.0, 12.3, 30.0, 45.0, 61.7, 80.0])
+def test_the_planner_release_is_find_release_point_from_the_reference_point(angle):
+    sling = aa.sling_box(SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert sling == (120, 251, 17, 49) and aa.PLANNER_STRETCH == 5  # the box's edges rounded: 2.055 units high
+    ref = aa.reference_point(SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    action = aa.planner_release(angle, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert (ref[0] + action[0], ref[1] - action[1]) == find_release_point(sling, math.radians(angle))
+    assert action[2] == 0
+    launched, stretch = aa.launch_angle(action, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    # aimed from the reference point, not the rest point, and truncated: a little low, under 0.7°
+    assert stretch == 1.0 and -0.7 < launched - angle < 0
+
+
+def test_the_neighbours_are_the_8_pixels_around():
+    around = aa.neighbours([-120, -45, 560])
+    assert len(around) == len({tuple(p) for p in around}) == 8 and [-120, -45, 560] not in around
+    assert all(max(abs(p[0] + 120), abs(p[1] + 45)) == 1 and p[2] == 560 for p in around)
 
 
 def test_the_reference_point_is_the_frameworks():
@@ -130,3 +184,36 @@ def test_the_level_set_carries_every_shot_of_a_task_of_several_in_turn():
     shots = list(csv.DictReader(io.StringIO(files["phyq/shots.csv"].decode())))
     assert [(s["level"], s["shot"], s["tap_time"]) for s in shots] == [("1", "1", "0"), ("1", "2", "560")]
     assert files["phyq/config.xml"].decode().count("Two_0_1.xml") == 2  # the level once (and the last again, as Phy-Q lists it)
+
+
+def test_the_agents_other_actions_are_the_planners_release_the_8_pixels_and_the_tap_off_by_a_step():
+    from types import SimpleNamespace
+
+    from physc.domains.angrybirds.launch import Shots
+    from physc.domains.angrybirds.shots import TAP_OFF, BirdShot, ShotsSolution, Solution, agent_variants, played_as
+
+    level = SimpleNamespace(slingshot=SLINGSHOT, camera=SimpleNamespace(y=CAMERA_Y, max_width=MAX_WIDTH))
+    one = played_as(level, Solution("pig", (5.0, -2.0), "low", 20.0))
+    variants = agent_variants(level, one)
+    assert len(variants) == 9 and all(isinstance(action, Shot) for _, action in variants)
+    planner = aa.planner_release(20.0, SLINGSHOT, CAMERA_Y, MAX_WIDTH)
+    assert variants[0][0].startswith(f"the planner's release: env.step({planner})")
+    assert variants[0][1].angle == pytest.approx(aa.launch_angle(planner, SLINGSHOT, CAMERA_Y, MAX_WIDTH)[0], abs=1e-5)
+    pixels = [aa.launch_angle(p, SLINGSHOT, CAMERA_Y, MAX_WIDTH)[0] for p in aa.neighbours(one.agent_action)]
+    assert [action.angle for _, action in variants[1:]] == pytest.approx(pixels, abs=1e-5)
+    assert agent_variants(level, Solution("pig", (5.0, -2.0), "low", 20.0)) == []  # a record from before agent actions
+    # Two shots, the second tapped: each shot's variants with the other as sent; the tap 20 ms off.
+    assert TAP_OFF == 20
+    two = played_as(level, ShotsSolution("two", (
+        BirdShot("bird", "pig", (5.0, -2.0), "low", 20.0),
+        BirdShot("blue", "pig", (6.0, -2.0), "low", 35.0, tap=0.54),
+    )))
+    variants = agent_variants(level, two)
+    assert len(variants) == 9 + 9 + 2 and all(isinstance(action, Shots) for _, action in variants)
+    first, second = (s.agent_angle for s in two.shots)
+    assert all(action.shots[1].angle == second for _, action in variants[:9])
+    assert all(action.shots[0].angle == first for _, action in variants[9:])
+    early, late = variants[-2:]
+    assert [early[1].shots[1].tap, late[1].shots[1].tap] == pytest.approx([0.52, 0.56])
+    assert early[1].shots[1].angle == second and "shot 2 (blue): the tap 20 ms early: env.step(" in early[0]
+    assert early[0].endswith(f"{list(two.shots[1].agent_action[:2]) + [520]})")

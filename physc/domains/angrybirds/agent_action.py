@@ -10,6 +10,12 @@ from the point. So a full-stretch shot at angle θ is any release point at least
 the rest point, on the ray from it at θ + 180°. docs/angrybirds.md ("Playing a task in Phy-Q's
 game") cites each step and value.
 
+Phy-Q's agents aim in two ways, and a task must hold for both (physc.search.precision): the
+DQN agent drags AGENT_DRAG pixels from the reference point (`agent_action`: the whole pixel
+there whose launch is nearest the angle; `neighbours`: the 8 pixels around it), and the
+trajectory planner's `find_release_point` releases PLANNER_STRETCH slingshot heights from it,
+truncated (`planner_release`).
+
 The functions here use only `math`, so that the replay script a dataset ships
 (physc.domains.angrybirds.phyq_levels) carries their source as it is into the agents'
 own Python: `drag` and `launch_angle` are the exact geometry (floats); `agent_action` the
@@ -27,7 +33,9 @@ DRAG_RADIUS = 1.0  # BirdRed.prefab `_dragRadius`: a drag this long or longer is
 # in units from the slingshot: left, right, bottom, top.
 SLINGSHOT_BOX = (-0.485, 0.2, -1.005, 1.05)
 REFERENCE = (0.45, 0.35)  # trajectory_planner.py `get_reference_point`: X + 0.45·w, Y + 0.35·w (both of the width)
-LONGEST_DRAG = 200  # pixels: the longest drag searched (Phy-Q's DQN agent drags 200 pixels)
+# DQNDiscreteAgent.py `__degToShot`: [200·cos(deg), 200·sin(deg)], truncated by the wrapper's `step`
+AGENT_DRAG = 200  # pixels from the reference point: the drag Phy-Q's agents send
+PLANNER_STRETCH = 5  # trajectory_planner.py `find_release_point`: `mag = sling.height * 5` pixels
 
 
 def view(camera_y, max_width, screen=SCREEN):
@@ -51,15 +59,23 @@ def to_world(pixel, camera_y, max_width, screen=SCREEN):
     return (pixel[0] - screen[0] / 2) / scale + centre[0], (screen[1] - pixel[1] - screen[1] / 2) / scale + centre[1]
 
 
-def reference_point(slingshot, camera_y, max_width, screen=SCREEN):
-    """The framework's `sling_center`: from the ground truth's slingshot box (edges rounded
-    to whole pixels as the game rounds them), X + 0.45·w, Y + 0.35·w, truncated."""
+def sling_box(slingshot, camera_y, max_width, screen=SCREEN):
+    """The ground truth's slingshot box as the framework reads it: (X, Y, width, height) in
+    screen pixels, X and Y its top left, each edge rounded to a whole pixel as the game rounds
+    it (the wrapper swaps `cv_utils.Rectangle`'s width and height back to these)."""
     left, right, bottom, top = SLINGSHOT_BOX
     x_left = round(to_screen((slingshot[0] + left, 0.0), camera_y, max_width, screen)[0])
     x_right = round(to_screen((slingshot[0] + right, 0.0), camera_y, max_width, screen)[0])
     y_top = round(to_screen((0.0, slingshot[1] + top), camera_y, max_width, screen)[1])
-    width = x_right - x_left
-    return int(x_left + REFERENCE[0] * width), int(y_top + REFERENCE[1] * width)
+    y_bottom = round(to_screen((0.0, slingshot[1] + bottom), camera_y, max_width, screen)[1])
+    return x_left, y_top, x_right - x_left, y_bottom - y_top
+
+
+def reference_point(slingshot, camera_y, max_width, screen=SCREEN):
+    """The framework's `sling_center`: from the ground truth's slingshot box (`sling_box`),
+    X + 0.45·w, Y + 0.35·w, truncated."""
+    x, y, width, _ = sling_box(slingshot, camera_y, max_width, screen)
+    return int(x + REFERENCE[0] * width), int(y + REFERENCE[1] * width)
 
 
 def rest_point(slingshot):
@@ -88,27 +104,49 @@ def drag(angle, slingshot, camera_y, max_width, length, screen=SCREEN, reference
     return x - ref[0], ref[1] - y
 
 
-def agent_action(angle, slingshot, camera_y, max_width, screen=SCREEN, reference=None):
-    """([dx, dy, 0], the angle the game launches it at): the whole-pixel action whose launch
-    angle is nearest `angle`, among full-stretch drags that keep the release point on the
-    screen, the shorter first among equals. The tap time is 0: no tap (a red bird has none)."""
+def agent_length(angle, slingshot, camera_y, max_width, screen=SCREEN, reference=None):
+    """The length (pixels from the rest point) of the full-stretch drag at `angle` whose
+    release point lies AGENT_DRAG pixels from the reference point, as Phy-Q's agents drag."""
     ref = reference or reference_point(slingshot, camera_y, max_width, screen)
-    scale = view(camera_y, max_width, screen)[0]
-    shortest = math.ceil(DRAG_RADIUS * scale) + 2
+    rest = to_screen(rest_point(slingshot), camera_y, max_width, screen)
+    theta = math.radians(angle)
+    offset = (rest[0] - ref[0], ref[1] - rest[1])  # the rest point from the reference point, y up
+    along = -offset[0] * math.cos(theta) - offset[1] * math.sin(theta)
+    return -along + math.sqrt(along * along - offset[0] ** 2 - offset[1] ** 2 + AGENT_DRAG**2)
+
+
+def agent_action(angle, slingshot, camera_y, max_width, screen=SCREEN, reference=None):
+    """([dx, dy, 0], the angle the game launches it at): of the whole pixels around the exact
+    full-stretch drag at `angle` AGENT_DRAG pixels from the reference point (the floor and the
+    ceiling of each of dx and dy), the one whose launch angle is nearest `angle`. The release
+    point may lie off the screen (the game reads any point back into the world; the DQN agent's
+    own drags do). The tap time is 0: no tap (a red bird has none)."""
+    ref = reference or reference_point(slingshot, camera_y, max_width, screen)
+    length = agent_length(angle, slingshot, camera_y, max_width, screen, ref)
+    dx, dy = drag(angle, slingshot, camera_y, max_width, length, screen, ref)
     best = None
-    for length in range(shortest, LONGEST_DRAG + 1):
-        dx, dy = drag(angle, slingshot, camera_y, max_width, length, screen, ref)
-        for x in (math.floor(dx), math.ceil(dx)):
-            for y in (math.floor(dy), math.ceil(dy)):
-                pixel = (ref[0] + x, ref[1] - y)
-                if not (0 <= pixel[0] < screen[0] and 0 <= pixel[1] < screen[1]):
-                    continue
-                launched, stretch = launch_angle((x, y), slingshot, camera_y, max_width, screen, ref)
-                if stretch < 1.0:
-                    continue
-                error = abs(launched - angle)
-                if best is None or error < best[0] - 1e-12:
-                    best = (error, [x, y, 0], launched)
+    for x in (math.floor(dx), math.ceil(dx)):
+        for y in (math.floor(dy), math.ceil(dy)):
+            launched, stretch = launch_angle((x, y), slingshot, camera_y, max_width, screen, ref)
+            error = abs(launched - angle)
+            if stretch >= 1.0 and (best is None or error < best[0] - 1e-12):
+                best = (error, [x, y, 0], launched)
     if best is None:
-        raise ValueError(f"no full-stretch drag at {angle:g}° keeps the release point on the screen")
+        raise ValueError(f"no whole-pixel drag of {AGENT_DRAG} pixels at {angle:g}° is at full stretch")
     return best[1], best[2]
+
+
+def neighbours(action):
+    """The 8 whole pixels around an action's release point, as [dx, dy, tap] (its tap kept)."""
+    return [[action[0] + i, action[1] + j, *action[2:]] for i in (-1, 0, 1) for j in (-1, 0, 1) if (i, j) != (0, 0)]
+
+
+def planner_release(angle, slingshot, camera_y, max_width, screen=SCREEN, reference=None):
+    """[dx, dy, 0]: the release point `find_release_point(sling, θ)` of Phy-Q's trajectory
+    planner gives for `angle` (θ), PLANNER_STRETCH times the box's height from the reference
+    point, each coordinate truncated, as the action from the reference point."""
+    ref = reference or reference_point(slingshot, camera_y, max_width, screen)
+    magnitude = sling_box(slingshot, camera_y, max_width, screen)[3] * PLANNER_STRETCH
+    theta = math.radians(angle)
+    release = (int(ref[0] - magnitude * math.cos(theta)), int(ref[1] + magnitude * math.sin(theta)))
+    return [release[0] - ref[0], ref[1] - release[1], 0]

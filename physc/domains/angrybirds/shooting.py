@@ -91,6 +91,13 @@ class ScienceBirdsActions(Actions):
 
         return shots.played_as(level, solution)
 
+    def agent_variants(self, level, solution) -> list[tuple[str, object]]:
+        """The actions Phy-Q's agents may send beside each recorded one: the planner's release,
+        the 8 pixels around the drag, a tap 20 ms early or late (shots.py)."""
+        from physc.domains.angrybirds import shots
+
+        return shots.agent_variants(level, solution)
+
     def sent_action(self, solution):
         from physc.domains.angrybirds import shots
 

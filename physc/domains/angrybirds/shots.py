@@ -301,6 +301,48 @@ def sent_action(solution):
     return None if solution.agent_angle is None else Shot(angle=solution.agent_angle)
 
 
+TAP_OFF = 20  # ms: a tap a step early or late (HUD.cs times it in whole frames; a fixed step is 0.02 s)
+TAP_LEAST = 1  # ms: the earliest tap (the game taps only at a tap time above 0)
+
+
+def agent_variants(level, solution) -> list[tuple[str, object]]:
+    """(label, action) for each action Phy-Q's agents may send for `solution` beside the one
+    `played_as` recorded: for each shot in turn, the others as sent, the trajectory planner's
+    release for its angle, each of the 8 pixels around its drag, and, for a tapped shot, its tap
+    TAP_OFF ms early and late (agent_action.py). None for a record without agent actions."""
+    from physc.domains.angrybirds import agent_action as aa
+
+    records, base = each_shot(solution), sent_action(solution)
+    if base is None or any(s.agent_action is None for s in records):
+        return []
+    sent = shots_of(base)
+    view = (level.slingshot, level.camera.y, level.camera.max_width)
+    out = []
+    for k, (record, shot) in enumerate(zip(records, sent, strict=True)):
+        action = list(record.agent_action)
+        named = f"shot {k + 1} ({shot.bird}): " if len(sent) > 1 else ""
+        pixels = [("the planner's release", aa.planner_release(record.release_angle, *view)[:2] + action[2:])]
+        pixels += [(f"pixel ({p[0] - action[0]:+d}, {p[1] - action[1]:+d})", p) for p in aa.neighbours(action)]
+        for label, pixel in pixels:
+            angle, stretch = aa.launch_angle(pixel, *view)
+            if stretch < 1.0:
+                raise ValueError(f"env.step({pixel}) is not a full-stretch shot")
+            played = attrs.evolve(shot, angle=round(angle, 5))
+            out.append((f"{named}{label}: env.step({pixel}), launched at {angle:.3f}°", _with(sent, k, played)))
+        if shot.tap is not None:
+            for sign, word in ((-1, "early"), (1, "late")):
+                tap = max(action[2] + sign * TAP_OFF, TAP_LEAST)
+                pixel = [*action[:2], tap]
+                played = attrs.evolve(shot, tap=tap / 1000)
+                out.append((f"{named}the tap {TAP_OFF} ms {word}: env.step({pixel})", _with(sent, k, played)))
+    return out
+
+
+def _with(shots, k: int, shot) -> Shot | Shots:
+    """`shots` as one action, its k-th shot replaced by `shot`."""
+    return as_action((*shots[:k], shot, *shots[k + 1 :]))
+
+
 def level_birds(layout, scenario, player: str, prefab_of) -> tuple[str, ...]:
     """The level's <Bird> list: each bird's prefab, in the order shot."""
     names = {o.name: o for o in layout.objects}
