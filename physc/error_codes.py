@@ -66,6 +66,7 @@ _CODES = [
     ErrorCode("E0405", "error", "an object takes part in an interaction after it was destroyed"),
     ErrorCode("E0501", "error", "a restriction leaves an interaction no allowed direction"),
     ErrorCode("E0502", "error", "a restriction forbids an interaction of the sequence"),
+    ErrorCode("E0503", "error", "a property restriction whose objects the sequence does not take as it says"),
     ErrorCode("E0601", "error", "two scenarios with the same name in one file"),
     ErrorCode("E0602", "error", "a section given twice in one scenario"),
     ErrorCode("E0603", "error", "a scenario without an interactions section"),

@@ -3,9 +3,11 @@
 The task file (`physc compile --task`) holds the scenario as written, the level with the
 scenario's object names, and the intended solution; LEVEL is the level file given to
 players, which must be that level. The solution is replayed once as recorded and under
-the domain's noise (`--replays`), in `--backend` (bullet: a second engine), and the
-command says whether it solves the level and realises the declared sequence, with the
-interactions it realised. Exit 0 when it passes, 1 when it does not.
+the domain's noise (`--replays`), in `--backend` (bullet: a second engine), with each action
+the domain's agents may send beside it (Science Birds: the 8 pixels around each drag, the
+trajectory planner's release, a tap 20 ms early or late), and the command says whether it
+solves the level and realises the declared sequence, with the interactions it realised and
+the agents' actions that failed. Exit 0 when it passes, 1 when it does not.
 """
 
 from __future__ import annotations
@@ -75,6 +77,8 @@ def cmd_verify(args) -> int:
                 "passes": result.passes(replays),
                 "readings": result.readings,
                 "failed_readings": list(result.failed),
+                "agent_variants": result.variants,
+                "failed_variants": list(result.imprecise),
                 "trace": result.trace,
                 "why": result.why,
                 "sent": domain.actions.sent_record(solution),
@@ -89,6 +93,8 @@ def cmd_verify(args) -> int:
             print(f"  why: {result.why}")
         for name in result.failed:
             print(f"  fails in the reading: {name}")
+        for label in result.imprecise:
+            print(f"  fails as an agent may send it: {label}")
         print(f"  realised: {result.trace or '(nothing)'}")
         sent = domain.actions.sent_text(solution)
         if sent is not None:

@@ -75,6 +75,37 @@ class SequenceChecks(ObjectChecks):
             self._record_effects(walk, resolved)
         if walk.complete:
             self._check_goals(walk, interactions[-1] if interactions else None, restrictions)
+            self._check_properties(walk, interactions, restrictions)
+
+    def _check_properties(
+        self, walk: _Walk, interactions: list[Resolved | None], restrictions: list[Resolved | None]
+    ) -> None:
+        """E0503: a property (version 2: nonGreedy, blocks, timed) whose objects the sequence does not
+        take as it says: nonGreedy(a, b) needs a destroyed, then b; blocks(a, b) needs b destroyed
+        and a in the sequence; timed(a) needs a's action to start after the first."""
+        order = list(walk.destroyed)
+        named = [set(r.objects) for r in interactions if r is not None]
+        first_actor = interactions[0].objects[0] if interactions and interactions[0] is not None else None
+        for restriction in restrictions:
+            if restriction is None:
+                continue
+            name, objects = restriction.signature.name, restriction.objects
+            if name == "nonGreedy" and not (
+                objects[0] in order and objects[1] in order and order.index(objects[0]) < order.index(objects[1])
+            ):
+                why = f"the sequence must destroy '{objects[0]}' and then '{objects[1]}'"
+            elif name == "blocks" and not (objects[1] in order and any(objects[0] in n for n in named)):
+                why = f"the sequence must move '{objects[0]}' and destroy '{objects[1]}'"
+            elif name == "timed" and (objects[0] == first_actor or not any(objects[0] in n for n in named)):
+                why = f"'{objects[0]}' must be a later action than the first, named in the sequence"
+            else:
+                continue
+            self.error(
+                "E0503",
+                f"'{restriction.node.name.text}({', '.join(objects)})' does not fit the sequence: {why}",
+                restriction.node.span,
+                help="name the objects in the order the sequence takes them, or change the sequence",
+            )
 
     def _calm(self, name: str) -> bool:
         """Whether `name` is no goal object: a goal that knocks another over is valid, but odd to propose."""

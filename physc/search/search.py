@@ -16,8 +16,10 @@ and the `Ledger` it writes (the simulations, how far the chain got, what noise b
 3. **Guards** (guards.py): obstacles against forbidden direct hits (`cannotHit` of the
    player) and against shortcuts, kept only if the solution still holds up.
 4. **Stability** of the level, **distraction**, **contrasts** (contrasts.py: the action aimed at
-   a contrast does not solve the task), **validation** (unless told not to), and the domain's
-   **acceptance** rule (its evaluation's `acceptance`: PHYRE's, in the plugin).
+   a contrast does not solve the task), **precision** (precision.py: every action the domain's
+   agents may send beside the solution's solves it too, in every reading), **validation**
+   (unless told not to), and the domain's **acceptance** rule (its evaluation's `acceptance`:
+   PHYRE's, in the plugin).
 
 Every simulation goes through the ledger's Evaluator, which counts it: the figure
 generation's cost is measured in. Noise is drawn from generators named after the action's
@@ -37,6 +39,7 @@ from physc.search import guards, settings
 from physc.search.chain import Node, chain
 from physc.search.contrasts import contrasts
 from physc.search.outcome import Outcome, Parts
+from physc.search.precision import precise
 from physc.search.problem import ALL_CHECKS, Checks, Ledger, Problem, replayed
 from physc.search.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.ending import Ending
@@ -92,6 +95,9 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     why, contrasted = contrasts(problem, ledger, layout, attempt)
     if why is not None:
         return given_up(problem, ledger, why)
+    why, precision = precise(problem, ledger, layout, attempt)
+    if why is not None:
+        return given_up(problem, ledger, why)
     validating = time.perf_counter()
     validated, trace = None, attempt.trace
     if problem.checks.validate:
@@ -111,7 +117,7 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     if judged is not None and not judged.accepted:
         return given_up(problem, ledger, judged.reason or settings.NOT_ACCEPTED)  # the benchmark's own words
     solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
-    steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ()) + contrasted
+    steps = found.steps + ((f"margins raised: {strong.raised}",) if strong.raised else ()) + contrasted + precision
     parts = Parts(
         level=domain.files.with_solution(level, solution),
         solution=solution,

@@ -5,12 +5,13 @@ sequence as recorded and under the domain's noise, under every reading of what t
 files leave open (physc.worlds.OpenPoint; Science Birds: the sign of relativeVelocity, the
 kinematic platform's mass, near ties of the attacker), and, when asked, in an engine with
 another contact solver. `verify` replays the solution once as recorded (and once as the
-target world's players send it, where the domain says how: `actions.sent_action`) and `noisy` times
-under the domain's noise, each replay in every reading that can change it
-(physc.worlds.under_readings: the readings its own run shows to decide something), and says
-which readings failed. `physc verify`, `physc compile --verify-backend`, the generation's
-check (physc.driver.layout_loop) and `physc eval` all use it. Nothing here depends on a
-domain.
+target world's players send it, where the domain says how: `actions.sent_action`), each
+action those players may send beside it once (`actions.agent_variants`: the deterministic check
+of physc.search.precision), and `noisy` times under the domain's noise, each replay in every
+reading that can change it (physc.worlds.under_readings: the readings its own run shows to
+decide something), and says which readings and which of the players' actions failed.
+`physc verify`, `physc compile --verify-backend`, the generation's check
+(physc.driver.layout_loop) and `physc eval` all use it. Nothing here depends on a domain.
 """
 
 from __future__ import annotations
@@ -36,11 +37,14 @@ class Verification:
     readings: int = 1  # readings of the world played (the most any replay needed)
     failed: tuple[str, ...] = ()  # the readings (world names) in which a replay failed, in the order met
     simulations: int = 0  # simulations run in all
+    variants: int = 0  # actions the players may send beside the recorded one, played (actions.agent_variants)
+    imprecise: tuple[str, ...] = ()  # those that failed: their labels (and the reading, where not the world's own)
 
     def passes(self, noisy_needed: int = 0) -> bool:
-        """The recorded solution solves the level and realises the sequence, and at least
-        `noisy_needed` noisy replays realise it too, in every reading."""
-        return self.solved and self.realised and self.noisy_passed >= noisy_needed
+        """The recorded solution solves the level and realises the sequence, so does every
+        action the players may send beside it, and at least `noisy_needed` noisy replays realise
+        it too, in every reading."""
+        return self.solved and self.realised and not self.imprecise and self.noisy_passed >= noisy_needed
 
     def summary(self) -> str:
         parts = [
@@ -49,6 +53,13 @@ class Verification:
         ]
         if self.noisy_run:
             parts.append(f"{self.noisy_passed} of {self.noisy_run} noisy replays realise it")
+        if self.variants:
+            failing = len(self.imprecise)
+            parts.append(
+                f"{failing} of the {self.variants} actions agents may send beside it fail"
+                if failing
+                else f"the {self.variants} actions agents may send beside it solve it"
+            )
         if self.readings > 1:
             parts.append(
                 f"in each of the {self.readings} readings of the world that change a replay"
@@ -89,6 +100,33 @@ def _why(scenario, trace, check) -> str:
         missing = scenario.interactions[check.matched].text
         return f"it realises {check.matched} of {check.total} interactions in order (never `{missing}`)"
     return ""
+
+
+def failing_reading(world, scenario, run) -> str | None:
+    """The first reading of `world` (its name) in which `run` (one play, in a given reading)
+    does not solve the level and realise `scenario`'s sequence, among the readings that can
+    change the play; None: it holds in every one."""
+    for reading, trace in under_readings(world, run, lambda trace: settled(scenario, trace)):
+        if not (trace.solved and fidelity(scenario, trace).valid):
+            return reading.name
+    return None
+
+
+def agents_actions(there, scenario, level, solution) -> tuple[int, list[str], int]:
+    """(how many actions the players may send beside `solution`'s, the labels of those that
+    fail in some reading, the simulations run): physc.search.precision's check."""
+    variants = there.actions.agent_variants(level, solution)
+    failed, plays = [], []
+
+    def run(reading, action):
+        plays.append(reading)
+        return there.at(reading).play(level, action, scenario)
+
+    for label, action in variants:
+        wrong = failing_reading(there.world, scenario, lambda reading, a=action: run(reading, a))
+        if wrong is not None:
+            failed.append(label + ("" if wrong == there.world.name else f" (in the reading '{wrong}')"))
+    return len(variants), failed, len(plays)
 
 
 def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> Verification:
@@ -141,6 +179,8 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
     why = next((_why(scenario, t, c) for _, t, c in exact if not c.valid), "")
     if why and exact[0][2].valid:
         why = f"in the reading '{next(r.name for r, _, c in exact if not c.valid)}': {why}"
+    variants, imprecise, spent = agents_actions(there, scenario, level, solution)
+    why = why or (f"as an agent may send it, it fails: {'; '.join(imprecise)}" if imprecise else "")
     rng = random.Random(f"physc-verify/{backend}/{scenario.name}/{solution!r}")
     passed = 0
     for _ in range(noisy):
@@ -152,6 +192,5 @@ def verify(domain, scenario, level, solution, backend: str, noisy: int = 0) -> V
         why = f"{passed} of {noisy} noisy replays realise the sequence" + (
             f" in every reading (failing in: {'; '.join(failed)})" if failed else ""
         )
-    return Verification(
-        backend, solved, realised, passed, noisy, trace.sequence(), why, most, tuple(failed), simulations
-    )
+    result = Verification(backend, solved, realised, passed, noisy, trace.sequence(), why, most, tuple(failed))
+    return attrs.evolve(result, simulations=simulations + spent, variants=variants, imprecise=tuple(imprecise))

@@ -137,3 +137,21 @@ def test_deep_json_and_a_level_saved_with_crlf_and_a_bom(task, tmp_path):
 def test_the_verify_backend_must_be_another_engine():
     run = run_physc("compile", PAPER, "-s", "SF", "--verify-backend", "box2d")
     assert run.status == 2 and "already simulates" in run.stderr
+
+
+def test_verify_plays_what_agents_may_send_beside_the_solution_and_names_what_fails(task, tmp_path):
+    """Phy-Q's agents' other actions (the planner's release, the 8 pixels around the drag) are
+    played too; a recorded drag moved 120 pixels up (a shot 30° down; its recorded angles kept)
+    leaves the planner's release holding and its 8 pixels failing: exit 1, each named."""
+    level, task_file = task
+    data = json.loads(run_physc("verify", level, "--task", task_file, "--replays", "0", "--json").stdout)
+    assert data["passes"] and data["agent_variants"] == 9 and data["failed_variants"] == []
+    moved = json.loads(task_file.read_text())
+    moved["solution"]["agent_action"][1] += 120
+    wrong = tmp_path / "moved.json"
+    wrong.write_text(json.dumps(moved))
+    run = run_physc("verify", level, "--task", wrong, "--replays", "0")
+    assert run.status == 1 and "8 of the 9 actions agents may send beside it fail" in run.stdout
+    assert run.stdout.count("  fails as an agent may send it: pixel (") == 8 and "why: as an agent may send it, it fails" in run.stdout
+    data = json.loads(run_physc("verify", level, "--task", wrong, "--replays", "0", "--json").stdout)
+    assert not data["passes"] and len(data["failed_variants"]) == 8 and data["solved"] and data["realised"]

@@ -98,6 +98,10 @@ class LineActions(Actions):
     def valid(self, level, action):
         return action.speed > 0
 
+    def agent_variants(self, level, solution):
+        """The pushes an agent may send for the solution: off by each of the domain's `spread`."""
+        return [(f"push {solution.speed + d:g}", Push(round(solution.speed + d, 6))) for d in self.domain.spread]
+
 
 class Line(SimulatedDomain):
     """The stand-in domain: every hook the search asks, written by hand."""
@@ -112,9 +116,10 @@ class Line(SimulatedDomain):
     capabilities = SimulatedDomain.capabilities | {"layout_parameters", "level_from_layout", "play", "actions"}
     actions = part(LineActions)
 
-    def __init__(self, speeds=(1.74,), plays=None):
+    def __init__(self, speeds=(1.74,), plays=None, spread=()):
         self.speeds = speeds
         self.plays = plays if plays is not None else []
+        self.spread = spread
 
     def level_from_layout(self, layout, scenario=None):
         return Level(layout.object("pig").x)
@@ -198,3 +203,20 @@ def test_a_push_that_never_reaches_is_raised_until_it_does():
     problem = attrs.evolve(problem, settings=attrs.evolve(problem.settings, raise_stages=0))
     given_up = search.search(problem, Ledger(), random.Random(0))
     assert not given_up.satisfied and given_up.given_up == "the sequence was not realised" and given_up.best == 0
+
+
+def test_a_push_holds_for_what_agents_send_beside_it_or_is_given_up():
+    """The precision step (physc.search.precision): every action the domain's agents may send
+    beside the solution's is played once on the finished level; a push of 2.6 holds for 2.5 and
+    2.7, not for 1.6 (it stops short of destroying the pig: 1.732 is the least that does)."""
+    domain = Line(speeds=(2.6,), spread=(-0.1, 0.1))
+    outcome = search.satisfy(domain, Scenario(), layout(), random.Random(0))
+    assert outcome.satisfied and outcome.parts.solution == Push(2.6)
+    assert "precision: the 2 actions agents may send beside the solution's solve it" in outcome.parts.repairs
+    assert {Push(2.5), Push(2.7)} <= {action for _, action in domain.plays}
+    domain = Line(speeds=(2.6,), spread=(-0.1, -1.0, 0.1))
+    ledger = Ledger()
+    given_up = search.search(Problem.of(domain, Scenario(), layout(), domain.robustness_replays), ledger, random.Random(0))
+    assert not given_up.satisfied and given_up.given_up == search.settings.IMPRECISE
+    assert domain.plays[-1] == (Level(1.3), Push(1.6)) and Push(2.7) not in {a for _, a in domain.plays}  # stops at the first
+    assert ledger.simulations == len(domain.plays) + 1  # each counted by the ledger's evaluator (and the stability check)
