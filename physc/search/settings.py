@@ -26,7 +26,6 @@ CONTRAST_UNAIMED = "a contrast's counterpart is not what the player acts on"
 PROPERTY_BROKEN = "an action the player could send breaks a declared property"
 PROPERTY_UNCHECKED = "the domain cannot play the actions a declared property is checked against"
 IMPRECISE = "an action the agents may send beside the solution's does not solve it"  # physc.search.precision
-IMPRECISE = "an action the agents may send beside the solution's does not solve it"  # physc.search.precision
 UNSTABLE = "the level did not stand"
 NOT_VALIDATED = "validation failed"
 INVALID_ACTION = "the solution is not a valid action in the finished level"
