@@ -88,8 +88,8 @@ class Problem:
             for t in scenario.restrictions
             if (term := vocabulary.term(t.name)) is not None and term.carries
         ]
-        entry = introduced(layout, scenario.interactions, carried)
         starts = tuple(domain.actions.starts(scenario))
+        entry = goals_kept(introduced(layout, scenario.interactions, carried), scenario, starts, vocabulary.goal)
         return cls(
             domain,
             scenario,
@@ -145,6 +145,27 @@ class Problem:
             (t for t in self.interactions[index:] if t.name in ("roll", "slide") and t.objects[0] == name), None
         )
         return None if term is None else term.directions[0]
+
+
+def goals_kept(entry: dict[str, int], scenario: ScenarioIR, starts: tuple[int, ...], goal: str) -> dict[str, int]:
+    """`entry` with, at each later action's start, a goal object left in the scene: a domain's
+    world may end once every goal in it is met (Science Birds: every pig destroyed), and a
+    stage's scene holds only what has entered, so a later shot whose own goal enters after it
+    starts would never be taken. The first goal object the sequence meets from that start on
+    enters there instead, unless one that enters by then is still to be met."""
+    entry = dict(entry)
+    goals = [o.name for o in scenario.objects if o.term == goal]
+    met = {}
+    for k, term in enumerate(scenario.interactions):
+        for name in term.objects:
+            if name in goals:
+                met[name] = k  # the last interaction that names it
+    for start in starts:
+        later = [g for g in goals if met.get(g, -1) >= start and g in entry]
+        if later and not any(entry[g] <= start for g in later):
+            first = min(later, key=lambda g: entry[g])
+            entry[first] = start
+    return entry
 
 
 @attrs.define

@@ -110,3 +110,20 @@ def test_timed_fails_where_the_shot_also_solves_once_the_level_rests():
     term = next(t for t in ir.restrictions if t.name == "timed")
     why, note = properties.timed(problem(ir), Ledger(), level, solution, term)
     assert why == settings.PROPERTY_BROKEN and "once the level rests solves the task too" in note, note
+
+
+def test_a_later_shot_keeps_a_goal_in_its_stage_so_the_game_goes_on_to_it():
+    from physc.search.problem import goals_kept
+
+    text = """scenario DirectThenFall {
+    objects { pig2: pig  bird2: bird  fBlock: fallableBlock }
+    interactions { hit(bird, pig, left) > destroy(bird, pig) > hit(bird2, fBlock, left) > fall(fBlock, pig2) > hit(fBlock, pig2, above) > destroy(fBlock, pig2) }
+}
+"""
+    ir = scenario(text)
+    entry = {"bird": 0, "bird2": 0, "pig": 0, "fBlock": 2, "pig2": 3}
+    assert goals_kept(entry, ir, (2,), "pig")["pig2"] == 2  # else the first shot ends the game: no pig left
+    assert goals_kept(entry, ir, (), "pig") == entry
+    two = scenario(TWO)
+    kept = {"bird": 0, "bird2": 0, "pig": 0, "pig2": 2}
+    assert goals_kept(kept, two, (2,), "pig") == kept  # pig2 enters as bird2's shot starts already
