@@ -13,7 +13,7 @@ from physc.domains.angrybirds import agent_action as aa
 from physc.domains.angrybirds.launch import Shot
 from physc.domains.angrybirds.level_xml import parse_level
 from physc.domains.angrybirds.phyq_levels import benchmark_files
-from physc.domains.angrybirds.worlds import PHYQ
+from physc.domains.angrybirds.worlds import PHYQ, SCIENCE_BIRDS_ENGINE
 
 SLINGSHOT, CAMERA_Y, MAX_WIDTH = (-12.0, -2.5), -1.0, 35.0  # every Phy-Q level's
 
@@ -190,7 +190,7 @@ def test_the_agents_other_actions_are_the_planners_release_the_8_pixels_and_the_
     from types import SimpleNamespace
 
     from physc.domains.angrybirds.launch import Shots
-    from physc.domains.angrybirds.shots import TAP_OFF, BirdShot, ShotsSolution, Solution, agent_variants, played_as
+    from physc.domains.angrybirds.shots import TAP_LEAST, TAP_OFF, BirdShot, ShotsSolution, Solution, agent_variants, played_as
 
     level = SimpleNamespace(slingshot=SLINGSHOT, camera=SimpleNamespace(y=CAMERA_Y, max_width=MAX_WIDTH))
     one = played_as(level, Solution("pig", (5.0, -2.0), "low", 20.0))
@@ -203,7 +203,7 @@ def test_the_agents_other_actions_are_the_planners_release_the_8_pixels_and_the_
     assert [action.angle for _, action in variants[1:]] == pytest.approx(pixels, abs=1e-5)
     assert agent_variants(level, Solution("pig", (5.0, -2.0), "low", 20.0)) == []  # a record from before agent actions
     # Two shots, the second tapped: each shot's variants with the other as sent; the tap 20 ms off.
-    assert TAP_OFF == 20
+    assert TAP_OFF == 20 and TAP_OFF / 1000 == SCIENCE_BIRDS_ENGINE.dt  # a frame steps the game's physics once at most
     two = played_as(level, ShotsSolution("two", (
         BirdShot("bird", "pig", (5.0, -2.0), "low", 20.0),
         BirdShot("blue", "pig", (6.0, -2.0), "low", 35.0, tap=0.54),
@@ -217,3 +217,7 @@ def test_the_agents_other_actions_are_the_planners_release_the_8_pixels_and_the_
     assert [early[1].shots[1].tap, late[1].shots[1].tap] == pytest.approx([0.52, 0.56])
     assert early[1].shots[1].angle == second and "shot 2 (blue): the tap 20 ms early: env.step(" in early[0]
     assert early[0].endswith(f"{list(two.shots[1].agent_action[:2]) + [520]})")
+    # A tap sooner than 20 ms is tapped at 1 ms at the earliest (HUD.cs taps only at a tap time above 0).
+    soon = played_as(level, ShotsSolution("soon", (BirdShot("blue", "pig", (6.0, -2.0), "low", 35.0, tap=0.012),)))
+    early = agent_variants(level, soon)[-2][1]
+    assert TAP_LEAST == 1 and early.tap == 0.001 and "the tap 20 ms early" in agent_variants(level, soon)[-2][0]
