@@ -294,7 +294,7 @@ def cmd_trace(args) -> int:
         print(f"# {m.term}: {'kept' if m.held else 'broken'}, margin {m.value:+.3g} {m.unit} ({m.what})")
     if weakest is not None:
         print(
-            f"# weakest link: {weakest.text()}"
+            f"# {weakest.named_weakest()}"
             + ("" if scenario is not None else " (of what happened; --task judges the declared sequence)")
         )
     return EXIT_OK

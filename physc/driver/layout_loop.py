@@ -292,11 +292,8 @@ class LayoutLoop:
             message += f"; of the {total} noisy replays that failed, {count} lost `{term}` first" + (
                 f" ({why})" if why else ""
             )
-        if weakest is not None and best >= len(interactions):
-            message += (
-                f"; the weakest link was `{weakest.term}`: "
-                f"best margin {weakest.value:+.3g} {weakest.unit} ({weakest.what})"
-            )
+        if weakest is not None and best >= len(interactions):  # of the chains that did not hold, the strongest
+            message += f"; {weakest.named_weakest('at best')}"
         if nearest:
             if nearest < self.min_robustness:
                 hint = f"--min-robustness {nearest} accepts such a one"
@@ -309,5 +306,20 @@ class LayoutLoop:
                 f"noisy replays ({hint})"
             )
         if other is not None:
-            message += f"; {other.text()}"
+            message += f"; {elsewhere_text(other)}"
         return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)
+
+
+def elsewhere_text(other: elsewhere.Elsewhere) -> str:
+    """The world a replay elsewhere names (physc.search.elsewhere), its weakest link in words
+    that read right whatever its margin (Margin.named_weakest)."""
+    how = (
+        "built again there by the search's stages from one of the best layouts"
+        if other.built
+        else "the best layout, replayed"
+    )
+    link = "" if other.weakest is None else f"; {other.weakest.named_weakest()}"
+    return (
+        f"in the world '{other.world}', {how}, realises {other.matched} of the {other.total}"
+        f" interactions{link}: --world {other.world} may carry this scenario (physc worlds describes it)"
+    )

@@ -109,6 +109,34 @@ class Margin:
         """ "`fall(fBlock2, pig)`: −0.12 units of overhang (…)"."""
         return f"`{self.term}`: {self.value:+.3g} {self.unit} ({self.what})"
 
+    def standing(self, qualifier: str = "") -> str:
+        """The margin in words that read right whatever its sign: "+25.1 life to spare (…)" for
+        a link that held, "failed by 0.4 units (…)" for one that did not ("failed (…)" where
+        it has no measure of how far); `qualifier` ("at best") goes before the parenthesis.
+
+        >>> print(Margin.life("destroy(bird, pig)", 1, value=25.1, scale=10.0, what="life left").standing("at best"))
+        +25.1 life to spare at best (life left)
+        >>> print(Margin.distance("fall(b, ground)", 1, value=-0.4, scale=1.0, what="drop", held=False).standing())
+        failed by 0.4 units (drop)
+        """
+        tail = (f" {qualifier}" if qualifier else "") + f" ({self.what})"
+        if self.held:
+            if self.value >= 0:
+                return f"{self.value:+.3g} {self.unit} to spare{tail}"
+            return f"held at {self.value:+.3g} {self.unit}{tail}"
+        if self.value < 0 and self.unit != "of a link":  # Margin.failed's flat −1 measures nothing
+            return f"failed by {-self.value:.3g} {self.unit}{tail}"
+        return f"failed{tail}"
+
+    def named_weakest(self, qualifier: str = "") -> str:
+        """This link named as a chain's weakest, in words a reader takes right: a link that held
+        "came closest to failing" (with what it had to spare), one that did not "failed by" its
+        margin: "the link that came closest to failing was `fall(b, ground)`: +0.3 units to
+        spare (…)", "the weakest link was `fall(b, ground)`: it failed by 0.4 units (…)"."""
+        if self.held:
+            return f"the link that came closest to failing was `{self.term}`: {self.standing(qualifier)}"
+        return f"the weakest link was `{self.term}`: it {self.standing(qualifier)}"
+
     def record(self) -> dict:
         return {
             "term": self.term,

@@ -33,7 +33,9 @@ def test_trace_gives_each_link_its_margin_and_names_the_weakest():
     assert destroy["margin"]["unit"] == "damage" and destroy["margin"]["value"] > 0  # the bird's blow, under the worst reading
     assert data["weakest"]["share"] == min(i["margin"]["share"] for i in data["interactions"] if i["margin"])
     text = run_physc("trace", ONE_PIG, "--shot", "0,-3.27").stdout
-    assert "margin +" in text.splitlines()[1] and "# weakest link: `" in text
+    assert "margin +" in text.splitlines()[1]
+    assert "# the link that came closest to failing was `" in text and " to spare (" in text  # a solved shot's held
+    assert "weakest" not in text
 
 
 def test_render(tmp_path):
