@@ -84,13 +84,26 @@ class World:
     parent: str | None = attrs.field(default=None, metadata={"meta": True})
     reading: str = attrs.field(default="", metadata={"meta": True})  # a variant: what its changes are a reading of
     changed: tuple[str, ...] = attrs.field(default=(), metadata={"meta": True})  # a variant: the settings it changes
+    # A variant: the kinds of interaction (`roll`, `bounce`: the terms' names) its changes are
+    # made for, as its author declares them; empty: not said, so any kind. Exit 3 proposes,
+    # and tries, another world only for a scenario with a link of a kind the worlds differ in
+    # (`differing_kinds`).
+    concerns: tuple[str, ...] = attrs.field(default=(), metadata={"meta": True})
     sources: Mapping[str, str] = attrs.field(factory=dict, eq=False, metadata={"meta": True})
 
-    def derive(self, name: str, description: str, reading: str, **changes) -> World:
+    def derive(self, name: str, description: str, reading: str, concerns: tuple[str, ...] = (), **changes) -> World:
         """A variant of this world: `changes` by setting (a whole part, e.g. `bodies=`);
-        `reading` says what the changes are a reading of (the source of each changed setting)."""
+        `reading` says what the changes are a reading of (the source of each changed setting);
+        `concerns`, the kinds of interaction the changes are made for (empty: any kind)."""
         variant = attrs.evolve(
-            self, name=name, description=description, parent=self.name, reading=reading, changed=(), **changes
+            self,
+            name=name,
+            description=description,
+            parent=self.name,
+            reading=reading,
+            changed=(),
+            concerns=tuple(concerns),
+            **changes,
         )
         ours = dict(_walk(self, "", self.sources))
         changed = tuple(s.path for s in variant.settings() if ours.get(s.path, _MISSING) != s.value)
@@ -237,6 +250,40 @@ def _walk_sourced(
 def _walk(value, prefix: str, sources: Mapping[str, str]) -> Iterator[tuple[str, object]]:
     for path, item, _ in _walk_sourced(value, prefix, sources):
         yield path, item
+
+
+def differing_kinds(a: World, b: World, worlds: tuple[World, ...]) -> frozenset[str] | None:
+    """The kinds of interaction the worlds `a` and `b` of one domain (`worlds`) differ in: what
+    each variant between them declares it `concerns` (the variants on their lines of descent
+    below the ancestor they share); None when one of those declares nothing, or the two share
+    no ancestor (they may differ in any kind).
+
+    >>> from physc.domains.angrybirds.worlds import PHYQ, ROLLING, WORLDS
+    >>> sorted(differing_kinds(PHYQ, ROLLING, WORLDS))
+    ['bounce', 'roll', 'slide']
+    >>> differing_kinds(PHYQ, PHYQ, WORLDS)
+    frozenset()
+    """
+    named = {w.name: w for w in worlds} | {a.name: a, b.name: b}
+
+    def line(world: World) -> list[World]:
+        out = [world]
+        while out[-1].parent in named and named[str(out[-1].parent)] not in out:
+            out.append(named[str(out[-1].parent)])
+        return out
+
+    ours, theirs = line(a), line(b)
+    shared = {w.name for w in ours} & {w.name for w in theirs}
+    if not shared:
+        return None
+    kinds: set[str] = set()
+    for world in ours + theirs:
+        if world.name in shared:
+            continue
+        if not world.concerns:
+            return None
+        kinds |= set(world.concerns)
+    return frozenset(kinds)
 
 
 def by_name(worlds: tuple[World, ...], name: str, domain: str) -> World:

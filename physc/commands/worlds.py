@@ -48,6 +48,7 @@ def cmd_worlds(args) -> int:
                 "derived_from": world.parent,
                 "reading": world.reading or None,
                 "changes": list(world.changed),
+                "concerns": list(world.concerns) if world.parent else None,  # None: a world of its own
             }
             entry["open_points"] = [
                 {"setting": p.setting, "readings": _json(p.readings), "question": p.question, "source": p.source}
@@ -71,6 +72,8 @@ def cmd_worlds(args) -> int:
                 f"  derived from {world.parent}: "
                 + ", ".join(f"{path} = {_value(values[path])}" for path in world.changed)
             )
+            kinds = ", ".join(world.concerns) or "any kind (not declared)"
+            print(f"  its changes concern links of: {kinds} (exit 3 tries and names it only for such a scenario)")
         points = world.open_points()
         if points:
             print(

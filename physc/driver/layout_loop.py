@@ -12,6 +12,7 @@ fallbacks (`--min-robustness`). Nothing here depends on a domain.
 from __future__ import annotations
 
 import contextlib
+import copy
 import random
 import time
 from collections.abc import Callable, Iterator
@@ -30,6 +31,7 @@ from physc.search import elsewhere, search
 from physc.search.outcome import Outcome
 from physc.search.verify import noisy_replays, verify
 from physc.simulation.margins import Margin
+from physc.worlds import differing_kinds
 
 FALLBACKS = 6  # fragile layouts tried again, most robust first, when no layout gave a robust solution
 
@@ -174,7 +176,8 @@ class LayoutLoop:
         `layout`); Infeasible when none gives a task within the budgets."""
         started = time.perf_counter()
         tally = Tally()
-        kept = elsewhere.reserve(self.domain, self.settings.time_budget)
+        others = concerned(self.domain, self.scenario)  # the worlds exit 3 may try and name
+        kept = elsewhere.reserve(others, self.settings.time_budget)
         left = budget.remaining()
         inner = budget.deadline(left - kept) if kept and left is not None and left > kept else contextlib.nullcontext()
         with inner:  # the search stops early enough to leave the reserve
@@ -183,7 +186,7 @@ class LayoutLoop:
                 found = self._fall_back(found, tally)
         if isinstance(found, Infeasible):
             other = elsewhere.elsewhere(
-                self.domain, self.scenario, tally.furthest, tally.best, tally.weakest, self.min_robustness
+                others, self.scenario, tally.furthest, tally.best, tally.weakest, self.min_robustness
             )
             raise self.explained(found, tally, other)
         result, used = found
@@ -323,3 +326,22 @@ def elsewhere_text(other: elsewhere.Elsewhere) -> str:
         f"in the world '{other.world}', {how}, realises {other.matched} of the {other.total}"
         f" interactions{link}: --world {other.world} may carry this scenario (physc worlds describes it)"
     )
+
+
+def concerned(domain: SimulatedDomain, scenario: ScenarioIR) -> SimulatedDomain:
+    """`domain` with, of its other worlds, only those that differ from its own in a kind of
+    interaction the scenario has (physc.worlds.differing_kinds: what each variant declares it
+    `concerns`; one that declares nothing may differ in any): exit 3 tries and names no other
+    world (physc.search.elsewhere), and keeps no time for one, where none is left."""
+    own, kinds = domain.world, {term.name for term in scenario.interactions}
+
+    def differs(world) -> bool:
+        differing = differing_kinds(own, world, domain.worlds)
+        return differing is None or bool(differing & kinds)
+
+    kept = tuple(w for w in domain.worlds if w.name == own.name or differs(w))
+    if len(kept) == len(domain.worlds):
+        return domain
+    narrowed = copy.copy(domain)
+    narrowed.worlds = kept
+    return narrowed

@@ -5,13 +5,17 @@ where it differs from the scenario's in a kind of link the scenario has (World.c
 
 from __future__ import annotations
 
+import attrs
 from middle_end import DOMAIN, paper_scenarios
 
 from physc.compiler.infeasible import Exhausted, Infeasible
-from physc.driver.layout_loop import LayoutLoop, Tally, elsewhere_text
+from physc.domains.angrybirds.worlds import PHYQ, ROLLING, WORLDS
+from physc.driver import layout_loop
+from physc.driver.layout_loop import LayoutLoop, Tally, concerned, elsewhere_text
 from physc.driver.run_settings import RunSettings
 from physc.search.elsewhere import Elsewhere
 from physc.simulation.margin import Margin
+from physc.worlds import differing_kinds
 
 PAPER = paper_scenarios()
 HELD = Margin.life("fall(fBlock, ground)", 1, value=25.1, scale=10.0, what="the life it had left")
@@ -56,3 +60,47 @@ def test_the_world_named_elsewhere_has_its_weakest_link_worded_so_too():
         " --world rolling may carry this scenario (physc worlds describes it)"
     )
     assert text in explained(FAILED, other)
+
+
+def test_a_world_declares_the_kinds_of_link_its_changes_concern_and_worlds_differ_in_those():
+    assert ROLLING.concerns == ("roll", "slide", "bounce") and PHYQ.concerns == ()
+    assert (
+        differing_kinds(PHYQ, ROLLING, WORLDS) == differing_kinds(ROLLING, PHYQ, WORLDS) == {"roll", "slide", "bounce"}
+    )
+    names = {term.name for scenario in PAPER.values() for term in scenario.interactions}
+    assert set(ROLLING.concerns) <= names  # kinds of link the language has
+    silent = PHYQ.derive("other", "a variant that says nothing of what it changes", "a test", gravity=5.0)
+    assert silent.concerns == () and differing_kinds(PHYQ, silent, (PHYQ, silent)) is None  # any kind
+    again = ROLLING.derive("again", "a variant of a variant", "a test", concerns=("fall",), gravity=5.0)
+    assert differing_kinds(PHYQ, again, (*WORLDS, again)) == {"roll", "slide", "bounce", "fall"}
+    assert differing_kinds(ROLLING, again, (*WORLDS, again)) == {"fall"}
+    stranger = attrs.evolve(PHYQ, name="stranger")  # no ancestor shared with rolling
+    assert differing_kinds(stranger, ROLLING, (stranger, ROLLING)) is None
+
+
+def test_exit_3_tries_another_world_only_for_a_scenario_with_a_link_it_concerns(monkeypatch):
+    """F (fall) in phyq: rolling is neither tried nor kept time for; R (roll): it is."""
+    phyq = DOMAIN.at("phyq")
+    assert [w.name for w in concerned(phyq, PAPER["F"]).worlds] == ["phyq"]
+    assert [w.name for w in concerned(phyq, PAPER["SF"]).worlds] == ["phyq"]
+    assert concerned(phyq, PAPER["R"]) is phyq and concerned(phyq, PAPER["B"]) is phyq
+    assert [w.name for w in concerned(DOMAIN.at("rolling"), PAPER["F"]).worlds] == ["rolling"]
+    assert [w.name for w in phyq.worlds] == ["phyq", "rolling"]  # the domain itself is left as it is
+
+    tried = []
+
+    def fake_elsewhere(domain, scenario, *args):
+        tried.append([w.name for w in domain.worlds])
+        return Elsewhere("rolling", 1, 1, None) if len(domain.worlds) > 1 else None
+
+    monkeypatch.setattr(layout_loop.elsewhere, "elsewhere", fake_elsewhere)
+    monkeypatch.setattr(LayoutLoop, "_search", lambda self, placements, tally, started: Infeasible("satisfy", "none"))
+    messages = {}
+    for name in ("F", "R"):
+        loop = LayoutLoop(phyq, PAPER[name], None, RunSettings(time_budget=10.0, layouts=1, validate=False))  # type: ignore[arg-type]
+        try:
+            loop.run(iter(()))
+        except Infeasible as error:
+            messages[name] = error.message
+    assert tried == [["phyq"], ["phyq", "rolling"]]
+    assert "--world rolling" not in messages["F"] and "--world rolling may carry this scenario" in messages["R"]

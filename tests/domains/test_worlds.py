@@ -105,6 +105,8 @@ def test_physc_worlds_lists_each_domains_worlds_and_with_v_every_setting(tmp_pat
     assert "bodies.circle_colliders = True, bodies.angular_drag = 0.05" in run.stdout.split("derived from phyq: ")[1].splitlines()[0]
     listed = json.loads(run_physc("worlds", "-v", "angrybirds", "--format", "json").stdout)
     assert [w["world"] for w in listed] == ["phyq", "rolling"]
+    assert listed[0]["concerns"] is None and listed[1]["concerns"] == ["roll", "slide", "bounce"]
+    assert "its changes concern links of: roll, slide, bounce" in run.stdout
     settings = {s["setting"]: s for s in listed[1]["settings"]}
     assert settings["bodies.angular_drag"]["value"] == 0.05 and settings["gravity"]["value"] == pytest.approx(4.7088)
     assert run_physc("worlds", "marbles").status == 2

@@ -157,6 +157,9 @@ ROLLING = PHYQ.derive(
     "physc's reading of the paper's unpublished 'adjusted physics parameters' (patches/rolling/); its words are the "
     "paper's: a roll or slide is motion in unbroken contact, with no least travel (docs/angrybirds.md, 'What the "
     "motion words mean')",
+    # Made for rolling: round bodies that roll, spin kept; its words for a roll, a slide and a
+    # bounce (a bounce off walls is not one there) are the paper's.
+    concerns=("roll", "slide", "bounce"),
     bodies=attrs.evolve(PHYQ.bodies, circle_colliders=True, angular_drag=0.05),
     recogniser=attrs.evolve(
         PHYQ.recogniser, roll_slip=0.3, slide_spin=0.3, travel=0.0, hop_rise=0.0, round_slides=True, bounce_walls=False
