@@ -2,9 +2,11 @@
 
 The picture shows a level as Science Birds lays it out: the ground, the
 slingshot, platforms (dark grey; supports the compiler added light grey), blocks
-coloured by material (wood, stone, ice), pigs green, the bird red, each labelled
-with its name. Optional dashed arrows show the paths of moving objects, like the
-paper's figure of its 16 generated tasks (`physc render --shot …`).
+coloured by material (wood, stone, ice), pigs green, each labelled with its name, and
+the level's birds in the game's colours at their own sizes (birds.py: red, blue, yellow,
+black, white): the first at the slingshot, the others waiting on the ground behind it,
+named as traces name them (bird2, bird3, …). Optional dashed arrows show the paths of
+moving objects, like the paper's figure of its 16 generated tasks (`physc render --shot …`).
 """
 
 from __future__ import annotations
@@ -25,6 +27,16 @@ matplotlib.use("Agg")  # drawn off-screen; pyplot resolves its backend lazily, s
 
 MATERIAL_COLOURS = {"wood": "#c8914b", "stone": "#9a9a9a", "ice": "#9fd8f0"}
 KIND_COLOURS = {"pig": "#6cc24a", "bird": "#d9342b", "platform": "#5b5b5b", "tnt": "#d62728"}
+# Each bird's colour in the game (its prefab's sprite), by prefab (birds.BIRDS): a white bird
+# and a black one keep a black edge, as every bird does.
+BIRD_COLOURS = {
+    "BirdRed": KIND_COLOURS["bird"],
+    "BirdBlue": "#5aa9e6",
+    "BirdYellow": "#f4d03f",
+    "BirdBlack": "#2b2b2b",
+    "BirdWhite": "#f4f4f4",
+}
+QUEUE_STEP = 0.7  # units between the birds waiting behind the slingshot
 
 
 def _outline(obj: LevelObject):
@@ -63,16 +75,7 @@ def draw_level(
     axes.add_patch(patches.Rectangle((left, ground - 1.2), right - left, 1.2, color="#8fbf5a", zorder=0))
     sling_x, sling_y = level.slingshot
     axes.add_patch(patches.Rectangle((sling_x - 0.12, ground), 0.24, sling_y + 0.9 - ground, color="#6b4226", zorder=1))
-    if bird is not False:
-        axes.add_patch(
-            patches.Circle(
-                world.launch.bird_rest if bird is True else bird,
-                0.17,
-                facecolor=KIND_COLOURS["bird"],
-                edgecolor="black",
-                zorder=3,
-            )
-        )
+    _draw_birds(axes, level, world, bird)
     for obj in level.objects:
         kind = BY_PREFAB[obj.type].kind
         if kind == "platform":
@@ -109,6 +112,32 @@ def draw_level(
     axes.tick_params(labelsize=7)
     figure.tight_layout()
     return figure
+
+
+def bird_colour(prefab: str) -> str:
+    """The colour a bird of `prefab` is drawn in (BIRD_COLOURS; red for a prefab physc does not know)."""
+    return BIRD_COLOURS.get(prefab, KIND_COLOURS["bird"])
+
+
+def _draw_birds(axes, level: Level, world, bird) -> None:
+    """The level's birds, each in its colour and at its size: the first at the slingshot's rest
+    point (`bird` True), at a point (`bird` (x, y)) or not at all (False); the others waiting
+    on the ground behind the slingshot, in the order they are shot, labelled bird2, bird3, …"""
+    from physc.domains.angrybirds.birds import BY_PREFAB as BIRDS
+
+    ground, sling_x = world.frame.ground_top, level.slingshot[0]
+    for k, prefab in enumerate(level.birds or ("BirdRed",)):
+        radius = BIRDS[prefab].radius if prefab in BIRDS else 0.17
+        if k == 0:
+            if bird is False:
+                continue
+            centre = world.launch.bird_rest if bird is True else bird
+        else:
+            centre = (sling_x - 0.5 - QUEUE_STEP * k, ground + radius)
+        circle = patches.Circle(centre, radius, facecolor=bird_colour(prefab), edgecolor="black", zorder=3)
+        axes.add_patch(circle)
+        if k:
+            axes.annotate(f"bird{k + 1}", (centre[0], centre[1] + radius + 0.25), ha="center", fontsize=5, zorder=6)
 
 
 def render(layout: ConcreteLayout, fmt: str, world, title: str | None = None, paths=None) -> bytes:
