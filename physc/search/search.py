@@ -16,7 +16,8 @@ and the `Ledger` it writes (the simulations, how far the chain got, what noise b
 3. **Guards** (guards.py): obstacles against forbidden direct hits (`cannotHit` of the
    player) and against shortcuts, kept only if the solution still holds up.
 4. **Stability** of the level, **distraction**, **contrasts** (contrasts.py: the action aimed at
-   a contrast does not solve the task), **precision** (precision.py: every action the domain's
+   a contrast does not solve the task), **properties** (properties.py: what the scenario says
+   must fail fails, against every action the player could send), **precision** (precision.py: every action the domain's
    agents may send beside the solution's solves it too, in every reading), **validation**
    (unless told not to), and the domain's **acceptance** rule (its evaluation's `acceptance`:
    PHYRE's, in the plugin).
@@ -41,6 +42,7 @@ from physc.search.contrasts import contrasts
 from physc.search.outcome import Outcome, Parts
 from physc.search.precision import precise
 from physc.search.problem import ALL_CHECKS, Checks, Ledger, Problem, replayed
+from physc.search.properties import properties
 from physc.search.strengthen import Strong, lost_links, replays, strengthen
 from physc.simulation.ending import Ending
 from physc.simulation.stopped import why_stopped
@@ -95,6 +97,12 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     why, contrasted = contrasts(problem, ledger, layout, attempt)
     if why is not None:
         return given_up(problem, ledger, why)
+    checked = properties(problem, ledger, layout, attempt)
+    if checked.why is not None:
+        return given_up(problem, ledger, checked.why)
+    layout, contrasted = checked.layout, contrasted + checked.notes
+    if checked.obstacles and not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
+        return given_up(problem, ledger, settings.UNSTABLE)
     why, precision = precise(problem, ledger, layout, attempt)
     if why is not None:
         return given_up(problem, ledger, why)
@@ -125,7 +133,7 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
         validated=validated,
         robustness=(passed, domain.robustness_replays or 0),
         repairs=steps,
-        obstacles=tuple(obstacles + shortcuts),
+        obstacles=tuple(obstacles + shortcuts) + checked.obstacles,
         distractors=tuple(distractors),
         acceptance=None if judged is None else judged.record(),
         margins=margins_record(problem, ledger, trace, strong, steps),
