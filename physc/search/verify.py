@@ -53,18 +53,18 @@ class Verification:
         ]
         if self.noisy_run:
             parts.append(f"{self.noisy_passed} of {self.noisy_run} noisy replays realise it")
+        if self.readings > 1:
+            parts.append(
+                f"in each of the {self.readings} readings of the world that change a replay"
+                if not self.failed
+                else f"{len(self.failed)} of the readings fail"
+            )
         if self.variants:
             failing = len(self.imprecise)
             parts.append(
                 f"{failing} of the {self.variants} actions agents may send beside it fail"
                 if failing
                 else f"the {self.variants} actions agents may send beside it solve it"
-            )
-        if self.readings > 1:
-            parts.append(
-                f"in each of the {self.readings} readings of the world that change a replay"
-                if not self.failed
-                else f"{len(self.failed)} of the readings fail"
             )
         return f"in {self.backend}: " + ", ".join(parts)
 
