@@ -6,6 +6,7 @@ from physc.api import FileError as FileError
 from physc.api import NoTask as NoTask
 from physc.api import PhyscError as PhyscError
 from physc.api import ScenarioError as ScenarioError
+from physc.api import agent_shot as agent_shot
 from physc.api import check as check
 from physc.api import compile as compile
 from physc.api import domain_of as domain_of
@@ -25,6 +26,7 @@ from physc.api import verify as verify
 from physc.compiler.task import Task as Task
 from physc.diagnostics import Diagnostic as Diagnostic
 from physc.domains.angrybirds.launch import Shot as Shot
+from physc.domains.angrybirds.launch import Shots as Shots
 from physc.domains.angrybirds.shots import Solution as Solution
 from physc.envs.simulator import ActionSimulator as ActionSimulator
 from physc.envs.simulator import Simulation as Simulation

@@ -9,7 +9,7 @@ and level files), simulating.py (playing and drawing levels, verifying solutions
 from physc.api.compiling import check, compile, scenarios
 from physc.api.datasets import Dataset, Evaluation, evaluate, generate, load_dataset
 from physc.api.errors import FileError, NoTask, PhyscError, ScenarioError
-from physc.api.simulating import read_level, render, simulate, verify
+from physc.api.simulating import agent_shot, read_level, render, simulate, verify
 from physc.api.tasks import domain_of, level_text, load_task, save_level, save_task, scenario_of
 
 __all__ = [
@@ -19,6 +19,7 @@ __all__ = [
     "NoTask",
     "PhyscError",
     "ScenarioError",
+    "agent_shot",
     "check",
     "compile",
     "domain_of",

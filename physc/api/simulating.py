@@ -19,7 +19,7 @@ from physc.domains.base import Domain
 from physc.domains.simulated import SimulatedDomain
 from physc.simulation.ending import Ending
 
-__all__ = ["read_level", "render", "simulate", "verify"]
+__all__ = ["agent_shot", "read_level", "render", "simulate", "verify"]
 
 
 def read_level(source: str | os.PathLike | bytes, domain: str = "angrybirds"):
@@ -62,8 +62,13 @@ def simulate(
     its domain, angrybirds by default, or is the domain itself, bound to a world and engine;
     named, it plays in the world the level names, if it names one, unless `world` says
     otherwise). `action` is the domain's action (angrybirds:
-    `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`; phyre: a `BallAction`),
-    a task's solution (`task.solution`), or None for no action. `noise`, a seed or a
+    `physc.Shot(angle=…)` or `Shot(target=(x, y), trajectory="low")`, with `tap=` seconds after
+    the launch, `bird=` and `wait=` for a later bird's shot, several in `physc.Shots((…))`;
+    phyre: a `BallAction`), a task's solution (`task.solution`), or None for no action.
+    angrybirds also plays what Phy-Q's agents send, `[dx, dy, tap_time]` (`env.step`'s action:
+    whole pixels from the slingshot's reference point, the tap in ms, 0: none), or a list of
+    them, one a bird in the order shot, each later one once the level rests (`physc.agent_shot`
+    makes one shot of it, with a `wait`). `noise`, a seed or a
     `random.Random`, plays it under the domain's noise model (angrybirds: objects and
     release angle jittered, as the evaluation's noisy replays are). `scenario`, a checked
     scenario (physc.check's), judges a level's play against its restrictions (a Task's is its own)."""
@@ -77,10 +82,38 @@ def simulate(
             played = playable(played.at(played.files.level_world(level)))  # the world the level names
     if action is not None and isinstance(action, tuple(_solution_kinds(played))):
         action = played.actions.action_of(action)
+    action = _as_sent(played, level, action, scenario)
     if noise is not None:
         rng = noise if isinstance(noise, random.Random) else random.Random(noise)
         level, action = played.actions.noisy(level, action, rng)
     return play_to_rest(played, level, action, scenario, seconds)
+
+
+def _as_sent(domain: Domain, level, action, scenario):
+    """A Science Birds action given as Phy-Q's agents send it (`[dx, dy, tap_time]`, or a list
+    of them, one a bird) as the shots the game launches for it (physc.domains.angrybirds
+    .agent_shots), its birds named as `scenario` names them (else bird, bird2, …); any other
+    action as it is. ValueError for an agent action that is not one, or more than the birds."""
+    if domain.name != "angrybirds" or action is None or hasattr(action, "shots") or not hasattr(action, "__len__"):
+        return action
+    from physc.domains.angrybirds.agent_shots import agent_shots
+    from physc.domains.angrybirds.shots import birds
+
+    several = len(action) > 0 and all(hasattr(a, "__len__") for a in action)
+    names = () if scenario is None else tuple(birds(scenario, domain.vocabulary.player))
+    return agent_shots(level, action if several else [action], names)
+
+
+def agent_shot(level, action, *, bird: str = "bird", wait: float | None = None):
+    """The Science Birds shot (`physc.Shot`) the game launches for Phy-Q's agent action `action`,
+    `[dx, dy]` or `[dx, dy, tap_time]` (whole pixels from the slingshot's reference point, y up,
+    and ms after the launch; each truncated as the framework does), in `level` (a level, or a
+    Task's): at the angle and stretch the game reads from that release point, for `bird` (its
+    name in the trace: bird, bird2, … or the task's scenario's), `wait` seconds after its bird
+    came onto the slingshot (None: once the level rests). ValueError for a malformed action."""
+    from physc.domains.angrybirds.agent_shots import agent_shot as shot
+
+    return shot(level.level if isinstance(level, Task) else level, action, bird, wait)
 
 
 def playable(domain: Domain) -> SimulatedDomain:
@@ -138,8 +171,9 @@ def render(
 ) -> bytes:
     """A picture, PNG or SVG bytes (`IPython.display.Image(physc.render(task))` shows it in a
     notebook): a task drawn with the paths of its solution (`physc compile --png`), or with
-    those of another `action`; a domain's level (`read_level`) drawn alone or with the paths
-    `action` makes (`physc render`; `domain` a name, angrybirds by default, or a bound Domain)."""
+    those of another `action` (any `simulate` takes: a Shot, Shots, what Phy-Q's agents send);
+    a domain's level (`read_level`) drawn alone or with the paths `action` makes (`physc
+    render`; `domain` a name, angrybirds by default, or a bound Domain)."""
     if isinstance(task, Task):
         played = domain_of(task, world, backend)
         if action is None and title is None:

@@ -124,6 +124,54 @@ def shot(text: str) -> tuple[float, float, str]:
     return point[0], point[1], trajectory
 
 
+MAX_PIXELS = 100_000  # |dx|, |dy| of an agent's action: any drag of more than a unit is full stretch
+MAX_TAP_MS = int(MAX_SECONDS * 1000)
+
+
+def tap(text: str) -> float:
+    """--tap: seconds after the launch, more than 0 and at most MAX_SECONDS."""
+    value = _finite(text)
+    if not 0 < value <= MAX_SECONDS:
+        raise argparse.ArgumentTypeError(
+            f"takes seconds after the launch, more than 0 and at most {MAX_SECONDS:g}, not {text}"
+        )
+    return value
+
+
+def wait(text: str) -> float:
+    """--wait: seconds, from 0 to MAX_SECONDS."""
+    value = _finite(text)
+    if not 0 <= value <= MAX_SECONDS:
+        raise argparse.ArgumentTypeError(f"takes seconds from 0 to {MAX_SECONDS:g}, not {text}")
+    return value
+
+
+def agent_action(text: str) -> tuple[int, int, int]:
+    """DX,DY[,TAP]: what Phy-Q's agents send, `env.step([dx, dy, tap_time])`: whole screen pixels
+    from the slingshot's reference point (y up) and a tap time in whole milliseconds after the
+    launch (0, the default: no tap)."""
+    parts = [p.strip() for p in text.split(",")]
+    if len(parts) not in (2, 3):
+        raise argparse.ArgumentTypeError(
+            f"takes DX,DY or DX,DY,TAP (whole pixels from the slingshot's reference point, the tap in ms), not '{text}'"
+        )
+    values = []
+    for part, what in zip(parts, ("DX", "DY", "TAP"), strict=False):
+        try:
+            values.append(int(part, 10))
+        except ValueError:
+            raise argparse.ArgumentTypeError(
+                f"takes whole numbers, as env.step sends them: {what} '{part}' is not one (in '{text}')"
+            ) from None
+    if any(abs(v) > MAX_PIXELS for v in values[:2]):
+        raise argparse.ArgumentTypeError(f"takes pixels from -{MAX_PIXELS:,} to {MAX_PIXELS:,}, not '{text}'")
+    if len(values) == 3 and not 0 <= values[2] <= MAX_TAP_MS:
+        raise argparse.ArgumentTypeError(
+            f"takes a tap time in ms from 0 (no tap) to {MAX_TAP_MS:,}, not {values[2]} (in '{text}')"
+        )
+    return values[0], values[1], values[2] if len(values) == 3 else 0
+
+
 def backend(text: str) -> str:
     """An installed physics backend that loads (loading it now: a missing or broken engine
     is a usage error before any work, with "did you mean" for a misspelt name)."""

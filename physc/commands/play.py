@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Protocol
 import attrs
 
 from physc import budget
-from physc.commands import arguments
+from physc.commands import aiming, arguments
 from physc.commands.common import EXIT_OK, UsageError, add_format, plural, print_json, reporter
 from physc.commands.options import add_target
 from physc.diagnostics import Diagnostic, SourceText, safe
@@ -165,24 +165,25 @@ def _play(args, task=None) -> Played | int:
     scenario."""
     from physc.api.simulating import simulate
     from physc.commands.verify import _normalised
+    from physc.domains.angrybirds.shots import birds
 
     level, status = _level(args)
     if level is None:
         return status
     domain = _domain(args, level)
-    scenario = None
-    shot = domain.shot(args.shot, args.angle)
+    scenario, names, solution = None, (), None
     if task is not None:
         scenario, named, text, solution = task
         data, _ = read_input(args.level, "the level", limit=domain.files.max_level_bytes + 1)
         if data is not None and _normalised(data.decode("utf-8-sig", "replace")) == _normalised(text):
-            level = named
-            if shot is None and args.shot is None and args.angle is None:
-                shot = domain.actions.action_of(solution)  # the task's own solution, all its shots
+            level, names = named, tuple(birds(scenario, domain.vocabulary.player))  # the scenario's names
         else:
             scenario = None  # another level: its objects have other names
+    shot = aiming.shots(args.aims, level, names)
+    if shot is None and scenario is not None:
+        shot = domain.actions.action_of(solution)  # the task's own solution, all its shots
     if shot is not None and not level.has_birds:
-        help_text = 'add <Bird type="BirdRed" /> inside <Birds>, or play the level without --shot and --angle'
+        help_text = 'add <Bird type="BirdRed" /> inside <Birds>, or play the level without --shot, --angle and --action'
         return _fail(args, Diagnostic("E0907", "the level has no bird to shoot", help=help_text))
     try:
         with budget.interruptible():
@@ -211,6 +212,7 @@ def cmd_simulate(args) -> int:
                 "world": domain.world.name,
                 "backend": domain.backend.name,
                 "shot": None if shot is None else {"text": shot.text(), "release_angle": _angle(shot, domain)},
+                "shots": aiming.described(shot, args.aims, domain.world),
                 "seconds": round(trace.duration, 4),
                 "pigs": pigs,
                 "pigs_destroyed": [d.name for d in destroyed],
@@ -227,6 +229,8 @@ def cmd_simulate(args) -> int:
         else f"shot {shot.text()}"
         + ("" if _angle(shot, domain) is None else f" (release angle {_angle(shot, domain):.2f}°)")
     )
+    sent = [a.sent() for a in aiming.asked(args.aims) if a.sent()]
+    what += f", as Phy-Q's agents send it: {', '.join(str(s) for s in sent)}" if sent else ""
     print(
         f"{safe(args.level)}: {plural(len(level.objects), 'object')}, {plural(len(pigs), 'pig')}; {what};"
         f" world {domain.world.name}"
@@ -304,7 +308,7 @@ def cmd_render(args) -> int:
     if not args.output.lower().endswith((".png", ".svg")):
         raise UsageError("-o must name a .png or .svg file")
     check_output(args.output)
-    if args.shot is None and args.angle is None and args.task is None:
+    if not args.aims and args.task is None:
         level, status = _level(args)
         if level is None:
             return status
@@ -324,15 +328,7 @@ def cmd_render(args) -> int:
 def add_commands(commands, common) -> None:
     def level_arguments(parser):
         parser.add_argument("level", metavar="LEVEL", help="a Science Birds level file ('-' reads standard input)")
-        shot = parser.add_mutually_exclusive_group()
-        shot.add_argument(
-            "--shot",
-            type=arguments.shot,
-            metavar="X,Y[,low|high]",
-            help="shoot at a target point, on the low (default) or high trajectory"
-            " (a negative X as it is: --shot -9,0.5)",
-        )
-        shot.add_argument("--angle", type=arguments.angle, metavar="DEG", help="shoot at a release angle (degrees)")
+        aiming.add_shot_options(parser)  # one --shot, --angle or --action a bird, in turn; --tap, --wait
         parser.add_argument(
             "--seconds",
             type=arguments.seconds,

@@ -88,7 +88,9 @@ class Shot:
     Version 2 (several shots, birds' powers): the bird it launches (the trace's name of it),
     when the player taps (its power: seconds after the launch, None: no tap), and, for a shot
     after the first, when it is shot (`wait`: seconds after the bird before it left the level;
-    None: once the level is at rest, as Phy-Q's agents wait)."""
+    None: once the level is at rest, as Phy-Q's agents wait). `stretch`: how far the bird is
+    pulled, in drag radii (1: a full-stretch shot, as every shot physc makes; an agent's shorter
+    drag launches nearer the rest point and slower, ABBird.cs `LaunchBird`)."""
 
     target: tuple[float, float] | None = None
     trajectory: str = "low"  # "low" | "high"
@@ -96,6 +98,7 @@ class Shot:
     tap: float | None = None
     bird: str = "bird"
     wait: float | None = None
+    stretch: float = 1.0
 
     def release_angle(self, world) -> float:
         """The release angle in degrees in `world` (physc.domains.angrybirds.worlds)."""
@@ -133,11 +136,14 @@ class Shot:
         return self.start(world)[0]
 
     def start(self, world) -> tuple[tuple[float, float], tuple[float, float]]:
-        """Where the bird starts this shot and its velocity there, from one release angle."""
+        """Where the bird starts this shot and its velocity there, from one release angle: at
+        full stretch 10 units/s, at a shorter one that times the stretch (ABBird.cs `LaunchBird`:
+        the drag's length over the drag radius times the top speed)."""
         angle = self.release_angle(world)
         theta = math.radians(angle)
-        speed = world.launch.speed
-        return world.launch.point(angle), (speed * math.cos(theta), speed * math.sin(theta))
+        stretch = min(max(self.stretch, 0.0), 1.0)
+        speed = world.launch.speed * stretch
+        return world.launch.point(angle, stretch), (speed * math.cos(theta), speed * math.sin(theta))
 
     def velocity(self, world) -> tuple[float, float]:
         return self.start(world)[1]
@@ -149,7 +155,9 @@ class Shot:
             assert self.target is not None, "a shot has a target point or a release angle"
             aim = f"({self.target[0]:g}, {self.target[1]:g}), {self.trajectory}"
 
-        return aim + ("" if self.tap is None else f", tap at {self.tap:g} s")
+        pulled = "" if self.stretch >= 1.0 else f", stretch {self.stretch:.3g}"
+        timed = "" if self.wait is None else f", {self.wait:g} s after its bird came onto the slingshot"
+        return aim + pulled + ("" if self.tap is None else f", tap at {self.tap:g} s") + timed
 
     @property
     def shots(self) -> tuple[Shot, ...]:
