@@ -17,24 +17,52 @@ from __future__ import annotations
 
 from typing import cast
 
+import attrs
+
 from physc.domains.simulated import SimulatedDomain
 from physc.search import settings
-from physc.search.problem import Ledger, Problem
+from physc.search.attempt import Attempt
+from physc.search.problem import Ledger, Problem, simulate
+from physc.search.strengthen import holds_up
 from physc.search.verify import failing_reading
 
+NUDGES = (1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 8, -8)  # steps along the domain's `nudged` line, nearest first
 
-def precise(problem: Problem, ledger: Ledger, layout, attempt) -> tuple[str | None, tuple[str, ...]]:
-    """(why the layout is given up, or None; a note when the domain's agents' actions hold)."""
+
+def precise(problem: Problem, ledger: Ledger, layout, attempt: Attempt) -> tuple[str | None, tuple[str, ...], Attempt]:
+    """(why the layout is given up, or None; a note when the domain's agents' actions hold; the
+    solution that holds). Where an agent's action beside the solution's fails, the solution is
+    moved along the domain's `nudged` line (Science Birds: its last shot turned 0.05° a step),
+    nearest first, to the first place where it and every action the agents may send for it
+    hold, and it still passes the noisy replays it must: the agents' grid then lies inside the
+    window of actions that work."""
     domain = problem.domain
     level = problem.level_of(layout)
-    solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
-    variants = domain.actions.agent_variants(level, solution)
-    if not variants:
-        return None, ()
-    for _, action in variants:
-        if not holds(problem, ledger, level, action):
-            return settings.IMPRECISE, ()
-    return None, (f"precision: the {len(variants)} actions agents may send beside the solution's solve it",)
+    for step in (0, *NUDGES):
+        action = attempt.action if step == 0 else domain.actions.nudged(attempt.action, step)
+        if action is None:
+            continue
+        solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, action))
+        variants = domain.actions.agent_variants(level, solution)
+        if not variants:
+            return None, (), attempt
+        if not all(holds(problem, ledger, level, variant) for _, variant in variants):
+            continue
+        moved = attempt if step == 0 else moved_to(problem, ledger, layout, attempt, action)
+        if moved is None:
+            continue
+        note = f"precision: the {len(variants)} actions agents may send beside the solution's solve it"
+        return None, (note + (f" (the solution moved {step:+d} steps to hold so)" if step else ""),), moved
+    return settings.IMPRECISE, (), attempt
+
+
+def moved_to(problem: Problem, ledger: Ledger, layout, attempt: Attempt, action) -> Attempt | None:
+    """`attempt` with `action` instead, if that holds (solves and realises the sequence in every
+    reading) and passes as many noisy replays as the solution must, in both noise streams."""
+    if not holds(problem, ledger, problem.level_of(layout), action):
+        return None
+    moved = attrs.evolve(simulate(problem, ledger, layout, action), label=attempt.label)
+    return moved if holds_up(problem, ledger, moved, layout) else None
 
 
 def holds(problem: Problem, ledger: Ledger, level: object, action: object) -> bool:

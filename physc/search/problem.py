@@ -89,7 +89,9 @@ class Problem:
             if (term := vocabulary.term(t.name)) is not None and term.carries
         ]
         starts = tuple(domain.actions.starts(scenario))
-        entry = goals_kept(introduced(layout, scenario.interactions, carried), scenario, starts, vocabulary.goal)
+        entry = introduced(layout, scenario.interactions, carried)
+        if starts:  # several actions of the player: each later one's stage keeps a goal to act for
+            entry = goals_kept(entry, scenario, starts, vocabulary.goal)
         return cls(
             domain,
             scenario,

@@ -103,7 +103,7 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     layout, contrasted = checked.layout, contrasted + checked.notes
     if checked.obstacles and not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
         return given_up(problem, ledger, settings.UNSTABLE)
-    why, precision = precise(problem, ledger, layout, attempt)
+    why, precision, attempt = precise(problem, ledger, layout, attempt)
     if why is not None:
         return given_up(problem, ledger, why)
     validating = time.perf_counter()

@@ -208,15 +208,20 @@ def test_a_push_that_never_reaches_is_raised_until_it_does():
 def test_a_push_holds_for_what_agents_send_beside_it_or_is_given_up():
     """The precision step (physc.search.precision): every action the domain's agents may send
     beside the solution's is played once on the finished level; a push of 2.6 holds for 2.5 and
-    2.7, not for 1.6 (it stops short of destroying the pig: 1.732 is the least that does)."""
+    2.7, not for 1.6 (it stops short of destroying the pig: 1.732 is the least that does), so it
+    is moved along the nudged line until it does; a spread no nudge covers gives the layout up."""
     domain = Line(speeds=(2.6,), spread=(-0.1, 0.1))
     outcome = search.satisfy(domain, Scenario(), layout(), random.Random(0))
     assert outcome.satisfied and outcome.parts.solution == Push(2.6)
     assert "precision: the 2 actions agents may send beside the solution's solve it" in outcome.parts.repairs
     assert {Push(2.5), Push(2.7)} <= {action for _, action in domain.plays}
-    domain = Line(speeds=(2.6,), spread=(-0.1, -1.0, 0.1))
+    domain = Line(speeds=(2.6,), spread=(-0.1, -1.0, 0.1))  # 1.6 falls short: the push is moved up to hold
+    moved = search.satisfy(domain, Scenario(), layout(), random.Random(0))
+    assert moved.satisfied and moved.parts.solution == Push(2.75), moved.parts.solution  # 1.75 ≥ 1.732
+    assert any("(the solution moved +3 steps to hold so)" in r for r in moved.parts.repairs)
+    domain = Line(speeds=(2.6,), spread=(-0.1, -2.0, 0.1))  # no push within the nudges' reach holds for 2 less
     ledger = Ledger()
     given_up = search.search(Problem.of(domain, Scenario(), layout(), domain.robustness_replays), ledger, random.Random(0))
     assert not given_up.satisfied and given_up.given_up == search.settings.IMPRECISE
-    assert domain.plays[-1] == (Level(1.3), Push(1.6)) and Push(2.7) not in {a for _, a in domain.plays}  # stops at the first
+    assert Push(0.6) in {a for _, a in domain.plays} and Push(1.0) in {a for _, a in domain.plays}  # 2.6 and 3.0, less 2
     assert ledger.simulations == len(domain.plays) + 1  # each counted by the ledger's evaluator (and the stability check)
