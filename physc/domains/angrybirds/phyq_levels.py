@@ -12,12 +12,16 @@
   shot's place among the level's (`shot`: 1, 2, … for a task of several, language version 2),
   the release angle, and the action Phy-Q's agents send for it, `env.step([dx, dy, tap_time])`
   (the task's own record, which `physc verify` replayed; the tap in milliseconds), with the
-  angle the game launches that at and the slingshot reference point it was computed from;
+  angle the game launches that at and the slingshot reference point it was computed from, the
+  shot's `wait` (seconds after its bird came onto the slingshot; empty: once the level rests)
+  and, in a level with a timed shot, its `launch_gap` in physc's play (phyq_timing.py);
 * `replay_shots.py`: a script for `sciencebirdsagents/` that loads each level, sends its shot
   and writes whether the level was solved (it carries agent_action.py's functions, to compute
   the shot again if the game's reference point differs from the one expected); it plays a level
-  with a tapped or timed shot at the game's speed 1, where a tap keeps its time, and starts the
-  game without its window with `--headless`;
+  with a tapped or timed shot at the game's speed 1, where a tap keeps its time, sends a timed
+  shot when its time comes by the clock (the shot before it in the framework's fast mode, not its
+  safe mode, which waits for the level to rest), and starts the game without its window with
+  `--headless`;
 * `README.md`: how to install the levels in the game and replay the shots.
 """
 
@@ -29,6 +33,7 @@ import io
 
 from physc.domains.angrybirds import agent_action
 from physc.domains.angrybirds.level_xml import parse_level
+from physc.domains.angrybirds.phyq_timing import launch_gaps
 
 GAME_FOLDER = "9001_Data/StreamingAssets/Levels/physc/Levels"  # where the game reads them, relative to its folder
 COLUMNS = (
@@ -45,6 +50,8 @@ COLUMNS = (
     "agent_angle",
     "reference_x",
     "reference_y",
+    "wait",
+    "launch_gap",
 )
 
 
@@ -65,6 +72,7 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
         reference = agent_action.reference_point(level.slingshot, level.camera.y, level.camera.max_width)
         world = level.world or row.get("world") or "phyq"
         worlds.add(world)
+        gaps = launch_gaps(text, solution, world, row.get("backend"))  # a level with a timed shot: physc's times
         for k, shot in enumerate(solution.get("shots") or [solution], start=1):  # a ShotsSolution's, or the one
             angle = shot.get("release_angle")
             action, launched = shot.get("agent_action"), shot.get("agent_angle")
@@ -87,6 +95,8 @@ def benchmark_files(tasks: list[tuple[dict, str]]) -> dict[str, bytes]:
                     "agent_angle": round(launched, 5),
                     "reference_x": reference[0],
                     "reference_y": reference[1],
+                    "wait": "" if shot.get("wait") is None else shot["wait"],
+                    "launch_gap": "" if gaps[k - 1] is None else gaps[k - 1],
                 }
             )
     table = io.StringIO()
@@ -120,7 +130,15 @@ def config(names: list[str]) -> str:
 
 REPLAY_MAIN = '''
 
+import time
+
 TIMED_SPEED = 1  # the game's speed for a level with a tapped or timed shot (README.md beside this file says why)
+DRAG_SECONDS = 1.0  # HUD.cs `_simulateDragTime`: the game drags the bird this long before it releases a shot it got
+# After the bird before struck something, the next one jumps onto the slingshot (ABGameWorld.KillBird, ABBird
+# SetBirdOnSlingshot at BirdRed.prefab's `_dragSpeed` 15 units/s over the 1 to 2 units from where it waits): a shot
+# sent before that finds no bird to drag (HUD.cs ClickDown) and is lost.
+ON_SLINGSHOT_SECONDS = 0.2
+OUTCOME_SECONDS = 30.0  # after a level's last shot sent directly, how long to wait for the game's verdict
 
 
 def main():
@@ -158,26 +176,91 @@ def main():
         with open(args.out, "w", newline="") as handle:
             out = csv.writer(handle)
             out.writerow(["level", "file", "shot", "dx", "dy", "tap_time", "reference_x", "reference_y", "speed",
-                          "solved"])
-            for shot in shots:
+                          "sent", "waited", "late", "solved"])
+            before = None  # the level's shot before: when the game answered it, and its tap
+            for k, shot in enumerate(shots):
                 if int(shot.get("shot") or 1) == 1:  # a level's first shot: load it (its later shots go on from there)
                     if speeds[shot["level"]] != speed:  # the game takes a new speed at any time (README.md, command 2)
                         speed = speeds[shot["level"]]
                         agent.ar.set_game_simulation_speed(speed)
                     env.current_level = int(shot["level"])
                     env.reset()  # loads the level, zooms out fully, reads the slingshot's reference point
+                    before = None
                 action = [int(shot["dx"]), int(shot["dy"]), int(shot["tap_time"])]
                 expected = (int(shot["reference_x"]), int(shot["reference_y"]))
                 live = (env.sling_center.X, env.sling_center.Y)
                 if live != expected:  # another screen or camera than expected: aim from the game's own reference point
                     level_text = open(os.path.join(os.path.dirname(args.shots), "Levels", shot["file"])).read()
                     action = aimed_again(float(shot["release_angle"]), level_text, live) + [int(shot["tap_time"])]
-                _, _, _, info = env.step(action)
+                later = shots[k + 1] if k + 1 < len(shots) and int(shots[k + 1].get("shot") or 1) > 1 else None
+                if (before is not None and timed(shot)) or (later is not None and timed(later)):
+                    sent, waited, late, solved = shot_in_time(env, agent, shot, action, before, later)
+                else:  # the framework's own step, in safe mode: it answers once the level is static
+                    _, _, _, info = env.step(action)
+                    sent, waited, late, solved = "step", "", "", bool(info[0])
+                before = (time.monotonic(), action[2])
                 out.writerow([shot["level"], shot["file"], shot.get("shot") or 1, action[0], action[1], action[2],
-                              live[0], live[1], speed, bool(info[0])])
+                              live[0], live[1], speed, sent, waited, late, solved])
     finally:
         if started:  # the game and its server this run started in the background
             env.close()
+
+
+def timed(shot):
+    """Whether a shot is timed: taken `wait` s after its bird came onto the slingshot, not once the level rests."""
+    return (shot.get("wait") or "").strip() != ""
+
+
+def shot_in_time(env, agent, shot, action, before, later):
+    """A shot of a level with a timed shot, sent to the game directly rather than through the framework's `step`,
+    which asks the game for its state before each shot (SBEnvironmentWrapper.py `step`) and sends it in safe mode,
+    answered once the level is static (Client/agent_client.py `shoot`, command 31): a timed shot is sent when its
+    time comes (`send_time`), and a shot followed by a timed one in fast mode (`fast_shoot`, command 41: answered
+    once the shot is made, HUD.cs `shootDone` after the release and its tap). (sent, seconds waited, seconds late,
+    solved: the game's verdict after the level's last shot, else whether it has been won already)."""
+    waited, late = "", ""
+    if before is not None and timed(shot):
+        due, earliest = send_time(shot, before)
+        now = time.monotonic()
+        at = max(due, earliest, now)
+        waited, late = round(at - now, 3), round(at - due, 3)
+        if at > now:
+            time.sleep(at - now)
+    fast = later is not None and timed(later)
+    x, y = int(env.sling_center.X + action[0]), int(env.sling_center.Y - action[1])  # as `step` makes the point
+    (agent.ar.fast_shoot if fast else agent.ar.shoot)(x, y, 0, int(action[2]), 0)
+    env.shots_per_level += 1  # as `step` counts its shots (a level's first `step` waits 0.5 s, a later one not)
+    env.num_birds -= 1
+    return ("fast", waited, late, "") if fast else ("safe", waited, late, outcome(agent, wait=later is None))
+
+
+def send_time(shot, before):
+    """(when it is due, the earliest it can be taken), by time.monotonic(), for a timed shot: due `launch_gap`
+    seconds (physc's play: from the shot before's launch to its own) after the shot before was released, which is
+    when the game answered it less its tap time, less DRAG_SECONDS, since the game releases a shot that long after
+    it gets it; but not before its bird is on the slingshot, ON_SLINGSHOT_SECONDS after the bird before struck
+    something (`launch_gap` − `wait` after its launch): the game's click finds no bird to drag before, and the shot
+    is lost. Without `launch_gap`: `wait` seconds after the game answered the shot before."""
+    answered, tap_ms = before
+    gap = (shot.get("launch_gap") or "").strip()
+    if not gap:
+        return answered + float(shot["wait"]), answered
+    released = answered - tap_ms / 1000.0
+    struck = released + float(gap) - float(shot["wait"])
+    return released + float(gap) - DRAG_SECONDS, struck + ON_SLINGSHOT_SECONDS
+
+
+def outcome(agent, wait):
+    """Whether the level was won: with `wait` (its last shot), the game's verdict, polled as `step` polls it, within
+    OUTCOME_SECONDS; without, whether it is won already."""
+    from Client.agent_client import GameState
+
+    deadline = time.monotonic() + (OUTCOME_SECONDS if wait else 0.0)
+    while True:
+        state = agent.ar.get_game_state()
+        if state in (GameState.WON, GameState.LOST) or time.monotonic() >= deadline:
+            return state == GameState.WON
+        time.sleep(0.5)
 
 
 def level_speeds(shots, fast):
@@ -257,6 +340,13 @@ def readme(count: int, worlds: list[str]) -> str:
         "steps at most 0.02 s a frame, so at a higher speed the tap comes early unless the game makes 50 ×\n"
         'speed frames a second (physc\'s docs/angrybirds.md, "At a speed under which a tap keeps its time").\n'
         "`replayed.csv` has the speed of each shot.\n\n"
+        "A timed shot (a `wait` in `shots.csv`: taken that many seconds after its bird came onto the slingshot,\n"
+        "not once the level rests) is sent by the clock: the shot before it in the framework's fast mode (the game\n"
+        "answers once the shot is made, not once the level rests), then the timed one `launch_gap` seconds (physc's\n"
+        "play) after the shot before was released, less the 1 s the game drags a bird before releasing it, but not\n"
+        "before its bird is on the slingshot. `replayed.csv` says how each shot was sent (`step`, `fast`, `safe`),\n"
+        "how long the script waited, and how late a timed shot was sent (a wait shorter than the drag cannot be\n"
+        "kept in the game).\n\n"
         "`shots.csv` holds each level's intended solution as physc's release angle and as the action Phy-Q's\n"
         "agents send, `env.step([dx, dy, tap_time])`: whole pixels from the slingshot's reference point on\n"
         "the game's 840 × 480 window, zoomed out fully (what `env.reset()` leaves), and the angle the game\n"
