@@ -22,9 +22,12 @@ which action broke it is the search's; one that holds adds a note to the task's 
 
 from __future__ import annotations
 
+from typing import cast
+
 import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout
+from physc.domains.simulated import SimulatedDomain
 from physc.dsl.scenario import TermIR
 from physc.search import guards, settings
 from physc.search.attempt import Attempt
@@ -77,7 +80,7 @@ def plays(problem: Problem, ledger: Ledger, level: object, action: object) -> li
     domain = problem.domain
 
     def run(reading) -> Trace:
-        there = domain if reading is domain.world else domain.at(reading)
+        there = domain if reading is domain.world else cast(SimulatedDomain, domain.at(reading))  # Domain.at: its class
         return ledger.evaluator.run(lambda: there.play(level, action, None, problem.seconds, Ending.OUTCOME))
 
     return [trace for _, trace in under_readings(domain.world, run)]
