@@ -123,7 +123,7 @@ def test_each_bird_is_shot_in_turn_and_a_wait_times_the_later_one(two):
 )
 def test_a_mistake_is_a_usage_error_that_says_what_to_write(arguments, said):
     for command in ("simulate", "trace"):
-        run = run_physc(command, ONE_PIG, *arguments)
+        run = run_physc(command, str(ONE_PIG), *arguments)
         assert run.status == 2 and said in run.stderr, (command, run.stderr)
         assert "Traceback" not in run.stderr and not run.stdout
 
@@ -145,7 +145,7 @@ def test_an_action_is_launched_at_the_angle_and_stretch_the_game_reads_from_it()
     assert (shot.angle, shot.stretch, shot.tap, shot.bird, shot.wait) == (angle, stretch, 0.56, "bird2", 1.0)
     assert agent_shot(level, [-100.9, -93.2, 0]).angle == angle and agent_shot(level, [-100, -93]).tap is None
     short = agent_shot(level, [-10, -5])  # a drag shorter than the drag radius: a slower launch, nearer the rest point
-    assert 0 < short.stretch < 1 and "stretch" in short.text()
+    assert 0 < short.stretch < 1 and "stretch" in short.text() and short.angle is not None
     (x, y), (vx, vy) = short.start(PHYQ)
     assert math.hypot(vx, vy) == pytest.approx(PHYQ.launch.speed * short.stretch)
     assert (x, y) == pytest.approx(PHYQ.launch.point(short.angle, short.stretch))

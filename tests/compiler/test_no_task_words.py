@@ -8,6 +8,7 @@ from __future__ import annotations
 import attrs
 from middle_end import DOMAIN, paper_scenarios
 
+from physc.api.simulating import playable
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.domains.angrybirds.worlds import PHYQ, ROLLING, WORLDS
 from physc.driver import layout_loop
@@ -80,11 +81,11 @@ def test_a_world_declares_the_kinds_of_link_its_changes_concern_and_worlds_diffe
 
 def test_exit_3_tries_another_world_only_for_a_scenario_with_a_link_it_concerns(monkeypatch):
     """F (fall) in phyq: rolling is neither tried nor kept time for; R (roll): it is."""
-    phyq = DOMAIN.at("phyq")
+    phyq = playable(DOMAIN.at("phyq"))
     assert [w.name for w in concerned(phyq, PAPER["F"]).worlds] == ["phyq"]
     assert [w.name for w in concerned(phyq, PAPER["SF"]).worlds] == ["phyq"]
     assert concerned(phyq, PAPER["R"]) is phyq and concerned(phyq, PAPER["B"]) is phyq
-    assert [w.name for w in concerned(DOMAIN.at("rolling"), PAPER["F"]).worlds] == ["rolling"]
+    assert [w.name for w in concerned(playable(DOMAIN.at("rolling")), PAPER["F"]).worlds] == ["rolling"]
     assert [w.name for w in phyq.worlds] == ["phyq", "rolling"]  # the domain itself is left as it is
 
     tried = []

@@ -17,7 +17,7 @@ PIG = LevelObject("Pig", "BasicSmall", 3.0, PHYQ.frame.ground_top + 0.236, 0.0, 
 HUES = {"BirdRed": 0.0, "BirdYellow": 1 / 6 - 0.03, "BirdBlue": 0.58}  # hue in turns, near which each lies
 
 
-def birds_drawn(level, bird=True):
+def birds_drawn(level, bird: bool | tuple[float, float] = True):
     """(centre, radius, face colour as #rrggbb) of each bird circle the picture draws."""
     figure = draw_level(level, PHYQ, bird=bird)
     try:

@@ -60,7 +60,13 @@ def picture_top(level: Level) -> float:
 
 
 def draw_level(
-    level: Level, world, title: str = "", paths=None, supports=frozenset(), bird=True, top: float | None = None
+    level: Level,
+    world,
+    title: str = "",
+    paths=None,
+    supports=frozenset(),
+    bird: bool | tuple[float, float] = True,
+    top: float | None = None,
 ):
     """A matplotlib figure of a level in `world` (its frame: bounds, ground, the bird's rest);
     `paths` maps names to [(x, y), …], drawn as arrows. `bird`: drawn at rest (True), at a
