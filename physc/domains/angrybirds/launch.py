@@ -87,8 +87,9 @@ class Shot:
     it flies depends on the world (its launch and gravity), so each question takes one.
     Version 2 (several shots, birds' powers): the bird it launches (the trace's name of it),
     when the player taps (its power: seconds after the launch, None: no tap), and, for a shot
-    after the first, when it is shot (`wait`: seconds after the bird before it left the level;
-    None: once the level is at rest, as Phy-Q's agents wait). `stretch`: how far the bird is
+    after the first, when it is shot (`wait`: seconds after the game brought its bird onto the
+    slingshot, when the bird before first struck something or used its power, flight.py; None:
+    once the level is at rest, as Phy-Q's agents wait). `stretch`: how far the bird is
     pulled, in drag radii (1: a full-stretch shot, as every shot physc makes; an agent's shorter
     drag launches nearer the rest point and slower, ABBird.cs `LaunchBird`)."""
 
