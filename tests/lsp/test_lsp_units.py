@@ -88,7 +88,7 @@ def test_completion_offers_what_fits_the_parameter():
     assert "bird" in after_hit and "surface" not in after_hit  # the actor moves; a surface never does
     rolling = labels("scenario S { interactions { hit(bird, fBlock, left) > roll(§ } }")
     assert "rBlock" in rolling and "fBlock" not in rolling  # roll's object is rollable
-    assert labels("scenario S { restrictions { § } }") == ["cannotHit", "cannotFall", "contrast", "on"]
+    assert labels("scenario S { restrictions { § } }") == ["cannotHit", "cannotFall", "contrast", "on", "nonGreedy", "blocks", "timed"]
     assert labels("scenario S { objects { p: pig = § } }") == ["pigSmall", "pigMedium", "pigBig"]  # pigBig: pinned only (version 2)
     assert labels("scenario S { domain nowhere\n interactions { hit(§ } }") == []  # unknown domain: nothing
     assert labels("scenario S { interactions { nothing(§ } }") == []
