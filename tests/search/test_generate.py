@@ -99,9 +99,9 @@ def test_infeasible_scenario_exits_3():
 
 
 def test_the_task_says_why_earlier_layouts_were_given_up(tmp_path):
-    # S seed 0: its first layouts do not realise the sequence (or too fragilely); a later one works.
+    # S seed 2: its first layouts do not realise the sequence (or too fragilely); a later one works.
     task = tmp_path / "s.json"
-    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "S", "--seed", "0", "--no-validate", "--task", task, "-o", tmp_path / "l.xml")
+    run = run_physc("compile", EXAMPLES / "paper" / "all.paper.phys", "-s", "S", "--seed", "2", "--no-validate", "--task", task, "-o", tmp_path / "l.xml")
     assert run.status == 0, run.stderr
     data = json.loads(task.read_text())
     given_up = data["given_up"]
