@@ -15,14 +15,11 @@ beside the noise model (the noisy replays judge robustness; this judges the agen
 
 from __future__ import annotations
 
-from typing import cast
-
 import attrs
 
-from physc.domains.simulated import SimulatedDomain
 from physc.search import settings
 from physc.search.attempt import Attempt
-from physc.search.problem import Ledger, Problem, simulate
+from physc.search.problem import Ledger, Problem, play_in, simulate
 from physc.search.strengthen import holds_up
 from physc.search.verify import failing_reading
 
@@ -68,9 +65,5 @@ def moved_to(problem: Problem, ledger: Ledger, layout, attempt: Attempt, action)
 def holds(problem: Problem, ledger: Ledger, level: object, action: object) -> bool:
     """Whether `action` solves `level` and realises the sequence in every reading of the world
     that can change its play, each play counted by the ledger's evaluator."""
-
-    def run(reading):
-        there = cast(SimulatedDomain, problem.domain.at(reading))  # a copy of the domain (Domain.at): its class
-        return ledger.evaluator.run(lambda: there.play(level, action, problem.scenario, problem.seconds))
-
+    run = play_in(problem, ledger, level, action, problem.scenario)
     return failing_reading(problem.domain.world, problem.scenario, run) is None

@@ -11,6 +11,9 @@ noise broke and how near a fragile solution came). No step keeps state of its ow
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import cast
+
 import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout
@@ -24,6 +27,7 @@ from physc.search.attempt import Attempt
 from physc.search.chain_stages import ChainStage, introduced, stages
 from physc.search.evaluator import Evaluator
 from physc.search.settings import SETTINGS, SearchSettings
+from physc.simulation.ending import Ending
 from physc.simulation.fidelity import fidelity
 from physc.simulation.margins import Margin
 from physc.simulation.snapshot import Snapshot
@@ -227,3 +231,18 @@ def replayed(problem: Problem, ledger: Ledger, level: object, action: object, la
     replay, a guard's try, the final play)."""
     trace = ledger.evaluator.run(lambda: problem.domain.play(level, action, problem.scenario, problem.seconds))
     return Attempt(label, action, trace, fidelity(problem.scenario, trace))
+
+
+def play_in(
+    problem: Problem, ledger: Ledger, level: object, action: object, scenario=None, ending: Ending = Ending.READ
+) -> Callable[[object], Trace]:
+    """One play of `action` in `level` in a given reading of the world (the domain itself in its
+    own; Domain.at in another), judged against `scenario` if given, ending as `ending` says,
+    counted by the ledger's evaluator: the `run` physc.worlds.under_readings takes."""
+    domain = problem.domain
+
+    def run(reading) -> Trace:
+        there = domain if reading is domain.world else cast(SimulatedDomain, domain.at(reading))  # Domain.at: its class
+        return ledger.evaluator.run(lambda: there.play(level, action, scenario, problem.seconds, ending))
+
+    return run

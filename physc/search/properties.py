@@ -22,16 +22,15 @@ which action broke it is the search's; one that holds adds a note to the task's 
 
 from __future__ import annotations
 
-from typing import cast
+from itertools import islice
 
 import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout
-from physc.domains.simulated import SimulatedDomain
 from physc.dsl.scenario import TermIR
 from physc.search import guards, settings
 from physc.search.attempt import Attempt
-from physc.search.problem import Ledger, Problem, simulate
+from physc.search.problem import Ledger, Problem, play_in, simulate
 from physc.search.strengthen import holds_up
 from physc.simulation.ending import Ending
 from physc.simulation.trace import Trace
@@ -77,24 +76,22 @@ def properties(problem: Problem, ledger: Ledger, layout: ConcreteLayout, solutio
 
 def plays(problem: Problem, ledger: Ledger, level: object, action: object) -> list[Trace]:
     """`action` played in `level` to its outcome, in every reading of the world that can change it."""
-    domain = problem.domain
+    run = play_in(problem, ledger, level, action, ending=Ending.OUTCOME)
+    return [trace for _, trace in under_readings(problem.domain.world, run)]
 
-    def run(reading) -> Trace:
-        there = domain if reading is domain.world else cast(SimulatedDomain, domain.at(reading))  # Domain.at: its class
-        return ledger.evaluator.run(lambda: there.play(level, action, None, problem.seconds, Ending.OUTCOME))
 
-    return [trace for _, trace in under_readings(domain.world, run)]
+def taking(problem: Problem, ledger: Ledger, level: object, actions, target: str, spare: str | None = None):
+    """(label, action, its world's own trace) of each of `actions`, in turn, that destroys
+    `target` in some reading (with `spare`: and leaves `spare` standing there)."""
+    for label, action in actions:
+        traces = plays(problem, ledger, level, action)
+        if any(target in t.destroyed and (spare is None or spare not in t.destroyed) for t in traces):
+            yield label, action, traces[0]
 
 
 def first_taking(problem: Problem, ledger: Ledger, level: object, actions, target: str, spare: str | None = None):
-    """(label, action, its world's own trace) of the first of `actions` that destroys `target`
-    in some reading (with `spare`: and leaves `spare` standing there); None if none does."""
-    for label, action in actions:
-        traces = plays(problem, ledger, level, action)
-        for trace in traces:
-            if target in trace.destroyed and (spare is None or spare not in trace.destroyed):
-                return label, action, traces[0]
-    return None
+    """The first of `taking`'s (label, action, trace); None if no action destroys `target`."""
+    return next(taking(problem, ledger, level, actions, target, spare), None)
 
 
 def blocks(
@@ -137,16 +134,10 @@ def blocks(
 def non_greedy(problem: Problem, ledger: Ledger, level: object, term: TermIR) -> tuple[str | None, str]:
     """`nonGreedy(a, b)`: (why given up or None, the note)."""
     actions, a, b = problem.domain.actions, term.objects[0], term.objects[1]
-    firsts = list(actions.sweep(level, problem.scenario, at=b))
+    firsts = actions.sweep(level, problem.scenario, at=b)
     if not firsts:
         return settings.PROPERTY_UNCHECKED, "the domain cannot sweep the first action"
-    greedy = []
-    while len(greedy) < GREEDY_FIRSTS:
-        found = first_taking(problem, ledger, level, firsts, b, spare=a)
-        if found is None:
-            break
-        greedy.append(found)
-        firsts = firsts[[label for label, _ in firsts].index(found[0]) + 1 :]
+    greedy = list(islice(taking(problem, ledger, level, firsts, b, spare=a), GREEDY_FIRSTS))
     if not greedy:
         return None, f"no first action takes {b} and spares {a}"
     for label, action, trace in greedy:

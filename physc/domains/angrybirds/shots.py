@@ -154,13 +154,7 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
     out = []
     for label, shot in domain.search.actions_at(level, target):
         shot = attrs.evolve(shot, bird=name)
-        if tapped(scenario, name):
-            variants = [
-                (f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share)))
-                for share in TAP_SHARES
-            ]
-        else:
-            variants = [(label, shot)]
+        variants = tap_variants(label, shot, domain.world) if tapped(scenario, name) else [(label, shot)]
         if before is not None and (timed(scenario, start, order) or declared_timed(scenario, name)):
             variants = [
                 (f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS
@@ -193,6 +187,11 @@ def where_left(level, trace):
             )
         )
     return attrs.evolve(level, objects=tuple(objects))
+
+
+def tap_variants(label: str, shot: Shot, world) -> list[tuple[str, Shot]]:
+    """`shot` tapped at each of TAP_SHARES of the way to its target, labelled so."""
+    return [(f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, world, share))) for share in TAP_SHARES]
 
 
 def tap_time(shot: Shot, world, share: float) -> float:

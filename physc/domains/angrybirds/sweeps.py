@@ -16,7 +16,7 @@ from __future__ import annotations
 import attrs
 
 from physc.domains.angrybirds.launch import Shot, Shots, shots_of
-from physc.domains.angrybirds.shots import TAP_SHARES, birds, tap_time, tapped, where_left
+from physc.domains.angrybirds.shots import birds, tap_variants, tapped, where_left
 
 SWEEP_RANGE = (-90.0, 90.0)  # release angles Phy-Q's agents can send (module docstring), the upper one excluded
 SWEEP_STEP = 0.5  # degrees between two shots of a sweep (issue 73)
@@ -54,10 +54,7 @@ def sweep(domain, level, scenario, before=None, after=None, at: str | None = Non
         for label, shot in domain.search.actions_at(aimed, at):
             shot = attrs.evolve(shot, bird=name)
             if tapped(scenario, name):
-                shots += [
-                    (f"{label}, tap {share:.0%}", attrs.evolve(shot, tap=tap_time(shot, domain.world, share)))
-                    for share in TAP_SHARES
-                ]
+                shots += tap_variants(label, shot, domain.world)
             shots.append((label, shot))
     shots += [(f"{angle:g}°", Shot(angle=angle, bird=name)) for angle in sweep_angles()]
     if before is None:
