@@ -45,11 +45,20 @@ class Actions(Part):
         default has none: noisy replays are exact replays."""
         return level, action
 
-    def nudged(self, action, step: int) -> object | None:
+    def nudged(self, action, step: int, line: int | None = None) -> object | None:
         """`action` moved `step` whole steps along a line (one of the coordinates the search moves
-        to raise a weak chain's margins, physc.search.coordinates); None: no such line, or no
-        such action there (the default: no line)."""
+        to raise a weak chain's margins, physc.search.coordinates); `line`: which of its `lines`
+        (None: the one the search moves when it moves one, the last action's). None: no such
+        line, or no such action there (the default: no line). A domain with one line may leave
+        `line` out of its override: the search passes it only where `lines` names several."""
         return None
+
+    def lines(self, action) -> tuple[str, ...]:
+        """The lines `nudged` moves `action` along, named (the search raises a chain of several
+        actions along each of them, so that a later action's weak link may be raised by moving an
+        earlier one: Science Birds, each shot's release angle, tap and wait). The default: one,
+        "the action", where `nudged` has a line."""
+        return ("the action",) if self.nudged(action, 1) is not None else ()
 
     def contrasted(self, level, action, counterpart: str, contrast: str) -> object | None:
         """`action` aimed at `contrast` as it is aimed at `counterpart` (language version 2's
@@ -72,7 +81,8 @@ class Actions(Part):
 
     def retimed(self, action, actor: str, wait: float | None) -> object | None:
         """`action` with `actor`'s part taken `wait` seconds after the part before it (None: once
-        the level rests); None: the domain cannot retime it (the default)."""
+        the level rests), or at the time the world takes it instead where it cannot take it
+        then (`timing` of the result says which); None: the domain cannot retime it (the default)."""
         return None
 
     def valid(self, level, action) -> bool:

@@ -32,6 +32,10 @@ class SearchHooks(Part):
     places none, and its restrictions are only judged."""
     blocker_length: float = 1.0
     blocker_thickness: float = 0.1
+    blocker_angles: tuple[float, ...] = ()
+    """The angles (degrees) the domain's own levels lay such bars at, which the guards try first,
+    the one nearest across the flight first (Science Birds: level and upright, as Phy-Q's
+    templates lay most platforms); then across the flight. The default: across only."""
 
     def actions_at(self, level, name: str) -> Sequence[tuple[str, object]]:
         """(label, action) aimed at the object `name`: what the guards try against forbidden

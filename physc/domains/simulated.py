@@ -31,6 +31,8 @@ from __future__ import annotations
 
 from typing import Any
 
+import attrs
+
 from physc.domains.actions import Actions
 from physc.domains.base import Domain, MissingCapability
 from physc.domains.part import part
@@ -71,10 +73,15 @@ class SimulatedDomain(Domain):
 
         return MarginReader
 
-    def margins(self, scenario, trace: Trace, through: int | None = None):
+    def margins(self, scenario, trace: Trace, through: int | None = None, ahead: bool = False):
         """How far each declared link and restriction of `scenario` was from failing in `trace`
-        (with `through`: of the first `through` links, and the restrictions until the last of them)."""
-        return self.margin_reader(self.recogniser).read(scenario, trace, through)
+        (with `through`: of the first `through` links, and the restrictions until the last of them;
+        with `ahead` too, what the link after them needs of the play, MarginReader.ahead: a
+        stage that ends where the player acts again)."""
+        reader = self.margin_reader(self.recogniser)
+        margins = reader.read(scenario, trace, through)
+        needed = reader.ahead(scenario, trace, through) if ahead and through is not None else None
+        return margins if needed is None else attrs.evolve(margins, links=margins.links + (needed,))
 
     seconds: float = 10.0
     """A play's simulated time at most."""

@@ -46,11 +46,21 @@ class Node:
     strength: float = float("inf")
 
 
+def stage_margins(problem: Problem, trace, end: int) -> Margins:
+    """The margins of a stage's play, through its `end`; where the player acts again there,
+    with what that action's first link needs of the play (SimulatedDomain.margins' `ahead`:
+    what it acts on still there, with life to spare): the first shot's outcome is chosen for
+    what the later shot needs, not found wanting only once that shot is tried."""
+    if end in problem.action_starts:
+        return problem.domain.margins(problem.scenario, trace, end, ahead=True)
+    return problem.domain.margins(problem.scenario, trace, end)
+
+
 def score(margins: Margins, end: int, matched: int) -> float:
     """One play's margin over the first `end` declared links (and the restrictions), of which it
     realised the first `matched`: the weakest link's share, at most 2, when every one held; below
     0 when one failed or a restriction broke, the lower the earlier."""
-    links = [m for m in margins.links if m.index is None or m.index < end]
+    links = [m for m in margins.links if m.index is None or m.index <= end]  # (at `end`: what it needs ahead)
     failed = [m for m in links if not m.held]
     if matched >= end and not failed:
         return min([2.0] + [m.share for m in links])
@@ -120,8 +130,7 @@ def raise_stage(
     play lost or kept least of (and of the link after it) and the action moved by CMA-ES to
     raise the stage's strength; the first strong candidate, else the strongest that realises
     the stage, as a node; None when none realises it."""
-    margins = problem.domain.margins(problem.scenario, attempt.trace, stage.end)
-    weakest = margins.weakest
+    weakest = stage_margins(problem, attempt.trace, stage.end).weakest
     interactions = problem.interactions
     k = (
         min(attempt.fidelity.matched, len(interactions) - 1)
@@ -140,12 +149,7 @@ def raise_stage(
                 candidate,
                 action,
                 notes,
-                score(
-                    problem.domain.margins(problem.scenario, played.trace, stage.end),
-                    stage.end,
-                    played.fidelity.matched,
-                )
-                - 1.0,
+                score(stage_margins(problem, played.trace, stage.end), stage.end, played.fidelity.matched) - 1.0,
                 False,
                 False,
             )
@@ -177,7 +181,7 @@ def stage_strength(
     in the stage's scene of `layout`, as played and in `stage_replays` noisy replays."""
     domain = problem.domain
     end = stage.end
-    strength = score(domain.margins(problem.scenario, attempt.trace, end), end, attempt.fidelity.matched)
+    strength = score(stage_margins(problem, attempt.trace, end), end, attempt.fidelity.matched)
     replays = problem.settings.stage_replays if domain.robustness_replays else 0
     if not replays or strength < 0:
         return strength
@@ -187,9 +191,7 @@ def stage_strength(
         noise = random.Random(f"stage/{stage.index}/{attempt.label}/{r}")
         noisy_level, action = domain.actions.noisy(level, attempt.action, noise)
         played = replayed(problem, ledger, noisy_level, action)
-        strength = min(
-            strength, score(domain.margins(problem.scenario, played.trace, end), end, played.fidelity.matched)
-        )
+        strength = min(strength, score(stage_margins(problem, played.trace, end), end, played.fidelity.matched))
         if strength < 0:
             break
     return strength
@@ -244,8 +246,7 @@ def realised(
                 a.label for a in sorted(failed, key=lambda a: a.fidelity.score, reverse=True)[: problem.settings.screen]
             ]
     margin = {
-        id(a): min(score(domain.margins(problem.scenario, a.trace, stage.end), stage.end, a.fidelity.matched), 1.0)
-        for a in good
+        id(a): min(score(stage_margins(problem, a.trace, stage.end), stage.end, a.fidelity.matched), 1.0) for a in good
     }
     good.sort(key=lambda a: (a.fidelity.score[:3], margin[id(a)], promise(problem, a, stage.end)), reverse=True)
     return tuple(good[: problem.settings.beam]) or None

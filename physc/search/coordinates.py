@@ -49,6 +49,7 @@ class Coordinate:
     stretch: str = ""  # a length's surface
     bodies: tuple[PlacedObject, ...] = ()  # a body's options, lightest first, and the current one's place among them
     current: int = 0
+    line: int | None = None  # the action's line (Actions.lines) where it has several
 
     def body(self, value: float) -> PlacedObject:
         """The body `value` (in [−1, 1]) picks: the current one at 0, heavier ones above."""
@@ -57,7 +58,7 @@ class Coordinate:
 
     def text(self, value: float) -> str:
         if self.kind == "action":
-            return f"the action {int(round(value)):+d} steps"
+            return f"{'the action' if self.line is None else self.name} {int(round(value)):+d} steps"
         if self.kind == "body":
             chosen = self.body(value / self.reach)
             return f"{self.name} a {chosen.material + ' ' if chosen.material else ''}{chosen.concrete}"
@@ -141,8 +142,13 @@ class Coordinates:
         }
         groups = structures(layout)
         axes = []
-        if problem.domain.actions.nudged(action, 1) is not None:
-            axes.append(Coordinate("action", "", frozenset(), float(settings.raise_steps)))
+        lines = problem.domain.actions.lines(action)
+        for line, text in enumerate(lines):  # one a line (several: each of them, an earlier shot's too)
+            axes.append(
+                Coordinate(
+                    "action", text, frozenset(), float(settings.raise_steps), line=line if len(lines) > 1 else None
+                )
+            )
         for name in sorted(n for n in names if n in objects and n not in fixed and n not in supports.fixed):
             support = supports.support_of.get(name)
             if support in objects and objects[support].concrete not in placing.GROUND:
@@ -229,14 +235,14 @@ class Coordinates:
         stretch: dict[str, tuple[float, float]] = {}
         turn: dict[str, float] = {}
         bodies: dict[str, PlacedObject] = {}
-        steps = 0
+        steps: dict[int | None, int] = {}
         notes = []
         for axis, value in zip(self.axes, point, strict=True):  # one value per axis
             amount = float(value) * axis.reach
             if axis.kind == "action":
-                steps = int(round(amount))
-                if steps:
-                    notes.append(axis.text(steps))
+                if int(round(amount)):
+                    steps[axis.line] = int(round(amount))
+                    notes.append(axis.text(amount))
                 continue
             if axis.kind == "body":
                 chosen = axis.body(amount)
@@ -296,7 +302,14 @@ class Coordinates:
         layout = attrs.evolve(self.layout, objects=tuple(objects)) if moved else self.layout
         if moved and not placing.consistent(layout, problem.parameters, moved, moved):
             return None
-        action = self.action if not steps else problem.domain.actions.nudged(self.action, steps)
+        action = self.action
+        for line, step in steps.items():
+            action = action if action is None else nudge(problem.domain.actions, action, step, line)
         if action is None or not problem.domain.actions.valid(problem.level_of(layout), action):
             return None
         return layout, action, ", ".join(notes)
+
+
+def nudge(actions, action: object, step: int, line: int | None) -> object | None:
+    """`action` moved `step` steps along its `line` (a domain with one line is not told which)."""
+    return actions.nudged(action, step) if line is None else actions.nudged(action, step, line)

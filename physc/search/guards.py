@@ -3,10 +3,14 @@
 `cannotHit(p, b, d)` of the player's object `p` asks for `pathObstructed`: once the search
 has a robust solution, every action the domain aims at `b` (`search.actions_at`) that hits `b`
 from a forbidden side is blocked by an obstacle (the domain's `search.blocker`, a static bar)
-across the flight before the hit, a little further back each time, kept only when the
-solution still realises the sequence. Then the shortcut guard does the same for actions
+in the flight before the hit, a little further back each time, kept only when the solution
+still realises the sequence. The bar lies at an angle the domain's own levels lay one at
+(`search.blocker_angles`: Science Birds' walls and roofs) where that crosses the flight, else
+square across it. Then the shortcut guard does the same for actions
 at other objects that solve the task without the sequence, at most `shortcuts` of them.
-An obstacle is a placed object of the layout like any other, role "obstacle".
+An obstacle is a placed object of the layout like any other, role "obstacle". A cannotHit of
+what a later action of the player hits (a second shot at the pig the first must not hit) is
+judged in the solution's play, not guarded: a bar would stop that action too.
 """
 
 from __future__ import annotations
@@ -43,6 +47,8 @@ def obstruct(
     for restriction in problem.scenario.restrictions:
         if restriction.name != "cannotHit" or restriction.objects[0] not in problem.players:
             continue
+        if struck_later(problem, restriction):
+            continue
         for _ in range(problem.settings.obstacles):
             culprit = offending(problem, ledger, layout, restriction)
             if culprit is None:
@@ -65,6 +71,18 @@ def obstruct(
         if offending(problem, ledger, layout, restriction) is not None:
             return None
     return layout, added
+
+
+def struck_later(problem: Problem, restriction: TermIR) -> bool:
+    """Whether another of the player's objects hits what `restriction` (a cannotHit) shields in
+    the sequence (a later shot at it, as when a first one clears its way): a bar against the
+    restricted object's direct hits would bar that one's too, so the restriction is judged in
+    the solution's play and not guarded (the `blocks` property says what stands in the way)."""
+    actor, shielded = restriction.objects[0], restriction.objects[1]
+    return any(
+        t.name == "hit" and t.objects[1:2] == (shielded,) and t.objects[0] in problem.players - {actor}
+        for t in problem.interactions
+    )
 
 
 def offending(problem: Problem, ledger: Ledger, layout: ConcreteLayout, restriction: TermIR) -> Attempt | None:
@@ -103,27 +121,40 @@ def block(
         if at is None:
             continue
         x, y, vx, vy = at
-        angle = (math.degrees(math.atan2(vy, vx)) + 180.0) % 180.0 - 90.0  # across the flight
-        obstacle = PlacedObject(
-            name,
-            "obstacle",
-            blocker,
-            None,
-            round(x, 5),
-            round(y, 5),
-            round(angle, 3),
-            problem.domain.search.blocker_length,
-            problem.domain.search.blocker_thickness,
-        )
-        candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
-        if not placing.consistent(candidate, problem.parameters, {name}):
-            continue
-        if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
-            continue
-        if bad(simulate(problem, ledger, candidate, offending.action)):
-            continue
-        return candidate, f"{name} across the flight of {offending.label}, {back:g} back"
+        for angle in angles(math.degrees(math.atan2(vy, vx)), problem.domain.search.blocker_angles):
+            obstacle = PlacedObject(
+                name,
+                "obstacle",
+                blocker,
+                None,
+                round(x, 5),
+                round(y, 5),
+                round(angle, 3),
+                problem.domain.search.blocker_length,
+                problem.domain.search.blocker_thickness,
+            )
+            candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
+            if not placing.consistent(candidate, problem.parameters, {name}):
+                continue
+            if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
+                continue
+            if bad(simulate(problem, ledger, candidate, offending.action)):
+                continue
+            return candidate, f"{name} at {angle:g}° in the flight of {offending.label}, {back:g} back"
     return None
+
+
+ACROSS = 0.5  # the least share of a bar's length that lies across the flight, |sin| of the angle between them
+
+
+def angles(heading: float, preferred: Sequence[float]) -> list[float]:
+    """The angles a bar across a flight heading `heading` degrees is tried at: the domain's own
+    (`preferred`) that lie across it by ACROSS at least, the nearest to square first, then square
+    across it, in (−90°, 90°]."""
+    across = (heading + 180.0) % 180.0 - 90.0
+    crossing = [a for a in preferred if abs(math.sin(math.radians(a - heading))) >= ACROSS]
+    crossing.sort(key=lambda a: -abs(math.sin(math.radians(a - heading))))
+    return [*crossing, *([] if any(abs(math.sin(math.radians(a - across))) < 1e-6 for a in crossing) else [across])]
 
 
 def back_along(path: np.ndarray, distance: float, scale: float) -> tuple[float, float, float, float] | None:

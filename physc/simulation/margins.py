@@ -162,6 +162,28 @@ class MarginReader(LinkMargins):
             what=f"the life {name} has left under the worst reading (scale: half its life)",
         )
 
+    def ahead(self, scenario: Declared, trace: Trace, through: int) -> Margin | None:
+        """What the link after the first `through` needs of a play that ends before it: the
+        stage of a chain that ends where the player acts again (Science Birds: the next bird is
+        shot once the level rests). What that link acts on must still be there when the play
+        ends: the life it has left under the worst reading of the blows it took (scale: half its
+        life); negative, or a failure, where it was destroyed. None: nothing to measure (no
+        such link, no target, no blow)."""
+        terms = tuple(scenario.interactions)
+        if through >= len(terms) or len(terms[through].objects) < 2:
+            return None
+        declared = terms[through]
+        target = declared.objects[1]
+        if target not in trace.names:
+            return None
+        death = next((d for d in trace.destructions if d.name == target), None)
+        lasting = self.survival(trace, target, trace.duration, declared.text, through)
+        if death is None:
+            return lasting
+        if lasting is not None and lasting.value <= 0:
+            return attrs.evolve(lasting, held=False, what=f"the life {target} had left before {declared.text}")
+        return Margin.failed(declared.text, through, what=f"{target} gone before {declared.text} ({death.cause})")
+
     def destroyed_first(self, trace: Trace, declared, since: float, k: int) -> Margin | None:
         """A link that could not happen because what it acts on was destroyed first, by something
         other than its actor (Science Birds: the big pig that the first bird's blow knocked off

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import math
 
+import attrs
 import numpy as np
 import pytest
 
@@ -78,12 +79,31 @@ def test_a_timed_shot_comes_its_wait_after_the_bird_before_struck():
     """ABGameWorld.KillBird at the bird's first collision brings the next onto the slingshot;
     a timed shot (`wait`) is taken that long after, while things still move."""
     level = Level(objects=(PIG, FAR_PIG), birds=("BirdRed", "BirdRed"))
-    first, second = Shot(target=(PIG.x, PIG.y)), Shot(target=(FAR_PIG.x, FAR_PIG.y), trajectory="high", bird="bird2", wait=0.5)
+    first, second = (
+        Shot(target=(PIG.x, PIG.y)),
+        Shot(target=(FAR_PIG.x, FAR_PIG.y), trajectory="high", bird="bird2", wait=1.5),
+    )
     trace = played(level, Shots((first, second)))
     struck = min(c.time for c in trace.contacts if "bird" in (c.a, c.b))
-    column = trace.names.index("bird2")
-    launched = (int(next(i for i in range(trace.steps) if not math.isnan(trace.states[i, column, 0]))) + 1) * trace.dt
-    assert launched == pytest.approx(struck + 0.5 + trace.dt, abs=1.5 * trace.dt)
+    assert launched(trace, "bird2") == pytest.approx(struck + 1.5 + trace.dt, abs=1.5 * trace.dt)
+
+
+def test_a_timed_shot_leaves_no_sooner_than_the_game_can_release_it():
+    """HUD.cs drags the bird `_simulateDragTime` (1 s) before it releases a shot, and takes none
+    before the bird is on the slingshot (0.2 s): a wait below 1.2 s is played at 1.2 s, as in the game."""
+    level = Level(objects=(PIG, FAR_PIG), birds=("BirdRed", "BirdRed"))
+    first = Shot(target=(PIG.x, PIG.y))
+    second = Shot(target=(FAR_PIG.x, FAR_PIG.y), trajectory="high", bird="bird2", wait=0.3)
+    soon = played(level, Shots((first, second)))
+    earliest = played(level, Shots((first, attrs.evolve(second, wait=PHYQ.rules.earliest_wait))))
+    assert PHYQ.rules.earliest_wait == pytest.approx(1.2)
+    assert launched(soon, "bird2") == launched(earliest, "bird2")
+
+
+def launched(trace, name: str) -> float:
+    """When `name` entered the run (its first step with a state, the step after its launch)."""
+    column = trace.names.index(name)
+    return (int(next(i for i in range(trace.steps) if not math.isnan(trace.states[i, column, 0]))) + 1) * trace.dt
 
 
 def launched_speed(trace, name, after):

@@ -6,11 +6,12 @@ import csv
 import io
 import json
 
+import pytest
 from conftest import run_physc
 
 from physc.domains.angrybirds import DOMAIN
 from physc.domains.angrybirds.phyq_levels import benchmark_files
-from physc.domains.angrybirds.shots import WAITS, birds, candidates, shot_starts, timed
+from physc.domains.angrybirds.shots import WAIT_SPAN, WAITS, birds, candidates, shot_starts, timed, waits
 from physc.domains.words import INSTALLED
 from physc.dsl.frontend import analyze_text
 from physc.search.chain_stages import stages
@@ -75,7 +76,9 @@ def test_a_later_birds_candidates_extend_the_shots_before_and_a_timed_one_waits(
     assert later and all(isinstance(a, Shots) and a.shots[0] == first and a.shots[1].bird == "bird2" for _, a in later)
     assert all(label.startswith("bird2: pig2.") for label, _ in later)
     waited = candidates(DOMAIN, level, scenario(TIMED), 2, first)
-    assert {a.shots[1].wait for _, a in waited} == set(WAITS)
+    earliest = DOMAIN.world.rules.earliest_wait
+    spread = {round(earliest + WAIT_SPAN * k / (WAITS - 1), 2) for k in range(WAITS)}
+    assert {a.shots[1].wait for _, a in waited} == spread  # no play to go by: from the game's earliest on
     tapped = candidates(DOMAIN, level, scenario(SPLIT))
     assert tapped and all(a.tap is not None and a.tap > 0 for _, a in tapped)
 
@@ -168,3 +171,41 @@ def test_a_later_bird_is_aimed_where_the_shots_before_left_its_target():
     later = DOMAIN.actions.candidates(level, scenario(TWO), 2, first, trace)
     centre = next(a.shots[1].target for label, a in later if label.endswith("pig2.c, low"))
     assert centre == (round(left.x, 5), round(left.y, 5))
+
+
+def test_a_timed_shots_waits_span_the_time_the_play_before_still_moves():
+    """From the game's earliest release (1.2 s: HUD.cs drags 1 s once the bird is on the
+    slingshot) to the latest whose bird gets to its target before the play comes to rest."""
+    from types import SimpleNamespace
+
+    from physc.domains.angrybirds.launch import Shot
+
+    world = DOMAIN.world
+    assert world.rules.earliest_wait == pytest.approx(1.2)
+    shot = Shot(target=(0.0, -3.0), bird="bird2")
+    (x, _), (vx, _) = shot.start(world)
+    flight = (0.0 - x) / vx
+    struck = SimpleNamespace(time=1.0, a="bird", b="pig")
+    long = waits(world, shot, "bird", SimpleNamespace(contacts=(struck,), duration=9.0))
+    assert len(long) == WAITS and long[0] == pytest.approx(1.2)
+    assert long[-1] == pytest.approx(9.0 - 1.0 - flight, abs=0.01)  # arrives as the play comes to rest
+    short = waits(world, shot, "bird", SimpleNamespace(contacts=(struck,), duration=2.5))
+    assert short == (1.2,)  # rests too soon for any later wait: the earliest alone
+
+
+def test_a_cannot_hit_of_what_a_later_bird_hits_is_judged_not_guarded():
+    """A first bird that must not hit the pig a second bird then destroys (clearing a path): a bar
+    against the first bird's direct shots would bar the second's, so no obstacle is asked for."""
+    from types import SimpleNamespace
+
+    from physc.search import guards
+
+    clear = scenario("""scenario Clear {
+    objects { bird2: bird  fBlock: fallableBlock }
+    interactions { hit(bird, fBlock, left) > fall(fBlock, ground) > hit(bird2, pig, left) > destroy(bird2, pig) }
+    restrictions { cannotHit(bird, pig, any), cannotHit(bird, fBlock, above) }
+}
+""")
+    problem = SimpleNamespace(players=frozenset({"bird", "bird2"}), interactions=clear.interactions)
+    pig, block = clear.restrictions
+    assert guards.struck_later(problem, pig) and not guards.struck_later(problem, block)

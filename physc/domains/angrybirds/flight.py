@@ -125,13 +125,13 @@ class Flights:
 
     def killed(self, name: str, time: float) -> None:
         """ABGameWorld.KillBird: the next bird comes onto the slingshot; a timed shot (`wait`) is
-        due that long after."""
+        due that long after, and never before the game can release it (`Rules.earliest_wait`)."""
         if name not in self.names or self.names.index(name) != self.next - 1 or self.ready_at is not None:
             return
         self.ready_at = time
         wait = self.shots[self.next].wait if self.waiting() else None
         if wait is not None:
-            self.due_at = time + wait
+            self.due_at = time + max(wait, self.rules.earliest_wait)
 
     # ---- contacts and checks ---------------------------------------------------------------
     def on_contact(self, a: str, b: str, time: float) -> None:

@@ -66,6 +66,19 @@ class Rules:
     bird_still_every: float = _cited(1.0, "ABBird.OnCollisionEnter2D: InvokeRepeating every 1 s")
     bird_still_speed: float = _cited(0.001, "ABBird.CheckVelocityToDie")
     bird_lifetime: float = _cited(20.0, "BirdRed.prefab `lifeTime`")
+    # A shot the agent sends is released `drag_seconds` after the game gets it (HUD.cs drags the
+    # bird that long first), and the game takes none before the bird is on the slingshot, where
+    # it jumps once the bird before struck something (ABGameWorld.KillBird; ABBird
+    # SetBirdOnSlingshot at BirdRed.prefab's `_dragSpeed` 15 units/s over the 1 to 2 units from
+    # where it waits): a timed shot leaves no sooner than `earliest_wait` after its turn began.
+    drag_seconds: float = _cited(1.0, "HUD.cs `_simulateDragTime`")
+    onto_slingshot_seconds: float = _cited(0.2, "ABBird.SetBirdOnSlingshot, BirdRed.prefab `_dragSpeed`")
+
+    @property
+    def earliest_wait(self) -> float:
+        """The least `Shot.wait` the game can play (above)."""
+        return self.onto_slingshot_seconds + self.drag_seconds
+
     # ABGameObject.Die: a dying object stops (velocity zeroed), disables GetComponent<Collider2D>()
     # (the first collider, which Unity returns enabled or not) and is destroyed after its
     # ABParticleSystem's `_systemLifetime` (prefabs.lifetime); until then what colliders it has

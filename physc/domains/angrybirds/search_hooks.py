@@ -17,6 +17,9 @@ from physc.domains.angrybirds.distract import distractors
 from physc.domains.search_hooks import SearchHooks
 
 OBSTACLE_LENGTH = 1.4  # an obstacle platform's length
+# Phy-Q's templates lay 294 of their 385 platforms level or upright (0° or 90°, 76 %; the rest at
+# 27 other angles): walls, roofs and cradles, as an obstacle is laid first.
+OBSTACLE_ANGLES = (0.0, 90.0)
 SEARCH_SECONDS = 9.0  # a play's simulated time at most while searching (the evaluation's: 10 s)
 
 
@@ -27,6 +30,7 @@ class ScienceBirdsSearch(SearchHooks):
     blocker = "flatPlatform"
     blocker_length = OBSTACLE_LENGTH
     blocker_thickness = PLATFORM_THICKNESS
+    blocker_angles = OBSTACLE_ANGLES
 
     def actions_at(self, level, name: str) -> list:
         obj = next((o for o in level.objects if o.name == name), None)

@@ -13,6 +13,7 @@ from physc.domains.angrybirds.vocabulary import VOCABULARY
 NUDGE_STEP = (
     0.05  # degrees of release angle a step along the `nudged` line (the raising of margins moves the action so)
 )
+TIME_STEP = 0.005  # seconds of a tap or a wait a step along theirs (Phy-Q's agents send a tap in whole ms)
 
 
 class ScienceBirdsActions(Actions):
@@ -37,7 +38,8 @@ class ScienceBirdsActions(Actions):
         the scenario taps it: shots.py)."""
         from physc.domains.angrybirds.shots import candidates, where_left
 
-        return candidates(self.domain, level if after is None else where_left(level, after), scenario, start, before)
+        left = level if after is None else where_left(level, after)
+        return candidates(self.domain, left, scenario, start, before, after)
 
     def noisy(self, level, action, rng: random.Random):
         """The noise of every noisy replay (the search's, `physc verify`'s, the evaluation's):
@@ -48,11 +50,18 @@ class ScienceBirdsActions(Actions):
         noisy = jitter(level, rng)
         return noisy, shots.noisy(action, self.domain.world, rng, ANGLE_SIGMA)
 
-    def nudged(self, action, step: int):
-        """The last shot turned by `step` × NUDGE_STEP degrees."""
+    def nudged(self, action, step: int, line: int | None = None):
+        """One of `lines` moved `step` steps: a shot turned by NUDGE_STEP degrees a step, a tap
+        or a wait moved by TIME_STEP seconds (None: the last shot turned)."""
         from physc.domains.angrybirds import shots
 
-        return shots.nudged(action, self.domain.world, step, NUDGE_STEP)
+        return shots.nudged(action, self.domain.world, step, NUDGE_STEP, line, TIME_STEP)
+
+    def lines(self, action) -> tuple[str, ...]:
+        """Each shot's release angle, and its tap and its wait where it has them (shots.py)."""
+        from physc.domains.angrybirds import shots
+
+        return tuple(text for text, _, _ in shots.lines(action))
 
     def solution(self, label: str, action):
         """Version 1's Solution for one untapped red shot, else a ShotsSolution (shots.py)."""
@@ -81,7 +90,7 @@ class ScienceBirdsActions(Actions):
     def retimed(self, action, actor: str, wait: float | None):
         from physc.domains.angrybirds import sweeps
 
-        return sweeps.retimed(action, actor, wait)
+        return sweeps.retimed(action, actor, wait, self.domain.world.rules.earliest_wait)
 
     def played_as(self, level, solution):
         """The solution with the shots Phy-Q's agents send for it: for each, the whole-pixel drag

@@ -8,8 +8,8 @@ object it hits; a bird the scenario taps (`tap(bird)`) is tapped at a few points
 flight towards that object (`TAP_SHARES` of the way, in whole milliseconds, as Phy-Q's agents
 send a tap time). A later shot is taken once the level rests, as Phy-Q's agents wait; where
 the sequence has an object the shots before set going act after this shot starts (Phy-Q's
-adequate timing), the shot is timed instead, tried `WAITS` after the game brought the bird
-onto the slingshot.
+adequate timing), the shot is timed instead, tried at waits after the game brought the bird
+onto the slingshot that span the time the play before still moves (`waits`).
 
 A task whose solution is one untapped shot of the red bird keeps version 1's record
 (`Solution`); any other is a `ShotsSolution`, one `BirdShot` per bird.
@@ -24,7 +24,10 @@ import attrs
 from physc.domains.angrybirds.launch import Shot, Shots, shots_of
 
 TAP_SHARES = (0.45, 0.6, 0.75, 0.9)  # of the way to the target, where a candidate taps
-WAITS = (0.5, 1.0, 2.0, 3.0)  # seconds after the bird before comes off the slingshot, when a timed shot is tried
+WAITS = 4  # the waits a timed shot is tried at, spread over the time the play before still moves
+WAIT_SPAN = (
+    3.0  # seconds they spread over after the earliest where no play says (as the waits before the game's earliest did)
+)
 
 
 @attrs.frozen
@@ -140,9 +143,10 @@ def tapped(scenario, name: str) -> bool:
     return any(t.name == "tap" and t.objects[0] == name for t in scenario.interactions)
 
 
-def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tuple[str, object]]:
+def candidates(domain, level, scenario, start: int = 0, before=None, after=None) -> list[tuple[str, object]]:
     """The labelled actions that shoot the bird whose shot starts at interaction `start` (after
-    `before`, the shots so far: then labelled by the bird, the search joins the labels)."""
+    `before`, the shots so far: then labelled by the bird, the search joins the labels; `after`:
+    their play, which a timed shot's waits are drawn from)."""
     order = birds(scenario, domain.vocabulary.player)
     k = len(shots_of(before))
     if k >= len(order):
@@ -157,7 +161,9 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
         variants = tap_variants(label, shot, domain.world) if tapped(scenario, name) else [(label, shot)]
         if before is not None and (timed(scenario, start, order) or declared_timed(scenario, name)):
             variants = [
-                (f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait)) for text, v in variants for wait in WAITS
+                (f"{text}, after {wait:g} s", attrs.evolve(v, wait=wait))
+                for text, v in variants
+                for wait in waits(domain.world, v, shots_of(before)[-1].bird, after)
             ]
         for text, variant in variants:
             if before is None:
@@ -165,6 +171,25 @@ def candidates(domain, level, scenario, start: int = 0, before=None) -> list[tup
             else:
                 out.append((f"{name}: {text}", Shots((*shots_of(before), variant))))
     return out
+
+
+def waits(world, shot: Shot, before: str, after) -> tuple[float, ...]:
+    """The waits a timed `shot` is tried at: WAITS of them, spread over the time the play of
+    the shots before (`after`) still moves once `before`, the bird before, first struck
+    something (its turn began then), from the earliest the game releases a shot
+    (`Rules.earliest_wait`) to the latest whose bird reaches its target's x before that play
+    comes to rest; only the earliest where the play rests sooner. Without the play (or a strike
+    in it), over WAIT_SPAN from the earliest."""
+    earliest = world.rules.earliest_wait
+    turn = None if after is None else next((c.time for c in after.contacts if before in (c.a, c.b)), None)
+    span = WAIT_SPAN
+    if turn is not None:
+        (x, _), (vx, _) = shot.start(world)
+        flight = (shot.target[0] - x) / vx if shot.target is not None and vx > 0 else 0.0
+        span = after.duration - turn - flight - earliest
+    if span <= 0:
+        return (round(earliest, 2),)
+    return tuple(round(earliest + span * k / (WAITS - 1), 2) for k in range(WAITS))
 
 
 def where_left(level, trace):
@@ -221,13 +246,39 @@ def noisy(action, world, rng, sigma: float):
     )
 
 
-def nudged(action, world, step: int, degrees: float):
-    """The last shot (the one the search chooses now) turned by `step` × `degrees`."""
-    shots = shots_of(action)
-    last = shots[-1].at_angle(shots[-1].release_angle(world) + step * degrees, world)
-    if last is None:
+def lines(action) -> list[tuple[str, int, str]]:
+    """The lines an action is moved along, as (name, shot, what): each shot's release angle,
+    its tap where it is tapped, its wait where it is timed, in the order shot."""
+    out = []
+    for k, shot in enumerate(shots_of(action)):
+        out.append((f"{shot.bird}'s angle", k, "angle"))
+        if shot.tap is not None:
+            out.append((f"{shot.bird}'s tap", k, "tap"))
+        if shot.wait is not None:
+            out.append((f"{shot.bird}'s wait", k, "wait"))
+    return out
+
+
+def nudged(action, world, step: int, degrees: float, line: int | None = None, seconds: float = 0.005):
+    """The action with one of its `lines` moved `step` steps: a release angle by `degrees` a
+    step, a tap or a wait by `seconds` (a tap stays after the launch, a wait not before the
+    bird is on the slingshot); `line` None: the last shot (the one the search chooses now)
+    turned. None where the moved shot has no such flight."""
+    shots = list(shots_of(action))
+    k, what = (len(shots) - 1, "angle") if line is None else lines(action)[line][1:]
+    shot = shots[k]
+    if what == "angle":
+        moved = shot.at_angle(shot.release_angle(world) + step * degrees, world)
+    elif what == "tap":
+        tap = round((shot.tap or 0.0) + step * seconds, 3)
+        moved = attrs.evolve(shot, tap=tap) if tap > 0 else None
+    else:
+        wait = round((shot.wait or 0.0) + step * seconds, 3)
+        moved = attrs.evolve(shot, wait=wait) if wait >= 0 else None
+    if moved is None:
         return None
-    return as_action((*shots[:-1], last))
+    shots[k] = moved
+    return as_action(shots)
 
 
 def solution(label: str, action, world):

@@ -67,12 +67,13 @@ def timing(action, actor: str) -> float | None:
     return next((s.wait for s in shots_of(action) if s.bird == actor), None)
 
 
-def retimed(action, actor: str, wait: float | None):
+def retimed(action, actor: str, wait: float | None, earliest: float = 0.0):
     """`action` with `actor`'s shot taken `wait` seconds after the bird before it (None: once
-    the level rests); None when `action` has no later shot of `actor`'s."""
+    the level rests), or at `earliest` where the game can release it no sooner (the game plays
+    it then); None when `action` has no later shot of `actor`'s."""
     shots = list(shots_of(action))
     index = next((k for k, s in enumerate(shots) if s.bird == actor), None)
     if index is None or index == 0:
         return None
-    shots[index] = attrs.evolve(shots[index], wait=wait)
+    shots[index] = attrs.evolve(shots[index], wait=None if wait is None else max(wait, earliest))
     return Shots(tuple(shots))

@@ -72,7 +72,7 @@ class PhyreActions(Actions):
     def noisy(self, level: PhyreLevel, action, rng: random.Random):
         return level, actions.noisy(action, rng)
 
-    def nudged(self, action, step: int):
+    def nudged(self, action, step: int, line: int | None = None):
         """The balls `step` whole pixels sideways."""
         return actions.moved(action, lambda ball: (step, 0))
 
