@@ -183,7 +183,7 @@ def waits(world, shot: Shot, before: str, after) -> tuple[float, ...]:
     earliest = world.rules.earliest_wait
     turn = None if after is None else next((c.time for c in after.contacts if before in (c.a, c.b)), None)
     span = WAIT_SPAN
-    if turn is not None:
+    if after is not None and turn is not None:
         (x, _), (vx, _) = shot.start(world)
         flight = (shot.target[0] - x) / vx if shot.target is not None and vx > 0 else 0.0
         span = after.duration - turn - flight - earliest
