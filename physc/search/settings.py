@@ -104,8 +104,8 @@ class SearchSettings:
     raise_turn: float = 5.0
     """Degrees the strengthening may turn an inclined surface either way."""
     raise_steps: int = 60
-    """Steps along the domain's `actions.nudged` line the strengthening may move the action either way
-    (angrybirds: 1° of release angle)."""
+    """Steps along each of the domain's `actions.lines` the strengthening may move the action
+    either way (angrybirds: 3° of a shot's release angle, 0.3 s of its tap or wait)."""
     obstacles: int = 6
     """Obstacles tried per forbidden hit."""
     shortcuts: int = 3
