@@ -144,6 +144,47 @@ def block(
     return None
 
 
+ROOF_GAPS = (1.0, 3.0, 6.0)  # the layout's clearances between a shielded object's top and a roof, tried in turn
+
+
+def roof(
+    problem: Problem,
+    ledger: Ledger,
+    layout: ConcreteLayout,
+    name: str,
+    solution: Attempt,
+    offending: Attempt,
+    bad: Callable[[Attempt], bool],
+    count: int,
+) -> tuple[ConcreteLayout, str] | None:
+    """(`layout` with a bar laid level over `name`, a roof, the shelter Phy-Q's levels build over
+    a pig that only one way reaches, after which the solution still works and `bad` no longer
+    holds of `offending`; its description), or None. A roof bars every shot that comes down on
+    `name`, where a bar in one flight bars that one."""
+    blocker = problem.domain.search.blocker
+    placed = next((o for o in layout.objects if o.name == name), None)
+    if blocker is None or placed is None:
+        return None
+    left, _, right, top = placing.box(placed)
+    thickness = problem.domain.search.blocker_thickness
+    length = max(problem.domain.search.blocker_length, right - left)
+    label = f"obstacle{count + 1}"
+    for gap in ROOF_GAPS:
+        y = top + gap * problem.parameters.clearance + thickness / 2
+        bar = PlacedObject(
+            label, "obstacle", blocker, None, round((left + right) / 2, 5), round(y, 5), 0.0, length, thickness
+        )
+        candidate = attrs.evolve(layout, objects=layout.objects + (bar,))
+        if not placing.consistent(candidate, problem.parameters, {label}):
+            continue
+        if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
+            continue
+        if bad(simulate(problem, ledger, candidate, offending.action)):
+            continue
+        return candidate, f"{label} a roof over {name}, {gap:g} clearances above it"
+    return None
+
+
 ACROSS = 0.5  # the least share of a bar's length that lies across the flight, |sin| of the angle between them
 
 

@@ -9,9 +9,10 @@ of the world that can change a play (physc.worlds.under_readings):
 
 * `nonGreedy(a, b)`: once b is taken first (by the first actions of the sweep that take b and
   not a, at most GREEDY_FIRSTS of them), no next action takes a.
-* `blocks(a, b)`: in the level as laid out, no first action takes b. An action that does is
-  barred by an obstacle across its flight (physc.search.guards, the cannotHit guard's), kept
-  only where the solution still holds up; at most the settings' `obstacles` of them.
+* `blocks(a, b)`: in the level as laid out, no first action takes b. The first action that does
+  is barred by a roof over b where one bars it (physc.search.guards.roof: the shelter Phy-Q's
+  levels build), each other by an obstacle in its flight (the cannotHit guard's), each kept only
+  where the solution still holds up; at most the settings' `obstacles` of them.
 * `timed(a)`: a's part of the solution (its `wait`) solves the task only within TIMING_WINDOW
   seconds of its own time: taken once the level rests, or at any wait on a TIMING_STEP grid up
   to TIMING_HORIZON more than TIMING_WINDOW away from it that the world can take it at (the
@@ -101,6 +102,7 @@ def blocks(
     """`blocks(a, b)`: (why given up or None, the note, the layout, the obstacles added)."""
     actions, a, b = problem.domain.actions, term.objects[0], term.objects[1]
     added: list[str] = []
+    roofed = False
     for _ in range(problem.settings.obstacles + 1):
         level = problem.level_of(layout)
         swept = actions.sweep(level, problem.scenario, at=b)
@@ -114,17 +116,15 @@ def blocks(
         offending = attrs.evolve(simulate(problem, ledger, layout, action), label=label)
         actor = next((c.a if c.a in problem.players else c.b for c in offending.trace.contacts), None)
         actor = actor if actor in problem.players else next(iter(sorted(problem.players)), "")
-        blocked = guards.block(
-            problem,
-            ledger,
-            layout,
-            offending,
-            actor,
-            solution,
-            guards.BACKS,
-            lambda attempt: b in attempt.trace.destroyed,
-            len(so_far) + len(added),
-        )
+        taken = lambda attempt: b in attempt.trace.destroyed  # noqa: E731 (the one test both obstacles use)
+        count = len(so_far) + len(added)
+        blocked = None
+        if not roofed:  # first a shelter, then a bar in each flight
+            roofed = True
+            blocked = guards.roof(problem, ledger, layout, b, solution, offending, taken, count)
+            blocked = blocked if blocked is not None and holds_up(problem, ledger, solution, blocked[0]) else None
+        if blocked is None:
+            blocked = guards.block(problem, ledger, layout, offending, actor, solution, guards.BACKS, taken, count)
         if blocked is None or not holds_up(problem, ledger, solution, blocked[0]):
             return settings.PROPERTY_BROKEN, f"{label} takes {b} while {a} still bars the way", layout, added
         layout = blocked[0]

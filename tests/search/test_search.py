@@ -155,6 +155,33 @@ def test_phyq_templates_lay_most_platforms_level_or_upright():
     assert (len(turns), laid) == (385, 294)
 
 
+def test_a_pig_a_shot_comes_down_on_gets_a_roof(monkeypatch):
+    """`blocks`' shelter (guards.roof): a level bar over the pig bars a high shot that took it."""
+    found = None
+    for seed in range(10):  # the first layout whose pig a high shot destroys
+        s = search("R", seed=seed)
+        level = s.problem.level_of(s.placed)
+        for label, action in s.domain.search.actions_at(level, "pig"):
+            if "high" not in label:
+                continue
+            attempt = attrs.evolve(guards.simulate(s.problem, s.ledger, s.placed, action), label=label)
+            if "pig" in attempt.trace.destroyed:
+                found = (s, attempt)
+                break
+        if found:
+            break
+    assert found is not None, "a high shot destroys the pig"
+    s, offending = found
+    monkeypatch.setattr(guards, "simulate", _valid_for(s, s.domain.search.actions_at(level, "rBlock")[0][1]))
+    solution = attrs.evolve(offending, action=s.domain.search.actions_at(level, "rBlock")[0][1])
+    roofed = guards.roof(s.problem, s.ledger, s.placed, "pig", solution, offending, lambda a: "pig" in a.trace.destroyed, 0)
+    assert roofed is not None
+    layout, note = roofed
+    bar, pig = layout.objects[-1], next(o for o in layout.objects if o.name == "pig")
+    assert bar.role == "obstacle" and bar.rotation == 0.0 and "a roof over pig" in note
+    assert bar.y - bar.height / 2 > pig.y + pig.height / 2 and abs(bar.x - pig.x) < 1e-4  # above it, centred
+
+
 def _valid_for(s, action):
     """The search's `simulate`, with the play of `action` counted as realising the sequence
     (the test's stand-in for a solution)."""
