@@ -89,6 +89,7 @@ class Tally:
     # elsewhere on failure.
     furthest: list[tuple] = attrs.field(factory=list)
     given_up: dict[str, dict[str, int]] = attrs.field(factory=dict)  # why → {"layouts": n, "simulations": n}
+    broken: str = ""  # the first declared property that gave a layout up, and what broke it
 
     def note(self, result: Outcome) -> None:
         """What one layout's search showed of how far the sequence gets and how robustly."""
@@ -113,6 +114,7 @@ class Tally:
         why = self.given_up.setdefault(result.given_up or "not said", {"layouts": 0, "simulations": 0})
         why["layouts"] += 1
         why["simulations"] += result.simulations
+        self.broken = self.broken or result.broken
         if result.nearest >= min_robustness:
             self.fragile.append((-result.nearest, self.layouts, placed))
 
@@ -289,6 +291,8 @@ class LayoutLoop:
                 message += f" (never `{interactions[best].text}` after them" + (f": {stopped})" if stopped else ")")
         if tally.given_up:
             message += f"; given up: {given_up_summary(tally.given_up)}"
+        if tally.broken:
+            message += f"; the first layout given up for a declared property: {tally.broken}"
         if lost and best >= len(interactions):  # every link was made, but not robustly: say which one noise breaks
             term, (count, why) = max(lost.items(), key=lambda item: item[1][0])
             total = sum(n for n, _ in lost.values())

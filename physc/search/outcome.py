@@ -54,3 +54,6 @@ class Outcome:
     # The play that came furthest: (its fidelity score, its level, its action, the layout as
     # placed), replayed in the domain's other worlds when no task is found (physc.search.elsewhere).
     furthest: tuple | None = None
+    # Where a declared property (physc.search.properties) gave the layout up: which, and what broke
+    # it (the action and what it took), for exit 3 to say.
+    broken: str = ""

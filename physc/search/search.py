@@ -32,6 +32,8 @@ from __future__ import annotations
 import random
 import time
 
+import attrs
+
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.domains.base import require
 from physc.domains.simulated import SimulatedDomain, search_needs
@@ -99,7 +101,7 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
         return given_up(problem, ledger, why)
     checked = properties(problem, ledger, layout, attempt)
     if checked.why is not None:
-        return given_up(problem, ledger, checked.why)
+        return attrs.evolve(given_up(problem, ledger, checked.why), broken="; ".join(checked.notes))
     layout, contrasted = checked.layout, contrasted + checked.notes
     if checked.obstacles and not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
         return given_up(problem, ledger, settings.UNSTABLE)

@@ -52,6 +52,19 @@ def test_exit_3_names_the_strongest_weakest_link_in_words_that_match_its_sign():
     assert "best margin" not in failed
 
 
+def test_exit_3_names_the_property_that_gave_a_layout_up_and_what_broke_it():
+    from physc.search.outcome import Outcome
+
+    scenario = PAPER["F"]
+    loop = LayoutLoop(DOMAIN, scenario, None, RunSettings(time_budget=10.0, layouts=1, validate=False))  # type: ignore[arg-type]
+    tally = Tally(best=len(scenario.interactions))
+    note = "nonGreedy(pig, pig2): once pig2 is taken first (bird: pig2.c, low), bird2: pig.c, low takes pig"
+    tally.give_up(Outcome(False, 10, given_up="a property broke", broken=note), None, 6)  # type: ignore[arg-type]
+    tally.give_up(Outcome(False, 10, given_up="a property broke", broken="timed(bird2): …"), None, 6)  # type: ignore[arg-type]
+    message = loop.explained(Infeasible("satisfy", "no task", budget=Exhausted.TIME), tally).message
+    assert f"the first layout given up for a declared property: {note}" in message and "timed" not in message
+
+
 def test_the_world_named_elsewhere_has_its_weakest_link_worded_so_too():
     other = Elsewhere("rolling", 4, 4, Margin.angle("hit(bird2, pig, left)", 2, value=33.6, what="from another side"))
     text = elsewhere_text(other)
