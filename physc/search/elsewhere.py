@@ -41,18 +41,6 @@ class Elsewhere:
     weakest: Margin | None  # the weakest link of the replay there
     built: bool = False  # whether the chain was built there by the search's stages (else: a play replayed)
 
-    def text(self) -> str:
-        link = f"; weakest link {self.weakest.text()}" if self.weakest is not None else ""
-        how = (
-            "built again there by the search's stages from one of the best layouts"
-            if self.built
-            else "the best layout, replayed"
-        )
-        return (
-            f"in the world '{self.world}', {how}, realises {self.matched} of the {self.total} interactions{link}: "
-            f"--world {self.world} may carry this scenario (physc worlds describes it)"
-        )
-
 
 def reserve(domain: SimulatedDomain, time_budget: float) -> float:
     """Seconds of the budget kept for replays elsewhere: none for a domain of one world."""

@@ -153,17 +153,5 @@ class AngryBirds(SimulatedDomain):
         game = self.game(level)
         return game.scene(action, **ENDINGS[ending]), game
 
-    # ---- files, pictures, evaluation ------------------------------------------------------
-
-    @staticmethod
-    def shot(point: tuple[float, float, str] | None = None, angle: float | None = None):
-        """The shot at a target point (x, y, trajectory) or at a release angle; None for neither."""
-        from physc.domains.angrybirds.launch import Shot
-
-        if point is None:
-            return None if angle is None else Shot(angle=angle)
-        x, y, trajectory = point
-        return Shot(target=(x, y), trajectory=trajectory)
-
 
 DOMAIN = AngryBirds()

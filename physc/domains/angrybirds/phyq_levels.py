@@ -350,7 +350,7 @@ def readme(count: int, worlds: list[str]) -> str:
         "`shots.csv` holds each level's intended solution as physc's release angle and as the action Phy-Q's\n"
         "agents send, `env.step([dx, dy, tap_time])`: whole pixels from the slingshot's reference point on\n"
         "the game's 840 × 480 window, zoomed out fully (what `env.reset()` leaves), and the angle the game\n"
-        "launches it at (`agent_angle`, within 0.1° of the release angle; `physc verify` replays both).\n"
+        "launches it at (`agent_angle`, within 0.15° of the release angle; `physc verify` replays both).\n"
         "`replay_shots.py` sends them, aiming again from the game's own reference point if it differs\n"
         "from `reference_x`, `reference_y` (another window size).\n"
     )

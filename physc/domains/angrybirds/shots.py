@@ -239,9 +239,10 @@ def simple(action) -> bool:
 
 
 def noisy(action, world, rng, sigma: float):
-    """Each shot's release angle jittered (in the order shot)."""
+    """Each shot's release angle jittered (in the order shot), the rest of it as it was (its
+    stretch, tap, bird and wait)."""
     return as_action(
-        Shot(angle=s.release_angle(world) + rng.gauss(0.0, sigma), tap=s.tap, bird=s.bird, wait=s.wait)
+        attrs.evolve(s, angle=s.release_angle(world) + rng.gauss(0.0, sigma))
         for s in shots_of(action)
     )
 
