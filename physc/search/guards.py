@@ -133,15 +133,31 @@ def block(
                 problem.domain.search.blocker_length,
                 problem.domain.search.blocker_thickness,
             )
-            candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
-            if not placing.consistent(candidate, problem.parameters, {name}):
-                continue
-            if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
-                continue
-            if bad(simulate(problem, ledger, candidate, offending.action)):
-                continue
-            return candidate, f"{name} at {angle:g}° in the flight of {offending.label}, {back:g} back"
+            candidate = barred(problem, ledger, layout, obstacle, solution, offending, bad)
+            if candidate is not None:
+                return candidate, f"{name} at {angle:g}° in the flight of {offending.label}, {back:g} back"
     return None
+
+
+def barred(
+    problem: Problem,
+    ledger: Ledger,
+    layout: ConcreteLayout,
+    obstacle: PlacedObject,
+    solution: Attempt,
+    offending: Attempt,
+    bad: Callable[[Attempt], bool],
+) -> ConcreteLayout | None:
+    """`layout` with `obstacle`, where it fits the layout's QSRs, the solution still realises the
+    sequence and `bad` no longer holds of the offending action's play; else None."""
+    candidate = attrs.evolve(layout, objects=layout.objects + (obstacle,))
+    if not placing.consistent(candidate, problem.parameters, {obstacle.name}):
+        return None
+    if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
+        return None
+    if bad(simulate(problem, ledger, candidate, offending.action)):
+        return None
+    return candidate
 
 
 ROOF_GAPS = (1.0, 3.0, 6.0)  # the layout's clearances between a shielded object's top and a roof, tried in turn
@@ -174,14 +190,9 @@ def roof(
         bar = PlacedObject(
             label, "obstacle", blocker, None, round((left + right) / 2, 5), round(y, 5), 0.0, length, thickness
         )
-        candidate = attrs.evolve(layout, objects=layout.objects + (bar,))
-        if not placing.consistent(candidate, problem.parameters, {label}):
-            continue
-        if not simulate(problem, ledger, candidate, solution.action).fidelity.valid:
-            continue
-        if bad(simulate(problem, ledger, candidate, offending.action)):
-            continue
-        return candidate, f"{label} a roof over {name}, {gap:g} clearances above it"
+        candidate = barred(problem, ledger, layout, bar, solution, offending, bad)
+        if candidate is not None:
+            return candidate, f"{label} a roof over {name}, {gap:g} clearances above it"
     return None
 
 

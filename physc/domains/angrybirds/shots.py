@@ -241,10 +241,7 @@ def simple(action) -> bool:
 def noisy(action, world, rng, sigma: float):
     """Each shot's release angle jittered (in the order shot), the rest of it as it was (its
     stretch, tap, bird and wait)."""
-    return as_action(
-        attrs.evolve(s, angle=s.release_angle(world) + rng.gauss(0.0, sigma))
-        for s in shots_of(action)
-    )
+    return as_action(attrs.evolve(s, angle=s.release_angle(world) + rng.gauss(0.0, sigma)) for s in shots_of(action))
 
 
 def lines(action) -> list[tuple[str, int, str]]:
