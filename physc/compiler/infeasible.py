@@ -35,6 +35,7 @@ class Infeasible(Exception):
         conflicts: tuple[LayoutEdge, ...] = (),
         tried: int = 0,
         budget: Exhausted | None = None,
+        funnel: dict | None = None,
     ):
         super().__init__(message)
         self.stage = stage
@@ -42,6 +43,7 @@ class Infeasible(Exception):
         self.conflicts = conflicts
         self.tried = tried
         self.budget = budget
+        self.funnel = funnel  # where the placed layouts went down the chain (physc.search.funnel), if any were
 
 
 def readable(count: int) -> str:

@@ -43,6 +43,9 @@ class Task:
     # the noisy replays the solution passed, every link as the solution plays, what raising
     # them moved and the candidates it simulated. None in task files written before margins.
     margins: dict | None = None
+    # Where the compile's placed layouts went down the chain, and the simulations each stage
+    # cost (physc.search.funnel). None in task files written before it.
+    funnel: dict | None = None
 
 
 def given_up_summary(given_up: dict) -> str:

@@ -28,6 +28,7 @@ from physc.domains.simulated import SimulatedDomain
 from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
 from physc.search import elsewhere, search
+from physc.search.funnel import Funnel, funnel_text
 from physc.search.outcome import Outcome
 from physc.search.verify import noisy_replays, verify
 from physc.simulation.margins import Margin
@@ -68,6 +69,7 @@ class Generated:
     simulations: int
     given_up: dict[str, dict[str, int]]  # why → {"layouts": n, "simulations": n}
     seconds: dict[str, float]  # "layout" (placement), "satisfy", and the stages after satisfaction
+    funnel: dict | None = None  # where the placed layouts went down the chain (physc.search.funnel)
 
 
 @attrs.define
@@ -90,10 +92,13 @@ class Tally:
     furthest: list[tuple] = attrs.field(factory=list)
     given_up: dict[str, dict[str, int]] = attrs.field(factory=dict)  # why → {"layouts": n, "simulations": n}
     broken: str = ""  # the first declared property that gave a layout up, and what broke it
+    funnel: Funnel = attrs.field(factory=Funnel)  # where the placed layouts went down the chain (physc.search.funnel)
 
     def note(self, result: Outcome) -> None:
         """What one layout's search showed of how far the sequence gets and how robustly."""
         self.simulations += result.simulations
+        if result.passage is not None:
+            self.funnel.add(result.passage, result.simulations, result.satisfied, result.given_up)
         if result.best > self.best or (result.best == self.best and not self.stopped):
             self.best, self.stopped = result.best, result.stopped
         for term, count, why in result.lost:
@@ -197,7 +202,8 @@ class LayoutLoop:
             tally.seconds["satisfy"] -= spent
             tally.seconds[stage] = spent
         tally.seconds["total"] = time.perf_counter() - started
-        return Generated(result, used, tally.layouts, tally.simulations, tally.given_up, tally.seconds)
+        funnel = tally.funnel.record(self.scenario.interactions)
+        return Generated(result, used, tally.layouts, tally.simulations, tally.given_up, tally.seconds, funnel)
 
     def _search(self, placements: Iterator[Placement], tally: Tally, started: float) -> Found | Infeasible:
         """The placed layouts satisfied in turn until one gives a task, or why none did within
@@ -312,9 +318,12 @@ class LayoutLoop:
                 f"; the most robust solution found passed {nearest} of {self.domain.robustness_replays} "
                 f"noisy replays ({hint})"
             )
+        funnel = tally.funnel.record(interactions) if tally.funnel.placed else None
+        if funnel is not None:
+            message += f"; where the simulations went: {funnel_text(funnel)}"
         if other is not None:
             message += f"; {elsewhere_text(other)}"
-        return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget)
+        return Infeasible(failure.stage, message, tried=failure.tried, budget=failure.budget, funnel=funnel)
 
 
 def elsewhere_text(other: elsewhere.Elsewhere) -> str:

@@ -214,4 +214,5 @@ class Pipeline:
             simulations=generated.simulations,
             given_up=generated.given_up,
             seconds={k: round(v, 4) for k, v in generated.seconds.items()},
+            funnel=generated.funnel,
         )

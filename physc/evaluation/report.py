@@ -79,6 +79,36 @@ def _effort_lines(summary: dict, counts: list, names: dict) -> list[str]:
     return lines
 
 
+def _funnel_lines(summary: dict, counts: list, names: dict) -> list[str]:
+    """Where the placed layouts went (every task, made or not; physc.search.funnel), per
+    interaction count and per scenario."""
+    rows = summary["interactions"]
+    if not any(rows[c].get("funnel") for c in counts):
+        return []
+    lines = ["", "## Where the placed layouts went (every task, made or not)", ""]
+    lines.append("| | " + " | ".join(names.get(c, str(c)) for c in counts) + " |")
+    lines.append("|---|" + "---|" * len(counts))
+    funnels = [rows[c].get("funnel") for c in counts]
+    lines.append("| Placed layouts | " + " | ".join("–" if f is None else f"{f['placed']:,}" for f in funnels) + " |")
+    lines.append("| Never realised the chain | " + " | ".join(_share(f, "never") for f in funnels) + " |")
+    for why in sorted({w for f in funnels if f for w in f["lost"]}):
+        cells = ["–" if f is None else f"{100 * f['lost'].get(why, 0.0):.1f} %" for f in funnels]
+        lines.append(f"| Realised the chain, lost to {why} | " + " | ".join(cells) + " |")
+    lines.append("| Gave the task | " + " | ".join(_share(f, "kept") for f in funnels) + " |")
+    lines += ["", "| scenario | placed layouts | never realised the chain | lost to noise | gave the task |"]
+    lines.append("|---|---|---|---|---|")
+    for name, row in summary["scenarios"].items():
+        f = row.get("funnel")
+        if f is not None:
+            noise = f"{100 * f['lost'].get('noise', 0.0):.1f} %"
+            lines.append(f"| {name} | {f['placed']:,} | {_share(f, 'never')} | {noise} | {_share(f, 'kept')} |")
+    return lines
+
+
+def _share(funnel: dict | None, key: str) -> str:
+    return "–" if funnel is None else f"{100 * funnel[key]:.1f} %"
+
+
 def _scenario_effort(summary: dict) -> list[str]:
     """Per scenario: what a task cost (median seconds and simulations), the weakest margin of
     its tasks (the least share over the noisy replays each solution passed, and its link), and
@@ -141,6 +171,7 @@ def markdown(summary: dict, command: str, seconds: float) -> str:
             + " |"
         )
     lines += _effort_lines(summary, counts, names)
+    lines += _funnel_lines(summary, counts, names)
     lines += ["", "## Per scenario", ""]
     header = ["scenario", "interactions", "generated"] + [title for _, title, _ in metrics(summary)]
     lines.append("| " + " | ".join(header) + " |")

@@ -55,6 +55,8 @@ def evaluate(job: Job) -> dict:
         DomainError,
     ) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         record.update(generated=False, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
+        if isinstance(error, Infeasible) and error.funnel is not None:  # where the layouts went (search.funnel)
+            record.update(funnel=error.funnel)
         return record
     record.update(
         generated=True,
@@ -65,6 +67,8 @@ def evaluate(job: Job) -> dict:
         given_up=task.given_up,
         structure=task.structure,
     )
+    if task.funnel is not None:
+        record.update(funnel=task.funnel)
     weakest = (task.margins or {}).get("weakest")
     if weakest is not None:  # the weakest link over the noisy replays the solution passed (physc.simulation.margins)
         record.update(

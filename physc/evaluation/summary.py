@@ -79,6 +79,7 @@ def summarise(records: list[dict]) -> dict:
             out[metric] = mean_sd([r[metric] for r in made if r.get(metric) is not None and measured(r, metric)])
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
+        out["funnel"] = funnelled(rows)
         seconds = sorted(r["generation_seconds"] for r in made if r.get("generation_seconds") is not None)
         sims = sorted(r["simulations"] for r in made if r.get("simulations") is not None)
         out["median_seconds"] = float(np.median(seconds)) if seconds else None
@@ -145,6 +146,29 @@ def effort(made: list[dict]) -> dict:
         "layouts_tried": mean_sd([r["layouts_tried"] for r in rows]),
         "simulations": mean_sd([r["simulations"] for r in rows]),
         "given_up": dict(sorted(shares.items(), key=lambda item: -item[1])),
+    }
+
+
+def funnelled(rows: list[dict]) -> dict | None:
+    """Where the placed layouts of `rows` went (their records' `funnel`, tasks made or not,
+    physc.search.funnel): how many were placed, and the share that never realised the chain,
+    realised it and were lost (to noise, a reading, a later check), and gave the task."""
+    funnels = [r["funnel"] for r in rows if r.get("funnel")]
+    placed = sum(f["placed"] for f in funnels)
+    if not placed:
+        return None
+    chain = sum(f["chain_realised"] for f in funnels)
+    lost: dict[str, int] = {}
+    for f in funnels:
+        for why, n in f["lost"].items():
+            lost[why] = lost.get(why, 0) + n
+    return {
+        "placed": placed,
+        "never": (placed - chain) / placed,
+        "lost": {why: n / placed for why, n in sorted(lost.items())},
+        "kept": sum(f["kept"] for f in funnels) / placed,
+        "stage_simulations": sum(s["simulations"] for f in funnels for s in f["stages"]),
+        "after_simulations": sum(f["simulations_after_chain"] for f in funnels),
     }
 
 

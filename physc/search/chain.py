@@ -75,6 +75,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     if i == len(problem.plan):
         return parent
     stage = problem.plan[i]
+    ledger.turn((stage.start, stage.end))
     settings = problem.settings
     offered = 0
     weak: list[tuple[float, int, Node]] = []
@@ -87,18 +88,19 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
         attempts = realised(problem, ledger, layout, parent, stage, lead)
         if not attempts:
             continue
+        ledger.passage.realised.add((stage.start, stage.end))
         steps = parent.steps + ((description,) if description else ())
         strength = stage_strength(problem, ledger, layout, stage, attempts[0])
         node = Node(layout, attempts, stage.index, steps, min(parent.strength, strength))
         if strength >= 0:
-            found = chain(problem, ledger, node, i + 1)
+            found = deeper(problem, ledger, node, i)
             if found is not None:
                 return found
             continue
         weak.append((strength, len(weak), node))
         if len(weak) == settings.weak_kept:  # no strong one among the first few: go on with the strongest of them
             weak.sort(key=lambda item: (-item[0], item[1]))
-            found = chain(problem, ledger, weak.pop(0)[2], i + 1)
+            found = deeper(problem, ledger, weak.pop(0)[2], i)
             if found is not None:
                 return found
     weak.sort(key=lambda item: (-item[0], item[1]))
@@ -113,14 +115,24 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
             raise_stage(problem, ledger, parent, stage, base, lost) if base is not None and lost is not None else None
         )
         if node is not None:
-            found = chain(problem, ledger, node, i + 1)
+            ledger.passage.realised.add((stage.start, stage.end))
+            found = deeper(problem, ledger, node, i)
             if found is not None:
                 return found
     for _, _, node in weak:
-        found = chain(problem, ledger, node, i + 1)
+        found = deeper(problem, ledger, node, i)
         if found is not None:
             return found
     return None
+
+
+def deeper(problem: Problem, ledger: Ledger, node: Node, i: int) -> Node | None:
+    """The stages after `problem.plan[i]` from `node`; back at stage i when they fail."""
+    found = chain(problem, ledger, node, i + 1)
+    if found is None:
+        stage = problem.plan[i]
+        ledger.turn((stage.start, stage.end))
+    return found
 
 
 def raise_stage(

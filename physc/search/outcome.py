@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import attrs
 
+from physc.search.funnel import Passage
 from physc.simulation.margin import Margin
 
 
@@ -57,3 +58,6 @@ class Outcome:
     # Where a declared property (physc.search.properties) gave the layout up: which, and what broke
     # it (the action and what it took), for exit 3 to say.
     broken: str = ""
+    # The layout's way down the chain: the stages reached and realised, the simulations each cost
+    # (physc.search.funnel); None where no search ran.
+    passage: Passage | None = None

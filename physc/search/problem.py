@@ -26,6 +26,7 @@ from physc.search import placing
 from physc.search.attempt import Attempt
 from physc.search.chain_stages import ChainStage, introduced, stages
 from physc.search.evaluator import Evaluator
+from physc.search.funnel import Passage
 from physc.search.settings import SETTINGS, SearchSettings
 from physc.simulation.ending import Ending
 from physc.simulation.fidelity import fidelity
@@ -193,10 +194,15 @@ class Ledger:
     weakest: Margin | None = None  # the strongest weakest link of a chain realised but not robust (exit 3 names it)
     raised: int = 0  # candidates the raising of margins judged (raising.py)
     stages_raised: int = 0  # stages whose margins were raised (physc.search.chain)
+    passage: Passage = attrs.field(factory=Passage)  # the layout's way down the chain (physc.search.funnel)
 
     @property
     def simulations(self) -> int:
         return self.evaluator.simulations
+
+    def turn(self, stage: tuple[int, int] | None) -> None:
+        """The search turns to `stage` of the chain (funnel.AFTER: past it; None: done)."""
+        self.passage.enter(stage, self.simulations)
 
 
 def simulate(

@@ -41,6 +41,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.search import guards, settings
 from physc.search.chain import Node, chain
 from physc.search.contrasts import contrasts
+from physc.search.funnel import AFTER
 from physc.search.outcome import Outcome, Parts
 from physc.search.precision import precise
 from physc.search.problem import ALL_CHECKS, Checks, Ledger, Problem, replayed
@@ -75,8 +76,10 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     if not domain.actions.candidates(problem.level_of(problem.placed), problem.scenario):
         return given_up(problem, ledger, settings.NO_ACTION)
     found = chain(problem, ledger, Node(problem.placed, (), -1), 0)
+    ledger.turn(AFTER)
     if found is None:
         return given_up(problem, ledger, settings.NOT_REALISED)
+    ledger.passage.chain = True
     strong = strengthen(problem, ledger, found)
     if strong is None:
         return given_up(problem, ledger, settings.FRAGILE if ledger.tried else settings.NOT_REALISED)
@@ -143,7 +146,16 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     seconds = {"distract": validating - distracting, "validate": accepting - validating} | (
         {} if judged is None else {"accept": time.perf_counter() - accepting}
     )
-    return Outcome(True, ledger.simulations, parts, seconds=seconds, best=ledger.best, stopped=stopped(problem, ledger))
+    ledger.turn(None)
+    return Outcome(
+        True,
+        ledger.simulations,
+        parts,
+        seconds=seconds,
+        best=ledger.best,
+        stopped=stopped(problem, ledger),
+        passage=ledger.passage,
+    )
 
 
 def margins_record(problem: Problem, ledger: Ledger, trace: Trace, strong: Strong, steps: tuple[str, ...]) -> dict:
@@ -169,6 +181,7 @@ def stopped(problem: Problem, ledger: Ledger) -> str:
 
 def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
     furthest, layout = ledger.furthest, ledger.furthest_layout  # (noted together)
+    ledger.turn(None)
     return Outcome(
         False,
         ledger.simulations,
@@ -181,6 +194,7 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
         furthest=None
         if furthest is None or layout is None
         else (furthest.fidelity.score, problem.level_of(layout), furthest.action, problem.placed),
+        passage=ledger.passage,
     )
 
 

@@ -118,3 +118,14 @@ def test_exit_3_tries_another_world_only_for_a_scenario_with_a_link_it_concerns(
             messages[name] = error.message
     assert tried == [["phyq"], ["phyq", "rolling"]]
     assert "--world rolling" not in messages["F"] and "--world rolling may carry this scenario" in messages["R"]
+
+
+def test_exit_3_says_where_the_simulations_went():
+    from physc.search.funnel import Passage
+
+    scenario = PAPER["F"]
+    loop = LayoutLoop(DOMAIN, scenario, None, RunSettings(time_budget=10.0, layouts=1, validate=False))  # type: ignore[arg-type]
+    tally = Tally(best=1)
+    tally.funnel.add(Passage(reached={(0, 1)}, spent={(0, 1): 12}), 12, False, "the sequence was not realised")
+    message = loop.explained(Infeasible("satisfy", "no task", budget=Exhausted.TIME), tally).message
+    assert "; where the simulations went: of 1 placed layout, stage 1 (`hit(bird, fBlock, left | above)`) realised in 0 of 1" in message

@@ -143,3 +143,25 @@ def test_the_report_says_where_the_simulations_went():
     text = report.markdown(summary, "physc eval", 1.0)
     assert "| Simulations per task | 10 ± 0 | 200 ± 100 |" in text
     assert "| Simulations on layouts given up: the sequence was not realised | 0.0 % | 15.0 % |" in text
+
+
+def test_the_report_says_where_the_placed_layouts_went_made_or_not():
+    """The records' funnels (physc.search.funnel), tasks made or not: the share of placed layouts
+    that never realised the chain, were lost after it, and gave the task."""
+    from physc.evaluation import report
+
+    def funnel(placed, chain, kept, lost):
+        stage = {"interactions": "hit(bird, pig, left)", "reached": placed, "realised": chain, "simulations": 100}
+        return {"placed": placed, "stages": [stage], "chain_realised": chain, "kept": kept, "lost": lost, "simulations_after_chain": 50}
+
+    records = [
+        {"scenario": "A", "interactions": 4, "generated": True, "robustness": [6, 6], "funnel": funnel(4, 2, 1, {"noise": 1})},
+        {"scenario": "B", "interactions": 4, "generated": False, "reason": "no task", "funnel": funnel(6, 1, 0, {"a later check": 1})},
+    ]
+    summary = report.summarise(records)
+    four = summary["interactions"][4]["funnel"]
+    assert four["placed"] == 10 and four["never"] == 0.7 and four["kept"] == 0.1
+    assert four["lost"] == {"a later check": 0.1, "noise": 0.1}
+    text = report.markdown(summary, "physc eval", 1.0)
+    assert "| Never realised the chain | 70.0 % |" in text and "| Realised the chain, lost to noise | 10.0 % |" in text
+    assert "| B | 6 | 83.3 % | 0.0 % | 0.0 % |" in text
