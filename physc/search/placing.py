@@ -15,6 +15,7 @@ domain's level, so it serves every domain: lengths of a trace times the domain's
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Set
 
@@ -44,10 +45,10 @@ def box(placed: PlacedObject) -> tuple[float, float, float, float]:
 def consistent(
     layout: ConcreteLayout, parameters: LayoutParameters, moved: Set[str], resting: Set[str] = frozenset()
 ) -> bool:
-    """The objects in `moved` inside the placement area, no two objects overlapping
-    (joined platforms aside), and every QSR of the chosen conjunction about a moved object
-    holding (any of its clause's; for an object of `resting`, resting on any part of its
-    support will do)."""
+    """The objects in `moved` inside the placement area, no two objects overlapping (joined
+    platforms aside, and the player's objects, which start in turn from one place), and every
+    QSR of the chosen conjunction about a moved object holding (any of its clause's; for an
+    object of `resting`, resting on any part of its support will do)."""
     placed = {o.name: o for o in layout.objects}
     outlines = {}
     for name, o in placed.items():
@@ -64,7 +65,9 @@ def consistent(
             continue
         points = five_points(o.x, o.y, o.width, o.height, o.rotation)
         outlines[name] = [(points[k].real, points[k].imag) for k in ("ll", "lr", "ur", "ul")]
-    if overlapping_pair(outlines, 1e-4, joined(layout.conjunction)) is not None:
+    players = [o.name for o in layout.objects if o.role == "player"]  # shot in turn from one place
+    allowed = joined(layout.conjunction) | {frozenset(pair) for pair in itertools.combinations(players, 2)}
+    if overlapping_pair(outlines, 1e-4, allowed) is not None:
         return False
     for r in layout.conjunction:  # (not placement's separations: only overlaps matter there)
         if r.a in placed and r.b in placed and (r.a in moved or r.b in moved):

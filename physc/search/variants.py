@@ -5,6 +5,7 @@
   `step` of travel, for a hit (or any other meeting); under where the actor comes down, for a
   fall (behind its centre first if it is to move next);
 * **with the body its meeting favours** (choosing.py), at each place;
+* **behind its blocker**, for b of a `blocks(a, b)` (`behind`);
 * **as placed**;
 * **local changes** (proposals.py, then the domain's own) for the first interaction the
   stage's best failed attempt missed; a change that comes nearer but not all the way is
@@ -15,9 +16,12 @@ from __future__ import annotations
 
 import itertools
 
+import attrs
+
 from physc.search import choosing, placing, proposals
 from physc.search.attempt import Attempt
 from physc.search.chain_stages import ChainStage, prefix
+from physc.search.coordinates import structures
 from physc.search.problem import Ledger, Problem
 
 ALONG = (
@@ -45,6 +49,7 @@ def variants(problem: Problem, ledger: Ledger, parent, stage: ChainStage):
                     ),
                 )
             )
+    offered.append((0, behind(problem, parent.layout, stage)))
     offered.append((0, iter([("", parent.layout)])))
     for lead, found in offered:
         for description, layout in found:
@@ -53,6 +58,42 @@ def variants(problem: Problem, ledger: Ledger, parent, stage: ChainStage):
                     seen.add(bodied.objects)
                     yield ", ".join(x for x in (description, body_note) if x), bodied, lead
     yield from repaired(problem, ledger, parent, stage, seen)
+
+
+BEHIND_GAPS = (1.25, 2.0, 3.0)  # the gap between a blocker and what it shields, in the blocker's widths
+
+
+def behind(problem: Problem, layout, stage: ChainStage):
+    """(description, layout) for each `blocks(a, b)` whose b enters at this stage: b's structure
+    (b, what it rests on and what rests on it) moved to stand behind where a stands, as the
+    player's shots come (`rules.player_heading`): b's bottom level with a's, a gap of
+    BEHIND_GAPS of a's width between them, room for a to fall out of the way; so that a bars the
+    direct way to b until it is cleared, as Phy-Q's clearing-path levels stand."""
+    objects = {o.name: o for o in layout.objects}
+    heading = 1.0 if (problem.rules.player_heading or "right") == "right" else -1.0
+    groups = structures(layout)
+    for term in problem.scenario.restrictions:
+        if term.name != "blocks" or term.objects[1] not in stage.new:
+            continue
+        a, b = term.objects
+        if a not in objects or b not in objects or a in groups[b]:
+            continue
+        left_a, bottom_a, right_a, _ = placing.box(objects[a])
+        left_b, bottom_b, right_b, _ = placing.box(objects[b])
+        moved = groups[b] - problem.players
+        if any(objects[n].concrete in placing.GROUND or objects[n].role == "obstacle" for n in moved):
+            continue  # on the ground (or held by what never moves): nothing to move it with
+        for gap in BEHIND_GAPS:
+            width = gap * (right_a - left_a)
+            dx = (right_a + width - left_b) if heading > 0 else (left_a - width - right_b)
+            dy = bottom_a - bottom_b
+            shifted = tuple(
+                attrs.evolve(o, x=round(o.x + dx, 5), y=round(o.y + dy, 5)) if o.name in moved else o
+                for o in layout.objects
+            )
+            candidate = attrs.evolve(layout, objects=shifted)
+            if placing.consistent(candidate, problem.parameters, set(moved), set(moved)):
+                yield f"{b} behind {a}, {gap:g} of its widths beyond it", candidate
 
 
 def repaired(problem: Problem, ledger: Ledger, parent, stage: ChainStage, seen: set, depth: int = 0):
