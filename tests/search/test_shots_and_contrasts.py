@@ -209,3 +209,50 @@ def test_a_cannot_hit_of_what_a_later_bird_hits_is_judged_not_guarded():
     problem = SimpleNamespace(players=frozenset({"bird", "bird2"}), interactions=clear.interactions)
     pig, block = clear.restrictions
     assert guards.struck_later(problem, pig) and not guards.struck_later(problem, block)
+
+
+CLEARING = """scenario Clearing {
+    objects { pig: pig = pigSmall  bird2: bird  fBlock: fallableBlock(stone) = rectFat }
+    interactions { hit(bird, fBlock, left) > fall(fBlock, ground) > hit(bird2, pig, left) > destroy(bird2, pig) }
+    restrictions { blocks(fBlock, pig) }
+}
+"""
+
+
+def test_two_birds_at_the_slingshot_leave_a_layouts_objects_free_to_move():
+    """The player's objects start in turn from one place: their overlap is no conflict of the
+    layout's, which once refused every object the search moved in a scenario of two birds."""
+    from middle_end import searching
+
+    from physc.driver.pipeline import Pipeline
+    from physc.search import placing
+
+    ir = scenario(CLEARING)
+    layout = Pipeline(DOMAIN, ir, 0).placed.layout
+    players = [o for o in layout.objects if o.role == "player"]
+    assert len(players) == 2 and placing.box(players[0]) == placing.box(players[1])
+    parameters = searching(DOMAIN, ir, layout).problem.parameters
+    assert placing.consistent(layout, parameters, {"fBlock"})
+
+
+def test_what_a_block_bars_the_way_to_is_offered_behind_it():
+    """blocks(fBlock, pig): the pig's structure, level with the block, beyond it as the birds come."""
+    from middle_end import searching
+
+    from physc.driver.pipeline import Pipeline
+    from physc.search import placing
+    from physc.search.variants import behind
+
+    ir = scenario(CLEARING)
+    for seed in range(6):  # a layout whose pig has a support of its own to move with
+        layout = Pipeline(DOMAIN, ir, seed).placed.layout
+        s = searching(DOMAIN, ir, layout, seed)
+        offered = list(behind(s.problem, layout, next(st for st in s.plan if "pig" in st.new)))
+        if offered:
+            break
+    assert offered, "some seed's pig stands on a support"
+    note, moved = offered[0]
+    objects = {o.name: o for o in moved.objects}
+    _, block_bottom, block_right, _ = placing.box(objects["fBlock"])
+    pig_left, pig_bottom, _, _ = placing.box(objects["pig"])
+    assert note.startswith("pig behind fBlock") and abs(pig_bottom - block_bottom) < 1e-4 and pig_left > block_right
