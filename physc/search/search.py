@@ -89,11 +89,9 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
         return given_up(problem, ledger, settings.NOT_OBSTRUCTED)
     layout, obstacles = obstructed
     if obstacles:
-        again = min(replays(problem, ledger, attempt, layout, stream).passed for stream in settings.NOISE_STREAMS)
+        passed = min(passed, again := replayed_all(problem, ledger, attempt, layout))
         if again < problem.accept:
-            ledger.nearest = max(ledger.nearest, again)
             return given_up(problem, ledger, settings.OBSTRUCTED_FRAGILE)
-        passed = min(passed, again)
     layout, shortcuts = guards.guard(problem, ledger, layout, attempt, len(obstacles))
     if not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
         return given_up(problem, ledger, settings.UNSTABLE)
@@ -122,11 +120,7 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     if not domain.actions.valid(level, attempt.action):  # the finished level (obstacles, distractors) may block it
         return given_up(problem, ledger, settings.INVALID_ACTION)
     accepting = time.perf_counter()
-    judged = (
-        domain.evaluation.acceptance(level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger))
-        if problem.checks.acceptance
-        else None
-    )
+    judged = accepted(problem, ledger, level, attempt) if problem.checks.acceptance else None
     if judged is not None and not judged.accepted:
         return given_up(problem, ledger, judged.reason or settings.NOT_ACCEPTED)  # the benchmark's own words
     solution = domain.actions.played_as(level, domain.actions.solution(attempt.label, attempt.action))
@@ -195,6 +189,24 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
         if furthest is None or layout is None
         else (furthest.fidelity.score, problem.level_of(layout), furthest.action, problem.placed),
         passage=ledger.passage,
+    )
+
+
+def replayed_all(problem: Problem, ledger: Ledger, attempt, layout: ConcreteLayout) -> int:
+    """The noisy replays `attempt` passes in `layout` in the stream that it passes fewest of (a
+    solution whose level the guards changed is replayed again); the ledger notes it as the
+    nearest a fragile one came."""
+    passed = min(replays(problem, ledger, attempt, layout, stream).passed for stream in settings.NOISE_STREAMS)
+    if passed < problem.accept:
+        ledger.nearest = max(ledger.nearest, passed)
+    return passed
+
+
+def accepted(problem: Problem, ledger: Ledger, level: object, attempt):
+    """The domain's acceptance rule's verdict on `attempt` in the finished `level` (PHYRE's)."""
+    domain = problem.domain
+    return domain.evaluation.acceptance(
+        level, attempt.action, lambda candidate: solves(domain, level, candidate, ledger)
     )
 
 

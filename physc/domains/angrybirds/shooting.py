@@ -44,24 +44,24 @@ class ScienceBirdsActions(Actions):
     def noisy(self, level, action, rng: random.Random):
         """The noise of every noisy replay (the search's, `physc verify`'s, the evaluation's):
         blocks and pigs jittered, then the release angle (noise.py)."""
-        from physc.domains.angrybirds import shots
+        from physc.domains.angrybirds import shot_moves
         from physc.domains.angrybirds.noise import ANGLE_SIGMA, jitter
 
         noisy = jitter(level, rng)
-        return noisy, shots.noisy(action, self.domain.world, rng, ANGLE_SIGMA)
+        return noisy, shot_moves.noisy(action, self.domain.world, rng, ANGLE_SIGMA)
 
     def nudged(self, action, step: int, line: int | None = None):
         """One of `lines` moved `step` steps: a shot turned by NUDGE_STEP degrees a step, a tap
         or a wait moved by TIME_STEP seconds (None: the last shot turned)."""
-        from physc.domains.angrybirds import shots
+        from physc.domains.angrybirds import shot_moves
 
-        return shots.nudged(action, self.domain.world, step, NUDGE_STEP, line, TIME_STEP)
+        return shot_moves.nudged(action, self.domain.world, step, NUDGE_STEP, line, TIME_STEP)
 
     def lines(self, action) -> tuple[str, ...]:
-        """Each shot's release angle, and its tap and its wait where it has them (shots.py)."""
-        from physc.domains.angrybirds import shots
+        """Each shot's release angle, and its tap and its wait where it has them (shot_moves.py)."""
+        from physc.domains.angrybirds import shot_moves
 
-        return tuple(text for text, _, _ in shots.lines(action))
+        return tuple(text for text, _, _ in shot_moves.lines(action))
 
     def solution(self, label: str, action):
         """Version 1's Solution for one untapped red shot, else a ShotsSolution (shots.py)."""
