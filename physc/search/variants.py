@@ -69,12 +69,13 @@ def behind(problem: Problem, layout, stage: ChainStage):
     player's shots come (`rules.player_heading`): b's bottom level with a's, a gap of
     BEHIND_GAPS of a's width between them, room for a to fall out of the way; so that a bars the
     direct way to b until it is cleared, as Phy-Q's clearing-path levels stand."""
+    terms = [t for t in problem.scenario.restrictions if t.name == "blocks" and t.objects[1] in stage.new]
+    if not terms:
+        return
     objects = {o.name: o for o in layout.objects}
     heading = 1.0 if (problem.rules.player_heading or "right") == "right" else -1.0
     groups = structures(layout)
-    for term in problem.scenario.restrictions:
-        if term.name != "blocks" or term.objects[1] not in stage.new:
-            continue
+    for term in terms:
         a, b = term.objects
         if a not in objects or b not in objects or a in groups[b]:
             continue

@@ -203,7 +203,7 @@ def test_shots_csv_gives_each_shots_wait_and_when_physc_launched_a_timed_one():
 
     text = two_bird_level()
     hitting = {"release_angle": 12.5, "agent_action": [-195, -44, 0], "agent_angle": 12.405}  # strikes the pig
-    timed = {**UNTAPPED, "bird": "bird2", "wait": 0.5}
+    timed = {**UNTAPPED, "bird": "bird2", "wait": 1.5}
     solutions = [{"shots": [hitting, timed]}, {"shots": [hitting, {**UNTAPPED, "bird": "bird2"}]}, UNTAPPED]
     files = benchmark_files(
         [({"scenario": "S", "seed": k, "world": "phyq", "solution": s}, text) for k, s in enumerate(solutions)]
@@ -211,7 +211,7 @@ def test_shots_csv_gives_each_shots_wait_and_when_physc_launched_a_timed_one():
     rows = list(csv.DictReader(io.StringIO(files["phyq/shots.csv"].decode())))
     assert [(r["level"], r["shot"], r["wait"]) for r in rows] == [
         ("1", "1", ""),
-        ("1", "2", "0.5"),
+        ("1", "2", "1.5"),
         ("2", "1", ""),
         ("2", "2", ""),
         ("3", "1", ""),
@@ -220,14 +220,14 @@ def test_shots_csv_gives_each_shots_wait_and_when_physc_launched_a_timed_one():
     level = physc.read_level(text.encode())
     trace = physc.simulate(
         level,
-        Shots((agent_shot(level, hitting["agent_action"]), agent_shot(level, timed["agent_action"], "bird2", 0.5))),
+        Shots((agent_shot(level, hitting["agent_action"]), agent_shot(level, timed["agent_action"], "bird2", 1.5))),
     )
     struck = min(c.time for c in trace.contacts if "bird" in (c.a, c.b))
     column = trace.names.index("bird2")
     launched = next(i for i in range(trace.steps) if not math.isnan(trace.states[i, column, 0])) * trace.dt
     assert float(rows[1]["launch_gap"]) == pytest.approx(launched, abs=1e-6)  # bird was launched at step 0
-    # bird2 comes onto the slingshot when bird first strikes something (ABGameWorld.KillBird), and is shot 0.5 s after
-    assert float(rows[1]["launch_gap"]) == pytest.approx(struck + 0.5, abs=2.5 * trace.dt)
+    # bird2 comes onto the slingshot when bird first strikes something (ABGameWorld.KillBird), and is shot 1.5 s after
+    assert float(rows[1]["launch_gap"]) == pytest.approx(struck + 1.5, abs=2.5 * trace.dt)
 
 
 def rewrite(table, change):
