@@ -224,6 +224,7 @@ class LayoutLoop:
             except budget.OutOfTime:
                 return self._out_of_time(tally.layouts)
             tally.layouts += 1
+            tally.funnel.proposed = max(tally.funnel.proposed, placed.layout.conjunctions_tried)
             tally.seconds["layout"] += time.perf_counter() - clock
             clock = time.perf_counter()
             try:

@@ -54,6 +54,7 @@ READING = ("the solution fails physc verify in the world", "the solution fails i
 class Funnel:
     """The passages of a compile's placed layouts, summed (module docstring)."""
 
+    proposed: int = 0  # conjunctions the layout search tried for them (placed or not)
     placed: int = 0
     reached: dict[Stage, int] = attrs.field(factory=dict)
     realised: dict[Stage, int] = attrs.field(factory=dict)
@@ -91,6 +92,7 @@ class Funnel:
         the scenario's, whose texts name the stages."""
         texts = [t.text for t in interactions]
         return {
+            "proposed": self.proposed,
             "placed": self.placed,
             "stages": [
                 {
@@ -121,6 +123,13 @@ def funnel_text(record: dict) -> str:
         f": {record['kept']} kept" + (f", {lost}" if lost else "") if record["chain_realised"] else ""
     )
     return (
-        f"of {record['placed']} placed layout{'s' if record['placed'] != 1 else ''}, {stages}; {chain}"
+        f"of {record['placed']} placed layout{'s' if record['placed'] != 1 else ''}"
+        f"{proposed(record)}, {stages}; {chain}"
         f" ({record['simulations_after_chain']:,} simulations after the chain)"
     )
+
+
+def proposed(record: dict) -> str:
+    """ " (from 459 conjunctions proposed)", where the record counts them."""
+    count = record.get("proposed") or 0
+    return f" (from {count:,} conjunctions proposed)" if count else ""

@@ -49,6 +49,8 @@ def test_a_funnel_sums_the_layouts_and_says_where_they_were_lost():
     text = funnel_text(record)
     assert text.startswith("of 3 placed layouts, stage 1 (`hit(bird, rBlock, left)`) realised in 2 of 3 reaching it (50 simulations)")
     assert "2 realised the chain: 1 kept, 1 lost to noise (40 simulations after the chain)" in text
+    funnel.proposed = 1200
+    assert funnel_text(funnel.record(TERMS)).startswith("of 3 placed layouts (from 1,200 conjunctions proposed), stage 1")
 
 
 def test_a_task_file_keeps_its_funnel_and_every_simulation_is_counted_once(tmp_path):
@@ -57,6 +59,7 @@ def test_a_task_file_keeps_its_funnel_and_every_simulation_is_counted_once(tmp_p
     task = json.loads((tmp_path / "f.json").read_text())
     funnel = task["funnel"]
     assert funnel["placed"] == task["layouts_tried"] and funnel["kept"] == 1 and funnel["chain_realised"] >= 1
+    assert funnel["proposed"] == task["conjunctions_tried"] >= funnel["placed"]  # what the layout search tried
     counted = sum(s["simulations"] for s in funnel["stages"]) + funnel["simulations_after_chain"]
     assert counted == task["simulations"]
     assert [s["interactions"] for s in funnel["stages"]][0] == "hit(bird, fBlock, left | above)"
