@@ -75,7 +75,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
     if i == len(problem.plan):
         return parent
     stage = problem.plan[i]
-    ledger.turn((stage.start, stage.end))
+    ledger.turn(stage.span)
     settings = problem.settings
     offered = 0
     weak: list[tuple[float, int, Node]] = []
@@ -88,7 +88,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
         attempts = realised(problem, ledger, layout, parent, stage, lead)
         if not attempts:
             continue
-        ledger.passage.realised.add((stage.start, stage.end))
+        ledger.passage.realised.add(stage.span)
         steps = parent.steps + ((description,) if description else ())
         strength = stage_strength(problem, ledger, layout, stage, attempts[0])
         node = Node(layout, attempts, stage.index, steps, min(parent.strength, strength))
@@ -115,7 +115,7 @@ def chain(problem: Problem, ledger: Ledger, parent: Node, i: int) -> Node | None
             raise_stage(problem, ledger, parent, stage, base, lost) if base is not None and lost is not None else None
         )
         if node is not None:
-            ledger.passage.realised.add((stage.start, stage.end))
+            ledger.passage.realised.add(stage.span)
             found = deeper(problem, ledger, node, i)
             if found is not None:
                 return found
@@ -130,8 +130,7 @@ def deeper(problem: Problem, ledger: Ledger, node: Node, i: int) -> Node | None:
     """The stages after `problem.plan[i]` from `node`; back at stage i when they fail."""
     found = chain(problem, ledger, node, i + 1)
     if found is None:
-        stage = problem.plan[i]
-        ledger.turn((stage.start, stage.end))
+        ledger.turn(problem.plan[i].span)
     return found
 
 

@@ -36,6 +36,12 @@ class ChainStage:
     end: int
     new: tuple[str, ...]
 
+    @property
+    def span(self) -> tuple[int, int]:
+        """(start, end): the interactions it realises, by which a funnel names it across layouts
+        (physc.search.funnel), whose plans may number their stages apart."""
+        return (self.start, self.end)
+
 
 def supports(layout) -> dict[str, str]:
     """What each object of the layout rests on, by name."""

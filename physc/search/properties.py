@@ -118,15 +118,12 @@ def blocks(
         actor = actor if actor in problem.players else next(iter(sorted(problem.players)), "")
         taken = lambda attempt: b in attempt.trace.destroyed  # noqa: E731 (the one test both obstacles use)
         count = len(so_far) + len(added)
-        blocked = None
-        if not roofed:  # first a shelter, then a bar in each flight
-            roofed = True
-            blocked = guards.roof(problem, ledger, layout, b, solution, offending, taken, count)
-            blocked = blocked if blocked is not None and holds_up(problem, ledger, solution, blocked[0]) else None
-        if blocked is None:
-            blocked = guards.block(problem, ledger, layout, offending, actor, solution, guards.BACKS, taken, count)
+        blocked = None if roofed else guards.roof(problem, ledger, layout, b, solution, offending, taken, count)
+        roofed = True  # first a shelter, then a bar in the flight
         if blocked is None or not holds_up(problem, ledger, solution, blocked[0]):
-            return settings.PROPERTY_BROKEN, f"{label} takes {b} while {a} still bars the way", layout, added
+            blocked = guards.block(problem, ledger, layout, offending, actor, solution, guards.BACKS, taken, count)
+            if blocked is None or not holds_up(problem, ledger, solution, blocked[0]):
+                return settings.PROPERTY_BROKEN, f"{label} takes {b} while {a} still bars the way", layout, added
         layout = blocked[0]
         added.append(blocked[1])
     return settings.PROPERTY_BROKEN, f"{b} is still taken by a first action after {len(added)} obstacles", layout, added

@@ -46,7 +46,7 @@ from physc.search.outcome import Outcome, Parts
 from physc.search.precision import precise
 from physc.search.problem import ALL_CHECKS, Checks, Ledger, Problem, replayed
 from physc.search.properties import properties
-from physc.search.strengthen import Strong, lost_links, replays, strengthen
+from physc.search.strengthen import Strong, least_passed, lost_links, strengthen
 from physc.simulation.ending import Ending
 from physc.simulation.stopped import why_stopped
 from physc.simulation.trace import Trace
@@ -88,10 +88,10 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
     if obstructed is None:
         return given_up(problem, ledger, settings.NOT_OBSTRUCTED)
     layout, obstacles = obstructed
-    if obstacles:
-        passed = min(passed, again := replayed_all(problem, ledger, attempt, layout))
+    if obstacles:  # the guards changed the level: the solution replayed in it
+        passed = min(passed, again := least_passed(problem, ledger, attempt, layout))
         if again < problem.accept:
-            return given_up(problem, ledger, settings.OBSTRUCTED_FRAGILE)
+            return given_up(problem, ledger, settings.OBSTRUCTED_FRAGILE, nearest=again)
     layout, shortcuts = guards.guard(problem, ledger, layout, attempt, len(obstacles))
     if not ledger.evaluator.run(lambda: domain.stability(problem.level_of(layout)))[0]:
         return given_up(problem, ledger, settings.UNSTABLE)
@@ -173,7 +173,10 @@ def stopped(problem: Problem, ledger: Ledger) -> str:
     return "" if furthest is None else why_stopped(problem.scenario, furthest.trace, furthest.fidelity)
 
 
-def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
+def given_up(problem: Problem, ledger: Ledger, why: str, nearest: int = 0) -> Outcome:
+    """The layout given up for `why`, with what the ledger noted of how far it got; `nearest`: the
+    noisy replays a solution given up as fragile passed, if more than the ledger's."""
+    ledger.nearest = max(ledger.nearest, nearest)
     furthest, layout = ledger.furthest, ledger.furthest_layout  # (noted together)
     ledger.turn(None)
     return Outcome(
@@ -190,16 +193,6 @@ def given_up(problem: Problem, ledger: Ledger, why: str) -> Outcome:
         else (furthest.fidelity.score, problem.level_of(layout), furthest.action, problem.placed),
         passage=ledger.passage,
     )
-
-
-def replayed_all(problem: Problem, ledger: Ledger, attempt, layout: ConcreteLayout) -> int:
-    """The noisy replays `attempt` passes in `layout` in the stream that it passes fewest of (a
-    solution whose level the guards changed is replayed again); the ledger notes it as the
-    nearest a fragile one came."""
-    passed = min(replays(problem, ledger, attempt, layout, stream).passed for stream in settings.NOISE_STREAMS)
-    if passed < problem.accept:
-        ledger.nearest = max(ledger.nearest, passed)
-    return passed
 
 
 def accepted(problem: Problem, ledger: Ledger, level: object, attempt):

@@ -118,6 +118,12 @@ def holds_up(problem: Problem, ledger: Ledger, attempt: Attempt, layout: Concret
     return all(replays(problem, ledger, attempt, layout, stream).passed >= problem.accept for stream in NOISE_STREAMS)
 
 
+def least_passed(problem: Problem, ledger: Ledger, attempt: Attempt, layout: ConcreteLayout) -> int:
+    """The noisy replays the solution in `layout` passes in the noise stream it passes fewer of
+    (`holds_up` asks only whether both reach what it must pass)."""
+    return min(replays(problem, ledger, attempt, layout, stream).passed for stream in NOISE_STREAMS)
+
+
 @attrs.frozen
 class Strong:
     """A solution that holds under noise: its layout, its attempt, the replays it passed (the

@@ -16,8 +16,6 @@ from __future__ import annotations
 
 import itertools
 
-import attrs
-
 from physc.search import choosing, placing, proposals
 from physc.search.attempt import Attempt
 from physc.search.chain_stages import ChainStage, prefix
@@ -87,13 +85,8 @@ def behind(problem: Problem, layout, stage: ChainStage):
         for gap in BEHIND_GAPS:
             width = gap * (right_a - left_a)
             dx = (right_a + width - left_b) if heading > 0 else (left_a - width - right_b)
-            dy = bottom_a - bottom_b
-            shifted = tuple(
-                attrs.evolve(o, x=round(o.x + dx, 5), y=round(o.y + dy, 5)) if o.name in moved else o
-                for o in layout.objects
-            )
-            candidate = attrs.evolve(layout, objects=shifted)
-            if placing.consistent(candidate, problem.parameters, set(moved), set(moved)):
+            candidate = placing.shifted(layout, set(moved), dx, bottom_a - bottom_b, problem.supports)
+            if candidate is not None and placing.consistent(candidate, problem.parameters, set(moved), set(moved)):
                 yield f"{b} behind {a}, {gap:g} of its widths beyond it", candidate
 
 
