@@ -69,6 +69,12 @@ def remaining() -> float | None:
     return deadlines[-1][0] - time.monotonic() if deadlines else None
 
 
+def current() -> tuple[float | None, float]:
+    """(the monotonic end, the budget in seconds) of the innermost deadline; (None, 0): none."""
+    deadlines = _deadlines.get()
+    return deadlines[-1] if deadlines else (None, 0.0)
+
+
 class Deadline:
     """A time budget started once, when it is made: each `deadline(it)` block ends when it
     does, however late the block begins."""
@@ -76,6 +82,14 @@ class Deadline:
     def __init__(self, seconds: float):
         self.seconds = seconds
         self.end = time.monotonic() + seconds
+
+    @classmethod
+    def until(cls, end: float, seconds: float) -> Deadline:
+        """The budget of `seconds` that ends at the monotonic `end` (the machine's clock, so one
+        process may hand its deadline to another: physc.driver.workers)."""
+        started = cls(seconds)
+        started.end = end
+        return started
 
 
 @contextlib.contextmanager

@@ -90,6 +90,14 @@ def add_generation(parser, validate: bool = True) -> None:
         help=f"clause choices the layout search may try per shape draw (default {CLAUSE_BUDGET};"
         " --budget is its old name)",
     )
+    parser.add_argument(
+        "--workers",
+        type=arguments.count,
+        default=1,
+        metavar="W",
+        help="processes that satisfy each task's placed layouts side by side (default 1); the task is the same "
+        "for any number, only sooner. With --jobs J, J × W processes in all",
+    )
     if validate:
         parser.add_argument(
             "--no-validate", action="store_true", help="skip the final validation of each generated task"
@@ -108,6 +116,7 @@ def run_settings(args, validate: bool | None = None) -> RunSettings:
         validate=(not args.no_validate) if validate is None else validate,
         acceptance=not args.no_acceptance,
         verify_backend=args.verify_backend,
+        workers=args.workers,
     )
 
 

@@ -46,6 +46,14 @@ class Task:
     # Where the compile's placed layouts went down the chain, and the simulations each stage
     # cost (physc.search.funnel). None in task files written before it.
     funnel: dict | None = None
+    # How the compile proposed its layouts (physc.driver.ranking): the world's prior the
+    # proposal model started from, with its provenance, and the examples it learned. None in
+    # task files written before it.
+    proposals: dict | None = None
+    # The evaluation's agent's plays that solve the task by accident (physc.search.accidents):
+    # `plays`, the share `solved_before` the search's bars against them and after (`solved`),
+    # and the bars added. None where the domain's agent plays no fixed list, or before it.
+    accidental: dict | None = None
 
 
 def given_up_summary(given_up: dict) -> str:

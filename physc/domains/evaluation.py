@@ -8,7 +8,7 @@ acceptance, its random agent and AUCCESS)."""
 from __future__ import annotations
 
 import random
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from physc.domains.errors import MissingCapability
@@ -51,6 +51,13 @@ class Evaluation(Part):
         `solves(candidate)` plays one action within the search's budget. None (the default):
         every task the search finds is kept."""
         return None
+
+    def agent_plays(self, level, scenario) -> Sequence[tuple[str, object]]:
+        """The plays, (label, action), of the agent whose share of solving plays is the
+        evaluation's accidental solvability, where that agent plays a fixed list (Science Birds:
+        the paper's heuristic agent): the search blocks those that solve a task by accident
+        (physc.search.accidents). Default: none (the search guards nothing)."""
+        return ()
 
     def accidental(self, level, scenario, solution, rng: random.Random) -> dict:
         """The evaluation's accidental solvability of a task: a dict of figures for its record

@@ -37,6 +37,11 @@ class SearchHooks(Part):
     the one nearest across the flight first (Science Birds: level and upright, as Phy-Q's
     templates lay most platforms); then across the flight. The default: across only."""
 
+    priors: str | None = None
+    """The package that holds the domain's priors for the proposal model, one `<world>.json` a
+    world (physc.driver.link_prior; benchmarks/link_prior.py makes them); None: none, and the
+    model starts from nothing."""
+
     def actions_at(self, level, name: str) -> Sequence[tuple[str, object]]:
         """(label, action) aimed at the object `name`: what the guards try against forbidden
         direct hits and shortcuts (the default: none, so nothing is guarded)."""

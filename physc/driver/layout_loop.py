@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import contextlib
 import copy
-import random
 import time
 from collections.abc import Callable, Iterator
 from typing import Protocol
@@ -25,12 +24,17 @@ from physc.compiler.concrete_layout import ConcreteLayout
 from physc.compiler.infeasible import Exhausted, Infeasible
 from physc.compiler.task import given_up_summary
 from physc.domains.simulated import SimulatedDomain
+from physc.driver import link_prior
+from physc.driver.link_prior import Prior
+from physc.driver.ranking import POOL, ROUND, Ranking
 from physc.driver.run_settings import RunSettings
+from physc.driver.workers import Run, Workers, satisfy_layout
 from physc.dsl.scenario import ScenarioIR
-from physc.search import elsewhere, search
+from physc.search import elsewhere, placing
 from physc.search.funnel import Funnel, funnel_text
+from physc.search.link_features import LinkFeatures, features
+from physc.search.link_model import LinkModel
 from physc.search.outcome import Outcome
-from physc.search.verify import noisy_replays, verify
 from physc.simulation.margins import Margin
 from physc.worlds import differing_kinds
 
@@ -70,6 +74,7 @@ class Generated:
     given_up: dict[str, dict[str, int]]  # why → {"layouts": n, "simulations": n}
     seconds: dict[str, float]  # "layout" (placement), "satisfy", and the stages after satisfaction
     funnel: dict | None = None  # where the placed layouts went down the chain (physc.search.funnel)
+    proposals: dict | None = None  # how the layouts were proposed (LayoutLoop.proposals)
 
 
 @attrs.define
@@ -121,7 +126,7 @@ class Tally:
         why["simulations"] += result.simulations
         self.broken = self.broken or result.broken
         if result.nearest >= min_robustness:
-            self.fragile.append((-result.nearest, self.layouts, placed))
+            self.fragile.append((-result.nearest, self.layouts - 1, placed))  # (its place in the run)
 
 
 Found = tuple[Outcome, Placement]  # the satisfied outcome, and the layout it came from
@@ -131,9 +136,33 @@ Found = tuple[Outcome, Placement]  # the satisfied outcome, and the layout it ca
 class LayoutLoop:
     domain: SimulatedDomain
     scenario: ScenarioIR
-    rng: random.Random  # the run's one generator (physc.driver.pipeline)
+    seed: int | None  # the run's seed: each layout's search draws from a generator named after it and its place
     settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
     progress: Callable[[Progress], None] | None = None
+    model: LinkModel = attrs.field(factory=LinkModel)  # the proposal model (physc.search.link_model)
+    workers: Workers = attrs.field(default=None)  # who satisfies a round (physc.driver.workers)
+
+    prior: Prior | None = attrs.field(default=None)  # the world's prior, as shipped (physc.driver.link_prior)
+
+    def __attrs_post_init__(self) -> None:
+        if self.workers is None:
+            self.workers = Workers(self.run_of, self.settings.workers)
+        self.prior = link_prior.load(self.domain)
+        if self.prior is not None and self.prior.fingerprint == link_prior.recognition(self.domain):
+            self.model.prior = self.prior.examples
+
+    @property
+    def proposals(self) -> dict:
+        """What the task file says of how its layouts were proposed: the prior the model started
+        from (None: the domain ships none for the world) and the examples the compile taught it."""
+        prior = self.prior
+        used = prior is not None and bool(self.model.prior)
+        return {
+            "prior": None if prior is None else prior.record(used),
+            "learned": self.model.learned,
+            "pool": POOL,
+            "round": ROUND,
+        }
 
     @property
     def min_robustness(self) -> int:
@@ -141,42 +170,21 @@ class LayoutLoop:
         are fallbacks."""
         return self.settings.robustness(self.domain)
 
-    def satisfy(self, layout: ConcreteLayout, accept: int | None = None) -> Outcome:
-        """The search's satisfaction of one layout with the domain's hooks (accepting `accept`
-        noisy replays, for a fallback), then the checks that it holds where it is played."""
-        result = search.satisfy(self.domain, self.scenario, layout, self.rng, self.settings.checks, accept)
-        return self.checked(result, accept) if result.satisfied else result
+    @property
+    def run_of(self) -> Run:
+        return Run(self.domain, self.scenario, self.settings, self.seed)
 
-    def checked(self, result: Outcome, accept: int | None) -> Outcome:
-        """`result`, if its solution passes what `physc verify` runs (the recorded solution
-        and the domain's noisy replays, drawn as verify draws them) under every reading of
-        what the world's files leave open that can change a replay (physc.worlds.under_readings),
-        and in the second backend if one is asked for; else the layout given up for that
-        reason (the search goes on to the next layout). `accept`: a fallback needs K of the
-        noisy replays."""
-        parts = result.parts
-        assert parts is not None, "a satisfied outcome has its parts"
-        replays = noisy_replays(self.domain)
-        needed = accept if accept is not None else replays
-        places: list[tuple[SimulatedDomain, str | None]] = [(self.domain, None)]
-        if self.settings.verify_backend is not None:
-            places.append((self.domain, self.settings.verify_backend))
-        spent = 0
-        for domain, other in places:
-            check = verify(
-                domain, self.scenario, parts.level, parts.solution, other or domain.backend.name, noisy=replays
-            )
-            spent += check.simulations
-            if not check.passes(needed):
-                if other is not None:
-                    why = f"the solution fails in {other}"
-                else:
-                    where = check.failed[0] if check.failed else domain.world.name
-                    why = f"the solution fails physc verify in the world '{where}'"
-                return attrs.evolve(
-                    result, satisfied=False, parts=None, simulations=result.simulations + spent, given_up=why, nearest=0
-                )
-        return attrs.evolve(result, simulations=result.simulations + spent)
+    def satisfy(self, layout: ConcreteLayout, accept: int | None = None, index: int = 0) -> Outcome:
+        """One layout satisfied in this process (physc.driver.workers.satisfy), as the `index`th of the run."""
+        return satisfy_layout(self.run_of, index, layout, accept)
+
+    def links_of(self, placed: Placement) -> list[LinkFeatures]:
+        """The features of each link of the scenario in a placed layout (the proposal model's)."""
+        layout = placed.layout
+        parameters = self.domain.layout_parameters
+        assert parameters is not None, "a layout is placed only with the domain's layout parameters"
+        support_of = placing.Supports.of(layout, parameters).support_of
+        return features(layout, self.scenario.interactions, support_of, self.domain)
 
     def run(self, placements: Iterator[Placement]) -> Generated:
         """Satisfy the placed layouts in turn (`placements` yields objects with a
@@ -188,9 +196,12 @@ class LayoutLoop:
         left = budget.remaining()
         inner = budget.deadline(left - kept) if kept and left is not None and left > kept else contextlib.nullcontext()
         with inner:  # the search stops early enough to leave the reserve
-            found = self._search(placements, tally, started)
-            if isinstance(found, Infeasible):
-                found = self._fall_back(found, tally)
+            try:
+                found = self._search(placements, tally, started)
+                if isinstance(found, Infeasible):
+                    found = self._fall_back(found, tally)
+            finally:
+                self.workers.close()
         if isinstance(found, Infeasible):
             other = elsewhere.elsewhere(
                 others, self.scenario, tally.furthest, tally.best, tally.weakest, self.min_robustness
@@ -203,15 +214,20 @@ class LayoutLoop:
             tally.seconds[stage] = spent
         tally.seconds["total"] = time.perf_counter() - started
         funnel = tally.funnel.record(self.scenario.interactions)
-        return Generated(result, used, tally.layouts, tally.simulations, tally.given_up, tally.seconds, funnel)
+        placed = {o.name: [o.x, o.y] for o in used.layout.objects if o.role != "support"}
+        proposals = self.proposals | {"placed": placed}  # where its objects were proposed: a dataset's diversity
+        return Generated(
+            result, used, tally.layouts, tally.simulations, tally.given_up, tally.seconds, funnel, proposals
+        )
 
     def _search(self, placements: Iterator[Placement], tally: Tally, started: float) -> Found | Infeasible:
-        """The placed layouts satisfied in turn until one gives a task, or why none did within
-        the budgets of layouts and time."""
+        """The placed layouts satisfied in rounds, the likeliest first (physc.driver.ranking),
+        until one gives a task, or why none did within the budgets of layouts and time."""
+        ranking = Ranking(placements, self.model, self.links_of)
         clock = time.perf_counter()
         while True:
             try:
-                placed = next(placements)
+                chosen = ranking.round(min(ROUND, self.settings.layouts - tally.layouts))
             except Infeasible as error:
                 if not tally.layouts:
                     raise
@@ -223,29 +239,34 @@ class LayoutLoop:
                 )
             except budget.OutOfTime:
                 return self._out_of_time(tally.layouts)
-            tally.layouts += 1
-            tally.funnel.proposed = max(tally.funnel.proposed, placed.layout.conjunctions_tried)
             tally.seconds["layout"] += time.perf_counter() - clock
             clock = time.perf_counter()
+            jobs = [(tally.layouts + k, c.placed.layout, None) for k, c in enumerate(chosen)]
             try:
-                result = self.satisfy(placed.layout)
+                answers = self.workers.satisfy(jobs)
             except budget.OutOfTime:
-                return self._out_of_time(tally.layouts)
+                return self._out_of_time(tally.layouts + 1)
             finally:
                 tally.seconds["satisfy"] += time.perf_counter() - clock
-            tally.note(result)
-            if result.satisfied:
-                return result, placed
-            tally.give_up(result, placed, self.min_robustness)
-            if self.progress is not None:
-                elapsed = time.perf_counter() - started
-                interactions = len(self.scenario.interactions)
-                self.progress(Progress(tally.layouts, tally.simulations, elapsed, tally.best, interactions))
+            for candidate, result in zip(chosen, answers, strict=False):  # (answers stop at the first task)
+                tally.layouts += 1
+                tally.funnel.proposed = ranking.proposed
+                if result is None:
+                    return self._out_of_time(tally.layouts)
+                tally.note(result)
+                self.model.learn(candidate.links, result.best)
+                if result.satisfied:
+                    return result, candidate.placed
+                tally.give_up(result, candidate.placed, self.min_robustness)
+                if self.progress is not None:
+                    elapsed = time.perf_counter() - started
+                    interactions = len(self.scenario.interactions)
+                    self.progress(Progress(tally.layouts, tally.simulations, elapsed, tally.best, interactions))
             if tally.layouts >= self.settings.layouts:
                 return Infeasible(
                     "satisfy",
                     f"no layout realised the sequence in simulation within the budget ({tally.layouts} layouts)",
-                    tried=placed.layout.conjunctions_tried,
+                    tried=chosen[-1].placed.layout.conjunctions_tried,
                     budget=Exhausted.LAYOUTS,
                 )
             clock = time.perf_counter()
@@ -269,12 +290,16 @@ class LayoutLoop:
         """No solution survived every noisy replay: the layouts given up as fragile, most
         robust first, satisfied again accepting min_robustness replays. (simulations, the
         outcome, what it was placed from) of the first that succeeds, or None."""
-        simulations = 0
-        for _, _, placed in sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]:
-            result = self.satisfy(placed.layout, accept=self.min_robustness)
-            simulations += result.simulations
-            if result.satisfied:
-                return simulations, result, placed
+        tried = sorted(fragile, key=lambda item: item[:2])[:FALLBACKS]
+        if not tried:
+            return None
+        answers = self.workers.satisfy([(order, placed.layout, self.min_robustness) for _, order, placed in tried])
+        last = answers[-1]
+        if last is None:  # the time ran out during it
+            raise budget.OutOfTime(self.settings.time_budget)
+        if last.satisfied:
+            simulations = sum(result.simulations for result in answers if result is not None)
+            return simulations, last, tried[len(answers) - 1][2]
         return None
 
     def _out_of_time(self, layouts: int) -> Infeasible:

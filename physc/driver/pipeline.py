@@ -192,7 +192,7 @@ class Pipeline:
         time is spent."""
         # The task stage needs `satisfy`, which `require` checked before any work: the capability
         # SimulatedDomain declares (physc.domains.base), so the domain is one.
-        loop = LayoutLoop(cast(SimulatedDomain, self.domain), self.scenario, self.rng, self.settings, self.progress)
+        loop = LayoutLoop(cast(SimulatedDomain, self.domain), self.scenario, self.seed, self.settings, self.progress)
         with self.within_budget():
             generated = loop.run(self.placements())
         parts = generated.outcome.parts
@@ -215,4 +215,5 @@ class Pipeline:
             given_up=generated.given_up,
             seconds={k: round(v, 4) for k, v in generated.seconds.items()},
             funnel=generated.funnel,
+            proposals=generated.proposals,
         )

@@ -39,6 +39,10 @@ class RunSettings:
     """Whether the domain's acceptance rule judges each task (`--no-acceptance`: not)."""
     verify_backend: str | None = None
     """A second physics backend the task's solution must also pass in (`--verify-backend`)."""
+    workers: int = 1
+    """Processes that satisfy a round's placed layouts side by side (`--workers`;
+    physc.driver.workers): the task is the same whatever their number, so a stored result does
+    not record it."""
 
     @property
     def checks(self) -> Checks:

@@ -95,13 +95,24 @@ def _funnel_lines(summary: dict, counts: list, names: dict) -> list[str]:
         cells = ["–" if f is None else f"{100 * f['lost'].get(why, 0.0):.1f} %" for f in funnels]
         lines.append(f"| Realised the chain, lost to {why} | " + " | ".join(cells) + " |")
     lines.append("| Gave the task | " + " | ".join(_share(f, "kept") for f in funnels) + " |")
-    lines += ["", "| scenario | placed layouts | never realised the chain | lost to noise | gave the task |"]
-    lines.append("|---|---|---|---|---|")
+    spread = [rows[c].get("diversity") for c in counts]
+    lines.append(
+        "| Diversity (mean distance between the same objects' places across a scenario's tasks) | "
+        + " | ".join("–" if d is None else f"{d:.2f}" for d in spread)
+        + " |"
+    )
+    lines += [
+        "",
+        "| scenario | placed layouts | never realised the chain | lost to noise | gave the task | diversity |",
+    ]
+    lines.append("|---|---|---|---|---|---|")
     for name, row in summary["scenarios"].items():
         f = row.get("funnel")
         if f is not None:
             noise = f"{100 * f['lost'].get('noise', 0.0):.1f} %"
-            lines.append(f"| {name} | {f['placed']:,} | {_share(f, 'never')} | {noise} | {_share(f, 'kept')} |")
+            d = row.get("diversity")
+            cells = [f"{f['placed']:,}", _share(f, "never"), noise, _share(f, "kept"), "–" if d is None else f"{d:.2f}"]
+            lines.append(f"| {name} | " + " | ".join(cells) + " |")
     return lines
 
 

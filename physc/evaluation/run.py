@@ -67,8 +67,8 @@ def evaluate(job: Job) -> dict:
         given_up=task.given_up,
         structure=task.structure,
     )
-    if task.funnel is not None:
-        record.update(funnel=task.funnel)
+    proposals = dict(task.proposals or {})  # how its layouts were proposed, and where its objects were placed
+    record.update(funnel=task.funnel, placed=proposals.pop("placed", None), proposals=proposals or None)
     weakest = (task.margins or {}).get("weakest")
     if weakest is not None:  # the weakest link over the noisy replays the solution passed (physc.simulation.margins)
         record.update(

@@ -80,6 +80,7 @@ def summarise(records: list[dict]) -> dict:
         out["no_agent_play"] = sum(1 for r in made if not measured(r, "accidental"))
         out |= effort(made)
         out["funnel"] = funnelled(rows)
+        out["diversity"] = diversity(made)
         seconds = sorted(r["generation_seconds"] for r in made if r.get("generation_seconds") is not None)
         sims = sorted(r["simulations"] for r in made if r.get("simulations") is not None)
         out["median_seconds"] = float(np.median(seconds)) if seconds else None
@@ -147,6 +148,28 @@ def effort(made: list[dict]) -> dict:
         "simulations": mean_sd([r["simulations"] for r in rows]),
         "given_up": dict(sorted(shares.items(), key=lambda item: -item[1])),
     }
+
+
+def diversity(made: list[dict]) -> float | None:
+    """How far apart a dataset's tasks lay out the same objects: for each scenario, the mean over
+    its pairs of tasks of the mean distance (layout units) between each object's places as
+    proposed (the record's `placed`, the objects both tasks have); the mean over the scenarios
+    with two tasks or more. None: no scenario has two."""
+    by_scenario: dict[str, list[dict]] = {}
+    for r in made:
+        if r.get("placed"):
+            by_scenario.setdefault(r["scenario"], []).append(r["placed"])
+    means = []
+    for placements in by_scenario.values():
+        pairs = []
+        for i, a in enumerate(placements):
+            for b in placements[i + 1 :]:
+                shared = sorted(set(a) & set(b))
+                if shared:
+                    pairs.append(statistics.mean(float(np.hypot(*np.subtract(a[n], b[n]))) for n in shared))
+        if pairs:
+            means.append(statistics.mean(pairs))
+    return statistics.mean(means) if means else None
 
 
 def funnelled(rows: list[dict]) -> dict | None:

@@ -35,6 +35,9 @@ class Parts:
     margins: dict | None = (
         None  # the links' margins: the weakest over the noisy replays, each as played (search.margins_record)
     )
+    accidental: dict | None = (
+        None  # the agent's plays that solve it by accident, before and after the guard (accidents.py)
+    )
 
 
 @attrs.frozen

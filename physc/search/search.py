@@ -14,7 +14,9 @@ and the `Ledger` it writes (the simulations, how far the chain got, what noise b
    every noisy replay; if none does, the weak links' coordinates (places, lengths, slopes,
    the action) moved by CMA-ES to raise the least margin, then fresh replays to confirm.
 3. **Guards** (guards.py): obstacles against forbidden direct hits (`cannotHit` of the
-   player) and against shortcuts, kept only if the solution still holds up.
+   player) and against shortcuts, kept only if the solution still holds up; after the
+   distractors, against the plays of the evaluation's agent that solve the task by accident
+   (accidents.py).
 4. **Stability** of the level, **distraction**, **contrasts** (contrasts.py: the action aimed at
    a contrast does not solve the task), **properties** (properties.py: what the scenario says
    must fail fails, against every action the player could send), **precision** (precision.py: every action the domain's
@@ -39,6 +41,7 @@ from physc.domains.base import require
 from physc.domains.simulated import SimulatedDomain, search_needs
 from physc.dsl.scenario import ScenarioIR
 from physc.search import guards, settings
+from physc.search.accidents import guard as guard_accidents
 from physc.search.chain import Node, chain
 from physc.search.contrasts import contrasts
 from physc.search.funnel import AFTER
@@ -97,6 +100,8 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
         return given_up(problem, ledger, settings.UNSTABLE)
     distracting = time.perf_counter()
     layout, distractors = guards.distract(problem, ledger, rng, layout, attempt)
+    accidents = guard_accidents(problem, ledger, layout, attempt, len(obstacles) + len(shortcuts))
+    layout, shortcuts = accidents.layout, shortcuts + list(accidents.obstacles)
     why, contrasted = contrasts(problem, ledger, layout, attempt)
     if why is not None:
         return given_up(problem, ledger, why)
@@ -136,10 +141,16 @@ def search(problem: Problem, ledger: Ledger, rng: random.Random) -> Outcome:
         distractors=tuple(distractors),
         acceptance=None if judged is None else judged.record(),
         margins=margins_record(problem, ledger, trace, strong, steps),
+        accidental=accidents.record,
     )
     seconds = {"distract": validating - distracting, "validate": accepting - validating} | (
         {} if judged is None else {"accept": time.perf_counter() - accepting}
     )
+    return made(problem, ledger, parts, seconds)
+
+
+def made(problem: Problem, ledger: Ledger, parts: Parts, seconds: dict[str, float]) -> Outcome:
+    """The layout made a task: its parts, with what the ledger counted."""
     ledger.turn(None)
     return Outcome(
         True,

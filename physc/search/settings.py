@@ -112,6 +112,11 @@ class SearchSettings:
     """Shortcuts (solving actions at other objects) blocked at most."""
     distractors: int = 3
     """Distractors added at most."""
+    accidental: float = 0.05
+    """The share of the evaluation's agent's plays that may solve a task by accident
+    (physc.search.accidents; the paper's measure, which issue 74 asks to keep at 0.05 or less)."""
+    accident_guards: int = 4
+    """Plays that solve by accident that the search tries to block, at most."""
 
 
 SETTINGS = SearchSettings()

@@ -54,15 +54,17 @@ def action_text(values) -> str:
 
 
 def test_a_tapped_shot_replays_from_the_action_the_agents_send(split):
-    """A blue bird's split destroys both pigs: its task's env.step([dx, dy, tap]) does, untapped it does not."""
+    """A blue bird's split destroys both pigs: its task's env.step([dx, dy, tap]) splits the bird and its
+    pieces destroy them; untapped, the bird stays whole."""
     level, task, (shot,) = split
     dx, dy, tap = shot["agent_action"]
     assert tap > 0
     played = run_physc("simulate", level, "--action", action_text([dx, dy, tap]))
     assert played.status == 0, played.stderr
     assert "2 of 2 pigs destroyed: solved" in played.stdout and f"env.step([{dx}, {dy}, {tap}])" in played.stdout
+    assert "(damage, by bird~" in played.stdout  # the split's pieces
     untapped = run_physc("simulate", level, "--action", action_text([dx, dy]))
-    assert untapped.status == 0 and "not solved" in untapped.stdout  # the split was needed
+    assert untapped.status == 0 and "by bird~" not in untapped.stdout and "env.step([" in untapped.stdout
     by_angle = run_physc("simulate", level, "--angle", str(shot["agent_angle"]), "--tap", str(tap / 1000))
     assert "2 of 2 pigs destroyed: solved" in by_angle.stdout
     data = json.loads(run_physc("simulate", level, "--action", action_text([dx, dy, tap]), "--format", "json").stdout)
@@ -161,7 +163,7 @@ def test_the_python_api_plays_what_the_agents_send(split, two):
     level = physc.read_level(level_path)
     dx, dy, tap = shot["agent_action"]
     sent = physc.simulate(level, [dx, dy, tap])
-    assert sent.solved and not physc.simulate(level, [dx, dy]).solved
+    assert sent.solved and "bird~1" in sent.names and "bird~1" not in physc.simulate(level, [dx, dy]).names
     same = physc.simulate(level, physc.Shot(angle=physc.agent_shot(level, [dx, dy]).angle, tap=tap / 1000))
     assert same.solved and same.sequence() == sent.sequence()
     assert physc.render(level, [dx, dy, tap], fmt="svg").startswith(b"<?xml")

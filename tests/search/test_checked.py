@@ -14,6 +14,7 @@ from physc.backends import load_backend
 from physc.domains.angrybirds.game import Game
 from physc.domains.angrybirds.level import Level, LevelObject
 from physc.domains.angrybirds.worlds import PHYQ, ROLLING
+from physc.driver import workers
 from physc.driver.layout_loop import LayoutLoop
 from physc.driver.pipeline import Pipeline
 from physc.driver.run_settings import RunSettings
@@ -77,14 +78,14 @@ def test_a_solution_that_fails_a_reading_gives_the_layout_up():
     task = Pipeline(DOMAIN, scenario, seed=0).task
     loop = LayoutLoop(DOMAIN, scenario, None, RunSettings(time_budget=10.0, layouts=1, min_robustness=6, validate=False))
     parts = mock.Mock(level=task.level, solution=task.solution)
-    passed = loop.checked(Outcome(True, 5, parts), None)
+    passed = workers.checked(loop.run_of, Outcome(True, 5, parts), None)
     check = verify(DOMAIN, scenario, task.level, task.solution, "box2d", noisy=6)
     # The recorded solution and 6 noisy replays, each in every reading that can change it: the
     # pig's destroying strike depends on relativeVelocity's sign in each, so two at least.
     assert passed.satisfied and passed.simulations == 5 + check.simulations and check.simulations >= 2 * 7
     x, y = task.solution.target
     failing = attrs.evolve(task.solution, target=(x - 3.0, y - 1.0))  # a shot that misses
-    given_up = loop.checked(Outcome(True, 5, mock.Mock(level=task.level, solution=failing)), None)
+    given_up = workers.checked(loop.run_of, Outcome(True, 5, mock.Mock(level=task.level, solution=failing)), None)
     assert not given_up.satisfied and given_up.given_up == "the solution fails physc verify in the world 'phyq'"
 
 

@@ -59,7 +59,7 @@ def test_a_task_file_keeps_its_funnel_and_every_simulation_is_counted_once(tmp_p
     task = json.loads((tmp_path / "f.json").read_text())
     funnel = task["funnel"]
     assert funnel["placed"] == task["layouts_tried"] and funnel["kept"] == 1 and funnel["chain_realised"] >= 1
-    assert funnel["proposed"] == task["conjunctions_tried"] >= funnel["placed"]  # what the layout search tried
+    assert funnel["proposed"] >= task["conjunctions_tried"] and funnel["proposed"] >= funnel["placed"]  # what the layout search tried (the pool drawn ahead too)
     counted = sum(s["simulations"] for s in funnel["stages"]) + funnel["simulations_after_chain"]
     assert counted == task["simulations"]
     assert [s["interactions"] for s in funnel["stages"]][0] == "hit(bird, fBlock, left | above)"

@@ -12,12 +12,11 @@ from physc.domains.angrybirds.launch import Shot, Shots
 AGENT_POINTS = ("ll", "ul", "ur", "lr", "c")
 
 
-def accidental(domain, level, solution_target: str | None) -> tuple[float | None, int]:
-    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it
-    (each an outcome playout in the domain's world and backend), and the number of plays. None
-    when the agent found no play (no point of interest within reach): a fraction of nothing is
-    not 0, and must not pull a mean down."""
-    plays = solved = 0
+def plays(domain, level, solution_target: str | None) -> list[tuple[str, Shot | Shots]]:
+    """The heuristic agent's plays of one level, (label, shot): each point of interest within
+    reach of every object it shoots at, on both trajectories; in a level of several birds, each
+    bird shot at the same point in turn."""
+    found: list[tuple[str, Shot | Shots]] = []
     for obj in agent_targets(level, solution_target):
         points = points_of_interest(obj)
         for name in AGENT_POINTS:
@@ -25,8 +24,7 @@ def accidental(domain, level, solution_target: str | None) -> tuple[float | None
             if not domain.world.reachable(x, y):
                 continue
             for trajectory in ("low", "high"):
-                plays += 1
-                shot = Shot(target=(x, y), trajectory=trajectory)
+                shot: Shot | Shots = Shot(target=(x, y), trajectory=trajectory)
                 if len(level.birds) > 1:
                     shot = Shots(
                         tuple(
@@ -34,5 +32,15 @@ def accidental(domain, level, solution_target: str | None) -> tuple[float | None
                             for k in range(len(level.birds))
                         )
                     )
-                solved += domain.playout(level, shot).solved
-    return (solved / plays if plays else None), plays
+                found.append((f"agent: {obj.name}.{name}, {trajectory}", shot))
+    return found
+
+
+def accidental(domain, level, solution_target: str | None) -> tuple[float | None, int]:
+    """The paper's AS for one level: the fraction of the heuristic agent's plays that solve it
+    (each an outcome playout in the domain's world and backend), and the number of plays. None
+    when the agent found no play (no point of interest within reach): a fraction of nothing is
+    not 0, and must not pull a mean down."""
+    shots = plays(domain, level, solution_target)
+    solved = sum(domain.playout(level, shot).solved for _, shot in shots)
+    return (solved / len(shots) if shots else None), len(shots)

@@ -20,6 +20,13 @@ class ScienceBirdsEvaluation(Evaluation):
         "generator's 6 noisy replays."
     )
 
+    def agent_plays(self, level, scenario) -> list:
+        """The paper's heuristic agent's plays (agent.py): at everything but the first target."""
+        from physc.domains.angrybirds.agent import plays
+
+        first = self.domain.reach_targets(scenario)
+        return plays(self.domain, level, first[0] if first else None)
+
     def accidental(self, level, scenario, solution, rng) -> dict:
         """The paper's heuristic agent (agent.py): it shoots at everything but the first target."""
         from physc.domains.angrybirds.agent import accidental

@@ -31,6 +31,7 @@ class ScienceBirdsSearch(SearchHooks):
     blocker_length = OBSTACLE_LENGTH
     blocker_thickness = PLATFORM_THICKNESS
     blocker_angles = OBSTACLE_ANGLES
+    priors = "physc.domains.angrybirds.priors"  # phyq.json, rolling.json: benchmarks/link_prior.py
 
     def actions_at(self, level, name: str) -> list:
         obj = next((o for o in level.objects if o.name == name), None)
