@@ -10,8 +10,10 @@ the world's prior. The rest wait in the pool. The round's size is the search's, 
 number of workers': the model learns between rounds, so a round's choice is the same however
 many workers satisfy it (physc.driver.workers).
 
-Where the model knows nothing (no prior, no layout tried), every layout's chance is the same,
-and the layouts are tried in the order they were placed, as before there was a model.
+The first round takes the first layouts placed, without the model: a compile that they satisfy
+(most short chains) never pays for it (scikit-learn's import and fits, about a second). Where
+the model knows nothing (no prior, no layout tried), every layout's chance is the same, and the
+layouts are tried in the order they were placed, as before there was a model.
 """
 
 from __future__ import annotations
@@ -60,6 +62,7 @@ class Ranking(Generic[P]):
     drawn: int = 0
     proposed: int = 0  # conjunctions the layout search tried for the layouts drawn (the funnel's `proposed`)
     ended: Infeasible | None = None  # why the placements ran out, once they have
+    rounds: int = 0
 
     def round(self, size: int = ROUND) -> list[Candidate[P]]:
         """The next round's layouts, at most `size`: the longest waiting, then the likeliest.
@@ -69,8 +72,9 @@ class Ranking(Generic[P]):
             assert self.ended is not None, "a pool runs dry only when the placements end"
             raise self.ended
         oldest, rest = self.pool[0], self.pool[1:]
-        ranked = sorted(rest, key=lambda c: (-self.model.chance(c.links), c.order))
+        ranked = sorted(rest, key=lambda c: (-self.model.chance(c.links), c.order)) if self.rounds else rest
         chosen = [oldest] + ranked[: max(size - 1, 0)]
+        self.rounds += 1
         taken = {c.order for c in chosen}
         self.pool = [c for c in self.pool if c.order not in taken]
         return chosen
