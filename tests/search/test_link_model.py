@@ -98,3 +98,18 @@ def test_the_shipped_prior_was_measured_with_the_recognition_the_world_has_now(w
     assert prior.count >= 100 and {"hit", "roll", "fall"} <= set(prior.examples)
     assert {"scenarios", "seed", "seconds", "physc", "made", "command"} <= set(prior.provenance)
     assert not any("heldout" in s or "examples/long" in s or "shots" in s for s in prior.provenance["scenarios"])
+
+
+def test_a_prior_measured_with_another_recognition_is_not_used_and_the_task_says_so(monkeypatch, rolling):
+    from physc.driver.layout_loop import LayoutLoop
+    from physc.driver.run_settings import RunSettings
+
+    _, scenario, _ = selected(EXAMPLES / "paper" / "04_R.phys", None)
+    shipped = link_prior.load(rolling)
+    assert shipped is not None
+    current = LayoutLoop(rolling, scenario, 0, RunSettings())
+    assert current.model.prior == shipped.examples and current.proposals["prior"]["used"] is True
+    stale = link_prior.Prior(shipped.world, "0" * 16, shipped.provenance, shipped.examples)
+    monkeypatch.setattr(link_prior, "load", lambda domain: stale)
+    loop = LayoutLoop(rolling, scenario, 0, RunSettings())
+    assert loop.model.prior == {} and loop.proposals["prior"]["used"] is False
