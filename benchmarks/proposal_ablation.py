@@ -43,7 +43,7 @@ def one(job: tuple[str, str | None, int, float, bool]) -> dict:
         "made": made,
         "seconds": time.perf_counter() - started,
         "placed": funnel["placed"] if funnel else 0,
-        "never": funnel["never"] if funnel else None,
+        "never": 1 - funnel["chain_realised"] / funnel["placed"] if funnel and funnel["placed"] else None,
     }
 
 
