@@ -140,13 +140,11 @@ class LayoutLoop:
     settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
     progress: Callable[[Progress], None] | None = None
     model: LinkModel = attrs.field(factory=LinkModel)  # the proposal model (physc.search.link_model)
-    workers: Workers = attrs.field(default=None)  # who satisfies a round (physc.driver.workers)
-
-    prior: Prior | None = attrs.field(default=None)  # the world's prior, as shipped (physc.driver.link_prior)
+    workers: Workers = attrs.field(init=False)  # who satisfies a round (physc.driver.workers)
+    prior: Prior | None = attrs.field(init=False)  # the world's prior, as shipped (physc.driver.link_prior)
 
     def __attrs_post_init__(self) -> None:
-        if self.workers is None:
-            self.workers = Workers(self.run_of, self.settings.workers)
+        self.workers = Workers(self.run_of, self.settings.workers)
         self.prior = link_prior.load(self.domain)
         if self.prior is not None and self.prior.fingerprint == link_prior.recognition(self.domain):
             self.model.prior = self.prior.examples
