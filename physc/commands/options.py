@@ -95,8 +95,8 @@ def add_generation(parser, validate: bool = True) -> None:
         type=arguments.count,
         default=1,
         metavar="W",
-        help="processes that satisfy each task's placed layouts side by side (default 1); the task is the same "
-        "for any number, only sooner. With --jobs J, J × W processes in all",
+        help="processes that satisfy each task's placed layouts side by side (default 1): the same task "
+        "for any number, only sooner (generate and eval with --jobs J: J × W processes in all)",
     )
     if validate:
         parser.add_argument(
