@@ -238,6 +238,7 @@ class LayoutLoop:
             except budget.OutOfTime:
                 return self._out_of_time(tally.layouts)
             tally.seconds["layout"] += time.perf_counter() - clock
+            tally.funnel.proposed = ranking.proposed
             clock = time.perf_counter()
             jobs = [(tally.layouts + k, c.placed.layout, None) for k, c in enumerate(chosen)]
             try:
@@ -248,7 +249,6 @@ class LayoutLoop:
                 tally.seconds["satisfy"] += time.perf_counter() - clock
             for candidate, result in zip(chosen, answers, strict=False):  # (answers stop at the first task)
                 tally.layouts += 1
-                tally.funnel.proposed = ranking.proposed
                 if result is None:
                     return self._out_of_time(tally.layouts)
                 tally.note(result)

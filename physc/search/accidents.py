@@ -21,7 +21,7 @@ import attrs
 
 from physc.compiler.concrete_layout import ConcreteLayout
 from physc.search.attempt import Attempt
-from physc.search.guards import BACKS, block, roof
+from physc.search.guards import BACKS, block, first_player, roof
 from physc.search.problem import Ledger, Problem, simulate
 from physc.search.strengthen import holds_up
 
@@ -45,7 +45,7 @@ def solving(problem: Problem, ledger: Ledger, layout: ConcreteLayout, plays: Seq
     return found
 
 
-def barred(
+def stopper(
     problem: Problem,
     ledger: Ledger,
     layout: ConcreteLayout,
@@ -82,7 +82,7 @@ def guard(problem: Problem, ledger: Ledger, layout: ConcreteLayout, solution: At
     obstacles so far (the bars are named after them)."""
     domain = problem.domain
     plays = list(domain.evaluation.agent_plays(problem.level_of(layout), problem.scenario))
-    actor = next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
+    actor = first_player(problem)
     if not plays or actor is None:
         return Accidents(layout)
     limit = problem.settings.accidental
@@ -95,7 +95,7 @@ def guard(problem: Problem, ledger: Ledger, layout: ConcreteLayout, solution: At
             break
         tried.add(culprit.label)
         left -= 1
-        blocked = barred(problem, ledger, layout, culprit, actor, solution, count + len(added))
+        blocked = stopper(problem, ledger, layout, culprit, actor, solution, count + len(added))
         if blocked is not None:
             layout = blocked[0]
             added.append(f"accidental: {blocked[1]}")

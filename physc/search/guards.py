@@ -225,6 +225,11 @@ def _shortcut(attempt: Attempt) -> bool:
     return attempt.trace.solved and not attempt.fidelity.valid
 
 
+def first_player(problem: Problem) -> str | None:
+    """The first of the player's objects the scenario declares: whose flight a guard bars."""
+    return next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
+
+
 def guard(
     problem: Problem, ledger: Ledger, layout: ConcreteLayout, solution: Attempt, count: int
 ) -> tuple[ConcreteLayout, list[str]]:
@@ -235,7 +240,7 @@ def guard(
     first = (
         lead[1] if len(lead) > 1 else next(iter(problem.domain.reach_targets(problem.scenario)), None)
     )  # (after a tap: what the bird hits)
-    actor = next((o.name for o in problem.scenario.objects if o.name in problem.players), None)
+    actor = first_player(problem)
     added: list[str] = []
     if problem.domain.search.blocker is None or actor is None:
         return layout, added
