@@ -168,14 +168,18 @@ def generate(
     accidental: bool = False,
     dask_workers: int | None = None,
     scheduler: str | None = None,
+    wave: int | None = None,
     **overrides,
 ) -> Dataset:
     """`physc generate FILES --tasks N --out OUT`: `tasks` tasks (seeds `seed` …) of every
     scenario of `files` (or of `scenarios`), into the folder `out`: on `jobs` local processes,
     or on a Dask cluster of `dask_workers` started here, or on the one at `scheduler` (an
-    address; `pip install -e '.[dask]'`). The bytes written depend on the scenarios, seeds and
-    settings only, never on where they were made."""
+    address; `pip install -e '.[dask]'`); a scenario's tasks in waves of `wave` (None:
+    physc.dataset.waves.WAVE; 0: each on its own), each learning from the waves before. The bytes
+    written depend on the scenarios, seeds, settings and wave only, never on where they were
+    made."""
     from physc.dataset.build import build
+    from physc.dataset.waves import WAVE
     from physc.execution import executor_for
 
     settings = overridden(settings, "generate", **overrides)
@@ -193,7 +197,7 @@ def generate(
     if problem:
         raise ScenarioError((), None, ", ".join(sorted({job.path for job in made})), problem)
     with executor_for(jobs, scheduler, dask_workers) as executor:
-        rows = build(made, Path(out), executor, command="physc.generate(…)")
+        rows = build(made, Path(out), executor, command="physc.generate(…)", wave=WAVE if wave is None else wave)
     return Dataset(Path(out), tuple(rows))
 
 

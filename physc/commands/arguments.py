@@ -73,6 +73,14 @@ def tasks(text: str) -> int:
     return _within(text, MAX_TASKS)
 
 
+def wave(text: str) -> int:
+    """--wave: a scenario's tasks made side by side, from 0 (each on its own) to MAX_TASKS."""
+    value = _whole(text)
+    if not 0 <= value <= MAX_TASKS:
+        raise argparse.ArgumentTypeError(f"takes a whole number from 0 to {MAX_TASKS:,}, not {text}")
+    return value
+
+
 MAX_REPLAYS = 1000
 
 

@@ -18,6 +18,7 @@ from physc.commands.running import (
     reproducing_command,
     selected_jobs,
 )
+from physc.dataset.waves import WAVE
 
 
 def _described(row: dict) -> str:
@@ -55,7 +56,9 @@ def cmd_generate(args) -> int:
 
     with executor_from(args) as executor:
         try:
-            rows = build(jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command)
+            rows = build(
+                jobs, Path(args.out), executor, Progress("generate", args.quiet, _described), command, args.wave
+            )
         except DomainError as error:  # the domain's own benchmark files refused (the tasks are kept)
             raise UsageError(
                 f"the tasks are in {args.out}, but not the domain's own benchmark files: {error.message}"
@@ -94,6 +97,14 @@ def add_command(commands, common) -> None:
     parser.add_argument("--png", action="store_true", help="also draw each task (<seed>.png)")
     parser.add_argument(
         "--accidental", action="store_true", help="also measure accidental solvability (the domain's agent; slower)"
+    )
+    parser.add_argument(
+        "--wave",
+        type=arguments.wave,
+        default=WAVE,
+        metavar="N",
+        help=f"a scenario's tasks made side by side before later ones learn from what their searches "
+        f"simulated (default {WAVE}; 0: each task on its own, as physc compile makes it)",
     )
     add_generation(parser)
     add_target(parser)

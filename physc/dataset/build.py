@@ -3,15 +3,19 @@
 Each task's files are written whole (physc.files.write_atomic), then its row is appended to the
 manifest, so a run killed at any moment resumes where it stopped: a task whose row and files are
 there, made with the same settings, is not made again; one without is made again, to the same
-bytes. At the end the manifest (JSON Lines and Parquet) and the README are written whole.
+bytes. A scenario's tasks are made in waves, each learning from the waves before
+(physc.dataset.waves). At the end the manifest (JSON Lines and Parquet) and the README are
+written whole.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
+import attrs
+
 from physc import budget
-from physc.dataset import manifest, readme
+from physc.dataset import manifest, readme, waves
 from physc.dataset.worker import make, scenario_file
 from physc.domains import load_domain
 from physc.driver.job import Job
@@ -25,7 +29,7 @@ def _finished(folder: Path, job: Job, row: dict | None) -> bool:
     """Whether the task's row was made with the job's settings and its files are all there."""
     if row is None or row.get("settings") != job.recorded:
         return False
-    return all((folder / row[name]).is_file() for name in ("level", "task", "picture") if row.get(name))
+    return all((folder / row[name]).is_file() for name in ("level", "task", "picture", "examples") if row.get(name))
 
 
 def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
@@ -44,10 +48,18 @@ def benchmark_files(folder: Path, rows: list[dict]) -> dict[str, bytes]:
 
 
 def build(
-    jobs: list[Job], folder: Path, executor: Executor, progress=None, command: str = "physc generate …"
+    jobs: list[Job],
+    folder: Path,
+    executor: Executor,
+    progress=None,
+    command: str = "physc generate …",
+    wave: int = waves.WAVE,
 ) -> list[dict]:
-    """Make the dataset of `jobs` in `folder`; every job's row, in the order of `jobs`."""
+    """Make the dataset of `jobs` in `folder`, a scenario's tasks in waves of `wave` (each wave
+    learning from those before: physc.dataset.waves; 0: each task on its own); every job's row,
+    in the order of `jobs`."""
     folder = ensure_folder(folder)
+    jobs = waves.assigned(jobs, wave)
     rows = manifest.read(folder)
     todo = [job for job in jobs if not _finished(folder, job, rows.get(job.key))]
     if rows:  # written whole first, so that a torn last line of a killed run cannot stay in the middle
@@ -81,7 +93,15 @@ def build(
                 if progress:
                     progress.advance(row)
 
-            executor.map(make, todo, keep)
+            for number in sorted({len(job.learned_from) for job in todo}):  # wave by wave
+                group = [
+                    attrs.evolve(
+                        job, earlier=waves.gathered(folder, [rows.get((job.scenario, s)) for s in job.learned_from])
+                    )
+                    for job in todo
+                    if len(job.learned_from) == number
+                ]
+                executor.map(make, group, keep)
     except OSError as error:  # opening the manifest
         raise OutputError(path, error) from None
     except OutputError as error:

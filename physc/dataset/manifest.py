@@ -21,7 +21,8 @@ JSONL = "manifest.jsonl"
 PARQUET = "manifest.parquet"
 
 # The columns, in order, with their Arrow types ("struct": an object, its fields' types read from
-# the rows; "terms": a list of interactions in .phys syntax; "settings" and "seconds": structs
+# the rows; "terms": a list of interactions in .phys syntax; "seeds": a list of seeds (the earlier
+# tasks a task learned from: physc.dataset.waves); "settings" and "seconds": structs
 # of fixed fields, so that datasets made with other settings, or whose tasks passed other
 # stages, have the same schema and combine).
 COLUMNS = [
@@ -40,6 +41,7 @@ COLUMNS = [
     ("level", "string"),
     ("task", "string"),
     ("picture", "string"),
+    ("examples", "string"),
     ("solution", "struct"),
     ("trace", "string"),
     ("trace_terms", "terms"),
@@ -51,11 +53,13 @@ COLUMNS = [
     ("accidental", "float64"),
     ("agent_plays", "int32"),
     ("auccess", "float64"),
+    ("learned_from", "seeds"),
     ("generation_seconds", "float64"),
     ("seconds", "seconds"),
     ("settings", "settings"),
 ]
-# A job's settings (physc.driver.job.Job.recorded), each field typed whether or not a run set it.
+# A job's settings (physc.driver.job.Job.recorded), each field typed whether or not a run set it
+# (its `learned_from` is the row's column of that name).
 SETTINGS = (
     ("acceptance", "bool_"),
     ("accidental", "bool_"),
@@ -166,7 +170,8 @@ def write_parquet(folder: Path, rows: list[dict]) -> None:
                     )
                 )
         else:
-            arrays.append(pa.array(values, type=pa.list_(pa.string()) if kind == "terms" else getattr(pa, kind)()))
+            lists = {"terms": pa.list_(pa.string()), "seeds": pa.list_(pa.int64())}
+            arrays.append(pa.array(values, type=lists[kind] if kind in lists else getattr(pa, kind)()))
     table = pa.Table.from_arrays(arrays, names=[name for name, _ in COLUMNS])
     buffer = io.BytesIO()
     pq.write_table(table, buffer)

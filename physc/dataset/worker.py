@@ -12,6 +12,7 @@ import random
 import time
 
 from physc.compiler.infeasible import Infeasible
+from physc.dataset import waves
 from physc.dataset.manifest import terms
 from physc.domains.base import DomainError
 from physc.driver.job import Job
@@ -54,8 +55,10 @@ def make(job: Job) -> dict:
         "settings": job.recorded,
     }
     started = time.perf_counter()
+    run = Pipeline(domain, scenario, job.seed, job.settings, job.source, earlier=job.earlier)
+    examples = waves.examples_file(job.scenario, job.seed)  # what its compile taught, for later waves
+    row.update(learned_from=list(job.learned_from), examples=examples)
     try:
-        run = Pipeline(domain, scenario, job.seed, job.settings, job.source)
         with run.within_budget():  # the picture is part of the task's work, within its one budget
             task = run.task
             picture = domain.files.picture(task, "png") if job.picture else None
@@ -64,7 +67,7 @@ def make(job: Job) -> dict:
         DomainError,
     ) as error:  # DomainError: a scenario the domain cannot make (PHYRE: three red balls)
         row.update(outcome=NO_TASK, reason=error.message, generation_seconds=round(time.perf_counter() - started, 4))
-        return {"row": row, "files": {}}
+        return {"row": row, "files": {examples: waves.dumped(run.taught)}}
     seconds = round(time.perf_counter() - started, 4)
     names = file_names(job, domain.files.level_suffix)
     data = to_data(task)
@@ -73,6 +76,7 @@ def make(job: Job) -> dict:
     files: dict[str, str | bytes] = {
         names["level"]: domain.files.emit_level(task.level),
         names["task"]: json.dumps(data, indent=2, ensure_ascii=False) + "\n",
+        examples: waves.dumped(run.taught),
     }
     if picture is not None:
         files[names["picture"]] = picture

@@ -1,11 +1,12 @@
 """One task to make: the job `physc generate` and `physc eval` hand a worker.
 
 A job names a scenario (its text travels with it: a worker may be on another machine), a
-seed, the world and engine it is made in, and the run's settings (one RunSettings value,
-physc.driver.run_settings). It depends on
-nothing else, so the task it makes depends only on the job, never on the process or the
-number of workers. `recorded` is what a stored result (a dataset row, an evaluation record)
-was made with: one made with other settings is made again.
+seed, the world and engine it is made in, the run's settings (one RunSettings value,
+physc.driver.run_settings) and, in a dataset, the earlier tasks it learns from (their seeds and
+the examples their compiles taught: physc.dataset.waves). It depends on nothing else, so the
+task it makes depends only on the job, never on the process or the number of workers.
+`recorded` is what a stored result (a dataset row, an evaluation record) was made with: one
+made with other settings is made again.
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from physc.domains.words import INSTALLED
 from physc.driver.run_settings import RunSettings
 from physc.dsl.frontend import analyze_files, scenario_in
 from physc.fingerprint import code_fingerprint, scenario_fingerprint
+from physc.search.link_model import KindedExample
 
 
 @attrs.frozen
@@ -37,6 +39,8 @@ class Job:
     fingerprint: str = ""  # of the scenario as written (scenario_fingerprint)
     code: str = ""  # of the code that makes the task (code_fingerprint)
     source: str = ""  # the scenario's text in block form: a worker reads this, never the file
+    learned_from: tuple[int, ...] = ()  # seeds of the scenario's earlier tasks it learns from (physc.dataset.waves)
+    earlier: tuple[KindedExample, ...] = attrs.field(default=(), eq=False, repr=False)  # their examples
 
     @property
     def key(self) -> tuple[str, int]:
@@ -62,6 +66,7 @@ class Job:
             "scenario": self.fingerprint,
             "physc": __version__,
             "code": self.code,
+            "learned_from": list(self.learned_from),
         }
 
     def target(self):

@@ -14,7 +14,7 @@ from __future__ import annotations
 import contextlib
 import copy
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import Protocol
 
 import attrs
@@ -33,7 +33,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.search import elsewhere, placing
 from physc.search.funnel import Funnel, funnel_text
 from physc.search.link_features import LinkFeatures, features
-from physc.search.link_model import LinkModel
+from physc.search.link_model import KindedExample, LinkModel
 from physc.search.outcome import Outcome
 from physc.simulation.margins import Margin
 from physc.worlds import differing_kinds
@@ -139,6 +139,7 @@ class LayoutLoop:
     seed: int | None  # the run's seed: each layout's search draws from a generator named after it and its place
     settings: RunSettings  # the run's budgets and checks (physc.driver.run_settings)
     progress: Callable[[Progress], None] | None = None
+    earlier: Sequence[KindedExample] = ()  # a dataset's earlier tasks' examples (physc.dataset.waves)
     model: LinkModel = attrs.field(factory=LinkModel)  # the proposal model (physc.search.link_model)
     workers: Workers = attrs.field(init=False)  # who satisfies a round (physc.driver.workers)
     prior: Prior | None = attrs.field(init=False)  # the world's prior, as shipped (physc.driver.link_prior)
@@ -148,6 +149,8 @@ class LayoutLoop:
         self.prior = link_prior.load(self.domain)
         if self.prior is not None and self.prior.fingerprint == link_prior.recognition(self.domain):
             self.model.prior = self.prior.examples
+        for kind, values, realised in self.earlier:
+            self.model.earlier.setdefault(kind, []).append((tuple(values), bool(realised)))
 
     @property
     def proposals(self) -> dict:
@@ -158,6 +161,7 @@ class LayoutLoop:
         return {
             "prior": None if prior is None else prior.record(used),
             "learned": self.model.learned,
+            "earlier": len(self.earlier),
             "pool": POOL,
             "round": ROUND,
         }

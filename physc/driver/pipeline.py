@@ -16,7 +16,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import random
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import cast
 
 import attrs
@@ -39,6 +39,7 @@ from physc.domains.simulated import SimulatedDomain
 from physc.driver.layout_loop import LayoutLoop, Progress
 from physc.driver.run_settings import RunSettings
 from physc.dsl.scenario import ScenarioIR
+from physc.search.link_model import KindedExample
 
 PLACEMENT_BUDGET = 200  # consistent conjunctions that placement may try
 DEFAULT_SETTINGS = RunSettings()  # a run's budgets and checks when none are given
@@ -60,6 +61,7 @@ class Pipeline:
         settings: RunSettings = DEFAULT_SETTINGS,
         source: str = "",
         progress: Callable[[Progress], None] | None = None,
+        earlier: Sequence[KindedExample] = (),
     ):
         self.domain = domain
         self.scenario = scenario
@@ -70,6 +72,10 @@ class Pipeline:
         # Called after each layout given up, with a Progress: long generations say how
         # they are doing instead of one line for minutes.
         self.progress = progress
+        # A dataset's task learns from its scenario's earlier tasks (physc.dataset.waves): the
+        # examples their compiles taught; `taught`, once the task is made (or not), is this one's.
+        self.earlier = earlier
+        self.taught: list[KindedExample] = []
 
     @functools.cached_property
     def deadline(self) -> budget.Deadline:
@@ -192,9 +198,14 @@ class Pipeline:
         time is spent."""
         # The task stage needs `satisfy`, which `require` checked before any work: the capability
         # SimulatedDomain declares (physc.domains.base), so the domain is one.
-        loop = LayoutLoop(cast(SimulatedDomain, self.domain), self.scenario, self.seed, self.settings, self.progress)
-        with self.within_budget():
-            generated = loop.run(self.placements())
+        loop = LayoutLoop(
+            cast(SimulatedDomain, self.domain), self.scenario, self.seed, self.settings, self.progress, self.earlier
+        )
+        try:
+            with self.within_budget():
+                generated = loop.run(self.placements())
+        finally:
+            self.taught = loop.model.taught()
         parts = generated.outcome.parts
         assert parts is not None, "the layout loop's outcome is satisfied"
         # The search's Parts are the Task's own fields, passed whole; the rest is what only the

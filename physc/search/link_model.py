@@ -14,11 +14,12 @@ penalty). Why this: a link happens in a *region* of its features (a roll needs r
 not so much that the roller stops; a fall needs height) and a quadratic boundary is the least
 model that has one; with tens to hundreds of examples, a regularised linear model in those terms
 neither overfits nor needs tuning, fits in milliseconds, and its lbfgs solver is deterministic, so
-the same examples give the same ranking and the same task. Learned from the compile's own layouts
-and from a world's prior (physc.driver.link_prior) whose examples count `PRIOR_WEIGHT` each: the
-prior says where a kind of link happens in general, the compile's own what happens in its
-scenario. A kind with examples of one outcome only (or none) has their share as its chance, with
-one imagined example of each outcome (Laplace's rule).
+the same examples give the same ranking and the same task. Learned from the compile's own layouts,
+from a world's prior (physc.driver.link_prior) whose examples count `PRIOR_WEIGHT` each, and, in
+a dataset, from the compiles of its scenario's earlier tasks (physc.dataset.waves), whose examples
+count as the compile's own: the prior says where a kind of link happens in general, the
+scenario's compiles what happens in that scenario. A kind with examples of one outcome only (or
+none) has their share as its chance, with one imagined example of each outcome (Laplace's rule).
 """
 
 from __future__ import annotations
@@ -36,9 +37,10 @@ PENALTY = 0.3  # the logistic regression's inverse regularisation strength (scik
 FLOOR = 0.02  # a link's chance is kept within [FLOOR, 1 - FLOOR]: no layout is ruled out for good
 
 Example = tuple[tuple[float, ...], bool]  # a link's features, and whether it was realised
+KindedExample = tuple[str, tuple[float, ...], bool]  # an example with its link's kind
 
 
-def examples(links: Sequence[LinkFeatures], best: int) -> list[tuple[str, tuple[float, ...], bool]]:
+def examples(links: Sequence[LinkFeatures], best: int) -> list[KindedExample]:
     """What one placed layout teaches: (kind, features, realised) of each link up to the first
     its best play did not realise (`best`: the links realised in order)."""
     return [(f.kind, f.values, f.index < best) for f in links if f.index <= best]
@@ -50,6 +52,7 @@ class LinkModel:
 
     prior: dict[str, list[Example]] = attrs.field(factory=dict)  # a world's, counted PRIOR_WEIGHT each
     own: dict[str, list[Example]] = attrs.field(factory=dict)  # the compile's own
+    earlier: dict[str, list[Example]] = attrs.field(factory=dict)  # the scenario's earlier tasks' (a dataset)
     fitted: dict[str, object] = attrs.field(factory=dict)  # kind → a fitted pipeline, or a fixed chance
     stale: bool = True
 
@@ -58,6 +61,11 @@ class LinkModel:
         for kind, values, realised in examples(links, best):
             self.own.setdefault(kind, []).append((values, realised))
         self.stale = True
+
+    def taught(self) -> list[KindedExample]:
+        """The compile's own examples, (kind, features, realised), by kind and in the order learned:
+        what a dataset's later tasks learn from (physc.dataset.waves)."""
+        return [(kind, values, realised) for kind in sorted(self.own) for values, realised in self.own[kind]]
 
     @property
     def learned(self) -> int:
@@ -68,11 +76,14 @@ class LinkModel:
         """Each kind's model fitted again to the examples it has (only when new ones came)."""
         if not self.stale:
             return
-        self.fitted = {kind: fitted(self.prior.get(kind, []), self.own.get(kind, [])) for kind in self.kinds()}
+        self.fitted = {
+            kind: fitted(self.prior.get(kind, []), self.earlier.get(kind, []) + self.own.get(kind, []))
+            for kind in self.kinds()
+        }
         self.stale = False
 
     def kinds(self) -> list[str]:
-        return sorted(set(self.prior) | set(self.own))
+        return sorted(set(self.prior) | set(self.earlier) | set(self.own))
 
     def chance(self, links: Iterable[LinkFeatures]) -> float:
         """The chance that a layout with these links realises its chain: the product of each

@@ -186,7 +186,7 @@ def test_a_full_disk_stops_with_a_clear_error_and_keeps_what_was_done(tmp_path, 
     written = []
 
     def filling(path, data):
-        if len(written) == 5:  # the scenario's copy, two files for each of two tasks, then the third task's first file
+        if len(written) == 7:  # the scenario's copy, three files for each of two tasks (level, task, examples), then the third task's first file
             raise OutputError(path, OSError(errno.ENOSPC, os.strerror(errno.ENOSPC)))
         written.append(path)
         write_atomic(path, data)
