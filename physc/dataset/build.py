@@ -12,8 +12,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import attrs
-
 from physc import budget
 from physc.dataset import manifest, readme, waves
 from physc.dataset.worker import make, scenario_file
@@ -93,14 +91,7 @@ def build(
                 if progress:
                     progress.advance(row)
 
-            for number in sorted({len(job.learned_from) for job in todo}):  # wave by wave
-                group = [
-                    attrs.evolve(
-                        job, earlier=waves.gathered(folder, [rows.get((job.scenario, s)) for s in job.learned_from])
-                    )
-                    for job in todo
-                    if len(job.learned_from) == number
-                ]
+            for group in waves.in_waves(todo, folder, rows):
                 executor.map(make, group, keep)
     except OSError as error:  # opening the manifest
         raise OutputError(path, error) from None

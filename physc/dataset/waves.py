@@ -4,11 +4,12 @@ from the waves before it.
 Within one compile, the proposal model (physc.search.link_model) learns which placed layouts
 realise which links of the chain. `physc generate` hands that on: a scenario's tasks are made in
 *waves* of `wave` seeds (`--wave`, default WAVE; seeds S … S+wave−1 first, then the next wave), the
-tasks of a wave side by side, and a task of a later wave starts with the examples that every
-earlier wave's compile of the same scenario taught (made or not: where a link failed teaches as
-much as where it held). So the 100th task's layouts are ranked by what the first 99 simulated,
-while its own seed still draws its own layouts (no earlier layout is repeated; `physc eval`'s
-diversity measures how far apart they are).
+tasks of a wave side by side, and a task of a later wave starts with the examples that the
+compiles of the same scenario in the waves before taught (made or not: where a link failed
+teaches as much as where it held), the latest HORIZON of them. So the 100th task's layouts are
+ranked by what the 16 before its wave simulated, while its own seed still draws its own layouts
+(no earlier layout is repeated; `physc eval`'s diversity measures how far apart they are). The
+horizon keeps what a wave reads, and each row's list of seeds, bounded in a dataset of any size.
 
 The contract stays explicit: a task depends on its scenario, seed, settings, world, the prior's
 fingerprint and the earlier tasks its manifest row names (`learned_from`: their seeds); their
@@ -26,7 +27,7 @@ their models as quickly as its first.
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -38,12 +39,14 @@ if TYPE_CHECKING:  # the command line reads WAVE without loading the search
 
 WAVE = 4  # a scenario's tasks made side by side before the next ones learn from them
 CAP = 600  # earlier examples carried of each kind at most
+HORIZON = 16  # earlier tasks a task learns from at most (the latest): what a later wave reads stays bounded
 
 
 def learned_from(index: int, wave: int) -> range:
     """The places (0, 1, …, in seed order) of the scenario's tasks that the task at `index`
-    learns from: those of the waves before its own (none, with a wave of 0)."""
-    return range((index // wave) * wave) if wave > 0 else range(0)
+    learns from: the last HORIZON of those in the waves before its own (none, with a wave of 0)."""
+    start = (index // wave) * wave if wave > 0 else 0
+    return range(max(start - HORIZON, 0), start)
 
 
 def assigned(jobs: Sequence[Job], wave: int) -> list[Job]:
@@ -53,21 +56,41 @@ def assigned(jobs: Sequence[Job], wave: int) -> list[Job]:
     for job in jobs:
         seeds.setdefault(job.scenario, []).append(job.seed)
     order = {name: sorted(found) for name, found in seeds.items()}
-    found = []
-    for job in jobs:
-        mine = order[job.scenario]
-        earlier = tuple(mine[i] for i in learned_from(mine.index(job.seed), wave))
-        found.append(attrs.evolve(job, learned_from=earlier))
-    return found
+    place = {(name, seed): i for name, found in order.items() for i, seed in enumerate(found)}
+    return [
+        attrs.evolve(job, learned_from=tuple(order[job.scenario][i] for i in learned_from(place[job.key], wave)))
+        for job in jobs
+    ]
 
 
-def gathered(folder: Path, rows: Sequence[dict | None]) -> tuple[KindedExample, ...]:
-    """What a task of a later wave starts with: the examples of the earlier tasks' `rows` (their
-    side files in `folder`), `carried`."""
+def in_waves(todo: Sequence[Job], folder: Path, rows: dict) -> Iterator[list[Job]]:
+    """The jobs to make, wave by wave, each carrying what its earlier tasks taught: read from
+    their rows' side files in `folder` when its wave comes (`rows`, the manifest's rows by key,
+    holds the waves before by then), once for a wave's tasks of one scenario, and not kept
+    between waves (a long dataset's side files would fill the memory)."""
+
+    def after(job: Job) -> int:  # the last seed before its wave: a scenario's waves come in its order
+        return max(job.learned_from, default=-1)
+
+    for last in sorted({after(job) for job in todo}):
+        group = [job for job in todo if after(job) == last]
+        files: dict[Path, list[KindedExample]] = {}
+        earlier: dict[str, tuple[KindedExample, ...]] = {}
+        for job in group:
+            if job.scenario not in earlier:
+                earlier[job.scenario] = gathered(folder, [rows.get((job.scenario, s)) for s in job.learned_from], files)
+        yield [attrs.evolve(job, earlier=earlier[job.scenario]) for job in group]
+
+
+def gathered(folder: Path, rows: Sequence[dict | None], files: dict) -> tuple[KindedExample, ...]:
+    """The examples of the earlier tasks' `rows` (their side files in `folder`, read once into
+    `files`), `carried`."""
     taught = []
     for row in rows:
         path = folder / row["examples"] if row is not None and row.get("examples") else None
-        taught.append(read(path) if path is not None and path.is_file() else [])
+        if path is not None and path not in files:
+            files[path] = read(path) if path.is_file() else []
+        taught.append(files[path] if path is not None else [])
     return carried(taught)
 
 

@@ -32,10 +32,16 @@ def rows(folder: Path) -> list[dict]:
 def test_a_task_learns_from_the_waves_before_its_own_counted_in_seed_order():
     assert list(waves.learned_from(0, 4)) == [] and list(waves.learned_from(3, 4)) == []
     assert list(waves.learned_from(4, 4)) == [0, 1, 2, 3] and list(waves.learned_from(9, 4)) == list(range(8))
+    assert list(waves.learned_from(41, 4)) == list(range(40 - waves.HORIZON, 40))  # the latest, at most HORIZON
     assert list(waves.learned_from(9, 0)) == []  # a wave of 0: each task on its own
     jobs = [Job("a.phys", name, seed) for name in ("A", "B") for seed in (12, 10, 11)]
     assigned = {(j.scenario, j.seed): j.learned_from for j in waves.assigned(jobs, 2)}
     assert assigned == {("A", 10): (), ("A", 11): (), ("A", 12): (10, 11), ("B", 10): (), ("B", 11): (), ("B", 12): (10, 11)}
+
+
+def test_a_large_dataset_names_a_bounded_list_of_earlier_tasks():
+    assigned = waves.assigned([Job("a.phys", "A", seed) for seed in range(100_000)], 4)
+    assert assigned[-1].learned_from == tuple(range(99_980, 99_996)) and max(len(j.learned_from) for j in assigned) == waves.HORIZON
 
 
 def test_the_examples_carried_are_capped_evenly_per_kind():
