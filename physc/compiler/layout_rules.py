@@ -15,7 +15,9 @@ PHYRE-like plugin both do. The paper's table "Inferred layout constraints":
     slide(a, b, d)    → inDirection(a, b, -d)
     bounce(a, b, d)   → inDirection(a, b, d), and for d left or right also inDirection(a, b, -d)
     cannotHit(a,b,d)  → pathObstructed(a, b, d)
-    cannotFall(a)     → a chain of touching surfaces that a moves on
+    cannotFall(a)     → a chain of touching surfaces that a moves on (with
+                        continuous_paths, every mover's path is one, unless it is declared to
+                        fall between two of them)
 
 and the layout optimisation that makes the task stand under gravity. Our precise
 reading (docs/qsr.md, "From scenario to layout"):
@@ -80,8 +82,11 @@ class LayoutRules:
     (angrybirds) only a push says so."""
     continuous_paths: bool = False
     """Whether the consecutive surfaces of every path touch, one continuous top edge (a
-    ledge running into a ramp). Without it (angrybirds) they touch only under cannotFall,
-    and the satisfier's repairs close the gaps in simulation."""
+    ledge running into a ramp), unless the mover is declared to fall between them. Without
+    it they touch only under cannotFall (the paper's reading), and the satisfier's repairs
+    close the gaps in simulation. angrybirds and the PHYRE-like plugin set it: a mover that
+    starts beside its surface must reach it, and a layout that puts that surface above or far
+    beyond it gives a chain no variant realises (docs/results.md, issue 74)."""
 
     inclined: str | None = None
     """The concrete object of an inclined surface (angrybirds: inclinedPlatform), for the

@@ -222,13 +222,17 @@ scenario Gapped {
 """
 
 
-def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own():
+def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own(monkeypatch):
     from middle_end import scenario_from_text
 
     from physc.search import placing, proposals
 
-    scenario = scenario_from_text(GAPPED)  # no cannotFall: surface and hSurface need not touch
+    scenario = scenario_from_text(GAPPED)
     domain = load_domain("angrybirds")
+    # Paths that need not be continuous (the paper's reading, without cannotFall): surface and
+    # hSurface need not touch, and the proposals close the gap.
+    rules = attrs.evolve(domain.layout_rules, continuous_paths=False)
+    monkeypatch.setattr(type(domain), "layout_rules", property(lambda self: rules))
     for seed in range(10):
         layout = Pipeline(domain, scenario, seed).placed.layout
         s = searching(domain, scenario, layout, seed, 6)
@@ -247,6 +251,20 @@ def test_a_body_that_must_cross_onto_the_next_surface_gets_it_brought_to_its_own
         # What rests beyond moved with it; what came before did not.
         assert moved["pig"].x - objects["pig"].x == pytest.approx(moved["hSurface"].x - objects["hSurface"].x, abs=1e-4)
         assert moved["rBlock"] == objects["rBlock"] and moved["sBlock"] == objects["sBlock"]
+
+
+def test_a_movers_next_surface_meets_its_support_level_in_angrybirds():
+    from middle_end import scenario_from_text
+
+    from physc.search import placing
+
+    scenario = scenario_from_text(GAPPED)  # no cannotFall: the paths are joined all the same
+    domain = load_domain("angrybirds")
+    for seed in range(3):
+        objects = {o.name: o for o in Pipeline(domain, scenario, seed).placed.layout.objects}
+        _, _, end, top = placing.box(objects["support_rBlock"])
+        near, _, _, next_top = placing.box(objects["surface"])
+        assert near == pytest.approx(end, abs=1e-3) and next_top == pytest.approx(top, abs=1e-3)
 
 
 def test_a_bounce_surface_is_turned_within_its_tilt():

@@ -80,8 +80,15 @@ class AngryBirds(SimulatedDomain):
         """The layout graph's rules in Science Birds (the compiler loads when a scenario is compiled)."""
         from physc.compiler.layout_rules import LayoutRules
 
+        # continuous_paths: a mover's platforms make one top edge, as Phy-Q's rolling and sliding
+        # levels build them (docs/qsr.md, "Continuous paths").
         return LayoutRules(
-            player="bird", flat="flatPlatform", ground="ground", player_heading="right", inclined="inclinedPlatform"
+            player="bird",
+            flat="flatPlatform",
+            ground="ground",
+            player_heading="right",
+            inclined="inclinedPlatform",
+            continuous_paths=True,
         )
 
     robustness_replays = ROBUSTNESS_REPLAYS  # noisy replays a generated solution is put through

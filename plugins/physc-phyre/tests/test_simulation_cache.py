@@ -172,7 +172,7 @@ def test_a_damaged_task_file_exits_2_with_no_traceback(dataset, tmp_path):
 
     copy = tmp_path / "copy"
     shutil.copytree(dataset, copy, ignore=shutil.ignore_patterns("cache"))
-    task = next(p for p in sorted(copy.glob("Ledge/*.json")) if not p.name.endswith(".level.json"))
+    task = next(p for p in sorted(copy.glob("Ledge/*.json")) if not p.name.endswith((".level.json", ".examples.json")))
     task.write_text("{not json")
     run = subprocess.run(
         [sys.executable, "-m", "physc_phyre.cache", str(copy), "--actions", "5"],
