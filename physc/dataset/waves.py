@@ -74,24 +74,17 @@ def in_waves(todo: Sequence[Job], folder: Path, rows: dict) -> Iterator[list[Job
 
     for last in sorted({after(job) for job in todo}):
         group = [job for job in todo if after(job) == last]
-        files: dict[Path, list[KindedExample]] = {}
         earlier: dict[str, tuple[KindedExample, ...]] = {}
         for job in group:
             if job.scenario not in earlier:
-                earlier[job.scenario] = gathered(folder, [rows.get((job.scenario, s)) for s in job.learned_from], files)
+                earlier[job.scenario] = gathered(folder, [rows.get((job.scenario, s)) for s in job.learned_from])
         yield [attrs.evolve(job, earlier=earlier[job.scenario]) for job in group]
 
 
-def gathered(folder: Path, rows: Sequence[dict | None], files: dict) -> tuple[KindedExample, ...]:
-    """The examples of the earlier tasks' `rows` (their side files in `folder`, read once into
-    `files`), `carried`."""
-    taught = []
-    for row in rows:
-        path = folder / row["examples"] if row is not None and row.get("examples") else None
-        if path is not None and path not in files:
-            files[path] = read(path) if path.is_file() else []
-        taught.append(files[path] if path is not None else [])
-    return carried(taught)
+def gathered(folder: Path, rows: Sequence[dict | None]) -> tuple[KindedExample, ...]:
+    """The examples of the earlier tasks' `rows` (their side files in `folder`), `carried`."""
+    paths = [folder / row["examples"] if row is not None and row.get("examples") else None for row in rows]
+    return carried([read(path) if path is not None and path.is_file() else [] for path in paths])
 
 
 def examples_file(scenario: str, seed: int) -> str:

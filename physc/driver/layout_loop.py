@@ -33,7 +33,7 @@ from physc.dsl.scenario import ScenarioIR
 from physc.search import elsewhere, placing
 from physc.search.funnel import Funnel, funnel_text
 from physc.search.link_features import LinkFeatures, features
-from physc.search.link_model import KindedExample, LinkModel
+from physc.search.link_model import KindedExample, LinkModel, by_kind
 from physc.search.outcome import Outcome
 from physc.simulation.margins import Margin
 from physc.worlds import differing_kinds
@@ -149,8 +149,7 @@ class LayoutLoop:
         self.prior = link_prior.load(self.domain)
         if self.prior is not None and self.prior.fingerprint == link_prior.recognition(self.domain):
             self.model.prior = self.prior.examples
-        for kind, values, realised in self.earlier:
-            self.model.earlier.setdefault(kind, []).append((tuple(values), bool(realised)))
+        self.model.earlier = by_kind(self.earlier)
 
     @property
     def proposals(self) -> dict:

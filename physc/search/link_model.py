@@ -46,6 +46,14 @@ def examples(links: Sequence[LinkFeatures], best: int) -> list[KindedExample]:
     return [(f.kind, f.values, f.index < best) for f in links if f.index <= best]
 
 
+def by_kind(rows: Iterable[KindedExample]) -> dict[str, list[Example]]:
+    """Examples with their kinds, grouped by kind (in the order given)."""
+    grouped: dict[str, list[Example]] = {}
+    for kind, values, realised in rows:
+        grouped.setdefault(kind, []).append((tuple(values), bool(realised)))
+    return grouped
+
+
 @attrs.define
 class LinkModel:
     """The chance of each kind of link, learned (module docstring)."""
